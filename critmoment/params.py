@@ -1,0 +1,305 @@
+"""Uncertain physical parameters and the uncertainty box.
+
+A parameter knows which MuJoCo model fields it changes and how to write a value
+into them. The same ``write`` serves a single ``MjModel`` (arrays of shape
+``(1, ...)`` viewed from the model) and a ``mujoco.batch.Batch`` (expanded
+per-simulation arrays ``(nsim, ...)``), so sparse evaluation, full rollouts and
+the analytic model all change the physics in exactly one way.
+
+New kinds of parameters (centre-of-mass offset, gripper force limit, ...) are
+added by subclassing :class:`Parameter` and registering the class in
+:data:`PARAMETER_KINDS`.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+from typing import ClassVar, Mapping
+
+import mujoco
+import numpy as np
+
+from critmoment.exceptions import ParameterError, ScenarioError
+
+__all__ = [
+    "Prior",
+    "Parameter",
+    "MassParameter",
+    "FrictionParameter",
+    "ComOffsetParameter",
+    "ForceLimitParameter",
+    "PARAMETER_KINDS",
+    "UncertaintyBox",
+]
+
+
+class Prior(enum.Enum):
+    """Prior distribution of a parameter over its range."""
+
+    UNIFORM = "uniform"
+    LOGUNIFORM = "loguniform"
+
+
+@dataclasses.dataclass(frozen=True)
+class Parameter:
+    """One uncertain scalar of the physics.
+
+    Attributes:
+        name: the parameter's name in the scenario (``"mass"``, ``"friction"``).
+        target: the MuJoCo object it acts on (body, geom or actuator name).
+        low: lower end of the range, in the parameter's unit.
+        high: upper end of the range.
+        nominal: the value the trajectory was planned for.
+        prior: distribution over [low, high] used for P(success).
+    """
+
+    name: str
+    target: str
+    low: float
+    high: float
+    nominal: float
+    prior: Prior = Prior.UNIFORM
+
+    #: MjModel fields this parameter writes.
+    fields: ClassVar[tuple[str, ...]] = ()
+    #: whether mj_setConst must run after writing (mass, inertia).
+    needs_set_const: ClassVar[bool] = False
+    #: unit shown in reports.
+    unit: ClassVar[str] = ""
+    #: the smallest admissible value (exclusive), e.g. 0 for a mass.
+    minimum: ClassVar[float] = -np.inf
+
+    def __post_init__(self):
+        values = (self.low, self.high, self.nominal)
+        if not all(np.isfinite(v) for v in values):
+            raise ParameterError(
+                f"parameter {self.name!r}: expected finite range and nominal, got "
+                f"range [{self.low}, {self.high}], nominal {self.nominal}")
+        if not self.low < self.high:
+            raise ParameterError(
+                f"parameter {self.name!r}: expected range low < high, got [{self.low}, {self.high}]")
+        if not self.low <= self.nominal <= self.high:
+            raise ParameterError(
+                f"parameter {self.name!r}: expected nominal inside the range "
+                f"[{self.low}, {self.high}], got {self.nominal}")
+        if self.low <= self.minimum:
+            raise ParameterError(
+                f"parameter {self.name!r}: expected values > {self.minimum} {self.unit}, "
+                f"got range [{self.low}, {self.high}]")
+        if self.prior is Prior.LOGUNIFORM and self.low <= 0:
+            raise ParameterError(
+                f"parameter {self.name!r}: a log-uniform prior needs low > 0, got {self.low}")
+
+    # -- binding to a model -------------------------------------------------
+    def resolve(self, model: mujoco.MjModel) -> int:
+        """Return the id of ``target`` in ``model``; raise ScenarioError listing valid names."""
+        raise NotImplementedError
+
+    def write(self, index: int, base, arrays: Mapping[str, np.ndarray],
+              values: np.ndarray) -> None:
+        """Write ``values`` (n,) into the per-simulation ``arrays`` (n, ...) of ``fields``.
+
+        Args:
+            index: the target's id, from :meth:`resolve`.
+            base: an object whose ``fields`` attributes hold the model's own (unmodified)
+                values, which the parameter scales or offsets from.
+            arrays: per-simulation arrays (n, ...) for each of ``fields``, written in place.
+            values: the parameter's values, (n,).
+        """
+        raise NotImplementedError
+
+    def check(self, values: np.ndarray) -> np.ndarray:
+        """Return ``values`` as float64 (n,), raising ParameterError if any is not admissible."""
+        values = np.asarray(values, dtype=np.float64).reshape(-1)
+        bad = ~np.isfinite(values) | (values <= self.minimum)
+        if bad.any():
+            raise ParameterError(
+                f"parameter {self.name!r}: expected finite values > {self.minimum} {self.unit}, "
+                f"got {values[bad][:5].tolist()}")
+        return values
+
+
+def _resolve(model: mujoco.MjModel, objtype: mujoco.mjtObj, name: str, what: str) -> int:
+    idx = mujoco.mj_name2id(model, objtype, name)
+    if idx < 0:
+        count = {mujoco.mjtObj.mjOBJ_BODY: model.nbody, mujoco.mjtObj.mjOBJ_GEOM: model.ngeom,
+                 mujoco.mjtObj.mjOBJ_ACTUATOR: model.nu}[objtype]
+        names = [mujoco.mj_id2name(model, objtype, i) for i in range(count)]
+        raise ScenarioError(
+            f"unknown {what} {name!r}; the model's {what}s are: "
+            + ", ".join(n for n in names if n))
+    return idx
+
+
+@dataclasses.dataclass(frozen=True)
+class MassParameter(Parameter):
+    """Mass of a body [kg]; its inertia scales with it (same shape, same density)."""
+
+    fields: ClassVar[tuple[str, ...]] = ("body_mass", "body_inertia")
+    needs_set_const: ClassVar[bool] = True
+    unit: ClassVar[str] = "kg"
+    minimum: ClassVar[float] = 0.0
+
+    def resolve(self, model):
+        return _resolve(model, mujoco.mjtObj.mjOBJ_BODY, self.target, "body")
+
+    def write(self, index, base, arrays, values):
+        scale = values / base.body_mass[index]
+        arrays["body_mass"][:, index] = values
+        arrays["body_inertia"][:, index] = base.body_inertia[index] * scale[:, None]
+
+
+@dataclasses.dataclass(frozen=True)
+class FrictionParameter(Parameter):
+    """Sliding friction coefficient of a geom's contacts.
+
+    MuJoCo mixes the friction of two geoms with ``max``, so the target geom must
+    have a higher ``priority`` than everything it touches: then its own friction
+    is the contact's. The twin checks that when it binds the scenario.
+    """
+
+    fields: ClassVar[tuple[str, ...]] = ("geom_friction",)
+    unit: ClassVar[str] = ""
+    minimum: ClassVar[float] = 0.0
+
+    def resolve(self, model):
+        return _resolve(model, mujoco.mjtObj.mjOBJ_GEOM, self.target, "geom")
+
+    def write(self, index, base, arrays, values):
+        arrays["geom_friction"][:, index, 0] = values
+
+
+@dataclasses.dataclass(frozen=True)
+class ComOffsetParameter(Parameter):
+    """Offset of a body's centre of mass along its local x axis [m]."""
+
+    fields: ClassVar[tuple[str, ...]] = ("body_ipos",)
+    needs_set_const: ClassVar[bool] = True
+    unit: ClassVar[str] = "m"
+
+    def resolve(self, model):
+        return _resolve(model, mujoco.mjtObj.mjOBJ_BODY, self.target, "body")
+
+    def write(self, index, base, arrays, values):
+        arrays["body_ipos"][:, index] = base.body_ipos[index]
+        arrays["body_ipos"][:, index, 0] += values
+
+
+@dataclasses.dataclass(frozen=True)
+class ForceLimitParameter(Parameter):
+    """Symmetric force limit of an actuator [N or N·m] (e.g. the gripper's grip force)."""
+
+    fields: ClassVar[tuple[str, ...]] = ("actuator_forcerange",)
+    unit: ClassVar[str] = "N"
+    minimum: ClassVar[float] = 0.0
+
+    def resolve(self, model):
+        return _resolve(model, mujoco.mjtObj.mjOBJ_ACTUATOR, self.target, "actuator")
+
+    def write(self, index, base, arrays, values):
+        arrays["actuator_forcerange"][:, index, 0] = -values
+        arrays["actuator_forcerange"][:, index, 1] = values
+
+
+#: scenario key ``kind`` (or the parameter's name) -> class, and the key naming its target
+PARAMETER_KINDS: dict[str, tuple[type[Parameter], str]] = {
+    "mass": (MassParameter, "body"),
+    "friction": (FrictionParameter, "geom"),
+    "com_offset": (ComOffsetParameter, "body"),
+    "force_limit": (ForceLimitParameter, "actuator"),
+}
+
+
+@dataclasses.dataclass(frozen=True)
+class UncertaintyBox:
+    """The box of uncertain parameters, in a fixed order.
+
+    Attributes:
+        parameters: the parameters; column j of every sample array is parameters[j].
+    """
+
+    parameters: tuple[Parameter, ...]
+
+    def __post_init__(self):
+        names = [p.name for p in self.parameters]
+        if len(set(names)) != len(names):
+            raise ParameterError(f"parameter names must be unique, got {names}")
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return tuple(p.name for p in self.parameters)
+
+    @property
+    def ndim(self) -> int:
+        return len(self.parameters)
+
+    @property
+    def low(self) -> np.ndarray:
+        return np.array([p.low for p in self.parameters])
+
+    @property
+    def high(self) -> np.ndarray:
+        return np.array([p.high for p in self.parameters])
+
+    @property
+    def nominal(self) -> np.ndarray:
+        return np.array([p.nominal for p in self.parameters])
+
+    def index(self, name: str) -> int:
+        """Column of parameter ``name``."""
+        try:
+            return self.names.index(name)
+        except ValueError:
+            raise ParameterError(
+                f"unknown parameter {name!r}; the box has {', '.join(self.names)}") from None
+
+    def check_samples(self, samples: np.ndarray) -> np.ndarray:
+        """Validate a (n, k) sample array (k = ndim); return it as float64 C-contiguous."""
+        samples = np.asarray(samples, dtype=np.float64)
+        if samples.ndim == 1 and self.ndim == 1:
+            samples = samples[:, None]
+        if samples.ndim != 2 or samples.shape[1] != self.ndim:
+            raise ParameterError(
+                f"expected samples of shape (n, {self.ndim}) for parameters {self.names}, "
+                f"got shape {samples.shape}")
+        for j, p in enumerate(self.parameters):
+            p.check(samples[:, j])
+        return np.ascontiguousarray(samples)
+
+    def from_unit(self, u: np.ndarray) -> np.ndarray:
+        """Map points of the unit cube (n, k) to the box through each prior's inverse CDF."""
+        u = np.asarray(u, dtype=np.float64)
+        out = np.empty_like(u)
+        for j, p in enumerate(self.parameters):
+            if p.prior is Prior.LOGUNIFORM:
+                out[:, j] = np.exp(np.log(p.low) + u[:, j] * (np.log(p.high) - np.log(p.low)))
+            else:
+                out[:, j] = p.low + u[:, j] * (p.high - p.low)
+        return out
+
+    def to_unit(self, x: np.ndarray) -> np.ndarray:
+        """Inverse of :meth:`from_unit`."""
+        x = np.asarray(x, dtype=np.float64)
+        out = np.empty_like(x)
+        for j, p in enumerate(self.parameters):
+            if p.prior is Prior.LOGUNIFORM:
+                out[:, j] = (np.log(x[:, j]) - np.log(p.low)) / (np.log(p.high) - np.log(p.low))
+            else:
+                out[:, j] = (x[:, j] - p.low) / (p.high - p.low)
+        return out
+
+    def corners(self) -> np.ndarray:
+        """The 2**k corners of the box, (2**k, k), plus nothing else."""
+        grids = np.meshgrid(*[[p.low, p.high] for p in self.parameters], indexing="ij")
+        return np.stack([g.reshape(-1) for g in grids], axis=1)
+
+    def with_range(self, name: str, low: float, high: float,
+                   nominal: float | None = None) -> "UncertaintyBox":
+        """A copy with parameter ``name``'s range (and optionally nominal) replaced."""
+        j = self.index(name)
+        p = self.parameters[j]
+        nominal = p.nominal if nominal is None else nominal
+        params = list(self.parameters)
+        params[j] = dataclasses.replace(p, low=low, high=high, nominal=nominal)
+        return UncertaintyBox(tuple(params))

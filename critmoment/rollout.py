@@ -1,0 +1,382 @@
+"""The frequent rollout: replay a trajectory and record state and safety signals.
+
+:func:`simulate` steps one or many full trajectories through
+``mujoco.batch.Batch.rollout`` (C loop, thread pool, per-simulation parameters):
+the frequent rollout is the case n = 1 at nominal parameters, and brute-force
+validation (``critmoment.validate``) is the same call with n parameter samples.
+
+:func:`rollout` returns a :class:`Recording`: the integration state before every
+physics step (restorable bit-exactly, warmstart included), the sensor data of
+every step and the safety signals derived from it.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+from pathlib import Path
+
+import mujoco
+import mujoco.batch
+import numpy as np
+
+from critmoment import trajectory as trajectory_mod
+from critmoment.exceptions import InputFileError, SimulationDivergedError, TrajectoryError
+from critmoment.scenario import Scenario, load_scenario
+from critmoment.trajectory import Trajectory
+from critmoment.twin import STATE_SPEC, Signals, Twin
+
+__all__ = [
+    "Recording",
+    "rollout",
+    "simulate",
+    "prepare_controls",
+    "initial_state",
+    "task_completed",
+    "model_hash",
+]
+
+_WARNING_NAMES = [mujoco.mjtWarning(i).name for i in range(mujoco.mjtWarning.mjNWARNING)]
+
+
+def model_hash(scenario: Scenario) -> str:
+    """SHA-256 of the scenario's MJCF files (scene and the files it refers to in its folder)."""
+    h = hashlib.sha256()
+    for path in sorted(Path(scenario.mjcf).parent.glob("*.xml")):
+        h.update(path.name.encode())
+        h.update(path.read_bytes())
+    return h.hexdigest()
+
+
+def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None = None) -> np.ndarray:
+    """Validate a trajectory against the twin and upsample it to controls at the physics rate.
+
+    Args:
+        twin: the twin.
+        traj: the trajectory (actions at ``traj.fps``).
+        range_policy: "error", "clip" or "warn" for targets outside joint ranges
+            (default: the scenario's).
+
+    Returns:
+        (n_steps, nu) controls, one row per physics step.
+    """
+    conv = twin.scenario.actions
+    if traj.n_channels != conv.width:
+        raise TrajectoryError(
+            f"expected {conv.width} action values per step for convention {conv.name!r} "
+            f"({', '.join(conv.labels)}), got {traj.n_channels}")
+    policy = trajectory_mod.RangePolicy[(range_policy or twin.scenario.range_policy).upper()]
+    actions = trajectory_mod.check_ranges(traj.actions, twin.channel_lower, twin.channel_upper,
+                                          policy=policy, names=conv.labels)
+    dt = float(twin.model.opt.timestep)
+    targets = trajectory_mod.upsample(actions, fps=traj.fps, physics_dt=dt,
+                                      bounded=twin.channel_normalised,
+                                      lower=twin.channel_lower, upper=twin.channel_upper)
+    return twin.controls(targets)
+
+
+def initial_state(twin: Twin, traj: Trajectory, model: mujoco.MjModel | None = None) -> np.ndarray:
+    """Integration state (nstate,) at the start of the trajectory, controls set to its first action."""
+    start = traj.start if traj.start is not None else traj.actions[0]
+    model = model or twin.model
+    data = twin.initial_data(start=start, qpos0=traj.qpos0, object_pose=traj.object_pose,
+                             model=model)
+    return twin.get_state(model, data)
+
+
+def simulate(twin: Twin, state0: np.ndarray, controls: np.ndarray, *,
+             samples: np.ndarray | None = None, record_state: bool = False,
+             nthread: int = 0, batch: mujoco.batch.Batch | None = None) -> dict[str, np.ndarray]:
+    """Roll out full trajectories, batched over parameter samples.
+
+    Args:
+        twin: the twin.
+        state0: initial integration state, (nstate,) or (n, nstate).
+        controls: controls per physics step, (T, nu) or (n, T, nu).
+        samples: parameter values (n, k) in the box's order, or None for nominal (n = 1
+            unless state0/controls say otherwise).
+        record_state: also return the integration state after every step.
+        nthread: threads (0: all CPUs).
+        batch: a Batch of the twin's model with ``n`` simulations to reuse.
+
+    Returns:
+        ``sensordata`` (n, T, nsensordata), ``time`` (n, T) (time after each step),
+        ``diverged`` (n,) bool, ``diverged_step`` (n,) int (−1 when fine),
+        ``warnings`` (n,) str, and with ``record_state`` ``state`` (n, T, nstate).
+    """
+    state0 = np.asarray(state0, dtype=np.float64)
+    controls = np.asarray(controls, dtype=np.float64)
+    n = max(1 if samples is None else len(samples),
+            state0.shape[0] if state0.ndim == 2 else 1,
+            controls.shape[0] if controls.ndim == 3 else 1)
+    nstep = controls.shape[-2]
+    if batch is None:
+        batch = mujoco.batch.Batch(twin.model, n, nthread=nthread)
+    elif batch.nsim != n:
+        raise ValueError(f"batch has {batch.nsim} simulations, expected {n}")
+    if samples is not None:
+        twin.write_parameters(batch, samples)
+    batch.state[:] = state0
+    ctrl = np.broadcast_to(controls, (n, nstep, controls.shape[-1]))
+    ctrl = np.ascontiguousarray(ctrl)
+    record: list = ["sensordata"]
+    if record_state:
+        record.append(int(STATE_SPEC))
+    else:
+        record.append("time")
+    out = batch.rollout(nstep, control=ctrl, control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
+                        record=record)
+    result = {"sensordata": out["sensordata"]}
+    if record_state:
+        states = out[int(STATE_SPEC)]
+        result["state"] = states
+        time = states[:, :, 0]
+    else:
+        time = out["time"]
+    result["time"] = time
+    counts = batch.warning[:, :, 1]
+    diverged = (counts > 0).any(axis=1) | ~np.isfinite(out["sensordata"]).all(axis=(1, 2))
+    stopped = np.zeros(n, dtype=np.int64) - 1
+    for i in np.flatnonzero(diverged):
+        same = np.flatnonzero(np.diff(time[i]) <= 0)
+        stopped[i] = int(same[0] + 1) if same.size else nstep - 1
+    result["diverged"] = diverged
+    result["diverged_step"] = stopped
+    result["warnings"] = np.array([
+        ", ".join(_WARNING_NAMES[w] for w in np.flatnonzero(counts[i])) for i in range(n)])
+    return result
+
+
+def task_completed(stage: np.ndarray, *, dt: float, debounce: float = 0.02) -> np.ndarray:
+    """Whether the task reached stage 4 and kept it to the end.
+
+    Drops out of stage 4 shorter than ``debounce`` [s] (contact chatter of a firm grasp) are
+    ignored; a longer drop, or a final stage below 4, means the task failed.
+
+    Args:
+        stage: task stage per step, (..., T).
+        dt: physics step [s].
+        debounce: longest ignored drop [s].
+
+    Returns:
+        (...) bool.
+    """
+    stage = np.asarray(stage)
+    at4 = stage >= 4
+    reached = at4.any(axis=-1)
+    first = np.argmax(at4, axis=-1)
+    width = max(1, int(round(debounce / dt)))
+    t = stage.shape[-1]
+    idx = np.arange(t)
+    after = idx >= first[..., None]
+    lost = after & ~at4
+    # length of each run of lost steps: a run longer than `width` (or one that reaches the
+    # end of the recording) breaks completion
+    ok = np.empty(stage.shape[:-1], dtype=bool)
+    flat_lost = lost.reshape(-1, t)
+    flat_ok = ok.reshape(-1)
+    for i, row in enumerate(flat_lost):
+        if not row.any():
+            flat_ok[i] = True
+            continue
+        edges = np.diff(np.concatenate([[0], row.astype(np.int8), [0]]))
+        starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
+        flat_ok[i] = bool(((ends - starts) <= width).all() and ends[-1] < t)
+    return ok & reached
+
+
+@dataclasses.dataclass(frozen=True)
+class Recording:
+    """What the frequent rollout recorded.
+
+    Step k is the physics step from ``state[k]`` to ``state[k + 1]``; ``sensordata[k]`` and the
+    signals at k are the forces of that step (MuJoCo computes them at the start of the step).
+
+    Attributes:
+        dt: physics step [s].
+        states: integration state before each step and after the last, (T + 1, nstate).
+        sensordata: sensor readings of each step, (T, nsensordata).
+        controls: controls applied at each step, (T, nu).
+        signals: safety signals, leading shape (T,).
+        nominal: nominal parameter values, (k,).
+        parameter_names: names of the parameters.
+        gripper_names: names of the grippers (order of fos_contact's columns).
+        actuator_names: names of the actuators.
+        scenario_name: the scenario's name.
+        model_sha256: hash of the MJCF files.
+        source: the trajectory's source.
+    """
+
+    dt: float
+    states: np.ndarray
+    sensordata: np.ndarray
+    controls: np.ndarray
+    signals: Signals
+    nominal: np.ndarray
+    parameter_names: tuple[str, ...]
+    gripper_names: tuple[str, ...]
+    actuator_names: tuple[str, ...]
+    scenario_name: str
+    model_sha256: str
+    source: str = ""
+
+    # signal shortcuts, as read by moments.py
+    @property
+    def n_steps(self) -> int:
+        return int(self.sensordata.shape[0])
+
+    @property
+    def time(self) -> np.ndarray:
+        return np.arange(self.n_steps) * self.dt
+
+    @property
+    def object_acc(self) -> np.ndarray:
+        return self.signals.object_acc
+
+    @property
+    def actuator_norm(self) -> np.ndarray:
+        return self.signals.actuator_norm
+
+    @property
+    def fos_contact(self) -> np.ndarray:
+        return self.signals.fos_contact
+
+    @property
+    def fos_motor(self) -> np.ndarray:
+        return self.signals.fos_motor
+
+    @property
+    def cost(self) -> np.ndarray:
+        return self.signals.cost
+
+    @property
+    def contact_support(self) -> np.ndarray:
+        return self.signals.contact_support
+
+    @property
+    def contact_gripper(self) -> np.ndarray:
+        return self.signals.contact_gripper
+
+    @property
+    def stage(self) -> np.ndarray:
+        return self.signals.stage
+
+    @property
+    def completed(self) -> bool:
+        """Stage 4 reached and kept to the end (see :func:`task_completed`)."""
+        return bool(task_completed(self.stage, dt=self.dt))
+
+    def stage_first_step(self) -> dict[int, int | None]:
+        """First step at which each stage 1..4 is reached (None if never)."""
+        out: dict[int, int | None] = {}
+        for k in range(1, 5):
+            hits = np.flatnonzero(self.stage == k)
+            out[k] = int(hits[0]) if hits.size else None
+        return out
+
+    def summary(self) -> dict:
+        """The JSON summary printed by ``critmoment rollout --json``."""
+        sig = self.signals
+        fos_c = sig.fos_contact.min(axis=-1)
+        finite_c = fos_c[np.isfinite(fos_c)]
+        return {
+            "steps": self.n_steps,
+            "dt": self.dt,
+            "duration": self.n_steps * self.dt,
+            "max_stage": int(sig.stage.max()),
+            "final_stage": int(sig.stage[-1]),
+            "completed": self.completed,
+            "stage_first_step": {str(k): v for k, v in self.stage_first_step().items()},
+            "min_fos_contact": float(finite_c.min()) if finite_c.size else None,
+            "min_fos_motor": float(sig.fos_motor.min()),
+            "limiting_actuator": self.actuator_names[int(sig.motor_argmax[np.argmin(sig.fos_motor)])],
+            "max_cost": float(sig.cost.max()),
+            "max_cost_step": int(np.argmax(sig.cost)),
+        }
+
+    def save(self, path: str | Path) -> Path:
+        """Write the recording to an ``.npz`` file (signals are recomputed on load)."""
+        path = Path(path)
+        meta = {
+            "dt": self.dt, "parameter_names": list(self.parameter_names),
+            "gripper_names": list(self.gripper_names),
+            "actuator_names": list(self.actuator_names), "scenario_name": self.scenario_name,
+            "model_sha256": self.model_sha256, "source": self.source,
+            "schema": "critmoment.recording/1",
+        }
+        np.savez_compressed(path, states=self.states, sensordata=self.sensordata,
+                            controls=self.controls, nominal=self.nominal,
+                            meta=np.array(json.dumps(meta)))
+        return path
+
+    @classmethod
+    def load(cls, path: str | Path, twin: Twin) -> "Recording":
+        """Read a recording written by :meth:`save`; ``twin`` recomputes the signals."""
+        path = Path(path)
+        if not path.is_file():
+            raise InputFileError(f"recording not found: {path}")
+        try:
+            with np.load(path, allow_pickle=False) as z:
+                meta = json.loads(str(z["meta"]))
+                arrays = {k: z[k] for k in ("states", "sensordata", "controls", "nominal")}
+        except (OSError, ValueError, KeyError) as exc:
+            raise InputFileError(f"{path}: not a critmoment recording ({exc})") from exc
+        if arrays["sensordata"].shape[-1] != twin.nsensordata:
+            raise InputFileError(
+                f"{path}: recorded {arrays['sensordata'].shape[-1]} sensor values per step, the "
+                f"scenario's twin has {twin.nsensordata}: recorded with another scenario?")
+        mu = _friction_of(twin, arrays["nominal"])
+        return cls(dt=meta["dt"], states=arrays["states"], sensordata=arrays["sensordata"],
+                   controls=arrays["controls"], signals=twin.signals(arrays["sensordata"], mu),
+                   nominal=arrays["nominal"], parameter_names=tuple(meta["parameter_names"]),
+                   gripper_names=tuple(meta["gripper_names"]),
+                   actuator_names=tuple(meta["actuator_names"]),
+                   scenario_name=meta["scenario_name"], model_sha256=meta["model_sha256"],
+                   source=meta["source"])
+
+
+def _friction_of(twin: Twin, values: np.ndarray) -> float:
+    """Object contact friction for parameter values (k,): the friction parameter if any."""
+    model = twin.copy_model()
+    twin.write_parameters(model, np.asarray(values)[None])
+    return twin.object_friction(model)
+
+
+def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
+            twin: Twin | None = None, range_policy: str | None = None) -> Recording:
+    """Run the frequent rollout of a trajectory at nominal parameters.
+
+    Args:
+        traj: the trajectory.
+        scenario: a Scenario, a path/name to load one, or None for the bundled scenario.
+        twin: a twin to reuse (its scenario wins over ``scenario``).
+        range_policy: override of the scenario's policy for out-of-range targets.
+
+    Returns:
+        The recording.
+
+    Raises:
+        SimulationDivergedError: the physics diverged; the message names the step.
+    """
+    if twin is None:
+        if not isinstance(scenario, Scenario):
+            scenario = load_scenario(scenario)
+        twin = Twin(scenario)
+    controls = prepare_controls(twin, traj, range_policy=range_policy)
+    state0 = initial_state(twin, traj)
+    out = simulate(twin, state0, controls, record_state=True, nthread=1)
+    if out["diverged"][0]:
+        step = int(out["diverged_step"][0])
+        raise SimulationDivergedError(
+            f"simulation diverged at physics step {step} (t = {step * twin.model.opt.timestep:.3f} s)"
+            f" with MuJoCo warnings [{out['warnings'][0] or 'non-finite values'}]; expected a "
+            f"stable rollout: check the trajectory's targets and the model", step=step)
+    states = np.concatenate([state0[None], out["state"][0]], axis=0)
+    sd = out["sensordata"][0]
+    return Recording(
+        dt=float(twin.model.opt.timestep), states=states, sensordata=sd, controls=controls,
+        signals=twin.signals(sd), nominal=twin.scenario.box.nominal,
+        parameter_names=twin.scenario.box.names, gripper_names=twin.scenario.gripper_names,
+        actuator_names=twin.actuator_names, scenario_name=twin.scenario.name,
+        model_sha256=model_hash(twin.scenario), source=traj.source)

@@ -1,0 +1,97 @@
+"""Factors of safety and cost (thesis eq. 12–15), pure NumPy and vectorised.
+
+Every function broadcasts over leading axes, so the same code scores one
+physics step, a whole recording (T, ...) or a batch of sparse evaluations
+(n, ...).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from critmoment.scenario import CostParams
+
+__all__ = ["contact_fos", "motor_fos", "cost", "task_stage"]
+
+
+def contact_fos(normal: np.ndarray, tangential: np.ndarray, mu: np.ndarray | float,
+                cohesion: np.ndarray | float = 0.0) -> np.ndarray:
+    """Contact factor of safety of one gripper's contacts with the object (eq. 12).
+
+    FOS = Σ λn_i / Σ λn_i · λt_i / (c_i + μ_i λn_i), which is Σλn / Σ(λt/μ) when c = 0:
+    the ratio of the friction the contacts could supply to what they supply. Below 1
+    the grip slips.
+
+    Args:
+        normal: normal force of each contact [N], (..., K); 0 for empty slots.
+        tangential: magnitude of the tangential force of each contact [N], (..., K).
+        mu: friction coefficient of each contact, broadcastable to (..., K).
+        cohesion: cohesion of each contact [N], broadcastable to (..., K).
+
+    Returns:
+        (...) factor of safety; +inf where there is no contact or no tangential demand.
+    """
+    normal = np.asarray(normal, dtype=np.float64)
+    tangential = np.asarray(tangential, dtype=np.float64)
+    mu = np.asarray(mu, dtype=np.float64)
+    capacity = cohesion + mu * normal
+    with np.errstate(divide="ignore", invalid="ignore"):
+        use = np.where(capacity > 0, normal * tangential / capacity, 0.0)
+        demand = use.sum(axis=-1)
+        total = normal.sum(axis=-1)
+        fos = np.where(demand > 0, total / demand, np.inf)
+    return fos
+
+
+def motor_fos(force: np.ndarray, limit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Motor factor of safety over actuators (eq. 13–14): min_i τmax_i / |τ_i|.
+
+    Args:
+        force: actuator forces [N·m or N], (..., n).
+        limit: force limits [N·m or N], (n,).
+
+    Returns:
+        fos (...) (+inf when every force is 0) and the index (...) of the limiting actuator.
+    """
+    force = np.abs(np.asarray(force, dtype=np.float64))
+    limit = np.asarray(limit, dtype=np.float64)
+    with np.errstate(divide="ignore"):
+        ratio = np.where(force > 0, limit / force, np.inf)
+    idx = np.argmin(ratio, axis=-1)
+    return np.take_along_axis(ratio, idx[..., None], axis=-1)[..., 0], idx
+
+
+def cost(fos_contact: np.ndarray, fos_motor: np.ndarray, params: CostParams) -> np.ndarray:
+    """Cost C = A·exp(−α(FOS_c − 1)) + B·exp(−β(FOS_m − 1)) (eq. 15).
+
+    Args:
+        fos_contact: contact FOS, (...); use the minimum over grippers. +inf gives 0.
+        fos_motor: motor FOS, (...).
+        params: the cost constants.
+
+    Returns:
+        (...) cost; the motion fails where it exceeds ``params.threshold``.
+    """
+    with np.errstate(over="ignore"):
+        c = params.A * np.exp(-params.alpha * (np.asarray(fos_contact) - 1.0))
+        m = params.B * np.exp(-params.beta * (np.asarray(fos_motor) - 1.0))
+    return c + m
+
+
+def task_stage(touch_picker: np.ndarray, touch_receiver: np.ndarray,
+               touch_support: np.ndarray) -> np.ndarray:
+    """ACT's transfer-cube reward 0..4 from contact flags (each (...) bool).
+
+    1: the picker touches the object; 2: and the object is off the support;
+    3: the receiver touches it; 4: and it is off the support. A later condition
+    overrides an earlier one, as in ACT.
+    """
+    touch_picker = np.asarray(touch_picker, dtype=bool)
+    touch_receiver = np.asarray(touch_receiver, dtype=bool)
+    off = ~np.asarray(touch_support, dtype=bool)
+    stage = np.zeros(np.broadcast(touch_picker, touch_receiver, off).shape, dtype=np.int8)
+    stage[touch_picker] = 1
+    stage[touch_picker & off] = 2
+    stage[touch_receiver] = 3
+    stage[touch_receiver & off] = 4
+    return stage

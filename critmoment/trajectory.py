@@ -1,0 +1,1312 @@
+"""Robot trajectories: the container, file readers, range checks, upsampling.
+
+A :class:`Trajectory` is a sequence of joint-position targets ("actions") sent
+to a robot at a fixed control rate, in the action convention of the scenario it
+is replayed in. For the ALOHA bimanual setup one action is 14 values::
+
+    [left joint 0..5 [rad], left gripper [normalised 0..1],
+     right joint 0..5 [rad], right gripper [normalised 0..1]]
+
+Readers (:func:`load_trajectory`) accept
+
+* ``.npz`` archives in critmoment's own schema (see :func:`save_trajectory`),
+* ACT episode files (``.hdf5`` / ``.h5``) with ``/action`` and
+  ``/observations/qpos``,
+* LeRobot-format parquet, either one episode file or a whole dataset
+  directory (``<root>/meta/info.json`` plus ``<root>/data/**.parquet``).
+
+:func:`check_ranges` enforces joint limits under an explicit
+:class:`RangePolicy`, and :func:`upsample` turns control-rate actions into one
+control per physics step.
+"""
+
+from __future__ import annotations
+
+import copy
+import enum
+import json
+import logging
+import math
+import os
+import warnings
+import zipfile
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field, fields, replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from scipy.interpolate import CubicSpline, PchipInterpolator
+
+from critmoment.exceptions import (
+    InputFileError,
+    ParameterError,
+    TrajectoryError,
+)
+
+__all__ = [
+    "DEFAULT_FPS",
+    "SUPPORTED_SUFFIXES",
+    "Trajectory",
+    "RangePolicy",
+    "load_trajectory",
+    "save_trajectory",
+    "check_ranges",
+    "upsample",
+]
+
+logger = logging.getLogger(__name__)
+
+#: Control rate assumed when a file does not record one [Hz].
+DEFAULT_FPS: float = 50.0
+
+#: File suffixes :func:`load_trajectory` understands (a LeRobot dataset
+#: directory is accepted as well).
+SUPPORTED_SUFFIXES: tuple[str, ...] = (".npz", ".hdf5", ".h5", ".parquet")
+
+_SUPPORTED_TEXT = (
+    "'.npz' (critmoment schema), '.hdf5'/'.h5' (ACT episode), "
+    "'.parquet' (LeRobot episode file), or a LeRobot dataset directory "
+    "containing meta/info.json"
+)
+
+# Relative tolerance for "uniform" sample spacing and for two frame rates
+# that should agree.
+_RATE_RTOL = 0.01
+
+# Quaternions whose norm is within this of 1 are taken as already normalised
+# (keeps save/load round trips bit-exact).
+_QUAT_NORM_TOL = 1e-12
+
+# A physics step whose time lies within this fraction of a control period of a
+# sample time is treated as hitting the sample exactly.
+_SNAP_TOL = 1e-9
+
+_NPZ_KEYS = frozenset({"actions", "fps", "time", "start", "qpos0", "object_pose", "meta"})
+
+
+# ---------------------------------------------------------------------------
+# Validation helpers
+# ---------------------------------------------------------------------------
+
+
+def _describe_dtype(arr: np.ndarray) -> str:
+    return f"dtype {arr.dtype}"
+
+
+def _as_float_array(value: Any, *, what: str, error: type[Exception]) -> np.ndarray:
+    """Converts ``value`` to a float64 array, rejecting non-numeric input."""
+    try:
+        arr = np.asarray(value)
+    except (ValueError, TypeError) as exc:  # ragged nested lists, odd objects
+        raise error(
+            f"{what}: expected a numeric array, got {type(value).__name__} "
+            f"that numpy cannot convert ({exc})"
+        ) from None
+    if arr.dtype.kind in "iuf":
+        return np.array(arr, dtype=np.float64, copy=True)
+    raise error(
+        f"{what}: expected a real numeric array (integer or float), got "
+        f"{_describe_dtype(arr)}; valid dtype kinds are signed/unsigned integer "
+        f"and floating point"
+    )
+
+
+def _first_nonfinite(arr: np.ndarray) -> tuple[int, ...] | None:
+    bad = np.argwhere(~np.isfinite(arr))
+    if bad.size == 0:
+        return None
+    return tuple(int(i) for i in bad[0])
+
+
+def _check_finite_vector(arr: np.ndarray, *, what: str) -> None:
+    where = _first_nonfinite(arr)
+    if where is not None:
+        raise TrajectoryError(
+            f"{what}: expected finite values, got {float(arr[where])!r} at index {where[0]}"
+        )
+
+
+def _read_only(arr: np.ndarray) -> np.ndarray:
+    arr.flags.writeable = False
+    return arr
+
+
+def _as_rate(value: Any, *, what: str, error: type[Exception]) -> float:
+    """Converts a frame rate to a finite positive float [Hz]."""
+    if isinstance(value, (bool, np.bool_)):
+        raise error(f"{what}: expected a finite number > 0 [Hz], got bool {value!r}")
+    try:
+        rate = float(value)
+    except (TypeError, ValueError):
+        raise error(
+            f"{what}: expected a finite number > 0 [Hz], got "
+            f"{type(value).__name__} {value!r}"
+        ) from None
+    if not math.isfinite(rate) or rate <= 0.0:
+        raise error(f"{what}: expected a finite number > 0 [Hz], got {rate!r}")
+    return rate
+
+
+def _rates_agree(a: float, b: float) -> bool:
+    return abs(a - b) <= _RATE_RTOL * max(abs(a), abs(b))
+
+
+def _check_json(meta: Any) -> dict:
+    if not isinstance(meta, Mapping):
+        raise TrajectoryError(
+            f"meta: expected a JSON-serialisable dict, got {type(meta).__name__}"
+        )
+    meta = dict(meta)
+    try:
+        json.dumps(meta, allow_nan=False)
+    except (TypeError, ValueError) as exc:
+        raise TrajectoryError(
+            f"meta: expected a JSON-serialisable dict (str keys; str, int, float, "
+            f"bool, None, list and dict values; no NaN/inf), got a value json "
+            f"cannot encode: {exc}"
+        ) from None
+    return copy.deepcopy(meta)
+
+
+def _fps_from_times(times: Any, n_steps: int, *, what: str) -> float:
+    """Validates sample times [s] and returns the frame rate they imply [Hz].
+
+    Args:
+        times: (T,) sample times [s].
+        n_steps: expected T.
+        what: where the times came from, for error messages.
+
+    Raises:
+        TrajectoryError: wrong length, non-finite, not strictly increasing, or
+            spacing deviating more than 1 % from the median spacing.
+    """
+    t = _as_float_array(times, what=what, error=TrajectoryError)
+    if t.shape != (n_steps,):
+        raise TrajectoryError(
+            f"{what}: expected shape ({n_steps},) to match the {n_steps} actions, "
+            f"got shape {t.shape}"
+        )
+    _check_finite_vector(t, what=what)
+    dt = np.diff(t)
+    nonpos = np.flatnonzero(dt <= 0.0)
+    if nonpos.size:
+        i = int(nonpos[0])
+        raise TrajectoryError(
+            f"{what}: expected strictly increasing times, got t[{i}] = {float(t[i])!r} "
+            f"followed by t[{i + 1}] = {float(t[i + 1])!r} ({nonpos.size} non-increasing "
+            f"step(s) in total)"
+        )
+    median = float(np.median(dt))
+    off = np.flatnonzero(np.abs(dt - median) > _RATE_RTOL * median)
+    if off.size:
+        i = int(off[0])
+        raise TrajectoryError(
+            f"{what}: expected uniform spacing (within {_RATE_RTOL:.0%} of the "
+            f"median {median!r} s), got t[{i + 1}] - t[{i}] = {float(dt[i])!r} s "
+            f"({off.size} irregular step(s) in total); resample the trajectory "
+            f"to a fixed rate first"
+        )
+    return 1.0 / median
+
+
+# ---------------------------------------------------------------------------
+# Trajectory
+# ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class Trajectory:
+    """Joint-position targets at a fixed control rate.
+
+    All arrays are stored as read-only float64 copies.
+
+    Attributes:
+        actions: (T, na) joint-position targets in the scenario's action
+            convention (ALOHA: 14 values, joints [rad] and grippers normalised
+            0..1). T >= 2, all finite.
+        fps: control rate [Hz]; action ``i`` applies at time ``i / fps`` [s].
+        start: (na,) initial joint state in the action convention (e.g. ACT's
+            ``observations/qpos[0]``), or ``None`` when unknown.
+        qpos0: (nq,) full MuJoCo initial ``qpos`` when known, else ``None``.
+        object_pose: (7,) initial object pose, position [m] then unit
+            quaternion (w, x, y, z), or ``None``. The quaternion is normalised.
+        meta: JSON-serialisable metadata (format, file attributes, ...).
+        source: where the trajectory came from (a path or a description).
+    """
+
+    actions: np.ndarray
+    fps: float = DEFAULT_FPS
+    start: np.ndarray | None = None
+    qpos0: np.ndarray | None = None
+    object_pose: np.ndarray | None = None
+    meta: dict = field(default_factory=dict)
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        actions = _as_float_array(self.actions, what="actions", error=TrajectoryError)
+        if actions.ndim != 2:
+            raise TrajectoryError(
+                f"actions: expected a 2-D array of shape (T, na) (T time steps, "
+                f"na action channels), got {actions.ndim}-D array of shape "
+                f"{actions.shape}"
+            )
+        n_steps, n_channels = actions.shape
+        if n_steps < 2:
+            raise TrajectoryError(
+                f"actions: expected at least 2 time steps (T >= 2), got T = {n_steps}"
+            )
+        if n_channels < 1:
+            raise TrajectoryError(
+                f"actions: expected at least 1 action channel, got shape {actions.shape}"
+            )
+        bad = _first_nonfinite(actions)
+        if bad is not None:
+            n_bad = int(np.count_nonzero(~np.isfinite(actions)))
+            raise TrajectoryError(
+                f"actions: expected finite values, got {actions[bad]} at row "
+                f"(step) {bad[0]}, column (channel) {bad[1]} ({n_bad} non-finite "
+                f"value(s) in total)"
+            )
+        object.__setattr__(self, "actions", _read_only(actions))
+
+        object.__setattr__(
+            self, "fps", _as_rate(self.fps, what="fps", error=TrajectoryError)
+        )
+
+        if self.start is not None:
+            start = _as_float_array(self.start, what="start", error=TrajectoryError)
+            if start.shape != (n_channels,):
+                raise TrajectoryError(
+                    f"start: expected shape ({n_channels},) (one value per action "
+                    f"channel), got shape {start.shape}"
+                )
+            _check_finite_vector(start, what="start")
+            object.__setattr__(self, "start", _read_only(start))
+
+        if self.qpos0 is not None:
+            qpos0 = _as_float_array(self.qpos0, what="qpos0", error=TrajectoryError)
+            if qpos0.ndim != 1 or qpos0.size == 0:
+                raise TrajectoryError(
+                    f"qpos0: expected a non-empty 1-D array of shape (nq,), got "
+                    f"shape {qpos0.shape}"
+                )
+            _check_finite_vector(qpos0, what="qpos0")
+            object.__setattr__(self, "qpos0", _read_only(qpos0))
+
+        if self.object_pose is not None:
+            pose = _as_float_array(
+                self.object_pose, what="object_pose", error=TrajectoryError
+            )
+            if pose.shape != (7,):
+                raise TrajectoryError(
+                    f"object_pose: expected shape (7,) = xyz [m] + quaternion "
+                    f"(w, x, y, z), got shape {pose.shape}"
+                )
+            _check_finite_vector(pose, what="object_pose")
+            norm = float(np.linalg.norm(pose[3:]))
+            if norm < 1e-9:
+                raise TrajectoryError(
+                    f"object_pose: expected a non-zero quaternion (w, x, y, z) in "
+                    f"elements 3..6, got {pose[3:].tolist()} with norm {norm!r}"
+                )
+            if abs(norm - 1.0) > _QUAT_NORM_TOL:
+                pose[3:] /= norm
+            object.__setattr__(self, "object_pose", _read_only(pose))
+
+        object.__setattr__(self, "meta", _check_json(self.meta))
+        if not isinstance(self.source, str):
+            object.__setattr__(self, "source", os.fspath(self.source)
+                               if isinstance(self.source, os.PathLike)
+                               else str(self.source))
+
+    # -- derived quantities ------------------------------------------------
+
+    @property
+    def n_steps(self) -> int:
+        """Number of actions T."""
+        return int(self.actions.shape[0])
+
+    @property
+    def n_channels(self) -> int:
+        """Number of action channels na."""
+        return int(self.actions.shape[1])
+
+    @property
+    def duration(self) -> float:
+        """Duration T / fps [s] (the last action is held for one period)."""
+        return self.n_steps / self.fps
+
+    @property
+    def times(self) -> np.ndarray:
+        """(T,) time of each action, ``arange(T) / fps`` [s]."""
+        return np.arange(self.n_steps, dtype=np.float64) / self.fps
+
+    def upsample(self, physics_dt: float, **kwargs: Any) -> np.ndarray:
+        """Interpolates the actions to one control per physics step.
+
+        Shorthand for ``upsample(self, physics_dt=physics_dt, **kwargs)``; see
+        :func:`upsample`.
+
+        Args:
+            physics_dt: physics time step [s].
+            **kwargs: ``bounded``, ``lower``, ``upper`` as in :func:`upsample`.
+
+        Returns:
+            (n, na) controls, n = round(T / fps / physics_dt).
+        """
+        return upsample(self, physics_dt=physics_dt, **kwargs)
+
+    # -- dunder ------------------------------------------------------------
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Trajectory):
+            return NotImplemented
+        for f in fields(self):
+            a, b = getattr(self, f.name), getattr(other, f.name)
+            if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+                if a is None or b is None or not np.array_equal(a, b):
+                    return False
+            elif a != b:
+                return False
+        return True
+
+    __hash__ = None  # type: ignore[assignment]  # mutable meta, array fields
+
+    def __repr__(self) -> str:
+        extras = [
+            name for name in ("start", "qpos0", "object_pose")
+            if getattr(self, name) is not None
+        ]
+        return (
+            f"Trajectory(n_steps={self.n_steps}, n_channels={self.n_channels}, "
+            f"fps={self.fps:g}, duration={self.duration:g} s, "
+            f"with={extras}, source={self.source!r})"
+        )
+
+
+# ---------------------------------------------------------------------------
+# Readers and writer
+# ---------------------------------------------------------------------------
+
+
+def load_trajectory(
+    path: str | os.PathLike,
+    *,
+    fps: float | None = None,
+    episode: int | None = None,
+) -> Trajectory:
+    """Reads a trajectory from a file or a LeRobot dataset directory.
+
+    The format is chosen from the suffix (case-insensitive); a directory is
+    read as a LeRobot dataset.
+
+    Frame-rate resolution: a rate recorded in the file (npz ``fps`` / ``time``,
+    LeRobot ``meta/info.json`` / ``timestamp``) is authoritative, and an
+    ``fps`` argument that disagrees with it by more than 1 % is an error.
+    Where the file records no rate the ``fps`` argument is used, else
+    :data:`DEFAULT_FPS` (50 Hz; a warning is issued for LeRobot data).
+
+    Args:
+        path: file or dataset directory.
+        fps: control rate [Hz] to use or to check against the file.
+        episode: LeRobot only: the ``episode_index`` to read. Required when the
+            file or dataset holds more than one episode.
+
+    Returns:
+        The trajectory, with ``source`` set to ``str(path)``.
+
+    Raises:
+        InputFileError: the path does not exist, has an unsupported suffix, or
+            cannot be read as the format its suffix names.
+        TrajectoryError: the content is malformed (missing actions, wrong
+            shapes, NaN, irregular timing, unknown episode, ...).
+        ParameterError: ``fps`` is not a positive finite number, or
+            ``episode`` is given for a format without episodes.
+    """
+    p = Path(os.fspath(path))
+    if fps is not None:
+        fps = _as_rate(fps, what="fps argument", error=ParameterError)
+    if episode is not None and (
+        isinstance(episode, (bool, np.bool_)) or not isinstance(episode, (int, np.integer))
+    ):
+        raise ParameterError(
+            f"episode: expected an int episode_index or None, got "
+            f"{type(episode).__name__} {episode!r}"
+        )
+    if not p.exists():
+        raise InputFileError(
+            f"trajectory path {str(p)!r} does not exist; expected an existing "
+            f"file or directory: {_SUPPORTED_TEXT}"
+        )
+    if p.is_dir():
+        if (p / "meta" / "info.json").is_file():
+            return _load_lerobot_dir(p, fps=fps, episode=episode)
+        raise InputFileError(
+            f"trajectory path {str(p)!r} is a directory without meta/info.json; "
+            f"expected a LeRobot dataset directory or a file: {_SUPPORTED_TEXT}"
+        )
+    suffix = p.suffix.lower()
+    if suffix not in SUPPORTED_SUFFIXES:
+        raise InputFileError(
+            f"trajectory file {str(p)!r} has unsupported suffix {p.suffix!r}; "
+            f"supported: {_SUPPORTED_TEXT}"
+        )
+    if suffix == ".parquet":
+        return _load_lerobot_files([p], root=_find_lerobot_root(p), fps=fps,
+                                   episode=episode, source=str(p))
+    if episode is not None:
+        raise ParameterError(
+            f"episode: only LeRobot parquet data holds several episodes; got "
+            f"episode={episode!r} for a {suffix!r} file {str(p)!r}; pass "
+            f"episode=None"
+        )
+    if suffix == ".npz":
+        return _load_npz(p, fps=fps)
+    return _load_act_hdf5(p, fps=fps)
+
+
+def _scalar(value: np.ndarray, *, what: str) -> Any:
+    if value.shape != ():
+        raise TrajectoryError(f"{what}: expected a scalar, got shape {value.shape}")
+    return value.item()
+
+
+def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
+    # Open the file ourselves so that it is closed even when numpy fails
+    # half-way through parsing a corrupt archive.
+    try:
+        with open(path, "rb") as fh:
+            try:
+                archive = np.load(fh, allow_pickle=False)
+            except (ValueError, EOFError, zipfile.BadZipFile) as exc:
+                raise InputFileError(
+                    f"cannot read {str(path)!r} as an .npz archive (expected a zip "
+                    f"of .npy arrays written by numpy.savez / save_trajectory): {exc}"
+                ) from None
+            if not isinstance(archive, np.lib.npyio.NpzFile):
+                raise InputFileError(
+                    f"{str(path)!r} holds a single .npy array, expected an .npz "
+                    f"archive with at least the key 'actions'"
+                )
+            try:
+                with archive:
+                    data = {key: archive[key] for key in archive.files}
+            except (ValueError, EOFError, zipfile.BadZipFile, KeyError) as exc:
+                raise InputFileError(
+                    f"cannot read the arrays of .npz archive {str(path)!r} (corrupt "
+                    f"or pickled content; expected plain numeric arrays): {exc}"
+                ) from None
+    except InputFileError:
+        raise
+    except OSError as exc:  # InputFileError is an OSError too: handled above
+        raise InputFileError(
+            f"cannot open {str(path)!r} for reading (expected a readable .npz "
+            f"file): {exc}"
+        ) from None
+
+    unknown = sorted(set(data) - _NPZ_KEYS)
+    if unknown:
+        warnings.warn(
+            f"{str(path)!r}: ignoring unknown key(s) {unknown}; known keys are "
+            f"{sorted(_NPZ_KEYS)}",
+            UserWarning,
+            stacklevel=3,
+        )
+    if "actions" not in data:
+        raise TrajectoryError(
+            f"{str(path)!r}: expected key 'actions' with shape (T, na), found keys "
+            f"{sorted(data)}"
+        )
+    actions = data["actions"]
+    n_steps = actions.shape[0] if actions.ndim >= 1 else 0
+
+    file_fps = None
+    if "fps" in data:
+        file_fps = _as_rate(
+            _scalar(data["fps"], what=f"{path}: 'fps'"),
+            what=f"{str(path)!r}: 'fps'",
+            error=TrajectoryError,
+        )
+    if "time" in data:
+        time_fps = _fps_from_times(data["time"], n_steps, what=f"{str(path)!r}: 'time'")
+        if file_fps is not None and not _rates_agree(file_fps, time_fps):
+            raise TrajectoryError(
+                f"{str(path)!r}: 'fps' = {file_fps:g} Hz disagrees with the rate "
+                f"{time_fps:g} Hz implied by 'time' (expected agreement within "
+                f"{_RATE_RTOL:.0%})"
+            )
+        if file_fps is None:
+            file_fps = time_fps
+    if file_fps is not None:
+        if fps is not None and not _rates_agree(fps, file_fps):
+            raise TrajectoryError(
+                f"fps argument {fps:g} Hz disagrees with the rate {file_fps:g} Hz "
+                f"recorded in {str(path)!r} (expected agreement within "
+                f"{_RATE_RTOL:.0%}); omit fps= to use the file's rate"
+            )
+        rate = file_fps
+    elif fps is not None:
+        rate = fps
+    else:
+        logger.info("%s records no frame rate; assuming %g Hz", path, DEFAULT_FPS)
+        rate = DEFAULT_FPS
+
+    meta: dict = {}
+    if "meta" in data:
+        raw = data["meta"]
+        if raw.shape != () or raw.dtype.kind not in "US":
+            raise TrajectoryError(
+                f"{str(path)!r}: 'meta' expected a 0-d string array holding JSON, "
+                f"got {_describe_dtype(raw)} with shape {raw.shape}"
+            )
+        text = raw.item()
+        if isinstance(text, bytes):
+            text = text.decode("utf-8")
+        try:
+            meta = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise TrajectoryError(
+                f"{str(path)!r}: 'meta' expected a JSON object string, got text "
+                f"that is not valid JSON: {exc}"
+            ) from None
+        if not isinstance(meta, dict):
+            raise TrajectoryError(
+                f"{str(path)!r}: 'meta' expected a JSON object, got JSON "
+                f"{type(meta).__name__}"
+            )
+
+    return Trajectory(
+        actions=actions,
+        fps=rate,
+        start=data.get("start"),
+        qpos0=data.get("qpos0"),
+        object_pose=data.get("object_pose"),
+        meta=meta,
+        source=str(path),
+    )
+
+
+def save_trajectory(traj: Trajectory, path: str | os.PathLike) -> None:
+    """Writes a trajectory in critmoment's ``.npz`` schema.
+
+    Keys written: ``actions`` (T, na) float64; ``fps`` 0-d float64 [Hz];
+    ``start`` (na,), ``qpos0`` (nq,), ``object_pose`` (7,) when present; and
+    ``meta`` as a 0-d unicode array holding JSON. ``source`` is not stored (a
+    loaded trajectory's source is the path it was read from). Reading the file
+    back with :func:`load_trajectory` reproduces every array bit-exactly.
+
+    Args:
+        traj: the trajectory.
+        path: destination; must end in ``.npz``. Overwritten if it exists.
+
+    Raises:
+        ParameterError: ``traj`` is not a Trajectory or the suffix is not
+            ``.npz``.
+        InputFileError: the file cannot be written (e.g. missing directory).
+    """
+    if not isinstance(traj, Trajectory):
+        raise ParameterError(
+            f"traj: expected a Trajectory, got {type(traj).__name__}"
+        )
+    p = Path(os.fspath(path))
+    if p.suffix.lower() != ".npz":
+        raise ParameterError(
+            f"path: expected a file name ending in '.npz', got {str(p)!r}"
+        )
+    arrays: dict[str, np.ndarray] = {
+        "actions": np.asarray(traj.actions),
+        "fps": np.asarray(traj.fps, dtype=np.float64),
+        "meta": np.asarray(json.dumps(traj.meta, allow_nan=False)),
+    }
+    for name in ("start", "qpos0", "object_pose"):
+        value = getattr(traj, name)
+        if value is not None:
+            arrays[name] = np.asarray(value)
+    try:
+        with open(p, "wb") as fh:
+            np.savez_compressed(fh, **arrays)
+    except OSError as exc:
+        raise InputFileError(
+            f"cannot write trajectory to {str(p)!r} (expected a writable path in "
+            f"an existing directory): {exc}"
+        ) from None
+
+
+def _json_value(value: Any) -> Any:
+    """Converts an HDF5 attribute to a JSON-friendly Python value."""
+    if isinstance(value, bytes):
+        return value.decode("utf-8", errors="replace")
+    if isinstance(value, np.ndarray):
+        return _json_value(value.tolist())
+    if isinstance(value, (list, tuple)):
+        return [_json_value(v) for v in value]
+    if isinstance(value, np.generic):
+        value = value.item()
+    if isinstance(value, float) and not math.isfinite(value):
+        return repr(value)
+    if isinstance(value, (str, int, float, bool)) or value is None:
+        return value
+    return str(value)
+
+
+def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
+    import h5py  # local import: optional at module import time
+
+    try:
+        fh = h5py.File(path, "r")
+    except OSError as exc:
+        raise InputFileError(
+            f"cannot open {str(path)!r} as HDF5 (expected an ACT episode file with "
+            f"datasets /action and /observations/qpos): {exc}"
+        ) from None
+    with fh:
+        found: list[str] = []
+        fh.visititems(
+            lambda name, obj: found.append("/" + name)
+            if isinstance(obj, h5py.Dataset) else None
+        )
+        if "action" not in fh or not isinstance(fh["action"], h5py.Dataset):
+            raise TrajectoryError(
+                f"{str(path)!r}: expected dataset /action of shape (T, na) (ACT "
+                f"episode format), found datasets {sorted(found) or 'none'}"
+            )
+        actions = np.asarray(fh["action"][()])
+        qpos = None
+        if "observations/qpos" in fh and isinstance(fh["observations/qpos"], h5py.Dataset):
+            qpos = np.asarray(fh["observations/qpos"][()])
+        attrs = {str(k): _json_value(v) for k, v in fh.attrs.items()}
+
+    start = None
+    if qpos is None:
+        warnings.warn(
+            f"{str(path)!r}: no dataset /observations/qpos, so the start state is "
+            f"unknown (found datasets {sorted(found)})",
+            UserWarning,
+            stacklevel=3,
+        )
+    elif qpos.ndim != 2 or actions.ndim != 2 or qpos.shape[1] != actions.shape[1]:
+        warnings.warn(
+            f"{str(path)!r}: /observations/qpos has shape {qpos.shape}, expected "
+            f"(T, {actions.shape[-1] if actions.ndim else '?'}) in the action "
+            f"convention; start state left unknown",
+            UserWarning,
+            stacklevel=3,
+        )
+    elif qpos.shape[0] == 0:
+        warnings.warn(
+            f"{str(path)!r}: /observations/qpos is empty; start state left unknown",
+            UserWarning,
+            stacklevel=3,
+        )
+    else:
+        start = qpos[0]
+
+    if fps is None:
+        logger.info("%s: ACT episode without a rate; assuming %g Hz", path, DEFAULT_FPS)
+    meta = {"source_format": "act_hdf5"}
+    meta.update(attrs)
+    return Trajectory(
+        actions=actions,
+        fps=DEFAULT_FPS if fps is None else fps,
+        start=start,
+        meta=meta,
+        source=str(path),
+    )
+
+
+# -- LeRobot --------------------------------------------------------------
+
+
+def _find_lerobot_root(path: Path) -> Path | None:
+    """The nearest ancestor of ``path`` holding ``meta/info.json``."""
+    for parent in path.resolve().parents:
+        if (parent / "meta" / "info.json").is_file():
+            return parent
+    return None
+
+
+def _read_info(root: Path) -> dict:
+    info_path = root / "meta" / "info.json"
+    try:
+        info = json.loads(info_path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise InputFileError(
+            f"cannot read LeRobot metadata {str(info_path)!r} (expected a JSON "
+            f"object with at least 'fps'): {exc}"
+        ) from None
+    if not isinstance(info, dict):
+        raise InputFileError(
+            f"LeRobot metadata {str(info_path)!r}: expected a JSON object, got "
+            f"JSON {type(info).__name__}"
+        )
+    return info
+
+
+def _load_lerobot_dir(root: Path, *, fps: float | None, episode: int | None) -> Trajectory:
+    files = sorted((root / "data").rglob("*.parquet")) if (root / "data").is_dir() else []
+    if not files:
+        raise InputFileError(
+            f"LeRobot dataset {str(root)!r}: expected episode parquet files under "
+            f"{str(root / 'data')!r} (e.g. data/chunk-000/episode_000000.parquet), "
+            f"found none"
+        )
+    return _load_lerobot_files(files, root=root, fps=fps, episode=episode, source=str(root))
+
+
+def _format_indices(indices: Sequence[int], limit: int = 20) -> str:
+    shown = ", ".join(str(i) for i in indices[:limit])
+    if len(indices) > limit:
+        shown += f", ... ({len(indices)} in total)"
+    return f"[{shown}]"
+
+
+def _list_column_to_array(column: Any, *, what: str) -> np.ndarray:
+    """(T, width) float64 from a pyarrow list / fixed-size-list / numeric column."""
+    import pyarrow as pa
+    import pyarrow.compute as pc
+
+    arr = column.combine_chunks() if isinstance(column, pa.ChunkedArray) else column
+    if arr.null_count:
+        first = int(np.flatnonzero(np.asarray(arr.is_null()))[0])
+        raise TrajectoryError(f"{what}: expected a value in every row, got null at row {first}")
+    n = len(arr)
+    typ = arr.type
+    if pa.types.is_list(typ) or pa.types.is_large_list(typ) or pa.types.is_fixed_size_list(typ):
+        lengths = np.asarray(pc.list_value_length(arr), dtype=np.int64)
+        if n and np.any(lengths != lengths[0]):
+            bad = int(np.flatnonzero(lengths != lengths[0])[0])
+            raise TrajectoryError(
+                f"{what}: expected a fixed length per row, got {lengths[0]} values in "
+                f"row 0 but {lengths[bad]} in row {bad}"
+            )
+        width = int(lengths[0]) if n else 0
+        values = arr.flatten()
+        if not (pa.types.is_integer(values.type) or pa.types.is_floating(values.type)):
+            raise TrajectoryError(
+                f"{what}: expected lists of numbers, got element type {values.type}"
+            )
+        if values.null_count:
+            raise TrajectoryError(f"{what}: expected numbers in every list, got nulls")
+        flat = values.to_numpy(zero_copy_only=False).astype(np.float64)
+        return flat.reshape(n, width)
+    if pa.types.is_integer(typ) or pa.types.is_floating(typ):
+        return arr.to_numpy(zero_copy_only=False).astype(np.float64).reshape(n, 1)
+    raise TrajectoryError(
+        f"{what}: expected a list<float> column (one fixed-length vector per row) "
+        f"or a numeric column, got type {typ}"
+    )
+
+
+def _load_lerobot_files(
+    files: Sequence[Path],
+    *,
+    root: Path | None,
+    fps: float | None,
+    episode: int | None,
+    source: str,
+) -> Trajectory:
+    import pyarrow as pa
+    import pyarrow.compute as pc
+    import pyarrow.parquet as pq
+
+    # Pass 1: which episodes live in which file (reads one column only).
+    schemas = {}
+    where: dict[int, list[Path]] = {}
+    whole_file_episode: list[Path] = []
+    for f in files:
+        try:
+            schema = pq.read_schema(f)
+            schemas[f] = schema
+            if "episode_index" in schema.names:
+                col = pq.read_table(f, columns=["episode_index"]).column("episode_index")
+                for idx in np.unique(col.to_numpy()):
+                    where.setdefault(int(idx), []).append(f)
+            else:
+                whole_file_episode.append(f)
+        except (OSError, pa.ArrowException) as exc:
+            raise InputFileError(
+                f"cannot read {str(f)!r} as parquet (expected a LeRobot episode "
+                f"file with an 'action' column): {exc}"
+            ) from None
+
+    if whole_file_episode:
+        if len(files) > 1:
+            raise TrajectoryError(
+                f"LeRobot data {source!r}: expected an 'episode_index' column in "
+                f"every parquet file of a dataset, missing in "
+                f"{[str(f) for f in whole_file_episode[:5]]}"
+            )
+        if episode is not None:
+            raise TrajectoryError(
+                f"{source!r} has no 'episode_index' column, so it holds a single "
+                f"episode; got episode={episode}; pass episode=None"
+            )
+        chosen_file, ep = files[0], None
+    else:
+        available = sorted(where)
+        if not available:
+            raise TrajectoryError(f"LeRobot data {source!r}: expected rows, found none")
+        if episode is None:
+            if len(available) > 1:
+                raise TrajectoryError(
+                    f"LeRobot data {source!r} holds {len(available)} episodes, "
+                    f"which one is ambiguous; pass episode= one of "
+                    f"{_format_indices(available)}"
+                )
+            ep = available[0]
+        else:
+            ep = int(episode)
+            if ep not in where:
+                raise TrajectoryError(
+                    f"LeRobot data {source!r}: episode {ep} not found; available "
+                    f"episode indices: {_format_indices(available)}"
+                )
+        if len(where[ep]) > 1:
+            raise TrajectoryError(
+                f"LeRobot data {source!r}: expected episode {ep} in one parquet "
+                f"file, found it in {[str(f) for f in where[ep]]}"
+            )
+        chosen_file = where[ep][0]
+
+    schema = schemas[chosen_file]
+    if "action" not in schema.names:
+        raise TrajectoryError(
+            f"{str(chosen_file)!r}: expected a column 'action' (one fixed-length "
+            f"vector per row), found columns {schema.names}"
+        )
+    wanted = [c for c in ("action", "episode_index", "frame_index", "timestamp",
+                          "observation.state") if c in schema.names]
+    try:
+        table = pq.read_table(chosen_file, columns=wanted)
+    except (OSError, pa.ArrowException) as exc:
+        raise InputFileError(f"cannot read {str(chosen_file)!r} as parquet: {exc}") from None
+    if ep is not None:
+        table = table.filter(pc.equal(table.column("episode_index"), ep))
+    if "frame_index" in table.column_names:
+        frame = table.column("frame_index").to_numpy()
+        order = np.argsort(frame, kind="stable")
+        sorted_frames = frame[order]
+        dup = np.flatnonzero(np.diff(sorted_frames) == 0)
+        if dup.size:
+            raise TrajectoryError(
+                f"{str(chosen_file)!r} episode {ep}: expected unique frame_index "
+                f"values, got frame {int(sorted_frames[dup[0]])} more than once"
+            )
+        if not np.array_equal(order, np.arange(len(order))):
+            table = table.take(pa.array(order))
+
+    ep_text = "" if ep is None else f" episode {ep}"
+    actions = _list_column_to_array(
+        table.column("action"), what=f"{str(chosen_file)!r}{ep_text} column 'action'"
+    )
+
+    info = _read_info(root) if root is not None else {}
+    info_fps = None
+    if "fps" in info:
+        info_fps = _as_rate(info["fps"], what=f"{str(root)}/meta/info.json 'fps'",
+                            error=TrajectoryError)
+    time_fps = None
+    if "timestamp" in table.column_names:
+        time_fps = _fps_from_times(
+            table.column("timestamp").to_numpy(), actions.shape[0],
+            what=f"{str(chosen_file)!r}{ep_text} column 'timestamp'",
+        )
+        if info_fps is not None and not _rates_agree(info_fps, time_fps):
+            raise TrajectoryError(
+                f"LeRobot data {source!r}{ep_text}: meta/info.json fps = "
+                f"{info_fps:g} Hz disagrees with the rate {time_fps:g} Hz implied "
+                f"by 'timestamp' (expected agreement within {_RATE_RTOL:.0%})"
+            )
+    recorded = info_fps if info_fps is not None else time_fps
+    if recorded is not None:
+        if fps is not None and not _rates_agree(fps, recorded):
+            raise TrajectoryError(
+                f"fps argument {fps:g} Hz disagrees with the rate {recorded:g} Hz "
+                f"recorded in LeRobot data {source!r} (expected agreement within "
+                f"{_RATE_RTOL:.0%}); omit fps= to use the recorded rate"
+            )
+        rate = recorded
+    elif fps is not None:
+        rate = fps
+    else:
+        warnings.warn(
+            f"LeRobot data {source!r}: no meta/info.json 'fps' and no 'timestamp' "
+            f"column found, and no fps= given; assuming {DEFAULT_FPS:g} Hz",
+            UserWarning,
+            stacklevel=3,
+        )
+        rate = DEFAULT_FPS
+
+    start = None
+    if "observation.state" in table.column_names and table.num_rows:
+        state = _list_column_to_array(
+            table.column("observation.state").slice(0, 1),
+            what=f"{str(chosen_file)!r}{ep_text} column 'observation.state'",
+        )[0]
+        if actions.ndim == 2 and state.shape == (actions.shape[1],):
+            start = state
+        else:
+            warnings.warn(
+                f"{str(chosen_file)!r}{ep_text}: 'observation.state' has "
+                f"{state.shape[0]} values, expected {actions.shape[1]} to match "
+                f"'action'; start state left unknown",
+                UserWarning,
+                stacklevel=3,
+            )
+
+    meta: dict = {"source_format": "lerobot", "file": str(chosen_file)}
+    if ep is not None:
+        meta["episode_index"] = ep
+    for key in ("codebase_version", "robot_type"):
+        if key in info:
+            meta[key] = _json_value(info[key])
+    return Trajectory(actions=actions, fps=rate, start=start, meta=meta, source=source)
+
+
+# ---------------------------------------------------------------------------
+# Range checking
+# ---------------------------------------------------------------------------
+
+
+class RangePolicy(enum.Enum):
+    """What :func:`check_ranges` does with out-of-range values."""
+
+    ERROR = "error"
+    """Raise :class:`TrajectoryError` on the first offending value."""
+    CLIP = "clip"
+    """Clip to the bounds and warn how many values were clipped per channel."""
+    WARN = "warn"
+    """Warn and return the input unchanged."""
+
+
+def _as_policy(policy: Any) -> RangePolicy:
+    if isinstance(policy, RangePolicy):
+        return policy
+    if isinstance(policy, str):
+        for member in RangePolicy:
+            if policy.lower() in (member.value, member.name.lower()):
+                return member
+    raise ParameterError(
+        f"policy: expected a RangePolicy, got {policy!r}; valid options are "
+        f"{[m.name for m in RangePolicy]}"
+    )
+
+
+def _bounds(
+    lower: Any, upper: Any, n_channels: int
+) -> tuple[np.ndarray, np.ndarray]:
+    """Validated (na,) bounds; ``None`` means unbounded on that side."""
+    out = []
+    for name, value, fill in (("lower", lower, -np.inf), ("upper", upper, np.inf)):
+        if value is None:
+            out.append(np.full(n_channels, fill))
+            continue
+        arr = _as_float_array(value, what=name, error=ParameterError)
+        if arr.shape != (n_channels,):
+            raise ParameterError(
+                f"{name}: expected shape ({n_channels},) (one bound per action "
+                f"channel), got shape {arr.shape}"
+            )
+        if np.isnan(arr).any():
+            i = int(np.flatnonzero(np.isnan(arr))[0])
+            raise ParameterError(
+                f"{name}: expected numbers or +/-inf, got NaN for channel {i}"
+            )
+        out.append(arr)
+    lo, hi = out
+    if np.any(lo > hi):
+        i = int(np.flatnonzero(lo > hi)[0])
+        raise ParameterError(
+            f"bounds: expected lower <= upper, got lower[{i}] = {float(lo[i])!r} > "
+            f"upper[{i}] = {float(hi[i])!r}"
+        )
+    return lo, hi
+
+
+def _channel_labels(names: Sequence[str] | None, n_channels: int) -> list[str]:
+    if names is None:
+        return [f"channel {i}" for i in range(n_channels)]
+    if isinstance(names, str) or len(names) != n_channels:
+        got = "a single str" if isinstance(names, str) else f"{len(names)} names"
+        raise ParameterError(
+            f"names: expected a sequence of {n_channels} channel names, got {got}"
+        )
+    return [f"channel {str(n)!r} (index {i})" for i, n in enumerate(names)]
+
+
+def _actions_of(obj: Any) -> np.ndarray:
+    if isinstance(obj, Trajectory):
+        return obj.actions
+    actions = _as_float_array(obj, what="actions", error=TrajectoryError)
+    if actions.ndim != 2:
+        raise TrajectoryError(
+            f"actions: expected a Trajectory or a 2-D array of shape (T, na), got "
+            f"{actions.ndim}-D array of shape {actions.shape}"
+        )
+    bad = _first_nonfinite(actions)
+    if bad is not None:
+        raise TrajectoryError(
+            f"actions: expected finite values, got {actions[bad]} at row (step) "
+            f"{bad[0]}, column (channel) {bad[1]}"
+        )
+    return actions
+
+
+def check_ranges(
+    traj_or_actions: Trajectory | np.ndarray,
+    lower: Any,
+    upper: Any,
+    *,
+    policy: RangePolicy | str = RangePolicy.ERROR,
+    tolerance: float = 1e-6,
+    names: Sequence[str] | None = None,
+) -> Trajectory | np.ndarray:
+    """Checks every action against per-channel bounds.
+
+    A value violates its range when ``value < lower - tolerance`` or
+    ``value > upper + tolerance``. The policy decides what happens then; it is
+    never silent:
+
+    * ``ERROR``: raise, naming the channel, the first offending step (earliest
+      in time), its value and the range.
+    * ``CLIP``: return a copy with every value outside ``[lower, upper]``
+      clipped (values within the tolerance included, so the result is exactly
+      in range) and issue one :class:`UserWarning` giving the number of
+      clipped values per channel. When only within-tolerance values needed
+      clipping, no warning is issued and the count is logged at INFO level.
+    * ``WARN``: issue one warning with the same summary; return the input.
+
+    Args:
+        traj_or_actions: a Trajectory, or a (T, na) array of actions.
+        lower: (na,) lower bounds (``-inf`` or ``None`` for unbounded).
+        upper: (na,) upper bounds (``+inf`` or ``None`` for unbounded).
+        policy: a :class:`RangePolicy` (or its name, case-insensitive).
+        tolerance: slack beyond the bounds that is not a violation [same
+            units as the channel]; finite and >= 0.
+        names: optional (na,) channel names for messages.
+
+    Returns:
+        The same type as given. With ``CLIP`` and out-of-range values, a new
+        Trajectory (other fields kept) or a new array; otherwise the input.
+
+    Raises:
+        TrajectoryError: ``ERROR`` policy and a value out of range, or the
+            actions are malformed.
+        ParameterError: bad bounds, policy, tolerance or names.
+    """
+    pol = _as_policy(policy)
+    actions = _actions_of(traj_or_actions)
+    n_steps, n_channels = actions.shape
+    lo, hi = _bounds(lower, upper, n_channels)
+    labels = _channel_labels(names, n_channels)
+    try:
+        tol = float(tolerance)
+    except (TypeError, ValueError):
+        tol = float("nan")
+    if not math.isfinite(tol) or tol < 0:
+        raise ParameterError(
+            f"tolerance: expected a finite number >= 0, got {tolerance!r}"
+        )
+
+    violating = (actions < lo - tol) | (actions > hi + tol)
+    outside = (actions < lo) | (actions > hi)
+
+    def summary() -> str:
+        counts = np.count_nonzero(violating, axis=0)
+        parts = []
+        for j in np.flatnonzero(counts):
+            col = actions[:, j]
+            excess = max(float(np.max(lo[j] - col)), float(np.max(col - hi[j])))
+            parts.append(
+                f"{labels[j]}: {int(counts[j])} of {n_steps} values outside "
+                f"[{lo[j]:g}, {hi[j]:g}] (worst by {excess:.3g})"
+            )
+        return "; ".join(parts)
+
+    if violating.any():
+        if pol is RangePolicy.ERROR:
+            steps, chans = np.nonzero(violating)  # row-major: earliest step first
+            i, j = int(steps[0]), int(chans[0])
+            raise TrajectoryError(
+                f"{labels[j]} out of range at step {i}: value {float(actions[i, j])!r} "
+                f"outside [{float(lo[j])!r}, {float(hi[j])!r}] (tolerance {tol:g}); "
+                f"{int(np.count_nonzero(violating))} violating value(s) in total: "
+                f"{summary()}. Valid policies: "
+                f"{[m.name for m in RangePolicy]}"
+            )
+        if pol is RangePolicy.WARN:
+            warnings.warn(
+                f"actions out of range (tolerance {tol:g}), kept unchanged: {summary()}",
+                UserWarning,
+                stacklevel=2,
+            )
+            return traj_or_actions
+
+    if pol is RangePolicy.CLIP and outside.any():
+        clipped = np.clip(actions, lo, hi)
+        per_channel = np.count_nonzero(outside, axis=0)
+        detail = ", ".join(
+            f"{labels[j]}: {int(per_channel[j])}" for j in np.flatnonzero(per_channel)
+        )
+        if violating.any():
+            warnings.warn(
+                f"clipped {int(per_channel.sum())} action value(s) to their range "
+                f"(per channel: {detail}); beyond tolerance {tol:g}: {summary()}",
+                UserWarning,
+                stacklevel=2,
+            )
+        else:
+            logger.info(
+                "clipped %d action value(s) lying within tolerance %g of their "
+                "bounds (per channel: %s)", int(per_channel.sum()), tol, detail,
+            )
+        if isinstance(traj_or_actions, Trajectory):
+            return replace(traj_or_actions, actions=clipped)
+        return clipped
+    return traj_or_actions
+
+
+# ---------------------------------------------------------------------------
+# Upsampling
+# ---------------------------------------------------------------------------
+
+
+def upsample(
+    actions: Trajectory | np.ndarray,
+    *,
+    fps: float | None = None,
+    physics_dt: float,
+    bounded: Any = None,
+    lower: Any = None,
+    upper: Any = None,
+) -> np.ndarray:
+    """Interpolates control-rate actions to one control per physics step.
+
+    Action ``i`` sits at time ``i / fps``; the control for physics step ``k``
+    is the interpolant at time ``k * physics_dt``. After the last action's
+    time, the last action is held. Physics steps that fall on a sample time
+    (within 1e-9 of a control period) get the sample exactly.
+
+    * Unflagged channels (joints) use a cubic spline with not-a-knot ends: C2,
+      reproduces cubic polynomials exactly, and imposes no end velocity or
+      acceleration we do not know (a "natural" spline would force zero end
+      acceleration, a clamped one needs end velocities).
+    * Channels flagged in ``bounded`` (e.g. grippers) use PCHIP, a
+      shape-preserving monotone cubic that never leaves the range of its
+      neighbouring samples, so a 0 -> 1 step stays in [0, 1] and monotone.
+
+    When ``lower``/``upper`` are given, any result outside them (spline
+    overshoot past a joint limit, or samples already out of range) is clipped
+    to the bound and one :class:`UserWarning` reports the count per channel.
+
+    Args:
+        actions: (T, na) actions, or a Trajectory (then ``fps`` defaults to
+            its rate and must agree with it if given).
+        fps: control rate [Hz]; required for an array.
+        physics_dt: physics time step [s]; 0 < physics_dt <= 1 / fps.
+        bounded: optional (na,) bool mask of channels interpolated with PCHIP.
+        lower: optional (na,) lower bounds (``None``: unbounded).
+        upper: optional (na,) upper bounds (``None``: unbounded).
+
+    Returns:
+        (n, na) float64 controls, n = round(T / fps / physics_dt).
+
+    Raises:
+        ParameterError: bad fps, physics_dt, mask or bounds.
+        TrajectoryError: malformed actions (not 2-D, T < 2, non-finite).
+    """
+    if isinstance(actions, Trajectory):
+        rate = actions.fps
+        if fps is not None:
+            given = _as_rate(fps, what="fps", error=ParameterError)
+            if given != rate:
+                raise ParameterError(
+                    f"fps: expected None or the trajectory's rate {rate:g} Hz, "
+                    f"got {given:g} Hz"
+                )
+        a = actions.actions
+    else:
+        if fps is None:
+            raise ParameterError(
+                "fps: expected the control rate [Hz] when actions is an array, "
+                "got None (pass fps= or a Trajectory)"
+            )
+        rate = _as_rate(fps, what="fps", error=ParameterError)
+        a = _actions_of(actions)
+    n_steps, n_channels = a.shape
+    if n_steps < 2:
+        raise TrajectoryError(
+            f"actions: expected at least 2 time steps to interpolate, got {n_steps}"
+        )
+
+    if isinstance(physics_dt, (bool, np.bool_)):
+        dt = float("nan")
+    else:
+        try:
+            dt = float(physics_dt)
+        except (TypeError, ValueError):
+            dt = float("nan")
+    period = 1.0 / rate
+    if not math.isfinite(dt) or dt <= 0.0 or dt * rate > 1.0 + 1e-9:
+        raise ParameterError(
+            f"physics_dt: expected a finite time step with 0 < physics_dt <= "
+            f"1 / fps = {period!r} s, got {physics_dt!r}"
+        )
+
+    if bounded is None:
+        mask = np.zeros(n_channels, dtype=bool)
+    else:
+        mask = np.asarray(bounded)
+        if mask.dtype != np.bool_ or mask.shape != (n_channels,):
+            raise ParameterError(
+                f"bounded: expected a bool mask of shape ({n_channels},), got "
+                f"{_describe_dtype(mask)} with shape {mask.shape}"
+            )
+    lo, hi = _bounds(lower, upper, n_channels)
+
+    n_out = int(round(n_steps / rate / dt))
+    # Physics-step times expressed in sample-index units (s = t * fps), so the
+    # knots are the integers 0..T-1 and exact hits are easy to recognise.
+    s = np.arange(n_out, dtype=np.float64) * (dt * rate)
+    s = np.minimum(s, float(n_steps - 1))  # hold the last action
+    nearest = np.rint(s)
+    on_sample = np.abs(s - nearest) <= _SNAP_TOL
+    s[on_sample] = nearest[on_sample]
+
+    knots = np.arange(n_steps, dtype=np.float64)
+    out = np.empty((n_out, n_channels), dtype=np.float64)
+    smooth = ~mask
+    if smooth.any():
+        spline = CubicSpline(knots, a[:, smooth], axis=0, bc_type="not-a-knot")
+        out[:, smooth] = spline(s)
+    if mask.any():
+        pchip = PchipInterpolator(knots, a[:, mask], axis=0, extrapolate=False)
+        out[:, mask] = pchip(s)
+    out[on_sample] = a[nearest[on_sample].astype(np.intp)]
+
+    below, above = out < lo, out > hi
+    outside = below | above
+    if outside.any():
+        per_channel = np.count_nonzero(outside, axis=0)
+        samples_out = np.count_nonzero((a < lo) | (a > hi), axis=0)
+        parts = []
+        for j in np.flatnonzero(per_channel):
+            worst = max(float(np.max(lo[j] - out[:, j])), float(np.max(out[:, j] - hi[j])))
+            kind = "PCHIP" if mask[j] else "cubic spline"
+            note = (
+                f", {int(samples_out[j])} input sample(s) already out of range"
+                if samples_out[j] else ""
+            )
+            parts.append(
+                f"channel {j} ({kind}): {int(per_channel[j])} step(s), worst by "
+                f"{worst:.3g}{note}"
+            )
+        np.clip(out, lo, hi, out=out)
+        warnings.warn(
+            f"upsampled controls left [lower, upper] and were clipped to it in "
+            f"{int(per_channel.sum())} of {out.size} values: " + "; ".join(parts),
+            UserWarning,
+            stacklevel=2,
+        )
+    return out

@@ -1,0 +1,341 @@
+"""The digital twin: a scenario's MuJoCo model with critmoment's sensors.
+
+:class:`Twin` compiles the scenario's MJCF through ``mujoco.MjSpec`` and adds
+the sensors every safety signal is read from, so that a plain ``MjData``, a
+``mujoco.batch.Batch`` and ``mujoco.rollout`` all deliver the signals as
+``sensordata``:
+
+* a ``contact`` sensor (data = found, force) per object/gripper-geom pair with
+  :data:`CONTACT_SLOTS` slots, and one per object/support-geom pair;
+* ``framelinacc`` of the object body (MuJoCo reports it with gravity removed
+  like an accelerometer; :meth:`Twin.signals` adds gravity back);
+* ``actuatorfrc`` of every actuator.
+
+The twin keeps the immutable nominal model apart from mutable data, maps
+action vectors to controls, and writes uncertain parameters into a model or a
+batch in exactly one way (:meth:`Twin.write_parameters`).
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+import types
+from typing import Mapping
+
+import mujoco
+import numpy as np
+
+from critmoment import safety
+from critmoment.exceptions import ParameterError, ScenarioError, TrajectoryError
+from critmoment.scenario import Scenario
+
+__all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "Twin"]
+
+#: contact slots read per object/geom pair; MuJoCo's box-box collider makes at most 8
+CONTACT_SLOTS = 8
+#: the state saved in recordings: enough to restore a step bit-exactly (warmstart included)
+STATE_SPEC = mujoco.mjtState.mjSTATE_INTEGRATION
+
+
+@dataclasses.dataclass(frozen=True)
+class Signals:
+    """Safety signals, each with the same leading shape (...) (time, samples or both).
+
+    Attributes:
+        object_acc: object's linear acceleration in the world frame [m/s²], (..., 3).
+        actuator_force: actuator forces [N·m or N], (..., nu).
+        actuator_norm: actuator_force / force limit, (..., nu).
+        fos_contact: contact FOS per gripper, (..., G); +inf without contact.
+        fos_motor: motor FOS over rotational actuators, (...).
+        motor_argmax: index (into the actuators) of the limiting actuator, (...).
+        cost: cost (eq. 15) with the minimum contact FOS over grippers, (...).
+        contact_support: object touches the support, (...) bool.
+        contact_gripper: object touches gripper g, (..., G) bool.
+        stage: task stage 0..4, (...) int8.
+    """
+
+    object_acc: np.ndarray
+    actuator_force: np.ndarray
+    actuator_norm: np.ndarray
+    fos_contact: np.ndarray
+    fos_motor: np.ndarray
+    motor_argmax: np.ndarray
+    cost: np.ndarray
+    contact_support: np.ndarray
+    contact_gripper: np.ndarray
+    stage: np.ndarray
+
+
+def _sensor_name(*parts: str) -> str:
+    return "critmoment:" + ":".join(parts)
+
+
+class Twin:
+    """A scenario bound to its compiled model.
+
+    Args:
+        scenario: the validated scenario.
+
+    Attributes:
+        scenario: the scenario.
+        model: the compiled model with sensors, nominal parameters applied. Treat as
+            read-only; use :meth:`copy_model` for a model to modify.
+    """
+
+    def __init__(self, scenario: Scenario):
+        self.scenario = scenario
+        spec = mujoco.MjSpec.from_file(str(scenario.mjcf))
+        self._add_sensors(spec)
+        try:
+            model = spec.compile()
+        except ValueError as exc:
+            raise ScenarioError(f"could not compile {scenario.mjcf} with sensors: {exc}") from exc
+        self.model = model
+        scenario.validate_names(model)
+        self._index(model)
+        self._param_ids = [p.resolve(model) for p in scenario.box.parameters]
+        # parameters scale from the MJCF's own values, whatever nominal values are applied
+        self._original = types.SimpleNamespace(
+            **{f: getattr(model, f).copy() for f in self.parameter_fields()})
+        self.write_parameters(model, scenario.box.nominal[None, :])
+
+    # -- construction ---------------------------------------------------------
+    def _add_sensors(self, spec: mujoco.MjSpec) -> None:
+        sc = self.scenario
+        found_force = (1 << int(mujoco.mjtConDataField.mjCONDATA_FOUND)) | (
+            1 << int(mujoco.mjtConDataField.mjCONDATA_FORCE))
+        found = 1 << int(mujoco.mjtConDataField.mjCONDATA_FOUND)
+
+        def contact(name, geom, num, data):
+            s = spec.add_sensor()
+            s.name = name
+            s.type = mujoco.mjtSensor.mjSENS_CONTACT
+            s.objtype = mujoco.mjtObj.mjOBJ_GEOM
+            s.objname = sc.object_geom
+            s.reftype = mujoco.mjtObj.mjOBJ_GEOM
+            s.refname = geom
+            s.intprm = [data, 0, num]
+
+        for g in sc.grippers:
+            for geom in g.geoms:
+                contact(_sensor_name("grip", g.name, geom), geom, CONTACT_SLOTS, found_force)
+        for geom in sc.support_geoms:
+            contact(_sensor_name("support", geom), geom, 1, found)
+        s = spec.add_sensor()
+        s.name = _sensor_name("object_acc")
+        s.type = mujoco.mjtSensor.mjSENS_FRAMELINACC
+        s.objtype = mujoco.mjtObj.mjOBJ_BODY
+        s.objname = sc.object_body
+        for act in spec.actuators:
+            s = spec.add_sensor()
+            s.name = _sensor_name("force", act.name)
+            s.type = mujoco.mjtSensor.mjSENS_ACTUATORFRC
+            s.objtype = mujoco.mjtObj.mjOBJ_ACTUATOR
+            s.objname = act.name
+
+    def _index(self, model: mujoco.MjModel) -> None:
+        sc = self.scenario
+
+        def adr(name):
+            sid = model.sensor(name).id
+            return int(model.sensor_adr[sid]), int(model.sensor_dim[sid])
+
+        self._grip_adr = []
+        for g in sc.grippers:
+            blocks = []
+            for geom in g.geoms:
+                a, dim = adr(_sensor_name("grip", g.name, geom))
+                blocks.append(np.arange(a, a + dim))
+            self._grip_adr.append(np.concatenate(blocks))
+        self._support_adr = np.array([adr(_sensor_name("support", geom))[0]
+                                      for geom in sc.support_geoms])
+        a, _ = adr(_sensor_name("object_acc"))
+        self._acc_adr = np.arange(a, a + 3)
+        self._force_adr = np.array([adr(_sensor_name("force", model.actuator(i).name))[0]
+                                    for i in range(model.nu)])
+        self.object_body_id = model.body(sc.object_body).id
+        self.object_geom_id = model.geom(sc.object_geom).id
+        self.object_qposadr = int(model.jnt_qposadr[model.body_jntadr[self.object_body_id]])
+        self.limits = np.array([sc.limits[model.actuator(i).name] for i in range(model.nu)])
+        # actuators on rotational joints enter the motor FOS (eq. 13-14)
+        trn_joint = model.actuator_trnid[:, 0]
+        self.rotational = np.array([
+            model.actuator_trntype[i] == mujoco.mjtTrn.mjTRN_JOINT
+            and model.jnt_type[trn_joint[i]] == mujoco.mjtJoint.mjJNT_HINGE
+            for i in range(model.nu)])
+        if not self.rotational.any():
+            raise ScenarioError("expected at least one actuator on a hinge joint, found none")
+        self.actuator_names = tuple(model.actuator(i).name for i in range(model.nu))
+        names = sc.gripper_names
+        self._picker = names.index(sc.picker)
+        self._receiver = names.index(sc.receiver)
+        # action channels -> actuators
+        conv = sc.actions
+        self._chan_act = [np.array([model.actuator(a).id for a in ch]) for ch in conv.channels]
+        lower, upper = np.empty(conv.width), np.empty(conv.width)
+        for c, acts in enumerate(self._chan_act):
+            if conv.normalised[c]:
+                lower[c], upper[c] = 0.0, 1.0
+                continue
+            joint = model.actuator_trnid[acts[0], 0]
+            if model.jnt_limited[joint]:
+                lo, hi = model.jnt_range[joint]
+                s, o = conv.scales[c][0], conv.offsets[c][0]
+                lower[c], upper[c] = sorted(((lo - o) / s, (hi - o) / s))
+            else:
+                lower[c], upper[c] = -np.inf, np.inf
+        self.channel_lower, self.channel_upper = lower, upper
+        self.channel_normalised = np.array(conv.normalised)
+
+    # -- parameters ---------------------------------------------------------------
+    def copy_model(self) -> mujoco.MjModel:
+        """A private copy of the nominal model, to modify."""
+        return copy.copy(self.model)
+
+    def parameter_fields(self) -> tuple[str, ...]:
+        """MjModel fields the uncertainty box writes."""
+        fields: list[str] = []
+        for p in self.scenario.box.parameters:
+            fields.extend(f for f in p.fields if f not in fields)
+        return tuple(fields)
+
+    def write_parameters(self, target, samples: np.ndarray, arrays: Mapping[str, np.ndarray] | None = None) -> None:
+        """Write parameter samples into a model (n = 1) or into per-simulation arrays.
+
+        Args:
+            target: an ``MjModel`` to modify in place (samples (1, k)), or a
+                ``mujoco.batch.Batch`` (samples (nsim, k)); its fields are expanded.
+            samples: parameter values, (n, k) in the box's column order.
+            arrays: optional per-simulation arrays already expanded from ``target``.
+        """
+        box = self.scenario.box
+        samples = box.check_samples(samples)
+        if isinstance(target, mujoco.MjModel):
+            if samples.shape[0] != 1:
+                raise ParameterError(f"a single model takes samples of shape (1, k), got {samples.shape}")
+            arrays = {f: getattr(target, f)[None] for f in self.parameter_fields()}
+        elif arrays is None:
+            arrays = {f: target.expand(f) for f in self.parameter_fields()}
+        for j, p in enumerate(box.parameters):
+            p.write(self._param_ids[j], self._original, arrays, samples[:, j])
+        if any(p.needs_set_const for p in box.parameters):
+            if isinstance(target, mujoco.MjModel):
+                mujoco.mj_setConst(target, mujoco.MjData(target))
+            else:
+                target.set_const()
+
+    def object_friction(self, model: mujoco.MjModel | None = None) -> float:
+        """Sliding friction of the object's contacts (the object geom has priority)."""
+        return float((model or self.model).geom_friction[self.object_geom_id, 0])
+
+    # -- actions and state ------------------------------------------------------------
+    def controls(self, actions: np.ndarray) -> np.ndarray:
+        """Map action vectors (..., na) to actuator controls (..., nu), clamped to ctrlrange."""
+        actions = np.asarray(actions, dtype=np.float64)
+        conv = self.scenario.actions
+        if actions.shape[-1] != conv.width:
+            raise TrajectoryError(
+                f"expected actions with {conv.width} values per step ({conv.name}: "
+                f"{', '.join(conv.labels)}), got {actions.shape[-1]}")
+        ctrl = np.zeros(actions.shape[:-1] + (self.model.nu,))
+        for c, acts in enumerate(self._chan_act):
+            ctrl[..., acts] = (np.asarray(conv.offsets[c])
+                               + np.asarray(conv.scales[c]) * actions[..., c, None])
+        limited = self.model.actuator_ctrllimited.astype(bool)
+        rng = self.model.actuator_ctrlrange
+        ctrl[..., limited] = np.clip(ctrl[..., limited], rng[limited, 0], rng[limited, 1])
+        return ctrl
+
+    def initial_data(self, *, start: np.ndarray | None = None, qpos0: np.ndarray | None = None,
+                     object_pose: np.ndarray | None = None, model: mujoco.MjModel | None = None
+                     ) -> mujoco.MjData:
+        """An MjData at the trajectory's initial state, forward-computed.
+
+        Args:
+            start: initial joint state in the action convention, (na,); the actuated joints
+                are set to the controls it maps to.
+            qpos0: full initial qpos, (nq,); overrides ``start``.
+            object_pose: object position and quaternion (w, x, y, z), (7,).
+            model: the model to make data for (default: the nominal model).
+        """
+        model = model or self.model
+        data = mujoco.MjData(model)
+        key = self.scenario.keyframe
+        if key is not None:
+            mujoco.mj_resetDataKeyframe(model, data, model.key(key).id)
+        if qpos0 is not None:
+            qpos0 = np.asarray(qpos0, dtype=np.float64)
+            if qpos0.shape != (model.nq,):
+                raise TrajectoryError(f"expected qpos0 of shape ({model.nq},), got {qpos0.shape}")
+            data.qpos[:] = qpos0
+        elif start is not None:
+            ctrl = self.controls(np.asarray(start)[None])[0]
+            for a in range(model.nu):
+                if model.actuator_trntype[a] == mujoco.mjtTrn.mjTRN_JOINT:
+                    j = model.actuator_trnid[a, 0]
+                    q = ctrl[a]
+                    if model.jnt_limited[j]:
+                        q = np.clip(q, *model.jnt_range[j])
+                    data.qpos[model.jnt_qposadr[j]] = q
+        if object_pose is not None:
+            pose = np.asarray(object_pose, dtype=np.float64)
+            if pose.shape != (7,):
+                raise TrajectoryError(f"expected object_pose (7,) xyz + quat wxyz, got {pose.shape}")
+            data.qpos[self.object_qposadr:self.object_qposadr + 7] = pose
+        data.qvel[:] = 0
+        if start is not None:
+            data.ctrl[:] = self.controls(np.asarray(start)[None])[0]
+        mujoco.mj_forward(model, data)
+        return data
+
+    @staticmethod
+    def get_state(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+        state = np.empty(mujoco.mj_stateSize(model, STATE_SPEC))
+        mujoco.mj_getState(model, data, state, STATE_SPEC)
+        return state
+
+    @staticmethod
+    def set_state(model: mujoco.MjModel, data: mujoco.MjData, state: np.ndarray) -> None:
+        mujoco.mj_setState(model, data, np.asarray(state, dtype=np.float64), STATE_SPEC)
+
+    # -- signals ------------------------------------------------------------------
+    @property
+    def nsensordata(self) -> int:
+        return int(self.model.nsensordata)
+
+    def signals(self, sensordata: np.ndarray, mu: np.ndarray | float | None = None) -> Signals:
+        """Safety signals from ``sensordata`` (..., nsensordata).
+
+        Args:
+            sensordata: sensor readings after a step (or a forward).
+            mu: friction of the object's contacts, broadcastable to the leading shape
+                (...); default: the nominal model's.
+        """
+        sd = np.asarray(sensordata, dtype=np.float64)
+        lead = sd.shape[:-1]
+        if mu is None:
+            mu = self.object_friction()
+        mu = np.asarray(mu, dtype=np.float64)[..., None]
+        fos_c, touch = [], []
+        for adr in self._grip_adr:
+            block = sd[..., adr].reshape(lead + (-1, 4))  # (..., slots, [found, fn, ft1, ft2])
+            normal = block[..., 1]
+            tangential = np.hypot(block[..., 2], block[..., 3])
+            fos_c.append(safety.contact_fos(normal, tangential, mu))
+            touch.append((block[..., 0] > 0).any(axis=-1))
+        fos_contact = np.stack(fos_c, axis=-1)
+        contact_gripper = np.stack(touch, axis=-1)
+        contact_support = (sd[..., self._support_adr] > 0).any(axis=-1)
+        acc = sd[..., self._acc_adr] + self.model.opt.gravity
+        force = sd[..., self._force_adr]
+        fos_m, arg = safety.motor_fos(force[..., self.rotational], self.limits[self.rotational])
+        rot_ids = np.flatnonzero(self.rotational)
+        cost = safety.cost(fos_contact.min(axis=-1), fos_m, self.scenario.cost)
+        stage = safety.task_stage(contact_gripper[..., self._picker],
+                                  contact_gripper[..., self._receiver], contact_support)
+        return Signals(object_acc=acc, actuator_force=force, actuator_norm=force / self.limits,
+                       fos_contact=fos_contact, fos_motor=fos_m, motor_argmax=rot_ids[arg],
+                       cost=cost, contact_support=contact_support,
+                       contact_gripper=contact_gripper, stage=stage)
+

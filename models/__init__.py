@@ -1,0 +1,1 @@
+"""Scenarios bundled with critmoment (installed as ``critmoment.models``)."""

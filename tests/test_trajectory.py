@@ -1,0 +1,447 @@
+"""Tests for critmoment.trajectory."""
+
+from __future__ import annotations
+
+import json
+import warnings
+
+import h5py
+import numpy as np
+import pyarrow as pa
+import pyarrow.parquet as pq
+import pytest
+
+from critmoment.exceptions import InputFileError, ParameterError, TrajectoryError
+from critmoment.trajectory import (
+    RangePolicy,
+    Trajectory,
+    check_ranges,
+    load_trajectory,
+    save_trajectory,
+    upsample,
+)
+
+NA = 14
+GRIPPERS = np.zeros(NA, dtype=bool)
+GRIPPERS[[6, 13]] = True
+
+
+def _actions(rng: np.random.Generator, t: int = 40) -> np.ndarray:
+    a = rng.uniform(-1.0, 1.0, size=(t, NA))
+    a[:, GRIPPERS] = rng.uniform(0.0, 1.0, size=(t, 2))
+    return a
+
+
+# ---------------------------------------------------------------------------
+# Trajectory container
+# ---------------------------------------------------------------------------
+
+
+def test_trajectory_properties_and_read_only():
+    rng = np.random.default_rng(0)
+    a = _actions(rng, 25)
+    traj = Trajectory(a, fps=50)
+    assert traj.n_steps == 25 and traj.n_channels == NA
+    assert traj.duration == pytest.approx(0.5)
+    np.testing.assert_array_equal(traj.times, np.arange(25) / 50.0)
+    assert traj.actions.dtype == np.float64
+    with pytest.raises(ValueError):
+        traj.actions[0, 0] = 5.0
+    a[0, 0] = 99.0  # the trajectory holds a copy
+    assert traj.actions[0, 0] != 99.0
+
+
+def test_int_actions_converted_and_quaternion_normalised():
+    traj = Trajectory(np.arange(6).reshape(3, 2), object_pose=[0, 0, 0, 2, 0, 0, 0])
+    assert traj.actions.dtype == np.float64
+    np.testing.assert_array_equal(traj.object_pose, [0, 0, 0, 1, 0, 0, 0])
+
+
+@pytest.mark.parametrize(
+    "kwargs, match",
+    [
+        ({"actions": np.zeros(5)}, r"2-D array.*got 1-D"),
+        ({"actions": np.zeros((1, 3))}, r"at least 2 time steps"),
+        ({"actions": np.array([["a", "b"], ["c", "d"]])}, r"real numeric"),
+        ({"actions": np.zeros((3, 2)), "fps": 0.0}, r"fps.*> 0"),
+        ({"actions": np.zeros((3, 2)), "start": np.zeros(3)}, r"start.*\(2,\)"),
+        ({"actions": np.zeros((3, 2)), "object_pose": np.zeros(7)}, r"non-zero quaternion"),
+        ({"actions": np.zeros((3, 2)), "qpos0": np.zeros((2, 2))}, r"qpos0.*1-D"),
+        ({"actions": np.zeros((3, 2)), "meta": {"x": object()}}, r"JSON"),
+    ],
+)
+def test_trajectory_validation(kwargs, match):
+    with pytest.raises(TrajectoryError, match=match):
+        Trajectory(**kwargs)
+
+
+def test_nan_names_row_and_column():
+    a = np.zeros((10, 4))
+    a[7, 2] = np.nan
+    with pytest.raises(TrajectoryError, match=r"row \(step\) 7, column \(channel\) 2"):
+        Trajectory(a)
+
+
+# ---------------------------------------------------------------------------
+# npz
+# ---------------------------------------------------------------------------
+
+
+def test_npz_round_trip_exact(tmp_path):
+    rng = np.random.default_rng(1)
+    traj = Trajectory(
+        _actions(rng),
+        fps=30.0,
+        start=rng.normal(size=NA),
+        qpos0=rng.normal(size=23),
+        object_pose=np.r_[rng.normal(size=3), rng.normal(size=4)],
+        meta={"task": "transfer_cube", "n": 3, "ok": True, "list": [1.5, None]},
+        source="unit test",
+    )
+    path = tmp_path / "traj.npz"
+    save_trajectory(traj, path)
+    back = load_trajectory(path)
+    for name in ("actions", "start", "qpos0", "object_pose"):
+        assert np.array_equal(getattr(back, name), getattr(traj, name)), name
+    assert back.fps == traj.fps
+    assert back.meta == traj.meta
+    assert back.source == str(path)
+    assert back == Trajectory(**{**traj.__dict__, "source": str(path)})
+
+
+def test_npz_time_sets_fps_and_checks(tmp_path):
+    a = np.zeros((20, 3))
+    path = tmp_path / "t.npz"
+    np.savez(path, actions=a, time=np.arange(20) * 0.04 + 1.0)
+    assert load_trajectory(path).fps == pytest.approx(25.0)
+
+    np.savez(path, actions=a, time=np.arange(20) * 0.04, fps=50.0)
+    with pytest.raises(TrajectoryError, match=r"disagrees"):
+        load_trajectory(path)
+
+    t = np.arange(20) * 0.02
+    t[5], t[6] = t[6], t[5]
+    np.savez(path, actions=a, time=t)
+    with pytest.raises(TrajectoryError, match=r"strictly increasing.*t\[5\] = 0\.12"):
+        load_trajectory(path)
+
+    t = np.arange(20) * 0.02
+    t[10:] += 0.005
+    np.savez(path, actions=a, time=t)
+    with pytest.raises(TrajectoryError, match=r"uniform spacing"):
+        load_trajectory(path)
+
+
+def test_npz_unknown_key_warns_and_fps_conflict(tmp_path):
+    path = tmp_path / "u.npz"
+    np.savez(path, actions=np.zeros((3, 2)), fps=20.0, extra=np.ones(2))
+    with pytest.warns(UserWarning, match=r"unknown key.*extra"):
+        traj = load_trajectory(path)
+    assert traj.fps == 20.0
+    with pytest.raises(TrajectoryError, match=r"fps argument 50 Hz disagrees"):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            load_trajectory(path, fps=50)
+
+
+def test_npz_missing_actions(tmp_path):
+    path = tmp_path / "m.npz"
+    np.savez(path, act=np.zeros((3, 2)))
+    with pytest.raises(TrajectoryError, match=r"expected key 'actions'.*'act'"):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            load_trajectory(path)
+
+
+def test_corrupt_npz(tmp_path):
+    path = tmp_path / "bad.npz"
+    path.write_bytes(b"this is not a zip archive at all")
+    with pytest.raises(InputFileError, match=r"cannot read .*bad\.npz"):
+        load_trajectory(path)
+    good = tmp_path / "good.npz"
+    np.savez(good, actions=np.zeros((50, 3)))
+    trunc = tmp_path / "trunc.npz"
+    trunc.write_bytes(good.read_bytes()[:-60])
+    with pytest.raises(InputFileError, match=r"trunc\.npz"):
+        load_trajectory(trunc)
+
+
+def test_missing_file_and_unknown_suffix(tmp_path):
+    with pytest.raises(InputFileError, match=r"nope\.npz.*does not exist"):
+        load_trajectory(tmp_path / "nope.npz")
+    assert issubclass(InputFileError, FileNotFoundError)
+    odd = tmp_path / "traj.csv"
+    odd.write_text("1,2\n")
+    with pytest.raises(InputFileError, match=r"'\.csv'.*\.npz.*\.hdf5.*\.parquet.*LeRobot"):
+        load_trajectory(odd)
+    with pytest.raises(InputFileError, match=r"without meta/info\.json"):
+        load_trajectory(tmp_path)
+
+
+# ---------------------------------------------------------------------------
+# ACT HDF5
+# ---------------------------------------------------------------------------
+
+
+def test_act_hdf5_reads_start_and_attrs(tmp_path):
+    rng = np.random.default_rng(2)
+    act = _actions(rng, 30)
+    qpos = _actions(rng, 30)
+    path = tmp_path / "episode_0.hdf5"
+    with h5py.File(path, "w") as f:
+        f.attrs["sim"] = True
+        f.attrs["compress"] = False
+        f.create_dataset("action", data=act)
+        obs = f.create_group("observations")
+        obs.create_dataset("qpos", data=qpos)
+        obs.create_dataset("qvel", data=np.zeros_like(qpos))
+    traj = load_trajectory(path)
+    np.testing.assert_array_equal(traj.actions, act)
+    np.testing.assert_array_equal(traj.start, qpos[0])
+    assert traj.fps == 50.0
+    assert traj.meta["sim"] is True and traj.meta["source_format"] == "act_hdf5"
+    json.dumps(traj.meta)
+    assert load_trajectory(path, fps=25).fps == 25.0
+
+
+def test_act_hdf5_missing_action(tmp_path):
+    path = tmp_path / "episode_1.h5"
+    with h5py.File(path, "w") as f:
+        f.create_dataset("observations/qpos", data=np.zeros((5, NA)))
+    with pytest.raises(TrajectoryError, match=r"/action.*found datasets.*/observations/qpos"):
+        load_trajectory(path)
+
+
+def test_corrupt_hdf5(tmp_path):
+    path = tmp_path / "bad.hdf5"
+    path.write_bytes(b"\x00" * 64)
+    with pytest.raises(InputFileError, match=r"HDF5"):
+        load_trajectory(path)
+
+
+# ---------------------------------------------------------------------------
+# LeRobot parquet
+# ---------------------------------------------------------------------------
+
+
+def _write_lerobot(root, rng, lengths=(12, 9), fps=30, shuffle=False):
+    (root / "meta").mkdir(parents=True)
+    (root / "meta" / "info.json").write_text(
+        json.dumps({"codebase_version": "v2.1", "robot_type": "aloha", "fps": fps})
+    )
+    data_dir = root / "data" / "chunk-000"
+    data_dir.mkdir(parents=True)
+    actions, states, ep_idx, frame_idx, stamps = [], [], [], [], []
+    per_episode = {}
+    for ep, n in enumerate(lengths):
+        a = _actions(rng, n).astype(np.float32)
+        s = _actions(rng, n).astype(np.float32)
+        per_episode[ep] = (a, s)
+        actions += list(a)
+        states += list(s)
+        ep_idx += [ep] * n
+        frame_idx += list(range(n))
+        stamps += list(np.arange(n, dtype=np.float32) / np.float32(fps))
+    order = np.arange(len(actions))
+    if shuffle:
+        order = rng.permutation(order)
+    table = pa.table(
+        {
+            "action": pa.array([actions[i].tolist() for i in order], pa.list_(pa.float32())),
+            "observation.state": pa.array(
+                [states[i].tolist() for i in order], pa.list_(pa.float32())
+            ),
+            "timestamp": pa.array([stamps[i] for i in order], pa.float32()),
+            "frame_index": pa.array([frame_idx[i] for i in order], pa.int64()),
+            "episode_index": pa.array([ep_idx[i] for i in order], pa.int64()),
+        }
+    )
+    path = data_dir / "episode_000000.parquet"
+    pq.write_table(table, path)
+    return path, per_episode
+
+
+def test_lerobot_directory_selects_episode(tmp_path):
+    rng = np.random.default_rng(3)
+    root = tmp_path / "ds"
+    _, eps = _write_lerobot(root, rng, shuffle=True)
+    traj = load_trajectory(root, episode=1)
+    a, s = eps[1]
+    np.testing.assert_array_equal(traj.actions, a.astype(np.float64))
+    np.testing.assert_array_equal(traj.start, s[0].astype(np.float64))
+    assert traj.fps == 30.0
+    assert traj.meta["episode_index"] == 1 and traj.meta["robot_type"] == "aloha"
+
+
+def test_lerobot_file_finds_info_in_ancestors(tmp_path):
+    rng = np.random.default_rng(4)
+    path, eps = _write_lerobot(tmp_path / "ds", rng)
+    traj = load_trajectory(path, episode=0)
+    assert traj.fps == 30.0
+    np.testing.assert_array_equal(traj.actions, eps[0][0].astype(np.float64))
+
+
+def test_lerobot_ambiguous_and_missing_episode(tmp_path):
+    rng = np.random.default_rng(5)
+    root = tmp_path / "ds"
+    _write_lerobot(root, rng)
+    with pytest.raises(TrajectoryError, match=r"2 episodes.*ambiguous.*\[0, 1\]"):
+        load_trajectory(root)
+    with pytest.raises(TrajectoryError, match=r"episode 7 not found.*\[0, 1\]"):
+        load_trajectory(root, episode=7)
+    with pytest.raises(TrajectoryError, match=r"fps argument 50 Hz disagrees"):
+        load_trajectory(root, episode=0, fps=50)
+
+
+def test_lerobot_single_file_without_info_warns_default_fps(tmp_path):
+    path = tmp_path / "ep.parquet"
+    pq.write_table(
+        pa.table({"action": pa.array([[0.0, 1.0], [0.5, 1.0], [1.0, 1.0]])}), path
+    )
+    with pytest.warns(UserWarning, match=r"assuming 50 Hz"):
+        traj = load_trajectory(path)
+    assert traj.fps == 50.0 and traj.start is None
+    assert load_trajectory(path, fps=10).fps == 10.0
+
+
+def test_lerobot_non_monotonic_timestamp(tmp_path):
+    path = tmp_path / "ep.parquet"
+    pq.write_table(
+        pa.table(
+            {
+                "action": pa.array([[0.0], [0.5], [1.0], [1.5]]),
+                "timestamp": pa.array([0.0, 0.1, 0.05, 0.3]),
+            }
+        ),
+        path,
+    )
+    with pytest.raises(TrajectoryError, match=r"strictly increasing"):
+        load_trajectory(path)
+
+
+# ---------------------------------------------------------------------------
+# Range checking
+# ---------------------------------------------------------------------------
+
+
+def _range_case():
+    a = np.zeros((6, 3))
+    a[4, 1] = 2.0  # beyond upper 1
+    a[2, 2] = -3.0  # beyond lower -2
+    a[1, 0] = 1.0 + 1e-9  # within tolerance
+    return a, np.array([-1.0, -1.0, -2.0]), np.array([1.0, 1.0, 2.0])
+
+
+def test_range_error_names_channel():
+    a, lo, hi = _range_case()
+    with pytest.raises(TrajectoryError, match=r"'wrist' \(index 2\).*step 2.*-3\.0"):
+        check_ranges(a, lo, hi, names=["waist", "elbow", "wrist"])
+    ok = check_ranges(np.clip(a, lo, hi), lo, hi)
+    assert isinstance(ok, np.ndarray)
+
+
+def test_range_clip_warns_and_clips():
+    a, lo, hi = _range_case()
+    traj = Trajectory(a)
+    with pytest.warns(UserWarning, match=r"clipped 3 action value"):
+        out = check_ranges(traj, lo, hi, policy=RangePolicy.CLIP)
+    assert isinstance(out, Trajectory)
+    assert np.all(out.actions >= lo) and np.all(out.actions <= hi)
+    assert out.actions[4, 1] == 1.0 and out.actions[2, 2] == -2.0
+    assert traj.actions[4, 1] == 2.0  # input untouched
+
+
+def test_range_warn_keeps():
+    a, lo, hi = _range_case()
+    with pytest.warns(UserWarning, match=r"kept unchanged.*channel 1"):
+        out = check_ranges(a, lo, hi, policy="warn")
+    assert out is a
+
+
+def test_range_bad_policy_and_bounds():
+    a, lo, hi = _range_case()
+    with pytest.raises(ParameterError, match=r"ERROR.*CLIP.*WARN"):
+        check_ranges(a, lo, hi, policy="ignore")
+    with pytest.raises(ParameterError, match=r"shape \(3,\)"):
+        check_ranges(a, lo[:2], hi)
+
+
+# ---------------------------------------------------------------------------
+# Upsampling
+# ---------------------------------------------------------------------------
+
+
+def test_upsample_reproduces_cubic():
+    fps, dt, t_len = 50.0, 0.002, 30
+    t = np.arange(t_len) / fps
+    def cubic(x):
+        return 0.3 - 1.2 * x + 4.0 * x**2 - 7.5 * x**3
+    a = np.stack([cubic(t), 2 * cubic(t)], axis=1)
+    out = upsample(a, fps=fps, physics_dt=dt)
+    n = round(t_len / fps / dt)
+    assert out.shape == (n, 2)
+    tk = np.arange(n) * dt
+    interior = tk <= t[-1] + 1e-12
+    np.testing.assert_allclose(out[interior, 0], cubic(tk[interior]), rtol=0, atol=1e-9)
+    # Beyond the last sample time: hold the last action.
+    np.testing.assert_array_equal(out[~interior], np.broadcast_to(a[-1], out[~interior].shape))
+    # Sample times are hit exactly.
+    np.testing.assert_array_equal(out[::10][:t_len], a)
+
+
+def test_upsample_gripper_step_bounded_and_monotone():
+    t_len = 20
+    a = np.zeros((t_len, 3))
+    a[:, 0] = np.sin(np.arange(t_len) / 3.0)
+    a[10:, 1] = 1.0  # gripper opens 0 -> 1
+    a[:, 2] = np.linspace(0.0, 1.0, t_len)
+    mask = np.array([False, True, False])
+    out = upsample(
+        a, fps=50, physics_dt=0.002, bounded=mask,
+        lower=[-2.0, 0.0, 0.0], upper=[2.0, 1.0, 1.0],
+    )
+    g = out[:, 1]
+    assert g.min() >= 0.0 and g.max() <= 1.0
+    assert np.all(np.diff(g) >= 0.0)
+    assert np.any((g > 0.0) & (g < 1.0))  # interpolated, not a hard step
+
+
+def test_upsample_clips_spline_overshoot_with_warning():
+    a = np.zeros((12, 1))
+    a[6:] = 1.0  # a cubic spline rings past 1 here
+    with pytest.warns(UserWarning, match=r"clipped.*channel 0 \(cubic spline\)"):
+        out = upsample(a, fps=50, physics_dt=0.002, lower=[0.0], upper=[1.0])
+    assert out.min() >= 0.0 and out.max() <= 1.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        free = upsample(a, fps=50, physics_dt=0.002)
+    assert free.max() > 1.0
+
+
+def test_upsample_from_trajectory_and_non_integer_ratio():
+    rng = np.random.default_rng(6)
+    traj = Trajectory(_actions(rng, 15), fps=30.0)
+    out = traj.upsample(0.004, bounded=GRIPPERS)
+    assert out.shape == (round(15 / 30.0 / 0.004), NA)
+    # 30 Hz vs 250 Hz: step 25 is t = 0.1 s = sample 3.
+    np.testing.assert_array_equal(out[25], traj.actions[3])
+    np.testing.assert_array_equal(out[0], traj.actions[0])
+
+
+@pytest.mark.parametrize(
+    "kwargs, match",
+    [
+        ({"physics_dt": 0.0}, r"physics_dt.*0 < physics_dt"),
+        ({"physics_dt": 0.05}, r"physics_dt.*<= 1 / fps"),
+        ({"physics_dt": 0.002, "bounded": [1, 0]}, r"bool mask of shape \(2,\)"),
+        ({"physics_dt": 0.002, "lower": [1.0, 0.0], "upper": [0.0, 1.0]}, r"lower <= upper"),
+    ],
+)
+def test_upsample_parameter_errors(kwargs, match):
+    with pytest.raises(ParameterError, match=match):
+        upsample(np.zeros((5, 2)), fps=50, **kwargs)
+
+
+def test_upsample_requires_fps_for_arrays():
+    with pytest.raises(ParameterError, match=r"fps"):
+        upsample(np.zeros((5, 2)), physics_dt=0.002)
