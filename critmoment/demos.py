@@ -18,7 +18,7 @@ step  right arm (picker)                       left arm (receiver)
 100                                            waiting pose, rolled 90°, opened
 130   down to the grasp height
 170   closed on the cube
-200   lifted
+195   lifted straight up
 220   at the meeting point
 260                                            at the cube
 300                                            closed on the cube
@@ -49,9 +49,8 @@ BOX_Y = (0.4, 0.6)
 BOX_REST_Z = 0.02
 #: ACT's start pose of each arm [rad]
 START_POSE = np.array([0.0, -0.96, 1.16, 0.0, -0.3, 0.0])
-#: keep the forearm unrolled: the wrist_rotate joint does the rolling
-_POSTURE = np.zeros(6)
-_POSTURE_WEIGHT = np.array([0.0, 0.0, 0.0, 1e-3, 0.0, 0.0])
+#: IK seed for the approach pose: forearm unrolled, wrist pitched down
+_APPROACH_SEED = np.array([0.0, -0.5, 1.0, 0.0, 0.6, 0.0])
 _ARM_JOINTS = ("waist", "shoulder", "elbow", "forearm_roll", "wrist_angle", "wrist_rotate")
 
 
@@ -117,8 +116,7 @@ LEFT_REST = _frame([1, 0, 0], [0, 1, 0])
 
 def ik_arm(model: mujoco.MjModel, data: mujoco.MjData, site: int, dofs: np.ndarray,
            qadr: np.ndarray, pos: np.ndarray, rot: Rotation, *, iters: int = 100,
-           damping: float = 1e-3, tol: float = 1e-6, posture: np.ndarray | None = None,
-           posture_weight: np.ndarray | None = None) -> float:
+           damping: float = 1e-6, tol: float = 1e-7) -> float:
     """Damped-least-squares IK of one arm's site to a pose; updates ``data.qpos`` in place.
 
     Args:
@@ -132,10 +130,6 @@ def ik_arm(model: mujoco.MjModel, data: mujoco.MjData, site: int, dofs: np.ndarr
         iters: maximum Gauss-Newton iterations.
         damping: Levenberg damping λ² [m², rad²].
         tol: stop when the pose error is below this [m or rad].
-        posture: preferred joint angles, (6,) [rad], pulled toward with ``posture_weight``.
-        posture_weight: per-joint weight of the posture pull, (6,); it resolves the wrist's
-            near-singular roll/rotate direction (forearm_roll and wrist_rotate are almost
-            parallel when the wrist is straight), where plain DLS drifts to flipped wrists.
 
     Returns:
         The final pose error norm.
@@ -144,20 +138,25 @@ def ik_arm(model: mujoco.MjModel, data: mujoco.MjData, site: int, dofs: np.ndarr
     jacr = np.zeros((3, model.nv))
     lo = model.jnt_range[model.dof_jntid[dofs], 0]
     hi = model.jnt_range[model.dof_jntid[dofs], 1]
+    x, y, z, w = rot.as_quat()
+    target = np.array([w, x, y, z])
+    cur, local = np.empty(4), np.empty(3)
+    err = np.empty(6)
     err_norm = np.inf
     for _ in range(iters):
         mujoco.mj_kinematics(model, data)
         mujoco.mj_comPos(model, data)
-        cur = Rotation.from_matrix(data.site_xmat[site].reshape(3, 3))
-        err = np.concatenate([pos - data.site_xpos[site], (rot * cur.inv()).as_rotvec()])
+        xmat = data.site_xmat[site]
+        mujoco.mju_mat2Quat(cur, xmat)
+        mujoco.mju_subQuat(local, target, cur)  # rotation from current to target, local frame
+        err[:3] = pos - data.site_xpos[site]
+        err[3:] = xmat.reshape(3, 3) @ local
         err_norm = float(np.linalg.norm(err))
         if err_norm < tol:
             break
         mujoco.mj_jacSite(model, data, jacp, jacr, site)
         jac = np.vstack([jacp[:, dofs], jacr[:, dofs]])
-        w = np.zeros(6) if posture_weight is None else posture_weight
-        pull = 0.0 if posture is None else w * (posture - data.qpos[qadr])
-        dq = np.linalg.solve(jac.T @ jac + np.diag(damping + w), jac.T @ err + pull)
+        dq = np.linalg.solve(jac.T @ jac + damping * np.eye(6), jac.T @ err)
         data.qpos[qadr] = np.clip(data.qpos[qadr] + dq, lo, hi)
     return err_norm
 
@@ -168,14 +167,14 @@ def _waypoints(box: np.ndarray, opt: DemoOptions, start_right, start_left):
     meet = np.asarray(opt.meet, float)
     above = cube + [0, 0, opt.lift_height]
     grasp = cube + [0, 0, opt.grasp_height]
-    lifted = np.array([0.05, meet[1], meet[2]])
+    lifted = grasp + [0, 0, opt.lift_height]
     retreat = meet + [0.1, 0, 0]
     right = [
         (0, start_right[0], start_right[1], 0.0),
         (90, above, RIGHT_PICK, 1.0),
         (130, grasp, RIGHT_PICK, 1.0),
         (170, grasp, RIGHT_PICK, 0.0),
-        (200, lifted, RIGHT_PICK, 0.0),
+        (195, lifted, RIGHT_PICK, 0.0),
         (220, meet, RIGHT_PICK, 0.0),
         (300, meet, RIGHT_PICK, 0.0),
         (340, meet, RIGHT_PICK, opt.release_opening),
@@ -247,20 +246,38 @@ def scripted_transfer(seed: int = 0, scenario: Scenario | None = None, *,
     actions = np.zeros((n, 14))
     for arm, points, col in (("left", left_pts, 0), ("right", right_pts, 7)):
         a = arms[arm]
-        pos, rot, grip = _interpolate(points, n, opt.time_scale)
-        q = np.empty((n, 6))
-        data.qpos[a["qadr"]] = START_POSE
-        for i in range(n):
-            ik_arm(model, data, a["site"], a["dofs"], a["qadr"], pos[i], rot[i],
-                   posture=_POSTURE, posture_weight=_POSTURE_WEIGHT)
-            q[i] = data.qpos[a["qadr"]]
+        q = _joint_path(model, data, a, points, n, opt.time_scale)
         actions[:, col:col + 6] = q + _gravity_offset(model, data, a, q)
-        actions[:, col + 6] = grip
+        actions[:, col + 6] = _interpolate(points, n, opt.time_scale)[2]
     actions[0] = start
     meta = {"generator": "critmoment.demos.scripted_transfer", "seed": int(seed),
             "options": dataclasses.asdict(opt)}
     return Trajectory(actions=actions, fps=opt.fps, start=start, object_pose=box, meta=meta,
                       source=f"scripted_transfer(seed={seed})")
+
+
+def _joint_path(model, data, arm, points, n: int, scale: float) -> np.ndarray:
+    """Joint targets (n, 6): a joint-space move to the first waypoint, then Cartesian moves.
+
+    The first move (from the start pose, wrist pitched up, to the approach pose, wrist pitched
+    down) would cross the wrist singularity if it were Cartesian; in joint space it does not.
+    """
+    pos, rot, _ = _interpolate(points, n, scale)
+    t1 = min(int(round(points[1][0] * scale)), n - 1)
+    data.qpos[arm["qadr"]] = _APPROACH_SEED
+    err = ik_arm(model, data, arm["site"], arm["dofs"], arm["qadr"], pos[t1], rot[t1], iters=500)
+    if err > 1e-4:
+        raise ParameterError(
+            f"IK found no pose for the approach waypoint {np.round(pos[t1], 3).tolist()} "
+            f"(pose error {err:.3g}): is the object within the arm's reach?")
+    q1 = data.qpos[arm["qadr"]].copy()
+    q = np.empty((n, 6))
+    s = np.arange(t1 + 1) / max(t1, 1)
+    q[:t1 + 1] = START_POSE + (q1 - START_POSE) * s[:, None]
+    for i in range(t1 + 1, n):
+        ik_arm(model, data, arm["site"], arm["dofs"], arm["qadr"], pos[i], rot[i])
+        q[i] = data.qpos[arm["qadr"]]
+    return q
 
 
 def _gravity_offset(model, data, arm, q: np.ndarray) -> np.ndarray:

@@ -278,8 +278,7 @@ class Recording:
     def summary(self) -> dict:
         """The JSON summary printed by ``critmoment rollout --json``."""
         sig = self.signals
-        fos_c = sig.fos_contact.min(axis=-1)
-        finite_c = fos_c[np.isfinite(fos_c)]
+        finite_c = sig.fos_grasp[np.isfinite(sig.fos_grasp)]
         return {
             "steps": self.n_steps,
             "dt": self.dt,

@@ -47,9 +47,12 @@ class Signals:
         actuator_force: actuator forces [N·m or N], (..., nu).
         actuator_norm: actuator_force / force limit, (..., nu).
         fos_contact: contact FOS per gripper, (..., G); +inf without contact.
+        fos_grasp: contact FOS of the grasp, eq. 12 over the contacts of all grippers,
+            while the object is off its support (+inf on the support or untouched), (...).
+            This is the contact FOS the cost uses.
         fos_motor: motor FOS over rotational actuators, (...).
         motor_argmax: index (into the actuators) of the limiting actuator, (...).
-        cost: cost (eq. 15) with the minimum contact FOS over grippers, (...).
+        cost: cost (eq. 15) of fos_grasp and fos_motor, (...).
         contact_support: object touches the support, (...) bool.
         contact_gripper: object touches gripper g, (..., G) bool.
         stage: task stage 0..4, (...) int8.
@@ -59,6 +62,7 @@ class Signals:
     actuator_force: np.ndarray
     actuator_norm: np.ndarray
     fos_contact: np.ndarray
+    fos_grasp: np.ndarray
     fos_motor: np.ndarray
     motor_argmax: np.ndarray
     cost: np.ndarray
@@ -317,25 +321,32 @@ class Twin:
         if mu is None:
             mu = self.object_friction()
         mu = np.asarray(mu, dtype=np.float64)[..., None]
-        fos_c, touch = [], []
+        fos_c, touch, normals, tangentials = [], [], [], []
         for adr in self._grip_adr:
             block = sd[..., adr].reshape(lead + (-1, 4))  # (..., slots, [found, fn, ft1, ft2])
             normal = block[..., 1]
             tangential = np.hypot(block[..., 2], block[..., 3])
             fos_c.append(safety.contact_fos(normal, tangential, mu))
             touch.append((block[..., 0] > 0).any(axis=-1))
+            normals.append(normal)
+            tangentials.append(tangential)
         fos_contact = np.stack(fos_c, axis=-1)
         contact_gripper = np.stack(touch, axis=-1)
         contact_support = (sd[..., self._support_adr] > 0).any(axis=-1)
+        # eq. 12 over every object-gripper contact: a releasing gripper's slip weighs little
+        # next to a gripper that holds; the grip only carries the object off its support
+        fos_grasp = safety.contact_fos(np.concatenate(normals, axis=-1),
+                                       np.concatenate(tangentials, axis=-1), mu)
+        fos_grasp = np.where(contact_support, np.inf, fos_grasp)
         acc = sd[..., self._acc_adr] + self.model.opt.gravity
         force = sd[..., self._force_adr]
         fos_m, arg = safety.motor_fos(force[..., self.rotational], self.limits[self.rotational])
         rot_ids = np.flatnonzero(self.rotational)
-        cost = safety.cost(fos_contact.min(axis=-1), fos_m, self.scenario.cost)
+        cost = safety.cost(fos_grasp, fos_m, self.scenario.cost)
         stage = safety.task_stage(contact_gripper[..., self._picker],
                                   contact_gripper[..., self._receiver], contact_support)
         return Signals(object_acc=acc, actuator_force=force, actuator_norm=force / self.limits,
-                       fos_contact=fos_contact, fos_motor=fos_m, motor_argmax=rot_ids[arg],
+                       fos_contact=fos_contact, fos_grasp=fos_grasp, fos_motor=fos_m, motor_argmax=rot_ids[arg],
                        cost=cost, contact_support=contact_support,
                        contact_gripper=contact_gripper, stage=stage)
 

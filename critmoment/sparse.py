@@ -1,0 +1,1104 @@
+"""Sparse evaluation: many parameter values at a few moments of a recorded rollout.
+
+The thesis' Algorithm 1 (§3.5): restore the exact physics state the frequent
+rollout recorded before step ``k``, apply uncertain parameters (object mass,
+friction, ...), step a short horizon with the recorded controls and score the
+outcome with the factors of safety and the cost (eq. 12–15). Because one step
+is thousands of times cheaper than a full rollout, a whole box of parameter
+values can be checked at every critical moment.
+
+Engine. :class:`SparseEvaluator` keeps a ``mujoco.batch.Batch`` with one
+simulation per sample. The samples are written into it (fields expanded, then
+``set_const`` so that the mass-derived constants follow) once per chunk of
+samples; for each moment only the state rows are loaded and stepped. Samples
+beyond ``chunk`` run in successive chunks, which bounds memory. All stepping
+runs in MuJoCo's C thread pool; results are bit-identical to a serial loop of
+``mj_setState`` + ``mj_step`` on a model written with
+:meth:`critmoment.twin.Twin.write_parameters`.
+
+Horizon. The state recorded before step ``k`` holds the controls of step
+``k − 1``; the evaluation applies the recorded controls of steps ``k .. k+h−1``.
+The sensor readings of each of the ``h`` steps describe the forces at the start
+of that step (as the recording's ``sensordata[k]`` does), so for ``h = 1`` and
+nominal parameters the evaluation reproduces ``recording.sensordata[k]`` and
+``recording.states[k + 1]`` exactly. For ``h > 1`` the ``h`` steps are reduced
+to their worst: ``cost`` is the maximum over the horizon, ``fos_contact`` (per
+gripper) and ``fos_motor`` the minima (``motor_argmax`` at the step of the
+minimum motor FOS), ``actuator_norm`` the peak (largest magnitude, signed) of
+each actuator and ``object_acc`` the acceleration of largest magnitude; the two
+cost terms, the contact flags and the stage are those of the step of maximum
+cost (``worst_step``). Since the two FOS minima can fall on different steps,
+``cost`` may be lower than the cost of the two minima.
+
+Physics of one step. The bundled robot's actuators are position servos, whose
+force ``kp·(ctrl − q) − kv·q̇`` is a function of the restored state alone: with
+``h = 1`` the actuator forces, hence the motor FOS, do not depend on the object's
+mass or friction at all. They respond over the following steps, as the arm sags
+under the load, so a horizon of a few tens of steps is needed to see motor
+overload. MuJoCo's friction cone keeps every contact force inside
+``λt ≤ μ·λn``, so the contact FOS never falls below 1 (a slipping grip reads 1)
+and the contact term of the cost never exceeds ``A``: with the default cost
+(A = 0.8, threshold 0.9) slip alone never crosses the threshold. See
+:class:`Criterion` for thresholds on the factors of safety themselves.
+
+Modes. :attr:`SparseMode.STEP` integrates (``mj_step``). :attr:`SparseMode.SOLVE`
+solves the dynamics once at the restored state (``mj_forward``) without
+integrating: its sensor readings are the same as those of one step (both
+compute the forces of the step's start), so it applies only to ``h = 1``.
+
+Divergence. A sample diverges when MuJoCo raises a warning (bad qpos, qvel or
+qacc: MuJoCo then resets that simulation), raises an error, or reports a
+non-finite sensor value. With :attr:`DivergencePolicy.MARK` (default) the
+sample is marked (``diverged``), its cost is ``+inf`` (a failure, so that a
+diverging sample can never count as safe) and its factors of safety NaN; with
+:attr:`DivergencePolicy.RAISE` :class:`~critmoment.exceptions.SimulationDivergedError`
+names the moment and the sample.
+
+On top of :func:`evaluate`: :func:`sweep` (Sobol or grid samples of the box),
+:func:`critical_values` (where the cost crosses the threshold along each
+parameter, refined by bisection) and :func:`probability_of_success` (Sobol
+estimate with a Wilson interval).
+"""
+
+from __future__ import annotations
+
+import collections
+import dataclasses
+import enum
+import logging
+import math
+import numbers
+import warnings
+from typing import Any, Mapping, Sequence
+
+import mujoco
+import mujoco.batch
+import numpy as np
+
+from critmoment.exceptions import ParameterError, SimulationDivergedError
+from critmoment.params import UncertaintyBox
+from critmoment.scenario import CostParams
+from critmoment.twin import STATE_SPEC, Twin
+
+__all__ = [
+    "SparseMode",
+    "DivergencePolicy",
+    "Term",
+    "Criterion",
+    "FOS_LIMIT",
+    "SweepMethod",
+    "OthersAt",
+    "FailSide",
+    "SparseResult",
+    "SparseEvaluator",
+    "evaluate",
+    "sweep_samples",
+    "sweep",
+    "CriticalValue",
+    "critical_values",
+    "SuccessProbability",
+    "wilson_interval",
+    "probability_of_success",
+]
+
+_log = logging.getLogger(__name__)
+
+_WARNING_NAMES = tuple(mujoco.mjtWarning(i).name for i in range(mujoco.mjtWarning.mjNWARNING))
+#: simulations per batch chunk by default: ~4 MB of state rows per 2,048
+DEFAULT_CHUNK = 4096
+#: bytes of raw sensor readings one chunk may hold for one moment before it is scored
+_MAX_BUFFER_BYTES = 256 * 2**20
+
+
+class SparseMode(enum.Enum):
+    """How one sparse evaluation advances the physics."""
+
+    STEP = "step"
+    """Integrate ``horizon`` steps (``mj_step``) with the recorded controls."""
+    SOLVE = "solve"
+    """Solve the dynamics once at the restored state (``mj_forward``), no integration;
+    horizon 1 only. Same readings as STEP with horizon 1."""
+
+
+class DivergencePolicy(enum.Enum):
+    """What to do with a sample whose simulation diverges."""
+
+    MARK = "mark"
+    """Mark it (``SparseResult.diverged``) and count it as a failure (cost = +inf)."""
+    RAISE = "raise"
+    """Raise :class:`~critmoment.exceptions.SimulationDivergedError`."""
+
+
+class Term(enum.IntEnum):
+    """Which term of the cost dominates a sample (an ``IntEnum``: arrays compare to it)."""
+
+    CONTACT = 0
+    """The contact term A·exp(−α(FOS_contact − 1)) is the larger: the grip slips."""
+    MOTOR = 1
+    """The motor term B·exp(−β(FOS_motor − 1)) is the larger: a motor is overloaded."""
+    DIVERGED = 2
+    """The simulation diverged."""
+
+
+class Criterion(enum.Enum):
+    """What counts as failing, for :meth:`SparseResult.fails` and the functions on top.
+
+    A diverged sample fails under every criterion.
+    """
+
+    COST = "cost"
+    """The cost exceeds the limit (default: the scenario's threshold)."""
+    CONTACT = "contact"
+    """The weakest gripper's contact FOS is below the limit (default :data:`FOS_LIMIT`)."""
+    MOTOR = "motor"
+    """The motor FOS is below the limit (default :data:`FOS_LIMIT`)."""
+
+
+#: default limit of the factor-of-safety criteria: MuJoCo keeps both factors of safety
+#: >= 1 (friction cone, actuator force range), so saturation reads as FOS -> 1; at
+#: 1.05 the motor term alone reaches the default threshold (1 + ln(B / 0.9) / β ≈ 1.053)
+FOS_LIMIT = 1.05
+
+
+class SweepMethod(enum.Enum):
+    """How :func:`sweep` samples the uncertainty box."""
+
+    SOBOL = "sobol"
+    """Scrambled Sobol points mapped through each parameter's prior (inverse CDF)."""
+    GRID = "grid"
+    """Product of per-parameter grids, evenly spaced in prior quantiles."""
+
+
+class OthersAt(enum.Enum):
+    """Where the other parameters sit while :func:`critical_values` sweeps one."""
+
+    NOMINAL = "nominal"
+    """At their nominal values."""
+    WORST = "worst"
+    """At the box corner with the highest cost at that moment."""
+
+
+class FailSide(str, enum.Enum):
+    """On which side of a critical value the motion fails (compares equal to its value)."""
+
+    ABOVE = "above"
+    BELOW = "below"
+
+
+# --------------------------------------------------------------------------
+# results
+# --------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class SparseResult:
+    """Sparse evaluations of n parameter samples at m moments.
+
+    Per-step quantities are reduced over the horizon as the module docstring says:
+    worst cost, minimum factors of safety, the rest at the worst step.
+
+    Attributes:
+        steps: the moments, physics step indices, (m,) int64.
+        samples: the parameter values, (n, k), columns in ``parameter_names`` order.
+        parameter_names: names of the k parameters.
+        gripper_names: names of the G grippers (columns of ``fos_contact``).
+        actuator_names: names of the nu actuators.
+        horizon: physics steps per evaluation.
+        mode: how the physics was advanced.
+        cost_params: the cost constants (A, B, α, β, threshold).
+        fos_contact: contact FOS per gripper, minimum over the horizon, (m, n, G);
+            +inf without slip demand, NaN where diverged.
+        fos_motor: motor FOS, minimum over the horizon, (m, n); NaN where diverged.
+        motor_argmax: index of the limiting actuator, (m, n) int64.
+        cost: cost (eq. 15), maximum over the horizon, (m, n); +inf where diverged.
+        cost_contact: contact term of the cost at the worst step, (m, n).
+        cost_motor: motor term of the cost at the worst step, (m, n).
+        object_acc: object's linear acceleration, world frame [m/s²], (m, n, 3).
+        actuator_norm: actuator force / force limit, (m, n, nu).
+        contact_support: the object touches the support, (m, n) bool.
+        contact_gripper: the object touches gripper g, (m, n, G) bool.
+        stage: task stage 0..4, (m, n) int8.
+        worst_step: offset of the worst step within the horizon, (m, n) int64.
+        diverged: the sample's simulation diverged at that moment, (m, n) bool.
+        sensordata: raw readings of every step, (m, n, h, nsensordata), when asked for.
+        state: integration state after the horizon, (m, n, nstate), when asked for.
+    """
+
+    steps: np.ndarray
+    samples: np.ndarray
+    parameter_names: tuple[str, ...]
+    gripper_names: tuple[str, ...]
+    actuator_names: tuple[str, ...]
+    horizon: int
+    mode: SparseMode
+    cost_params: CostParams
+    fos_contact: np.ndarray
+    fos_motor: np.ndarray
+    motor_argmax: np.ndarray
+    cost: np.ndarray
+    cost_contact: np.ndarray
+    cost_motor: np.ndarray
+    object_acc: np.ndarray
+    actuator_norm: np.ndarray
+    contact_support: np.ndarray
+    contact_gripper: np.ndarray
+    stage: np.ndarray
+    worst_step: np.ndarray
+    diverged: np.ndarray
+    sensordata: np.ndarray | None = None
+    state: np.ndarray | None = None
+
+    @property
+    def threshold(self) -> float:
+        """Cost above which the motion fails."""
+        return float(self.cost_params.threshold)
+
+    @property
+    def n_moments(self) -> int:
+        return int(self.steps.shape[0])
+
+    @property
+    def n_samples(self) -> int:
+        return int(self.samples.shape[0])
+
+    @property
+    def failed(self) -> np.ndarray:
+        """(m, n) bool: cost above the threshold, or diverged."""
+        return (self.cost > self.cost_params.threshold) | self.diverged
+
+    @property
+    def failed_any(self) -> np.ndarray:
+        """(n,) bool: the sample fails at one moment or more."""
+        return self.failed.any(axis=0)
+
+    def fails(self, criterion: Criterion = Criterion.COST, *, limit: float | None = None
+              ) -> np.ndarray:
+        """(m, n) bool: the samples that fail under ``criterion``.
+
+        Args:
+            criterion: COST (cost > limit), CONTACT (weakest contact FOS < limit) or MOTOR
+                (motor FOS < limit).
+            limit: the limit; default the scenario's threshold for COST and
+                :data:`FOS_LIMIT` for the factors of safety.
+        """
+        criterion = _check_enum("criterion", criterion, Criterion)
+        if limit is not None and not (isinstance(limit, numbers.Real) and np.isfinite(limit)):
+            raise ParameterError(f"limit: expected a finite number or None, got {limit!r}")
+        if criterion is Criterion.COST:
+            bad = self.cost > (self.cost_params.threshold if limit is None else limit)
+        elif criterion is Criterion.CONTACT:
+            bad = self.fos_contact_min < (FOS_LIMIT if limit is None else limit)
+        else:
+            bad = self.fos_motor < (FOS_LIMIT if limit is None else limit)
+        return bad | self.diverged
+
+    @property
+    def dominant(self) -> np.ndarray:
+        """(m, n) int8 of :class:`Term` values: the larger cost term, or DIVERGED."""
+        term = np.where(self.cost_motor > self.cost_contact, Term.MOTOR, Term.CONTACT)
+        return np.where(self.diverged, Term.DIVERGED, term).astype(np.int8)
+
+    @property
+    def fos_contact_min(self) -> np.ndarray:
+        """(m, n) contact FOS of the weakest gripper (what the cost uses)."""
+        return self.fos_contact.min(axis=-1)
+
+    def column(self, name: str) -> np.ndarray:
+        """The values (n,) of parameter ``name`` in ``samples``."""
+        if name not in self.parameter_names:
+            raise ParameterError(
+                f"unknown parameter {name!r}; the result has {', '.join(self.parameter_names)}")
+        return self.samples[:, self.parameter_names.index(name)]
+
+    def moment_index(self, step: int) -> int:
+        """Row of the first moment evaluated at physics step ``step``."""
+        hits = np.flatnonzero(self.steps == step)
+        if not hits.size:
+            raise ParameterError(
+                f"step {step} was not evaluated; the result has steps {self.steps.tolist()}")
+        return int(hits[0])
+
+
+# --------------------------------------------------------------------------
+# validation
+# --------------------------------------------------------------------------
+
+
+def _check_int(name: str, value: Any, minimum: int) -> int:
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
+        raise ParameterError(f"{name}: expected an integer >= {minimum}, got {value!r}")
+    return int(value)
+
+
+def _check_enum(name: str, value: Any, cls: type[enum.Enum]) -> Any:
+    if isinstance(value, cls):
+        return value
+    try:
+        return cls(value)
+    except ValueError:
+        raise ParameterError(
+            f"{name}: expected one of {[m.value for m in cls]} ({cls.__name__}), "
+            f"got {value!r}") from None
+
+
+def _check_fraction(name: str, value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not 0 < value < 1:
+        raise ParameterError(f"{name}: expected a number in (0, 1), got {value!r}")
+    return float(value)
+
+
+def _as_steps(steps: Any) -> np.ndarray:
+    """Moments as (m,) int64: ints, an int array, or objects with an int ``step`` (Moment)."""
+    if isinstance(steps, (numbers.Integral, np.integer)) or hasattr(steps, "step"):
+        steps = [steps]
+    if not isinstance(steps, np.ndarray):
+        steps = [getattr(s, "step", s) for s in steps]
+    arr = np.asarray(steps)
+    if arr.ndim != 1 or arr.size == 0:
+        raise ParameterError(
+            f"steps: expected a non-empty 1-D sequence of physics step indices, got shape "
+            f"{arr.shape}")
+    if arr.dtype == bool or not np.issubdtype(arr.dtype, np.integer):
+        raise ParameterError(f"steps: expected integer step indices, got dtype {arr.dtype}: "
+                             f"{arr[:5].tolist()}")
+    return arr.astype(np.int64)
+
+
+# --------------------------------------------------------------------------
+# the engine
+# --------------------------------------------------------------------------
+
+
+class SparseEvaluator:
+    """Reusable sparse-evaluation engine for one recording and twin.
+
+    Holds ``mujoco.batch.Batch`` objects (one per chunk size in use) and remembers which
+    samples each holds, so that repeated calls with the same samples write parameters and
+    run ``set_const`` only once.
+
+    Args:
+        recording: the frequent rollout (``critmoment.rollout.Recording``) at nominal
+            parameters.
+        twin: the twin the recording was made with.
+        horizon: physics steps per evaluation (default: the scenario's).
+        mode: STEP (integrate) or SOLVE (one forward solve, horizon 1).
+        nthread: threads of the batch (0: all CPUs).
+        chunk: most simulations per batch; more samples run in successive chunks.
+        divergence: MARK diverged samples (cost +inf) or RAISE.
+
+    Raises:
+        ParameterError: options out of range, or a recording that does not fit the twin.
+    """
+
+    def __init__(self, recording, twin: Twin, *, horizon: int | None = None,
+                 mode: SparseMode = SparseMode.STEP, nthread: int = 0,
+                 chunk: int = DEFAULT_CHUNK,
+                 divergence: DivergencePolicy = DivergencePolicy.MARK):
+        self.twin = twin
+        self.recording = recording
+        self.horizon = _check_int("horizon", twin.scenario.horizon if horizon is None else horizon, 1)
+        self.mode = _check_enum("mode", mode, SparseMode)
+        self.nthread = _check_int("nthread", nthread, 0)
+        self.chunk = _check_int("chunk", chunk, 1)
+        self.divergence = _check_enum("divergence", divergence, DivergencePolicy)
+        if self.mode is SparseMode.SOLVE and self.horizon != 1:
+            raise ParameterError(
+                f"mode SOLVE solves one step without integrating: expected horizon 1, got "
+                f"{self.horizon} (use mode STEP for longer horizons)")
+        model = twin.model
+        self.box: UncertaintyBox = twin.scenario.box
+        nstate = mujoco.mj_stateSize(model, STATE_SPEC)
+        states = np.asarray(recording.states, dtype=np.float64)
+        controls = np.asarray(recording.controls, dtype=np.float64)
+        if states.ndim != 2 or states.shape[1] != nstate:
+            raise ParameterError(
+                f"recording.states: expected shape (T + 1, {nstate}) (integration states of "
+                f"this twin's model), got {states.shape}")
+        if controls.ndim != 2 or controls.shape[1] != model.nu or states.shape[0] != controls.shape[0] + 1:
+            raise ParameterError(
+                f"recording.controls: expected shape ({states.shape[0] - 1}, {model.nu}), got "
+                f"{controls.shape}")
+        names = tuple(getattr(recording, "parameter_names", self.box.names))
+        if names != self.box.names:
+            raise ParameterError(
+                f"recording has parameters {names}, the twin's box has {self.box.names}: "
+                "expected the recording of this scenario")
+        self._states = np.ascontiguousarray(states)
+        self._controls = np.ascontiguousarray(controls)
+        self.n_steps = int(controls.shape[0])
+        self._ctrl = self._component(mujoco.mjtState.mjSTATE_CTRL)
+        self._batches: collections.OrderedDict[int, mujoco.batch.Batch] = collections.OrderedDict()
+        self._written: dict[int, np.ndarray] = {}
+        self._mu: dict[int, np.ndarray | float] = {}
+
+    def __repr__(self) -> str:
+        return (f"SparseEvaluator(steps={self.n_steps}, horizon={self.horizon}, "
+                f"mode={self.mode.name}, nthread={self.nthread}, chunk={self.chunk})")
+
+    def _component(self, spec: mujoco.mjtState) -> slice:
+        """Slice of a state component inside an mjSTATE_INTEGRATION row."""
+        model = self.twin.model
+        offset = 0
+        for bit in range(mujoco.mjtState.mjNSTATE):
+            part = 1 << bit
+            if not int(STATE_SPEC) & part:
+                continue
+            size = mujoco.mj_stateSize(model, part)
+            if part == int(spec):
+                return slice(offset, offset + size)
+            offset += size
+        raise ParameterError(f"state component {spec} is not part of {STATE_SPEC}")
+
+    # -- validation ------------------------------------------------------------
+    def check_steps(self, steps: Any) -> np.ndarray:
+        """Validate moments: (m,) int64 in [0, T − horizon]."""
+        arr = _as_steps(steps)
+        last = self.n_steps - self.horizon
+        bad = arr[(arr < 0) | (arr > last)]
+        if bad.size:
+            raise ParameterError(
+                f"steps: expected physics steps in [0, {last}] (recording of {self.n_steps} "
+                f"steps, horizon {self.horizon}), got {bad[:5].tolist()}")
+        return arr
+
+    def check_samples(self, samples: Any) -> np.ndarray:
+        """Validate parameter samples: (n, k) float64, n >= 1, each admissible."""
+        samples = self.box.check_samples(samples)
+        if samples.shape[0] == 0:
+            raise ParameterError(
+                f"samples: expected at least one row of {self.box.names}, got shape "
+                f"{samples.shape}")
+        return samples
+
+    # -- batches -----------------------------------------------------------------
+    def _batch(self, samples: np.ndarray) -> tuple[mujoco.batch.Batch, np.ndarray | float]:
+        """A batch with ``samples`` written (cached), and the object friction per simulation."""
+        n = samples.shape[0]
+        batch = self._batches.get(n)
+        if batch is None:
+            batch = mujoco.batch.Batch(self.twin.model, n, nthread=self.nthread)
+            self._batches[n] = batch
+            while len(self._batches) > 4:
+                old, _ = self._batches.popitem(last=False)
+                self._written.pop(old, None)
+                self._mu.pop(old, None)
+        else:
+            self._batches.move_to_end(n)
+        written = self._written.get(n)
+        if written is None or not np.array_equal(written, samples):
+            self.twin.write_parameters(batch, samples)
+            friction = batch.expanded("geom_friction")
+            self._mu[n] = (friction[:, self.twin.object_geom_id, 0].copy() if friction is not None
+                           else self.twin.object_friction())
+            self._written[n] = samples.copy()
+        return batch, self._mu[n]
+
+    # -- evaluation ----------------------------------------------------------------
+    def evaluate(self, steps: Any, samples: Any, *, keep_raw: bool = False) -> SparseResult:
+        """Evaluate every sample at every moment.
+
+        Args:
+            steps: moments, physics step indices (m,) in [0, T − horizon] (or objects with
+                a ``step`` attribute, such as ``critmoment.moments.Moment``).
+            samples: parameter values (n, k) in the box's column order (mass [kg], ...).
+            keep_raw: also keep the raw sensor readings and the final states.
+
+        Returns:
+            The :class:`SparseResult`.
+
+        Raises:
+            ParameterError: bad steps or samples.
+            SimulationDivergedError: a sample diverged and the policy is RAISE.
+        """
+        steps = self.check_steps(steps)
+        samples = self.check_samples(samples)
+        twin, h = self.twin, self.horizon
+        m, n = steps.shape[0], samples.shape[0]
+        ngrip, nu = len(twin.scenario.grippers), twin.model.nu
+        nsd = twin.nsensordata
+        out = {
+            "fos_contact": np.empty((m, n, ngrip)), "fos_motor": np.empty((m, n)),
+            "motor_argmax": np.empty((m, n), np.int64), "cost": np.empty((m, n)),
+            "cost_contact": np.empty((m, n)), "cost_motor": np.empty((m, n)),
+            "object_acc": np.empty((m, n, 3)), "actuator_norm": np.empty((m, n, nu)),
+            "contact_support": np.empty((m, n), bool),
+            "contact_gripper": np.empty((m, n, ngrip), bool),
+            "stage": np.empty((m, n), np.int8), "worst_step": np.empty((m, n), np.int64),
+            "diverged": np.empty((m, n), bool),
+        }
+        raw = np.empty((m, n, h, nsd)) if keep_raw else None
+        final = np.empty((m, n, self._states.shape[1])) if keep_raw else None
+        # chunks bound the batch and the per-moment buffer of raw readings
+        chunk = max(1, min(self.chunk, _MAX_BUFFER_BYTES // (8 * h * nsd)))
+        for start in range(0, n, chunk):
+            sl = slice(start, min(n, start + chunk))
+            batch, mu = self._batch(samples[sl])
+            buf = np.empty((batch.nsim, h, nsd))
+            for i, k in enumerate(steps):
+                raised, warned = self._advance(batch, int(k), buf)
+                diverged = raised | (warned > 0).any(axis=1) | ~np.isfinite(buf).all(axis=(1, 2))
+                self._score(buf, mu, diverged, out, i, sl)
+                if keep_raw:
+                    raw[i, sl] = buf
+                    final[i, sl] = batch.state
+                if diverged.any():
+                    self._on_divergence(int(k), samples[sl], start, diverged, raised, warned)
+        return SparseResult(
+            steps=steps, samples=samples, parameter_names=self.box.names,
+            gripper_names=twin.scenario.gripper_names, actuator_names=twin.actuator_names,
+            horizon=h, mode=self.mode, cost_params=twin.scenario.cost, sensordata=raw,
+            state=final, **out)
+
+    def _advance(self, batch: mujoco.batch.Batch, k: int, buf: np.ndarray
+                 ) -> tuple[np.ndarray, np.ndarray]:
+        """Restore step k's state in every simulation, advance, fill buf (nsim, h, nsd).
+
+        Returns the simulations MuJoCo raised in (nsim,) bool and the warning counts
+        (nsim, nwarning).
+        """
+        h = self.horizon
+        row = self._states[k].copy()
+        # the recorded state holds the previous step's controls; step k applies its own
+        row[self._ctrl] = self._controls[k]
+        batch.state[:] = row
+        batch.warning[...] = 0
+        raised = np.zeros(batch.nsim, dtype=bool)
+        try:
+            if self.mode is SparseMode.SOLVE:
+                batch.forward()
+                buf[:, 0] = batch.bind("sensordata")
+            elif h == 1:
+                batch.rollout(1, record=("sensordata",), out={"sensordata": buf})
+            else:
+                batch.rollout(h, control=self._controls[k:k + h][None],
+                              control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
+                              record=("sensordata",), out={"sensordata": buf})
+        except mujoco.batch.SimulationError as exc:
+            raised[exc.ids] = True
+        return raised, batch.warning[:, :, 1].copy()
+
+    def _score(self, buf: np.ndarray, mu: np.ndarray | float, diverged: np.ndarray,
+               out: dict[str, np.ndarray], i: int, sl: slice) -> None:
+        """Signals of buf (nsim, h, nsd), reduced over the horizon, into out[...][i, sl]."""
+        twin, cp = self.twin, self.twin.scenario.cost
+        mu = np.asarray(mu, dtype=np.float64)
+        sig = twin.signals(buf, mu=mu[:, None] if mu.ndim == 1 else mu)  # leading (nsim, h)
+        nsim = buf.shape[0]
+        rows = np.arange(nsim)
+        if self.horizon == 1:
+            worst = np.zeros(nsim, dtype=np.int64)
+            fos_contact = sig.fos_contact[:, 0]
+            fos_motor, motor_argmax = sig.fos_motor[:, 0], sig.motor_argmax[:, 0]
+            object_acc, actuator_norm = sig.object_acc[:, 0], sig.actuator_norm[:, 0]
+        else:
+            worst = np.argmax(sig.cost, axis=1)
+            fos_contact = sig.fos_contact.min(axis=1)
+            weakest = np.argmin(sig.fos_motor, axis=1)
+            fos_motor = sig.fos_motor[rows, weakest]
+            motor_argmax = sig.motor_argmax[rows, weakest]
+            # peak loads over the horizon: the largest |value| per actuator, the largest |a|
+            peak = np.argmax(np.abs(sig.actuator_norm), axis=1)  # (nsim, nu)
+            actuator_norm = np.take_along_axis(sig.actuator_norm, peak[:, None, :], axis=1)[:, 0]
+            object_acc = sig.object_acc[rows, np.argmax(np.linalg.norm(sig.object_acc, axis=-1),
+                                                        axis=1)]
+        with np.errstate(over="ignore", invalid="ignore"):
+            term_c = cp.A * np.exp(-cp.alpha * (sig.fos_contact[rows, worst].min(axis=-1) - 1.0))
+            term_m = cp.B * np.exp(-cp.beta * (sig.fos_motor[rows, worst] - 1.0))
+        values = {
+            "fos_contact": fos_contact, "fos_motor": fos_motor, "motor_argmax": motor_argmax,
+            "cost": sig.cost[rows, worst], "cost_contact": term_c, "cost_motor": term_m,
+            "object_acc": object_acc, "actuator_norm": actuator_norm,
+            "contact_support": sig.contact_support[rows, worst],
+            "contact_gripper": sig.contact_gripper[rows, worst],
+            "stage": sig.stage[rows, worst], "worst_step": worst, "diverged": diverged,
+        }
+        for name, value in values.items():
+            out[name][i, sl] = value
+        if diverged.any():
+            for name in ("fos_contact", "fos_motor", "cost_contact", "cost_motor"):
+                out[name][i, sl][diverged] = np.nan
+            out["cost"][i, sl][diverged] = np.inf
+
+    def _on_divergence(self, k: int, samples: np.ndarray, offset: int, diverged: np.ndarray,
+                       raised: np.ndarray, warned: np.ndarray) -> None:
+        """Raise or log diverged samples of one chunk at moment k."""
+        first = int(np.flatnonzero(diverged)[0])
+        values = ", ".join(f"{name} = {v:.6g}" for name, v in zip(self.box.names, samples[first]))
+        if raised[first]:
+            why = "MuJoCo raised an error"
+        elif warned[first].any():
+            why = "MuJoCo warnings [" + ", ".join(
+                _WARNING_NAMES[w] for w in np.flatnonzero(warned[first])) + "]"
+        else:
+            why = "non-finite sensor readings"
+        count = int(diverged.sum())
+        dt = float(self.twin.model.opt.timestep)
+        message = (f"sparse evaluation diverged at moment step {k} (t = {k * dt:.3f} s) for "
+                   f"sample {offset + first} ({values}) with {why}"
+                   + (f", and {count - 1} more sample(s) of this chunk" if count > 1 else ""))
+        if self.divergence is DivergencePolicy.RAISE:
+            raise SimulationDivergedError(
+                message + "; expected stable physics: narrow the parameter range or use "
+                "divergence=DivergencePolicy.MARK", step=k)
+        _log.warning("%s; marked as failed (cost = inf)", message)
+
+
+def evaluate(recording, twin: Twin, steps: Any, samples: Any, *, horizon: int | None = None,
+             mode: SparseMode = SparseMode.STEP, nthread: int = 0, chunk: int = DEFAULT_CHUNK,
+             divergence: DivergencePolicy = DivergencePolicy.MARK,
+             keep_raw: bool = False) -> SparseResult:
+    """Sparse evaluation of parameter samples at moments of a recording (thesis Algorithm 1).
+
+    A one-off :class:`SparseEvaluator`; keep an evaluator to evaluate repeatedly.
+
+    Args:
+        recording: the frequent rollout at nominal parameters.
+        twin: the twin it was recorded with.
+        steps: moments, physics step indices (m,) in [0, T − horizon].
+        samples: parameter values (n, k) in the box's column order (mass [kg], ...).
+        horizon: physics steps per evaluation (default: the scenario's).
+        mode: STEP (integrate) or SOLVE (one forward solve, horizon 1).
+        nthread: threads (0: all CPUs).
+        chunk: most simulations per batch.
+        divergence: MARK diverged samples (cost +inf) or RAISE.
+        keep_raw: also keep the raw sensor readings and final states.
+
+    Returns:
+        The :class:`SparseResult`, (m, n) per quantity.
+    """
+    engine = SparseEvaluator(recording, twin, horizon=horizon, mode=mode, nthread=nthread,
+                             chunk=chunk, divergence=divergence)
+    return engine.evaluate(steps, samples, keep_raw=keep_raw)
+
+
+# --------------------------------------------------------------------------
+# sweeps
+# --------------------------------------------------------------------------
+
+
+def sweep_samples(box: UncertaintyBox, *, n: int = 256, method: SweepMethod = SweepMethod.SOBOL,
+                  seed: int | None = 0) -> np.ndarray:
+    """Samples of the uncertainty box.
+
+    Args:
+        box: the box.
+        n: number of samples. SOBOL: exactly n (a power of 2 keeps the sequence balanced).
+            GRID: ``round(n ** (1/k))`` points per parameter (at least 2), so
+            ``points ** k`` samples in all.
+        method: SOBOL (scrambled, seeded, mapped through each prior's inverse CDF) or GRID
+            (per-parameter grids evenly spaced in prior quantiles: linear for a uniform
+            prior, geometric for a log-uniform one; the ends of the range included).
+        seed: seed of the Sobol scrambling (ignored by GRID).
+
+    Returns:
+        (n, k) parameter values in the box's column order.
+    """
+    n = _check_int("n", n, 1)
+    method = _check_enum("method", method, SweepMethod)
+    k = box.ndim
+    if method is SweepMethod.SOBOL:
+        from scipy.stats import qmc
+
+        sampler = qmc.Sobol(k, scramble=True, seed=seed)
+        if n & (n - 1) == 0:
+            unit = sampler.random_base2(int(math.log2(n)))
+        else:
+            with warnings.catch_warnings():
+                # scipy warns that balance needs a power of 2; documented above
+                warnings.simplefilter("ignore", UserWarning)
+                unit = sampler.random(n)
+    else:
+        per_axis = max(2, int(round(n ** (1.0 / k))))
+        axis = np.linspace(0.0, 1.0, per_axis)
+        grids = np.meshgrid(*([axis] * k), indexing="ij")
+        unit = np.stack([g.reshape(-1) for g in grids], axis=1)
+    samples = box.from_unit(unit)
+    # inverse CDFs can round a hair outside the range
+    return np.clip(samples, box.low, box.high)
+
+
+def sweep(recording, twin: Twin, steps: Any, *, n: int = 256,
+          method: SweepMethod = SweepMethod.SOBOL, seed: int | None = 0,
+          horizon: int | None = None, mode: SparseMode = SparseMode.STEP, nthread: int = 0,
+          evaluator: SparseEvaluator | None = None) -> SparseResult:
+    """Sparse evaluation of a Sobol or grid sample of the whole uncertainty box.
+
+    Args:
+        recording: the frequent rollout.
+        twin: its twin.
+        steps: moments, physics step indices (m,).
+        n: number of samples (see :func:`sweep_samples` for GRID).
+        method: SOBOL or GRID.
+        seed: Sobol seed.
+        horizon: physics steps per evaluation (default: the scenario's).
+        mode: STEP or SOLVE.
+        nthread: threads (0: all CPUs).
+        evaluator: an evaluator to reuse (then horizon, mode and nthread are its own).
+
+    Returns:
+        The :class:`SparseResult` of the samples.
+    """
+    engine = evaluator or SparseEvaluator(recording, twin, horizon=horizon, mode=mode,
+                                          nthread=nthread)
+    samples = sweep_samples(engine.box, n=n, method=method, seed=seed)
+    return engine.evaluate(steps, samples)
+
+
+# --------------------------------------------------------------------------
+# critical values
+# --------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class CriticalValue:
+    """Where the cost crosses the threshold along one parameter at one moment.
+
+    Attributes:
+        parameter: the swept parameter's name.
+        value: the crossing nearest the parameter's nominal value (in its unit, e.g. [kg]),
+            or None when the cost never crosses the threshold over the range.
+        direction: on which side of ``value`` the motion fails, or None without a crossing.
+        step: the moment, physics step index.
+        others: values of the other parameters during the sweep.
+        others_at: where the others sit (NOMINAL or the WORST corner).
+        bracket: (low, high) around ``value`` after refinement, or None.
+        crossings: every refined crossing over the range, increasing.
+        dominant: the cost term that dominates on the failing side of ``value``.
+        fails_everywhere: without a crossing: whether the whole range fails (else it is
+            all safe).
+        criterion: what counts as failing.
+        limit: the criterion's limit (threshold of the cost, or of the FOS).
+    """
+
+    parameter: str
+    value: float | None
+    direction: FailSide | None
+    step: int
+    others: Mapping[str, float]
+    others_at: OthersAt
+    bracket: tuple[float, float] | None = None
+    crossings: tuple[float, ...] = ()
+    dominant: Term | None = None
+    fails_everywhere: bool = False
+    criterion: Criterion = Criterion.COST
+    limit: float = math.nan
+
+
+@dataclasses.dataclass
+class _Bracket:
+    """Internal: one sign change being refined (moment row i, parameter j, base sample)."""
+
+    i: int
+    j: int
+    context: int
+    base: np.ndarray
+    lo: float
+    hi: float
+    fail_lo: bool
+    term_fail: int
+
+
+def _limit_of(engine: SparseEvaluator, criterion: Criterion, limit: Any) -> float:
+    """The criterion's limit: ``limit``, else the scenario's threshold or FOS_LIMIT."""
+    if limit is None:
+        return (float(engine.twin.scenario.cost.threshold) if criterion is Criterion.COST
+                else FOS_LIMIT)
+    if isinstance(limit, bool) or not isinstance(limit, numbers.Real) or not np.isfinite(limit):
+        raise ParameterError(f"limit: expected a finite number or None, got {limit!r}")
+    return float(limit)
+
+
+def _badness(res: SparseResult, criterion: Criterion) -> np.ndarray:
+    """(m, n) how bad each sample is under ``criterion`` (higher is worse)."""
+    if criterion is Criterion.COST:
+        bad = res.cost
+    elif criterion is Criterion.CONTACT:
+        bad = -res.fos_contact_min
+    else:
+        bad = -res.fos_motor
+    return np.where(res.diverged, np.inf, bad)
+
+
+def _worst_corners(engine: SparseEvaluator, steps: np.ndarray, criterion: Criterion
+                   ) -> np.ndarray:
+    """Per moment, the corner (k,) of the box that is worst under ``criterion``: (m, k)."""
+    corners = engine.box.corners()
+    res = engine.evaluate(steps, corners)
+    return corners[np.argmax(_badness(res, criterion), axis=1)]
+
+
+def critical_values(recording, twin: Twin, steps: Any, *, n_grid: int = 33,
+                    rtol: float = 1e-3, others: Sequence[OthersAt] = (OthersAt.NOMINAL,
+                                                                     OthersAt.WORST),
+                    criterion: Criterion = Criterion.COST, limit: float | None = None,
+                    horizon: int | None = None, mode: SparseMode = SparseMode.STEP,
+                    nthread: int = 0, split: int = 7,
+                    evaluator: SparseEvaluator | None = None) -> tuple[CriticalValue, ...]:
+    """Critical value of every parameter at every moment, by sweep and bisection.
+
+    For each moment and each parameter, the parameter is swept over ``n_grid`` values of
+    its range (evenly spaced in prior quantiles) with the others held at their NOMINAL
+    values, and again with the others at the WORST corner of the box: the corner that is
+    worst under ``criterion`` at that moment (highest cost, or lowest FOS; for the bundled
+    scenario the heaviest mass and the lowest friction). Every change between passing
+    and failing (``cost > threshold`` by default; a diverged sample fails) between
+    neighbouring samples is refined by multi-point bisection:
+    each round evaluates ``split`` interior points of every open bracket in one batched
+    call and keeps the sub-interval with the sign change, until its width is at most
+    ``rtol`` times the crossing's magnitude. The reported value is the refined crossing
+    nearest the nominal value; a sign change only shows where the curve is sampled, so
+    two crossings within one grid interval go unseen.
+
+    Args:
+        recording: the frequent rollout.
+        twin: its twin.
+        steps: moments, physics step indices (m,).
+        n_grid: sweep samples per parameter (>= 2).
+        rtol: relative tolerance of the refined value.
+        others: which placements of the other parameters to sweep with.
+        criterion: what fails (see :class:`Criterion`); default the cost.
+        limit: the criterion's limit (default: the scenario's threshold for COST,
+            :data:`FOS_LIMIT` for the factors of safety).
+        horizon: physics steps per evaluation (default: the scenario's).
+        mode: STEP or SOLVE.
+        nthread: threads (0: all CPUs).
+        split: interior points per bracket and bisection round (>= 1).
+        evaluator: an evaluator to reuse.
+
+    Returns:
+        One :class:`CriticalValue` per (moment, parameter, placement of the others), in
+        that order.
+    """
+    engine = evaluator or SparseEvaluator(recording, twin, horizon=horizon, mode=mode,
+                                          nthread=nthread)
+    steps = engine.check_steps(steps)
+    n_grid = _check_int("n_grid", n_grid, 2)
+    split = _check_int("split", split, 1)
+    rtol = _check_fraction("rtol", rtol)
+    criterion = _check_enum("criterion", criterion, Criterion)
+    limit = _limit_of(engine, criterion, limit)
+    contexts = tuple(_check_enum("others", o, OthersAt) for o in others)
+    if not contexts:
+        raise ParameterError("others: expected at least one of OthersAt.NOMINAL, OthersAt.WORST")
+    box = engine.box
+    k, m = box.ndim, steps.shape[0]
+    nominal = box.nominal
+    bases = np.empty((len(contexts), m, k))  # the others' values per context and moment
+    for c, ctx in enumerate(contexts):
+        bases[c] = (nominal if ctx is OthersAt.NOMINAL
+                    else _worst_corners(engine, steps, criterion))
+    grid_unit = np.linspace(0.0, 1.0, n_grid)
+    axes = np.clip(box.from_unit(np.repeat(grid_unit[:, None], k, axis=1)), box.low, box.high)
+
+    # grid sweeps: moments sharing the same base share one batched call
+    failed = np.empty((len(contexts), m, k, n_grid), dtype=bool)
+    term = np.empty((len(contexts), m, k, n_grid), dtype=np.int8)
+    for c in range(len(contexts)):
+        groups: dict[bytes, list[int]] = {}
+        for i in range(m):
+            groups.setdefault(bases[c, i].tobytes(), []).append(i)
+        for rows in groups.values():
+            samples = np.repeat(bases[c, rows[0]][None], k * n_grid, axis=0)
+            for j in range(k):
+                samples[j * n_grid:(j + 1) * n_grid, j] = axes[:, j]
+            res = engine.evaluate(steps[rows], samples)
+            failed[c, rows] = res.fails(criterion, limit=limit).reshape(len(rows), k, n_grid)
+            term[c, rows] = res.dominant.reshape(len(rows), k, n_grid)
+
+    brackets: list[_Bracket] = []
+    for c, i, j in np.ndindex(len(contexts), m, k):
+        f = failed[c, i, j]
+        for g in np.flatnonzero(f[1:] != f[:-1]):
+            fail_term = term[c, i, j, g + 1] if f[g + 1] else term[c, i, j, g]
+            brackets.append(_Bracket(i=i, j=j, context=c, base=bases[c, i].copy(),
+                                     lo=float(axes[g, j]), hi=float(axes[g + 1, j]),
+                                     fail_lo=bool(f[g]), term_fail=int(fail_term)))
+    _refine(engine, steps, brackets, rtol=rtol, split=split, criterion=criterion, limit=limit)
+
+    out: list[CriticalValue] = []
+    for i in range(m):
+        for j, name in enumerate(box.names):
+            for c, ctx in enumerate(contexts):
+                mine = sorted((b for b in brackets if (b.i, b.j, b.context) == (i, j, c)),
+                              key=lambda b: b.lo)
+                other_values = {box.names[q]: float(bases[c, i, q]) for q in range(k) if q != j}
+                if not mine:
+                    out.append(CriticalValue(
+                        parameter=name, value=None, direction=None, step=int(steps[i]),
+                        others=other_values, others_at=ctx,
+                        fails_everywhere=bool(failed[c, i, j].all()), criterion=criterion,
+                        limit=limit))
+                    continue
+                mids = [0.5 * (b.lo + b.hi) for b in mine]
+                best = int(np.argmin([abs(v - nominal[j]) for v in mids]))
+                b = mine[best]
+                out.append(CriticalValue(
+                    parameter=name, value=mids[best],
+                    direction=FailSide.BELOW if b.fail_lo else FailSide.ABOVE,
+                    step=int(steps[i]), others=other_values, others_at=ctx,
+                    bracket=(b.lo, b.hi), crossings=tuple(mids), dominant=Term(b.term_fail),
+                    criterion=criterion, limit=limit))
+    return tuple(out)
+
+
+def _refine(engine: SparseEvaluator, steps: np.ndarray, brackets: list[_Bracket], *,
+            rtol: float, split: int, criterion: Criterion, limit: float | None,
+            max_rounds: int = 40) -> None:
+    """Shrink every bracket around its sign change to ``rtol``, in place."""
+    box = engine.box
+    span = box.high - box.low
+    fractions = np.arange(1, split + 1) / (split + 1)
+    for _ in range(max_rounds):
+        open_ = [b for b in brackets
+                 if b.hi - b.lo > max(rtol * abs(0.5 * (b.lo + b.hi)), 1e-12 * span[b.j])]
+        if not open_:
+            return
+        by_moment: dict[int, list[_Bracket]] = {}
+        for b in open_:
+            by_moment.setdefault(b.i, []).append(b)
+        for i, group in by_moment.items():
+            samples = np.repeat(np.stack([b.base for b in group]), split, axis=0)
+            points = np.array([b.lo + (b.hi - b.lo) * fractions for b in group])  # (nb, split)
+            cols = np.repeat([b.j for b in group], split)
+            samples[np.arange(samples.shape[0]), cols] = points.reshape(-1)
+            res = engine.evaluate(steps[i:i + 1], samples)
+            fail = res.fails(criterion, limit=limit)[0].reshape(len(group), split)
+            dominant = res.dominant[0].reshape(len(group), split)
+            for b, f, pts, terms in zip(group, fail, points, dominant):
+                # the points with lo and hi: [lo, *pts, hi]; keep the first sign change
+                changed = np.flatnonzero(f != b.fail_lo)
+                q = int(changed[0]) if changed.size else split
+                new_lo = b.lo if q == 0 else float(pts[q - 1])
+                new_hi = b.hi if q == split else float(pts[q])
+                # the cost term on the failing side, next to the crossing
+                side = q if not b.fail_lo else q - 1
+                if 0 <= side < split:
+                    b.term_fail = int(terms[side])
+                b.lo, b.hi = new_lo, new_hi
+    _log.warning("critical-value bisection stopped after %d rounds", max_rounds)
+
+
+# --------------------------------------------------------------------------
+# probability of success
+# --------------------------------------------------------------------------
+
+
+def wilson_interval(successes: int, n: int, *, confidence: float = 0.95) -> tuple[float, float]:
+    """Wilson score interval of a binomial proportion.
+
+    Args:
+        successes: number of successes, 0 <= successes <= n.
+        n: number of trials, >= 1.
+        confidence: two-sided confidence level in (0, 1).
+
+    Returns:
+        (low, high) bounds of the proportion.
+    """
+    n = _check_int("n", n, 1)
+    successes = _check_int("successes", successes, 0)
+    if successes > n:
+        raise ParameterError(f"successes: expected at most n = {n}, got {successes}")
+    confidence = _check_fraction("confidence", confidence)
+    from scipy.stats import norm
+
+    z = float(norm.ppf(0.5 + 0.5 * confidence))
+    p = successes / n
+    z2n = z * z / n
+    centre = (p + 0.5 * z2n) / (1.0 + z2n)
+    half = z / (1.0 + z2n) * math.sqrt(p * (1.0 - p) / n + 0.25 * z2n / n)
+    return max(0.0, centre - half), min(1.0, centre + half)
+
+
+@dataclasses.dataclass(frozen=True)
+class SuccessProbability:
+    """Probability of success over the uncertainty box under its prior.
+
+    Attributes:
+        p: fraction of samples that pass at every moment.
+        interval: Wilson score interval (low, high) of p.
+        confidence: the interval's confidence level.
+        n: number of samples.
+        n_fail: number of failing samples.
+        criterion: what counts as failing.
+        limit: the criterion's limit.
+        dominant: the cost term that dominates most failures (None without failures).
+        term_counts: failures per dominant cost term, taken at each failing sample's worst
+            moment (the highest cost, or the lowest FOS of the criterion).
+        dominant_actuator: the actuator that limits most motor-dominated failures, or None.
+        actuator_counts: motor-dominated failures per limiting actuator.
+        result: the underlying sweep.
+    """
+
+    p: float
+    interval: tuple[float, float]
+    confidence: float
+    n: int
+    n_fail: int
+    criterion: Criterion
+    limit: float
+    dominant: Term | None
+    term_counts: Mapping[Term, int]
+    dominant_actuator: str | None
+    actuator_counts: Mapping[str, int]
+    result: SparseResult = dataclasses.field(repr=False)
+
+
+def probability_of_success(recording, twin: Twin, steps: Any, *, n: int = 256,
+                           seed: int | None = 0, confidence: float = 0.95,
+                           criterion: Criterion = Criterion.COST, limit: float | None = None,
+                           horizon: int | None = None, mode: SparseMode = SparseMode.STEP,
+                           nthread: int = 0,
+                           evaluator: SparseEvaluator | None = None) -> SuccessProbability:
+    """Probability that the motion succeeds at all given moments, under the box's prior.
+
+    A sample succeeds when its cost is at most the threshold (and it does not diverge) at
+    every moment (or, with another ``criterion``, when it does not fail that one). The samples are a scrambled Sobol sequence mapped through the prior; the
+    interval is Wilson's score interval, which treats them as independent draws (for a
+    quasi-random sample it is conservative).
+
+    Args:
+        recording: the frequent rollout.
+        twin: its twin.
+        steps: moments, physics step indices (m,).
+        n: number of Sobol samples (a power of 2 keeps the sequence balanced).
+        seed: Sobol seed.
+        confidence: confidence level of the interval.
+        criterion: what fails (see :class:`Criterion`); default the cost.
+        limit: the criterion's limit (default: the scenario's threshold for COST,
+            :data:`FOS_LIMIT` for the factors of safety).
+        horizon: physics steps per evaluation (default: the scenario's).
+        mode: STEP or SOLVE.
+        nthread: threads (0: all CPUs).
+        evaluator: an evaluator to reuse.
+
+    Returns:
+        The :class:`SuccessProbability`.
+    """
+    confidence = _check_fraction("confidence", confidence)
+    criterion = _check_enum("criterion", criterion, Criterion)
+    engine = evaluator or SparseEvaluator(recording, twin, horizon=horizon, mode=mode,
+                                          nthread=nthread)
+    limit = _limit_of(engine, criterion, limit)
+    res = sweep(recording, twin, steps, n=n, method=SweepMethod.SOBOL, seed=seed,
+                evaluator=engine)
+    failed = res.fails(criterion, limit=limit)
+    fail = failed.any(axis=0)
+    n_total = res.n_samples
+    n_fail = int(fail.sum())
+    worst = np.argmax(_badness(res, criterion), axis=0)  # (n,) moment row
+    cols = np.arange(n_total)
+    terms = res.dominant[worst, cols][fail]
+    limiting = res.motor_argmax[worst, cols][fail][terms == Term.MOTOR]
+    term_counts = {t: int((terms == t).sum()) for t in Term if (terms == t).any()}
+    actuator_counts = {res.actuator_names[a]: int(c)
+                       for a, c in zip(*np.unique(limiting, return_counts=True))}
+    dominant = max(term_counts, key=term_counts.get) if term_counts else None
+    dominant_actuator = (max(actuator_counts, key=actuator_counts.get)
+                         if actuator_counts else None)
+    return SuccessProbability(
+        p=(n_total - n_fail) / n_total,
+        interval=wilson_interval(n_total - n_fail, n_total, confidence=confidence),
+        confidence=confidence, n=n_total, n_fail=n_fail, criterion=criterion, limit=limit,
+        dominant=dominant,
+        term_counts=term_counts, dominant_actuator=dominant_actuator,
+        actuator_counts=actuator_counts, result=res)
