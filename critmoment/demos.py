@@ -67,6 +67,10 @@ class DemoOptions:
         release_opening: normalised opening the picker reaches when it lets go.
         receiver_offset: how far behind the cube centre the receiver's TCP stops, along
             −x [m].
+        carry_opening: normalised picker gripper command while it carries the cube to the
+            meeting point (0 = fully closed; a partial opening weakens the grip).
+        jitter: standard deviation of white noise added to the arm joint targets [rad], like
+            an imperfect learned policy (seeded with the demo's seed).
         n_steps: number of 50 Hz actions (before time scaling).
         fps: action rate [Hz].
     """
@@ -77,12 +81,18 @@ class DemoOptions:
     time_scale: float = 1.0
     release_opening: float = 1.0
     receiver_offset: float = 0.01
+    carry_opening: float = 0.0
+    jitter: float = 0.0
     n_steps: int = 400
     fps: float = 50.0
 
     def __post_init__(self):
         if not 0.2 <= self.time_scale <= 5.0:
             raise ParameterError(f"time_scale: expected 0.2..5, got {self.time_scale}")
+        if not 0.0 <= self.carry_opening <= 1.0:
+            raise ParameterError(f"carry_opening: expected 0..1, got {self.carry_opening}")
+        if not 0.0 <= self.jitter <= 0.1:
+            raise ParameterError(f"jitter: expected 0..0.1 rad, got {self.jitter}")
         if not 0.0 <= self.release_opening <= 1.0:
             raise ParameterError(f"release_opening: expected 0..1, got {self.release_opening}")
         if self.n_steps < 100:
@@ -175,7 +185,8 @@ def _waypoints(box: np.ndarray, opt: DemoOptions, start_right, start_left):
         (130, grasp, RIGHT_PICK, 1.0),
         (170, grasp, RIGHT_PICK, 0.0),
         (195, lifted, RIGHT_PICK, 0.0),
-        (220, meet, RIGHT_PICK, 0.0),
+        (220, meet, RIGHT_PICK, opt.carry_opening),
+        (260, meet, RIGHT_PICK, opt.carry_opening),
         (300, meet, RIGHT_PICK, 0.0),
         (340, meet, RIGHT_PICK, opt.release_opening),
         (370, retreat, RIGHT_PICK, opt.release_opening),
@@ -249,6 +260,12 @@ def scripted_transfer(seed: int = 0, scenario: Scenario | None = None, *,
         q = _joint_path(model, data, a, points, n, opt.time_scale)
         actions[:, col:col + 6] = q + _gravity_offset(model, data, a, q)
         actions[:, col + 6] = _interpolate(points, n, opt.time_scale)[2]
+    if opt.jitter > 0:
+        noise = np.random.default_rng(seed).normal(0.0, opt.jitter, size=(n, 12))
+        actions[:, [0, 1, 2, 3, 4, 5, 7, 8, 9, 10, 11, 12]] += noise
+        for arm, col in (("left", 0), ("right", 7)):
+            rng = model.jnt_range[[model.joint(f"{arm}/{j}").id for j in _ARM_JOINTS]]
+            actions[:, col:col + 6] = np.clip(actions[:, col:col + 6], rng[:, 0], rng[:, 1])
     actions[0] = start
     meta = {"generator": "critmoment.demos.scripted_transfer", "seed": int(seed),
             "options": dataclasses.asdict(opt)}

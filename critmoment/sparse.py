@@ -37,9 +37,10 @@ mass or friction at all. They respond over the following steps, as the arm sags
 under the load, so a horizon of a few tens of steps is needed to see motor
 overload. MuJoCo's friction cone keeps every contact force inside
 ``λt ≤ μ·λn``, so the contact FOS never falls below 1 (a slipping grip reads 1)
-and the contact term of the cost never exceeds ``A``: with the default cost
-(A = 0.8, threshold 0.9) slip alone never crosses the threshold. See
-:class:`Criterion` for thresholds on the factors of safety themselves.
+and the contact term of the cost never exceeds ``A``: with the thesis' A = 0.8
+and threshold 0.9 slip alone would never cross the threshold (the bundled
+scenario sets A = 1). See :class:`Criterion` for limits on the factors of
+safety themselves.
 
 Modes. :attr:`SparseMode.STEP` integrates (``mj_step``). :attr:`SparseMode.SOLVE`
 solves the dynamics once at the restored state (``mj_forward``) without
@@ -133,7 +134,7 @@ class Term(enum.IntEnum):
     """Which term of the cost dominates a sample (an ``IntEnum``: arrays compare to it)."""
 
     CONTACT = 0
-    """The contact term A·exp(−α(FOS_contact − 1)) is the larger: the grip slips."""
+    """The contact term A·exp(−α(FOS_grasp − 1)) is the larger: the grip slips."""
     MOTOR = 1
     """The motor term B·exp(−β(FOS_motor − 1)) is the larger: a motor is overloaded."""
     DIVERGED = 2
@@ -149,7 +150,8 @@ class Criterion(enum.Enum):
     COST = "cost"
     """The cost exceeds the limit (default: the scenario's threshold)."""
     CONTACT = "contact"
-    """The weakest gripper's contact FOS is below the limit (default :data:`FOS_LIMIT`)."""
+    """The grasp's contact FOS (``fos_grasp``, the one the cost uses) is below the limit
+    (default :data:`FOS_LIMIT`)."""
     MOTOR = "motor"
     """The motor FOS is below the limit (default :data:`FOS_LIMIT`)."""
 
@@ -208,6 +210,9 @@ class SparseResult:
         cost_params: the cost constants (A, B, α, β, threshold).
         fos_contact: contact FOS per gripper, minimum over the horizon, (m, n, G);
             +inf without slip demand, NaN where diverged.
+        fos_grasp: contact FOS of the grasp (eq. 12 over every gripper's contacts, +inf
+            while the object rests on its support), the one the cost uses, minimum over
+            the horizon, (m, n); NaN where diverged.
         fos_motor: motor FOS, minimum over the horizon, (m, n); NaN where diverged.
         motor_argmax: index of the limiting actuator, (m, n) int64.
         cost: cost (eq. 15), maximum over the horizon, (m, n); +inf where diverged.
@@ -233,6 +238,7 @@ class SparseResult:
     mode: SparseMode
     cost_params: CostParams
     fos_contact: np.ndarray
+    fos_grasp: np.ndarray
     fos_motor: np.ndarray
     motor_argmax: np.ndarray
     cost: np.ndarray
@@ -276,7 +282,7 @@ class SparseResult:
         """(m, n) bool: the samples that fail under ``criterion``.
 
         Args:
-            criterion: COST (cost > limit), CONTACT (weakest contact FOS < limit) or MOTOR
+            criterion: COST (cost > limit), CONTACT (grasp FOS < limit) or MOTOR
                 (motor FOS < limit).
             limit: the limit; default the scenario's threshold for COST and
                 :data:`FOS_LIMIT` for the factors of safety.
@@ -287,7 +293,7 @@ class SparseResult:
         if criterion is Criterion.COST:
             bad = self.cost > (self.cost_params.threshold if limit is None else limit)
         elif criterion is Criterion.CONTACT:
-            bad = self.fos_contact_min < (FOS_LIMIT if limit is None else limit)
+            bad = self.fos_grasp < (FOS_LIMIT if limit is None else limit)
         else:
             bad = self.fos_motor < (FOS_LIMIT if limit is None else limit)
         return bad | self.diverged
@@ -297,11 +303,6 @@ class SparseResult:
         """(m, n) int8 of :class:`Term` values: the larger cost term, or DIVERGED."""
         term = np.where(self.cost_motor > self.cost_contact, Term.MOTOR, Term.CONTACT)
         return np.where(self.diverged, Term.DIVERGED, term).astype(np.int8)
-
-    @property
-    def fos_contact_min(self) -> np.ndarray:
-        """(m, n) contact FOS of the weakest gripper (what the cost uses)."""
-        return self.fos_contact.min(axis=-1)
 
     def column(self, name: str) -> np.ndarray:
         """The values (n,) of parameter ``name`` in ``samples``."""
@@ -517,7 +518,8 @@ class SparseEvaluator:
         ngrip, nu = len(twin.scenario.grippers), twin.model.nu
         nsd = twin.nsensordata
         out = {
-            "fos_contact": np.empty((m, n, ngrip)), "fos_motor": np.empty((m, n)),
+            "fos_contact": np.empty((m, n, ngrip)), "fos_grasp": np.empty((m, n)),
+            "fos_motor": np.empty((m, n)),
             "motor_argmax": np.empty((m, n), np.int64), "cost": np.empty((m, n)),
             "cost_contact": np.empty((m, n)), "cost_motor": np.empty((m, n)),
             "object_acc": np.empty((m, n, 3)), "actuator_norm": np.empty((m, n, nu)),
@@ -587,12 +589,12 @@ class SparseEvaluator:
         rows = np.arange(nsim)
         if self.horizon == 1:
             worst = np.zeros(nsim, dtype=np.int64)
-            fos_contact = sig.fos_contact[:, 0]
+            fos_contact, fos_grasp = sig.fos_contact[:, 0], sig.fos_grasp[:, 0]
             fos_motor, motor_argmax = sig.fos_motor[:, 0], sig.motor_argmax[:, 0]
             object_acc, actuator_norm = sig.object_acc[:, 0], sig.actuator_norm[:, 0]
         else:
             worst = np.argmax(sig.cost, axis=1)
-            fos_contact = sig.fos_contact.min(axis=1)
+            fos_contact, fos_grasp = sig.fos_contact.min(axis=1), sig.fos_grasp.min(axis=1)
             weakest = np.argmin(sig.fos_motor, axis=1)
             fos_motor = sig.fos_motor[rows, weakest]
             motor_argmax = sig.motor_argmax[rows, weakest]
@@ -602,10 +604,10 @@ class SparseEvaluator:
             object_acc = sig.object_acc[rows, np.argmax(np.linalg.norm(sig.object_acc, axis=-1),
                                                         axis=1)]
         with np.errstate(over="ignore", invalid="ignore"):
-            term_c = cp.A * np.exp(-cp.alpha * (sig.fos_contact[rows, worst].min(axis=-1) - 1.0))
+            term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp[rows, worst] - 1.0))
             term_m = cp.B * np.exp(-cp.beta * (sig.fos_motor[rows, worst] - 1.0))
         values = {
-            "fos_contact": fos_contact, "fos_motor": fos_motor, "motor_argmax": motor_argmax,
+            "fos_contact": fos_contact, "fos_grasp": fos_grasp, "fos_motor": fos_motor, "motor_argmax": motor_argmax,
             "cost": sig.cost[rows, worst], "cost_contact": term_c, "cost_motor": term_m,
             "object_acc": object_acc, "actuator_norm": actuator_norm,
             "contact_support": sig.contact_support[rows, worst],
@@ -615,7 +617,7 @@ class SparseEvaluator:
         for name, value in values.items():
             out[name][i, sl] = value
         if diverged.any():
-            for name in ("fos_contact", "fos_motor", "cost_contact", "cost_motor"):
+            for name in ("fos_contact", "fos_grasp", "fos_motor", "cost_contact", "cost_motor"):
                 out[name][i, sl][diverged] = np.nan
             out["cost"][i, sl][diverged] = np.inf
 
@@ -813,7 +815,7 @@ def _badness(res: SparseResult, criterion: Criterion) -> np.ndarray:
     if criterion is Criterion.COST:
         bad = res.cost
     elif criterion is Criterion.CONTACT:
-        bad = -res.fos_contact_min
+        bad = -res.fos_grasp
     else:
         bad = -res.fos_motor
     return np.where(res.diverged, np.inf, bad)

@@ -1,0 +1,386 @@
+"""Tests for critmoment.scenario (TOML loading and validation) and critmoment.params."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from critmoment.exceptions import InputFileError, ParameterError, ScenarioError
+from critmoment.params import (ComOffsetParameter, FrictionParameter, MassParameter, Prior,
+                               UncertaintyBox)
+from critmoment.scenario import (BUNDLED_SCENARIOS, Scenario, bundled_scenario_path,
+                                 load_scenario)
+from critmoment.twin import Twin
+
+BUNDLED = bundled_scenario_path().parent
+
+
+def _copy(tmp_path: Path, edits: dict[str, list[tuple[str, str]]] | None = None) -> Path:
+    """Copy the bundled scenario folder to tmp_path and apply text replacements per file.
+
+    Each (old, new) must occur in the file, so that a test cannot silently stop testing
+    what it says when the bundled files change.
+    """
+    folder = tmp_path / "scn"
+    shutil.copytree(BUNDLED, folder)
+    for name, pairs in (edits or {}).items():
+        path = folder / name
+        text = path.read_text()
+        for old, new in pairs:
+            assert old in text, f"{old!r} not in the bundled {name}"
+            text = text.replace(old, new, 1)
+        path.write_text(text)
+    return folder
+
+
+def _toml(tmp_path, *pairs):
+    return _copy(tmp_path, {"scenario.toml": list(pairs)})
+
+
+# ---------------------------------------------------------------------------
+# the bundled scenario
+# ---------------------------------------------------------------------------
+
+
+def test_bundled_scenario_fields(scenario):
+    assert isinstance(scenario, Scenario)
+    assert scenario.name == "aloha_transfer_cube"
+    assert scenario.mjcf.name == "scene.xml" and scenario.mjcf.is_file()
+    assert scenario.keyframe == "home"
+    assert (scenario.object_body, scenario.object_geom) == ("box", "box")
+    assert scenario.gripper_names == ("left", "right")
+    assert scenario.grippers[1].geoms == ("right/left_pad", "right/right_pad")
+    assert scenario.support_geoms == ("table",)
+    assert (scenario.picker, scenario.receiver) == ("right", "left")
+    assert scenario.actions.name == "aloha14" and scenario.actions.width == 14
+    assert scenario.actions.labels[6] == "left/gripper"
+    assert scenario.actions.labels[13] == "right/gripper"
+    assert scenario.fps == 50.0 and scenario.range_policy == "error"
+    # a short key matches the actuator of both arms
+    assert scenario.limits["left/elbow"] == 15.0 and scenario.limits["right/elbow"] == 15.0
+    assert scenario.limits["right/wrist_rotate"] == 1.0
+    assert scenario.limits["left/right_finger"] == 5.0
+    assert len(scenario.limits) == 16
+    assert scenario.box.names == ("mass", "friction")
+    np.testing.assert_array_equal(scenario.box.nominal, [0.05, 1.0])
+    np.testing.assert_array_equal(scenario.box.low, [0.05, 0.2])
+    np.testing.assert_array_equal(scenario.box.high, [10.0, 1.5])
+    assert scenario.horizon == 1
+
+
+def test_load_scenario_accepts_name_folder_and_file():
+    by_default = load_scenario()
+    for arg in ("aloha_transfer_cube", BUNDLED, BUNDLED / "scenario.toml", str(BUNDLED)):
+        s = load_scenario(arg)
+        assert s.mjcf == by_default.mjcf and s.limits == by_default.limits
+        assert s.box == by_default.box
+
+
+def test_bundled_scenario_path_unknown_name():
+    assert BUNDLED_SCENARIOS == ("aloha_transfer_cube",)
+    with pytest.raises(ScenarioError, match="unknown bundled scenario 'nope'.*aloha_transfer_cube"):
+        bundled_scenario_path("nope")
+
+
+def test_scenario_replace_box(scenario):
+    narrowed = scenario.replace(box=scenario.box.with_range("mass", 0.1, 2.0, nominal=0.5))
+    np.testing.assert_array_equal(narrowed.box.nominal, [0.5, 1.0])
+    np.testing.assert_array_equal(scenario.box.nominal, [0.05, 1.0])  # the original is frozen
+
+
+# ---------------------------------------------------------------------------
+# files
+# ---------------------------------------------------------------------------
+
+
+def test_missing_scenario_file(tmp_path):
+    with pytest.raises(InputFileError, match="scenario file not found.*nope.toml"):
+        load_scenario(tmp_path / "nope.toml")
+    # a folder without scenario.toml
+    with pytest.raises(InputFileError, match="scenario file not found"):
+        load_scenario(tmp_path)
+
+
+def test_missing_mjcf(tmp_path):
+    folder = _toml(tmp_path, ('mjcf = "scene.xml"', 'mjcf = "gone.xml"'))
+    with pytest.raises(InputFileError, match=r"\[model\] mjcf: file not found: .*gone.xml"):
+        load_scenario(folder)
+
+
+def test_bad_toml(tmp_path):
+    folder = _toml(tmp_path, ("[object]", "[object"))
+    with pytest.raises(ScenarioError, match="not valid TOML"):
+        load_scenario(folder)
+
+
+def test_mjcf_that_does_not_compile(tmp_path):
+    folder = _copy(tmp_path, {"scene.xml": [('type="box" size="0.02 0.02 0.02"',
+                                             'type="box" size="oops"')]})
+    with pytest.raises(ScenarioError, match="could not compile MJCF"):
+        load_scenario(folder)
+
+
+# ---------------------------------------------------------------------------
+# structure
+# ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("old, new, message", [
+    ('[object]\nbody = "box"\ngeom = "box"\n', "", "missing required key 'object'"),
+    ('[model]\nmjcf = "scene.xml"', '[model]\nfile = "scene.xml"', r"\[model\]: missing required key 'mjcf'"),
+    ('name = "aloha_transfer_cube"', 'colour = "red"\nname = "x"', r"unknown top-level keys \['colour'\]"),
+    ("threshold = 0.9", "threshold = 0.9\ngamma = 3.0", r"\[cost\]: unknown keys \['gamma'\]"),
+    ('convention = "aloha14"', 'convention = "aloha16"', r"\[actions\] convention: expected one of"),
+    ('range_policy = "error"', 'range_policy = "ignore"', r"\[actions\] range_policy"),
+    ("fps = 50.0", "fps = 0.0", r"\[actions\] fps: expected > 0"),
+    ("fps = 50.0", "fps = true", r"\[actions\] fps"),
+    ('arms = ["left", "right"]', 'arms = ["left"]', "expected two arm prefixes"),
+    ("gripper_close = 0.01844", "gripper_close = 0.07", "expected gripper_open > gripper_close"),
+    ('picker = "right"', 'picker = "middle"', r"\[task\] picker: expected one of the grippers"),
+    ("waist = 10.0", "waist = -1.0", r"\[limits\] waist: expected a force limit > 0"),
+    ("threshold = 0.9", "threshold = 0.0", r"\[cost\] threshold: expected a finite number > 0"),
+    ("horizon = 1", "horizon = 0", r"\[sparse\] horizon: expected an integer >= 1"),
+])
+def test_malformed_scenario(tmp_path, old, new, message):
+    folder = _toml(tmp_path, (old, new))
+    with pytest.raises(ScenarioError, match=message):
+        load_scenario(folder)
+
+
+def test_empty_grippers_table(tmp_path):
+    text = (BUNDLED / "scenario.toml").read_text()
+    start, end = text.index("[grippers.left]"), text.index("[support]")
+    folder = _toml(tmp_path, (text[start:end], ""),
+                   ('name = "aloha_transfer_cube"', 'grippers = {}\nname = "x"'))
+    with pytest.raises(ScenarioError, match=r"\[grippers\]: expected at least one"):
+        load_scenario(folder)
+
+
+# ---------------------------------------------------------------------------
+# names checked against the model
+# ---------------------------------------------------------------------------
+
+
+def test_unknown_gripper_geom_lists_valid_names(tmp_path):
+    folder = _toml(tmp_path, ('"left/left_pad", "left/right_pad"', '"left/left_pad", "left/thumb"'))
+    with pytest.raises(ScenarioError) as info:
+        load_scenario(folder)
+    msg = str(info.value)
+    assert "[grippers.left] geoms: unknown geom 'left/thumb'" in msg
+    for valid in ("left/left_pad", "right/right_pad", "table", "box"):
+        assert valid in msg
+
+
+def test_unknown_object_body(tmp_path):
+    folder = _toml(tmp_path, ('body = "box"\ngeom', 'body = "cube"\ngeom'))
+    with pytest.raises(ScenarioError, match=r"\[object\] body: unknown body 'cube'; valid bod\w+: .*box"):
+        load_scenario(folder)
+
+
+def test_unknown_support_geom(tmp_path):
+    folder = _toml(tmp_path, ('geoms = ["table"]', 'geoms = ["floor"]'))
+    with pytest.raises(ScenarioError, match=r"\[support\] geoms: unknown geom 'floor'.*table"):
+        load_scenario(folder)
+
+
+def test_unknown_limit_actuator(tmp_path):
+    folder = _toml(tmp_path, ("waist = 10.0", "waist = 10.0\nhip = 3.0"))
+    with pytest.raises(ScenarioError, match=r"\[limits\] 'hip' matches no actuator; actuators: .*left/waist"):
+        load_scenario(folder)
+
+
+def test_missing_limit(tmp_path):
+    folder = _toml(tmp_path, ("waist = 10.0\n", ""))
+    with pytest.raises(ScenarioError, match=r"missing \['left/waist', 'right/waist'\]"):
+        load_scenario(folder)
+
+
+def test_unknown_keyframe(tmp_path):
+    folder = _toml(tmp_path, ('keyframe = "home"', 'keyframe = "away"'))
+    with pytest.raises(ScenarioError, match=r"unknown keyframe 'away'; valid: \['home'\]"):
+        load_scenario(folder)
+
+
+def test_unknown_parameter_target(tmp_path):
+    folder = _toml(tmp_path, ('[uncertainty.mass]\nbody = "box"', '[uncertainty.mass]\nbody = "brick"'))
+    with pytest.raises(ScenarioError, match=r"unknown body 'brick'; the model's bodys are: .*box"):
+        load_scenario(folder)
+
+
+# ---------------------------------------------------------------------------
+# the uncertainty box in the scenario
+# ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("old, new, message", [
+    ("range = [0.05, 10.0]", "range = [10.0, 0.05]", "expected range low < high"),
+    ("range = [0.05, 10.0]", "range = [0.05, 0.05]", "expected range low < high"),
+    ("range = [0.05, 10.0]", "range = [-1.0, 10.0]", r"expected values > 0.0 kg"),
+    ("range = [0.05, 10.0]", "range = [0.05, 10.0, 3.0]", r"range: expected \[low, high\]"),
+    ("range = [0.05, 10.0]", 'range = "wide"', r"range: expected \[low, high\]"),
+    ("nominal = 0.05", "nominal = 20.0", "expected nominal inside the range"),
+    ("nominal = 0.05", 'nominal = "light"', "nominal: expected"),
+    ('prior = "uniform"', 'prior = "normal"', r"prior: expected one of \['uniform', 'loguniform'\]"),
+    ("[uncertainty.mass]", "[uncertainty.weight]", "unknown parameter kind 'weight'"),
+    ('[uncertainty.mass]\nbody = "box"', '[uncertainty.mass]\nbody = 3', r'expected body = "<name>"'),
+])
+def test_bad_uncertainty(tmp_path, old, new, message):
+    folder = _toml(tmp_path, (old, new))
+    with pytest.raises(ScenarioError, match=r"\[uncertainty\.(mass|weight)\].*" + message):
+        load_scenario(folder)
+
+
+def test_named_parameter_with_kind(tmp_path):
+    folder = _toml(tmp_path, ('[uncertainty.mass]\nbody = "box"',
+                              '[uncertainty.payload]\nkind = "mass"\nbody = "box"'))
+    s = load_scenario(folder)
+    assert s.box.names == ("payload", "friction")
+    assert isinstance(s.box.parameters[0], MassParameter)
+
+
+def test_friction_parameter_needs_priority(tmp_path):
+    # without priority MuJoCo mixes friction with max(): the parameter could not lower it
+    folder = _copy(tmp_path, {"scene.xml": [('priority="1"', 'priority="0"')]})
+    with pytest.raises(ScenarioError, match=r"friction parameter on geom 'box' needs that geom's "
+                                            r"priority.*expected priority > 0, got 0"):
+        load_scenario(folder)
+
+
+def test_friction_parameter_without_priority_is_fine_without_friction_parameter(tmp_path):
+    text = (BUNDLED / "scenario.toml").read_text()
+    start = text.index("[uncertainty.friction]")
+    end = text.index("\n\n", start)
+    folder = _copy(tmp_path, {"scene.xml": [('priority="1"', 'priority="0"')],
+                              "scenario.toml": [(text[start:end], "")]})
+    assert load_scenario(folder).box.names == ("mass",)
+
+
+# ---------------------------------------------------------------------------
+# validation gaps (these tests document bugs found while writing them)
+# ---------------------------------------------------------------------------
+
+
+def test_empty_support_list_is_rejected(tmp_path):
+    # BUG: an empty [support] geoms list loads, and Twin.signals then fails with an IndexError
+    # (np.array([]) of float64 used as an index); the task stages need a support.
+    folder = _toml(tmp_path, ('geoms = ["table"]', "geoms = []"))
+    with pytest.raises(ScenarioError, match=r"\[support\] geoms"):
+        twin = Twin(load_scenario(folder))
+        twin.signals(np.zeros(twin.nsensordata))
+
+
+@pytest.mark.parametrize("old, new, where", [
+    ("A = 1.0", 'A = "big"', r"\[cost\] A"),
+    ("horizon = 1 ", 'horizon = "two" ', r"\[sparse\] horizon"),
+    ("horizon = 1 ", "horizon = 1.5 ", r"\[sparse\] horizon"),
+    ('keyframe = "home"', "keyframe = 3", r"\[model\] keyframe"),
+])
+def test_wrongly_typed_values_raise_scenario_error(tmp_path, old, new, where):
+    # BUG: these raise a bare ValueError/TypeError (or truncate 1.5 to 1) instead of a
+    # ScenarioError that names the key.
+    folder = _toml(tmp_path, (old, new))
+    with pytest.raises(ScenarioError, match=where):
+        load_scenario(folder)
+
+
+def test_duplicate_gripper_geom_is_a_scenario_error(tmp_path):
+    # BUG: a geom listed twice loads, and Twin() fails with MuJoCo's bare ValueError
+    # "repeated name 'critmoment:grip:left:left/left_pad' in sensor".
+    folder = _toml(tmp_path, ('"left/left_pad", "left/right_pad"', '"left/left_pad", "left/left_pad"'))
+    with pytest.raises(ScenarioError, match="left/left_pad"):
+        Twin(load_scenario(folder))
+
+
+def test_object_body_must_be_free(tmp_path):
+    # BUG: a jointless object body loads; Twin.object_qposadr is then jnt_qposadr[-1], the
+    # address of whatever joint comes last, and initial_data(object_pose=...) writes the
+    # object's pose into that joint's qpos.
+    folder = _toml(tmp_path, ('[uncertainty.mass]\nbody = "box"', '[uncertainty.mass]\nbody = "table"'),
+                   ('body = "box"\ngeom = "box"', 'body = "table"\ngeom = "table"'),
+                   ('[uncertainty.friction]\ngeom = "box"', '[uncertainty.com_offset]\nbody = "box"'),
+                   ("range = [0.2, 1.5]", "range = [-0.01, 0.01]"), ("nominal = 1.0", "nominal = 0.0"))
+    with pytest.raises(ScenarioError, match=r"\[object\] body.*free joint"):
+        Twin(load_scenario(folder))
+
+
+def test_object_geom_must_belong_to_object_body(tmp_path):
+    # BUG: [object] geom is not checked against [object] body; the contact sensors then
+    # watch a geom of another body.
+    text = (BUNDLED / "scenario.toml").read_text()
+    start = text.index("[uncertainty.friction]")
+    end = text.index("\n\n", start)
+    folder = _toml(tmp_path, ('body = "box"\ngeom = "box"', 'body = "box"\ngeom = "left/base"'),
+                   (text[start:end], ""))
+    with pytest.raises(ScenarioError, match=r"\[object\] geom"):
+        load_scenario(folder)
+
+
+# ---------------------------------------------------------------------------
+# params: parameters and the uncertainty box
+# ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    (dict(low=1.0, high=1.0, nominal=1.0), "expected range low < high"),
+    (dict(low=0.0, high=1.0, nominal=0.5), r"expected values > 0.0 kg"),
+    (dict(low=0.1, high=1.0, nominal=2.0), "expected nominal inside the range"),
+    (dict(low=0.1, high=np.inf, nominal=0.5), "expected finite range and nominal"),
+    (dict(low=np.nan, high=1.0, nominal=0.5), "expected finite range and nominal"),
+])
+def test_mass_parameter_validation(kwargs, message):
+    with pytest.raises(ParameterError, match=message):
+        MassParameter(name="mass", target="box", **kwargs)
+
+
+def test_loguniform_prior_needs_positive_low():
+    with pytest.raises(ParameterError, match="log-uniform prior needs low > 0"):
+        ComOffsetParameter(name="com", target="box", low=-0.01, high=0.01, nominal=0.0,
+                           prior=Prior.LOGUNIFORM)
+
+
+def _box():
+    return UncertaintyBox((
+        MassParameter("mass", "box", 0.05, 10.0, 0.05, Prior.LOGUNIFORM),
+        FrictionParameter("friction", "box", 0.2, 1.5, 1.0),
+    ))
+
+
+def test_box_unit_mapping_round_trip():
+    box = _box()
+    u = np.random.default_rng(3).uniform(size=(50, 2))
+    x = box.from_unit(u)
+    np.testing.assert_allclose(box.to_unit(x), u, rtol=0, atol=1e-12)
+    # ends and hand values: log-uniform midpoint is the geometric mean
+    ends = box.from_unit(np.array([[0.0, 0.0], [1.0, 1.0], [0.5, 0.5]]))
+    np.testing.assert_allclose(ends[0], [0.05, 0.2], rtol=1e-12)
+    np.testing.assert_allclose(ends[1], [10.0, 1.5], rtol=1e-12)
+    np.testing.assert_allclose(ends[2], [np.sqrt(0.05 * 10.0), 0.85], rtol=1e-12)
+
+
+def test_box_corners_index_and_with_range():
+    box = _box()
+    np.testing.assert_array_equal(box.corners(),
+                                  [[0.05, 0.2], [0.05, 1.5], [10.0, 0.2], [10.0, 1.5]])
+    assert box.index("friction") == 1 and box.ndim == 2
+    with pytest.raises(ParameterError, match="unknown parameter 'colour'; the box has mass, friction"):
+        box.index("colour")
+    narrowed = box.with_range("friction", 0.5, 0.9, nominal=0.7)
+    np.testing.assert_array_equal(narrowed.low, [0.05, 0.5])
+    np.testing.assert_array_equal(narrowed.nominal, [0.05, 0.7])
+    with pytest.raises(ParameterError, match="expected nominal inside the range"):
+        box.with_range("friction", 0.1, 0.5)  # the nominal 1.0 falls outside
+
+
+def test_box_check_samples():
+    box = _box()
+    out = box.check_samples([[1, 1]])
+    assert out.dtype == np.float64 and out.flags.c_contiguous and out.shape == (1, 2)
+    with pytest.raises(ParameterError, match=r"expected samples of shape \(n, 2\).*got shape \(3,\)"):
+        box.check_samples([1.0, 2.0, 3.0])
+    with pytest.raises(ParameterError, match=r"'friction': expected finite values > 0.0"):
+        box.check_samples([[1.0, 0.0]])
+    with pytest.raises(ParameterError, match="names must be unique"):
+        UncertaintyBox((box.parameters[0], box.parameters[0]))

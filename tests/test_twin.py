@@ -1,0 +1,582 @@
+"""Tests for critmoment.twin: signals against hand-computed physics, parameters, action mapping.
+
+Small scenes are written inline (MJCF + scenario.toml in tmp folders):
+
+* a hinge arm holding a welded box at lever L (static torque = m·g·L),
+* a box on a slope of angle θ with the slope as the "gripper" geom (static FOS = μ/tan θ,
+  sliding FOS = 1, sliding acceleration g(sin θ − μ cos θ)).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import pytest
+
+from critmoment.exceptions import ParameterError, TrajectoryError
+from critmoment.scenario import load_scenario
+from critmoment.twin import CONTACT_SLOTS, Twin
+
+G = 9.81
+
+# ---------------------------------------------------------------------------
+# inline scenes
+# ---------------------------------------------------------------------------
+
+ARM_L = 0.5        # lever of the held box [m]
+ARM_LINK_MASS = 1.0  # uniform link of length L: its own moment is m_link·g·L/2
+ARM_BOX_MASS = 0.5
+ARM_KP = 2000.0
+ARM_LIMIT = 10.0
+
+ARM_XML = f"""<mujoco model="hinge_arm">
+  <compiler angle="radian" inertiafromgeom="true"/>
+  <option timestep="0.001" integrator="implicitfast" cone="elliptic"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="2 2 0.1" pos="0 0 -1"/>
+    <body name="arm" pos="0 0 0.5">
+      <!-- joint damping speeds up settling and exerts no force at rest -->
+      <joint name="hinge" type="hinge" axis="0 1 0" damping="20"/>
+      <geom name="link" type="box" size="{ARM_L / 2} 0.02 0.02" pos="{ARM_L / 2} 0 0"
+            mass="{ARM_LINK_MASS}" contype="0" conaffinity="0"/>
+      <geom name="pad" type="box" size="0.01 0.03 0.03" pos="0 0 0.1" mass="0"
+            contype="0" conaffinity="0"/>
+    </body>
+    <body name="box" pos="{ARM_L} 0 0.5">
+      <joint name="box_joint" type="free" damping="2"/>
+      <geom name="box" type="box" size="0.02 0.02 0.02" mass="{ARM_BOX_MASS}"
+            contype="0" conaffinity="0"/>
+    </body>
+  </worldbody>
+  <equality>
+    <weld name="hold" body1="box" body2="arm" solref="0.002 1"/>
+  </equality>
+  <actuator>
+    <position name="servo" joint="hinge" kp="{ARM_KP}" kv="50"/>
+  </actuator>
+</mujoco>
+"""
+
+ARM_TOML = f"""name = "hinge_arm"
+[model]
+mjcf = "arm.xml"
+[object]
+body = "box"
+geom = "box"
+[grippers.hand]
+geoms = ["pad"]
+[support]
+geoms = ["floor"]
+[actions]
+convention = "explicit"
+[[actions.channel]]
+actuators = ["servo"]
+label = "hinge"
+[limits]
+servo = {ARM_LIMIT}
+[uncertainty.mass]
+body = "box"
+range = [0.1, 5.0]
+nominal = {ARM_BOX_MASS}
+"""
+
+SLOPE_MU = 0.5          # the box's friction (it has priority over the slope)
+SLOPE_OWN_MU = 0.3      # the slope's own friction, ignored thanks to the box's priority
+BOX_HALF = 0.05
+
+
+def _slope_xml(theta_deg: float, condim: int) -> str:
+    th = math.radians(theta_deg)
+    # box centre one half-size above the slope plane (which passes through the origin)
+    cx, cz = BOX_HALF * math.sin(th), BOX_HALF * math.cos(th)
+    return f"""<mujoco model="slope">
+  <compiler angle="radian" inertiafromgeom="true"/>
+  <option timestep="0.001" integrator="implicitfast" cone="elliptic" impratio="10"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1" pos="0 0 -2"/>
+    <geom name="slope" type="plane" size="1 1 0.05" euler="0 {th!r} 0"
+          friction="{SLOPE_OWN_MU} 0.005 0.0001"/>
+    <body name="box" pos="{cx!r} 0 {cz!r}" euler="0 {th!r} 0">
+      <freejoint name="box_joint"/>
+      <geom name="box" type="box" size="{BOX_HALF} {BOX_HALF} {BOX_HALF}" mass="1.0"
+            condim="{condim}" priority="1" friction="{SLOPE_MU} 0.005 0.0001"/>
+    </body>
+    <body name="arm" pos="0 3 -1">
+      <joint name="hinge" type="hinge" axis="0 1 0"/>
+      <geom name="link" type="capsule" size="0.02" fromto="0 0 0 0.2 0 0" mass="0.1"
+            contype="0" conaffinity="0"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="servo" joint="hinge" kp="10" kv="1"/>
+  </actuator>
+</mujoco>
+"""
+
+
+SLOPE_TOML = f"""name = "slope"
+[model]
+mjcf = "slope.xml"
+[object]
+body = "box"
+geom = "box"
+[grippers.slope]
+geoms = ["slope"]
+[support]
+geoms = ["floor"]
+[actions]
+convention = "explicit"
+[[actions.channel]]
+actuators = ["servo"]
+[limits]
+servo = 5.0
+[uncertainty.mass]
+body = "box"
+range = [0.1, 20.0]
+nominal = 1.0
+[uncertainty.friction]
+geom = "box"
+range = [0.1, 1.5]
+nominal = {SLOPE_MU}
+"""
+
+
+def _write(folder: Path, files: dict[str, str]) -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    for name, text in files.items():
+        (folder / name).write_text(text)
+    return folder
+
+
+@pytest.fixture(scope="module")
+def arm_twin(tmp_path_factory):
+    folder = _write(tmp_path_factory.mktemp("arm"), {"arm.xml": ARM_XML, "scenario.toml": ARM_TOML})
+    return Twin(load_scenario(folder))
+
+
+def _slope_twin(tmp_path_factory, theta_deg: float, condim: int = 3) -> Twin:
+    folder = _write(tmp_path_factory.mktemp(f"slope{theta_deg}_{condim}"),
+                    {"slope.xml": _slope_xml(theta_deg, condim), "scenario.toml": SLOPE_TOML})
+    return Twin(load_scenario(folder))
+
+
+def _run(model, data, steps: int) -> None:
+    for _ in range(steps):
+        mujoco.mj_step(model, data)
+
+
+def _downslope(theta_deg: float) -> np.ndarray:
+    th = math.radians(theta_deg)
+    return np.array([math.cos(th), 0.0, -math.sin(th)])
+
+
+# ---------------------------------------------------------------------------
+# static hold: actuator torque = m·g·L
+# ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("box_mass", [ARM_BOX_MASS, 2.0])
+def test_static_hold_torque_is_gravity_moment(arm_twin, box_mass):
+    model = arm_twin.copy_model()
+    arm_twin.write_parameters(model, [[box_mass]])
+    data = mujoco.MjData(model)
+    _run(model, data, 1500)
+    sig = arm_twin.signals(data.sensordata)
+
+    # gravity moment about the hinge (+y): link at L/2, box at L; the servo opposes it
+    moment = G * (ARM_LINK_MASS * ARM_L / 2 + box_mass * ARM_L)
+    assert sig.actuator_force.shape == (1,)
+    assert sig.actuator_force[0] == pytest.approx(-moment, rel=1e-3)
+    # exact static balance with the settled centres of mass (weld sag, servo deflection)
+    arm_id, box_id = model.body("arm").id, model.body("box").id
+    exact = G * (model.body_mass[arm_id] * data.xipos[arm_id, 0]
+                 + model.body_mass[box_id] * data.xipos[box_id, 0])
+    assert sig.actuator_force[0] == pytest.approx(-exact, rel=1e-5)
+    # position servo: force = -kp·q at rest
+    assert data.qpos[0] == pytest.approx(moment / ARM_KP, rel=1e-3)
+    # motor FOS = limit / (m g L), the servo is the limiting actuator
+    assert float(sig.fos_motor) == pytest.approx(ARM_LIMIT / moment, rel=1e-3)
+    assert int(sig.motor_argmax) == 0
+    assert float(sig.actuator_norm[0]) == pytest.approx(-moment / ARM_LIMIT, rel=1e-3)
+    # at rest
+    np.testing.assert_allclose(sig.object_acc, 0.0, atol=1e-4)
+    # the pad never touches the box: no contact, contact FOS +inf
+    assert np.isposinf(sig.fos_contact).all() and not sig.contact_gripper.any()
+
+
+def test_static_hold_overload_has_fos_below_one(arm_twin):
+    model = arm_twin.copy_model()
+    arm_twin.write_parameters(model, [[4.0]])
+    data = mujoco.MjData(model)
+    _run(model, data, 1500)
+    sig = arm_twin.signals(data.sensordata)
+    moment = G * (ARM_LINK_MASS * ARM_L / 2 + 4.0 * ARM_L)  # 22.07 N·m > 10 N·m limit
+    assert float(sig.fos_motor) == pytest.approx(ARM_LIMIT / moment, rel=1e-3)
+    assert float(sig.fos_motor) < 1.0
+    # the cost is dominated by the motor term: B·exp(−β(FOS − 1)) > B
+    assert float(sig.cost) > arm_twin.scenario.cost.B
+
+
+# ---------------------------------------------------------------------------
+# box on a slope: contact FOS = μ / tan θ when it holds, 1 when it slides
+# ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("condim", [3, 4])
+def test_box_resting_on_slope_has_fos_mu_over_tan(tmp_path_factory, condim):
+    theta = 15.0
+    twin = _slope_twin(tmp_path_factory, theta, condim)
+    model = twin.copy_model()
+    data = mujoco.MjData(model)
+    _run(model, data, 300)
+    sig = twin.signals(data.sensordata)
+    expected = SLOPE_MU / math.tan(math.radians(theta))  # 1.866
+    assert sig.fos_contact.shape == (1,)
+    assert float(sig.fos_contact[0]) == pytest.approx(expected, rel=1e-4)
+    assert bool(sig.contact_gripper[0])
+    assert not bool(sig.contact_support)
+    np.testing.assert_allclose(sig.object_acc, 0.0, atol=1e-3)
+    # the box's friction governs (priority), not the slope's lower one
+    box = twin.object_geom_id
+    mus = [data.contact.friction[i, 0] for i in range(data.ncon) if box in data.contact.geom[i]]
+    assert mus and np.allclose(mus, SLOPE_MU, rtol=0, atol=1e-15)
+
+
+def test_box_sliding_down_slope_has_fos_one(tmp_path_factory):
+    theta = 35.0  # tan 35° = 0.70 > μ = 0.5
+    twin = _slope_twin(tmp_path_factory, theta)
+    model = twin.copy_model()
+    data = mujoco.MjData(model)
+    steps = 300
+    fos = np.empty(steps)
+    for k in range(steps):
+        mujoco.mj_step(model, data)
+        fos[k] = twin.signals(data.sensordata).fos_contact[0]
+    touching = np.isfinite(fos)
+    # a sliding box chatters on its corners; while it touches, every contact is on the cone
+    assert touching[50:].mean() > 0.5
+    np.testing.assert_allclose(fos[touching], 1.0, atol=1e-2)
+    # mean acceleration down the slope: g (sin θ − μ cos θ) = 1.609 m/s²
+    th = math.radians(theta)
+    expected = G * (math.sin(th) - SLOPE_MU * math.cos(th))
+    speed = data.qvel[:3] @ _downslope(theta)
+    assert speed / (steps * model.opt.timestep) == pytest.approx(expected, rel=0.03)
+
+
+def test_friction_parameter_changes_the_regime(tmp_path_factory):
+    theta = 35.0
+    twin = _slope_twin(tmp_path_factory, theta)
+    mu = 0.8  # tan 35° = 0.70 < 0.8: now it holds
+    model = twin.copy_model()
+    twin.write_parameters(model, [[1.0, mu]])
+    assert twin.object_friction(model) == mu
+    assert twin.object_friction() == SLOPE_MU  # the nominal model is untouched
+    data = mujoco.MjData(model)
+    _run(model, data, 300)
+    sig = twin.signals(data.sensordata, mu=mu)
+    assert float(sig.fos_contact[0]) == pytest.approx(mu / math.tan(math.radians(theta)), rel=1e-4)
+    speed = data.qvel[:3] @ _downslope(theta)
+    assert abs(speed) < 1e-3
+    # read with the wrong (nominal) μ the same forces give a FOS scaled by 0.5 / 0.8
+    wrong = twin.signals(data.sensordata)
+    assert float(wrong.fos_contact[0]) == pytest.approx(float(sig.fos_contact[0]) * SLOPE_MU / mu,
+                                                        rel=1e-12)
+
+
+# ---------------------------------------------------------------------------
+# object acceleration
+# ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("mass", [1.0, 10.0, 0.1])
+def test_free_fall_object_acc_is_gravity(tmp_path_factory, mass):
+    twin = _slope_twin(tmp_path_factory, 15.0)
+    model = twin.copy_model()
+    twin.write_parameters(model, [[mass, SLOPE_MU]])
+    data = twin.initial_data(object_pose=[0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0], model=model)
+    for _ in range(5):
+        mujoco.mj_step(model, data)
+        sig = twin.signals(data.sensordata)
+        np.testing.assert_allclose(sig.object_acc, [0.0, 0.0, -G], rtol=0, atol=1e-9)
+        assert np.isposinf(sig.fos_contact).all()
+
+
+def test_free_fall_detects_missing_set_const(tmp_path_factory):
+    # the pitfall write_parameters guards against: mass changed without mj_setConst
+    twin = _slope_twin(tmp_path_factory, 15.0)
+    model = twin.copy_model()
+    box = twin.object_body_id
+    model.body_mass[box] *= 10.0
+    model.body_inertia[box] *= 10.0
+    data = twin.initial_data(object_pose=[0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0], model=model)
+    mujoco.mj_step(model, data)
+    acc = twin.signals(data.sensordata).object_acc
+    assert abs(acc[2] + G) > 1.0  # wrong physics: the test above would catch it
+
+
+def test_bundled_box_free_fall_heavy_and_resting(twin):
+    start = np.array([0.0, -0.96, 1.16, 0.0, -0.3, 0.0, 0.0] * 2)
+    model = twin.copy_model()
+    twin.write_parameters(model, [[10.0, 1.0]])  # 200 × the nominal mass
+    data = twin.initial_data(start=start, object_pose=[0.1, 0.5, 0.3, 1, 0, 0, 0], model=model)
+    mujoco.mj_step(model, data)
+    sig = twin.signals(data.sensordata)
+    np.testing.assert_allclose(sig.object_acc, [0.0, 0.0, -G], rtol=0, atol=1e-9)
+    assert not bool(sig.contact_support)
+    # resting on the table
+    data = twin.initial_data(start=start, object_pose=[0.1, 0.5, 0.02, 1, 0, 0, 0], model=model)
+    _run(model, data, 300)
+    sig = twin.signals(data.sensordata)
+    np.testing.assert_allclose(sig.object_acc, 0.0, atol=1e-6)
+    assert bool(sig.contact_support)
+    assert int(sig.stage) == 0
+
+
+# ---------------------------------------------------------------------------
+# parameter writing
+# ---------------------------------------------------------------------------
+
+
+def _box_contact_friction(twin, model, mass, mu, steps=50):
+    start = np.array([0.0, -0.96, 1.16, 0.0, -0.3, 0.0, 0.0] * 2)
+    twin.write_parameters(model, [[mass, mu]])
+    data = twin.initial_data(start=start, object_pose=[0.1, 0.5, 0.02, 1, 0, 0, 0], model=model)
+    _run(model, data, steps)
+    box = twin.object_geom_id
+    return np.array([data.contact.friction[i] for i in range(data.ncon)
+                     if box in data.contact.geom[i]])
+
+
+def test_write_parameters_mass_and_inertia(twin):
+    box = twin.object_body_id
+    m0 = twin.model.body_mass[box]
+    inertia0 = twin.model.body_inertia[box].copy()
+    assert m0 == pytest.approx(0.05, rel=1e-15)
+    # the 4 cm cube's inertia: m·(2a)²/6 with a = 0.02
+    np.testing.assert_allclose(inertia0, 0.05 * 0.04 ** 2 / 6, rtol=1e-12)
+    model = twin.copy_model()
+    twin.write_parameters(model, [[2.0, 1.0]])
+    assert model.body_mass[box] == 2.0
+    np.testing.assert_allclose(model.body_inertia[box], inertia0 * 2.0 / 0.05, rtol=1e-12)
+    # derived constants recomputed
+    assert model.body_subtreemass[box] == pytest.approx(2.0, rel=1e-12)
+    dof = model.body_dofadr[box]
+    assert model.dof_M0[dof] == pytest.approx(2.0, rel=1e-12)
+    # writing again starts from the MJCF's values, not the last write
+    twin.write_parameters(model, [[0.1, 1.0]])
+    np.testing.assert_allclose(model.body_inertia[box], inertia0 * 0.1 / 0.05, rtol=1e-12)
+    # the nominal model is untouched
+    assert twin.model.body_mass[box] == m0
+    np.testing.assert_array_equal(twin.model.body_inertia[box], inertia0)
+
+
+@pytest.mark.parametrize("mu", [0.2, 0.5, 1.5])
+def test_write_parameters_sets_effective_contact_friction(twin, mu):
+    # the table's friction is 1.0: with max-mixing μ = 0.2 or 0.5 would read 1.0
+    table = twin.model.geom("table").id
+    assert twin.model.geom_friction[table, 0] == 1.0
+    friction = _box_contact_friction(twin, twin.copy_model(), 1.0, mu)
+    assert len(friction) >= 4  # the cube's face on the table
+    np.testing.assert_array_equal(friction[:, 0], mu)
+    np.testing.assert_array_equal(friction[:, 1], mu)
+
+
+def test_write_parameters_rejects_bad_samples(twin):
+    model = twin.copy_model()
+    with pytest.raises(ParameterError, match=r"shape \(1, k\)"):
+        twin.write_parameters(model, [[1.0, 1.0], [2.0, 1.0]])
+    with pytest.raises(ParameterError, match=r"expected samples of shape \(n, 2\)"):
+        twin.write_parameters(model, [[1.0]])
+    with pytest.raises(ParameterError, match="'mass'.*> 0"):
+        twin.write_parameters(model, [[-1.0, 1.0]])
+    with pytest.raises(ParameterError, match="'friction'.*finite"):
+        twin.write_parameters(model, [[1.0, np.nan]])
+    # nothing was written by the rejected calls
+    assert model.body_mass[twin.object_body_id] == twin.model.body_mass[twin.object_body_id]
+
+
+# ---------------------------------------------------------------------------
+# action mapping (ALOHA convention)
+# ---------------------------------------------------------------------------
+
+CLOSE, OPEN = 0.01844, 0.05800
+
+
+def _finger(g: float) -> float:
+    return min(max(g * (OPEN - CLOSE) + CLOSE, 0.021), 0.057)
+
+
+@pytest.mark.parametrize("g_left, g_right", [(0.0, 1.0), (0.5, 0.25), (0.06, 0.97), (1.0, 0.0)])
+def test_controls_aloha_gripper_mapping(twin, g_left, g_right):
+    arm = np.array([0.1, -0.5, 0.7, 0.2, -0.3, 0.4])
+    action = np.concatenate([arm, [g_left], -arm, [g_right]])
+    ctrl = twin.controls(action)
+    assert ctrl.shape == (16,)
+    names = twin.actuator_names
+    np.testing.assert_array_equal(ctrl[[names.index(f"left/{j}") for j in
+                                        ("waist", "shoulder", "elbow", "forearm_roll",
+                                         "wrist_angle", "wrist_rotate")]], arm)
+    np.testing.assert_array_equal(ctrl[[names.index(f"right/{j}") for j in
+                                        ("waist", "shoulder", "elbow", "forearm_roll",
+                                         "wrist_angle", "wrist_rotate")]], -arm)
+    for side, g in (("left", g_left), ("right", g_right)):
+        assert ctrl[names.index(f"{side}/left_finger")] == pytest.approx(_finger(g), abs=1e-15)
+        assert ctrl[names.index(f"{side}/right_finger")] == pytest.approx(-_finger(g), abs=1e-15)
+
+
+def test_controls_clamp_and_broadcast(twin):
+    actions = np.zeros((5, 3, 14))
+    actions[..., 6] = 0.5
+    ctrl = twin.controls(actions)
+    assert ctrl.shape == (5, 3, 16)
+    # normalised 0 maps to 0.01844, below the finger's ctrlrange: clamped to 0.021
+    assert np.all(ctrl[..., twin.actuator_names.index("right/left_finger")] == 0.021)
+    assert np.allclose(ctrl[..., twin.actuator_names.index("left/left_finger")],
+                       0.5 * (OPEN - CLOSE) + CLOSE, rtol=0, atol=1e-15)
+    # joint targets beyond the ctrlrange are clamped too
+    a = np.zeros(14)
+    a[2] = 5.0
+    assert twin.controls(a)[twin.actuator_names.index("left/elbow")] == pytest.approx(1.6057)
+
+
+@pytest.mark.parametrize("width", [13, 15, 7])
+def test_controls_wrong_width(twin, width):
+    with pytest.raises(TrajectoryError, match=rf"expected actions with 14 values.*got {width}"):
+        twin.controls(np.zeros((4, width)))
+
+
+def test_channel_bounds_follow_joint_ranges(twin):
+    assert twin.channel_lower.shape == (14,) and twin.channel_upper.shape == (14,)
+    np.testing.assert_array_equal(twin.channel_normalised.nonzero()[0], [6, 13])
+    assert (twin.channel_lower[[6, 13]] == 0).all() and (twin.channel_upper[[6, 13]] == 1).all()
+    # elbow range from vx300s.xml
+    assert twin.channel_lower[2] == pytest.approx(-1.76278)
+    assert twin.channel_upper[9] == pytest.approx(1.6057)
+
+
+# ---------------------------------------------------------------------------
+# signals decoded from hand-made sensordata
+# ---------------------------------------------------------------------------
+
+
+def _sensor_rows(model, sensor_type, objid=None, refid=None):
+    rows = []
+    for s in range(model.nsensor):
+        if model.sensor_type[s] != sensor_type:
+            continue
+        if objid is not None and model.sensor_objid[s] != objid:
+            continue
+        if refid is not None and model.sensor_refid[s] != refid:
+            continue
+        rows.append((int(model.sensor_adr[s]), int(model.sensor_dim[s])))
+    return rows
+
+
+def test_signals_from_hand_made_sensordata(twin):
+    model = twin.model
+    sd = np.zeros(twin.nsensordata)
+    contact = mujoco.mjtSensor.mjSENS_CONTACT
+    # left gripper: two contacts on its left pad, λn = (3, 1) N, λt = (1, 0.5) N
+    (adr, dim), = _sensor_rows(model, contact, refid=model.geom("left/left_pad").id)
+    assert dim == 4 * CONTACT_SLOTS  # found, normal, two tangential per slot
+    sd[adr:adr + 4] = [2, 3.0, 0.6, 0.8]
+    sd[adr + 4:adr + 8] = [2, 1.0, 0.3, -0.4]
+    # support contact
+    (adr_t, _), = _sensor_rows(model, contact, refid=model.geom("table").id)
+    sd[adr_t] = 1
+    # actuator forces: right/elbow at 7.5 of 15 N·m (FOS 2), a finger far above its limit
+    frc = mujoco.mjtSensor.mjSENS_ACTUATORFRC
+    names = twin.actuator_names
+    for name, value in (("right/elbow", -7.5), ("left/waist", 1.0), ("right/left_finger", 100.0)):
+        (a, _), = _sensor_rows(model, frc, objid=names.index(name))
+        sd[a] = value
+
+    sig = twin.signals(sd, mu=0.5)
+    np.testing.assert_allclose(sig.fos_contact, [4.0 / 3.0, np.inf], rtol=1e-14)
+    np.testing.assert_array_equal(sig.contact_gripper, [True, False])
+    assert bool(sig.contact_support)
+    # fingers are prismatic: they do not enter the motor FOS
+    assert float(sig.fos_motor) == pytest.approx(2.0, rel=1e-15)
+    assert names[int(sig.motor_argmax)] == "right/elbow"
+    assert sig.actuator_norm[names.index("right/left_finger")] == pytest.approx(20.0)
+    # the receiver (left) touches, the box is on the table: stage 3
+    assert int(sig.stage) == 3
+    p = twin.scenario.cost
+    # on the support the grip carries nothing: only the motor term counts
+    assert np.isposinf(sig.fos_grasp)
+    assert float(sig.cost) == pytest.approx(p.B * math.exp(-p.beta * (2.0 - 1.0)), rel=1e-12)
+
+    # lifted off the table, and the right gripper touches too, on its friction cone
+    sd[adr_t] = 0
+    (adr_r, _), = _sensor_rows(model, contact, refid=model.geom("right/right_pad").id)
+    sd[adr_r:adr_r + 4] = [1, 2.0, 0.0, 1.0]
+    sig = twin.signals(sd, mu=0.5)
+    np.testing.assert_allclose(sig.fos_contact, [4.0 / 3.0, 1.0], rtol=1e-14)
+    assert int(sig.stage) == 4
+    # the grasp: eq. 12 over all five contacts: (3 + 1 + 2) / (2 + 1 + 2)
+    assert float(sig.fos_grasp) == pytest.approx(6.0 / 5.0, rel=1e-14)
+    expected_cost = p.A * math.exp(-p.alpha * 0.2) + p.B * math.exp(-p.beta * 1.0)
+    assert float(sig.cost) == pytest.approx(expected_cost, rel=1e-12)
+    # the nominal μ (1.0) is the default: FOS doubles
+    assert float(twin.signals(sd).fos_grasp) == pytest.approx(12.0 / 5.0, rel=1e-14)
+    # leading axes: (2, 3, nsensordata), μ per leading element
+    mu = np.array([[0.5, 1.0, 0.25]] * 2)
+    batch = twin.signals(np.broadcast_to(sd, (2, 3, sd.size)), mu=mu)
+    assert batch.fos_contact.shape == (2, 3, 2) and batch.stage.shape == (2, 3)
+    np.testing.assert_allclose(batch.fos_grasp, 6.0 / 5.0 * mu / 0.5, rtol=1e-14)
+
+
+def test_signals_of_empty_sensordata(twin):
+    sig = twin.signals(np.zeros((4, twin.nsensordata)))
+    assert np.isposinf(sig.fos_contact).all() and np.isposinf(sig.fos_motor).all()
+    np.testing.assert_array_equal(sig.cost, 0.0)
+    np.testing.assert_array_equal(sig.stage, 0)
+    # framelinacc reads 0 in free fall's frame: gravity is added back
+    np.testing.assert_allclose(sig.object_acc, np.broadcast_to([0, 0, -G], (4, 3)))
+
+
+# ---------------------------------------------------------------------------
+# initial state
+# ---------------------------------------------------------------------------
+
+
+def test_initial_data_places_arms_and_object(twin):
+    start = np.array([0.1, -0.9, 1.1, 0.0, -0.3, 0.2, 1.0, 0.0, -0.96, 1.16, 0.0, -0.3, 0.0, 0.0])
+    pose = np.array([0.15, 0.45, 0.02, 1.0, 0.0, 0.0, 0.0])
+    data = twin.initial_data(start=start, object_pose=pose)
+    model = twin.model
+    for i, j in enumerate(("waist", "shoulder", "elbow", "forearm_roll", "wrist_angle",
+                           "wrist_rotate")):
+        assert data.qpos[model.jnt_qposadr[model.joint(f"left/{j}").id]] == start[i]
+        assert data.qpos[model.jnt_qposadr[model.joint(f"right/{j}").id]] == start[7 + i]
+    # left gripper open (1.0 -> 0.058, clamped to the finger range 0.057)
+    assert data.qpos[model.jnt_qposadr[model.joint("left/left_finger").id]] == pytest.approx(0.057)
+    np.testing.assert_array_equal(data.qpos[twin.object_qposadr:twin.object_qposadr + 7], pose)
+    np.testing.assert_array_equal(data.qvel, 0.0)
+    np.testing.assert_array_equal(data.ctrl, twin.controls(start))
+    np.testing.assert_allclose(data.xpos[twin.object_body_id], pose[:3], rtol=0, atol=1e-15)
+
+
+def test_initial_data_rejects_bad_shapes(twin):
+    with pytest.raises(TrajectoryError, match=r"object_pose \(7,\)"):
+        twin.initial_data(object_pose=np.zeros(3))
+    with pytest.raises(TrajectoryError, match=rf"qpos0 of shape \({twin.model.nq},\)"):
+        twin.initial_data(qpos0=np.zeros(5))
+    with pytest.raises(TrajectoryError, match="expected actions with 14 values"):
+        twin.initial_data(start=np.zeros(6))
+
+
+def test_state_round_trip(twin):
+    data = twin.initial_data(start=np.zeros(14), object_pose=[0.1, 0.5, 0.02, 1, 0, 0, 0])
+    _run(twin.model, data, 20)
+    state = twin.get_state(twin.model, data)
+    assert state.shape == (mujoco.mj_stateSize(twin.model, mujoco.mjtState.mjSTATE_INTEGRATION),)
+    other = mujoco.MjData(twin.model)
+    twin.set_state(twin.model, other, state)
+    mujoco.mj_step(twin.model, data)
+    mujoco.mj_step(twin.model, other)
+    np.testing.assert_array_equal(twin.get_state(twin.model, other),
+                                  twin.get_state(twin.model, data))
