@@ -127,7 +127,7 @@ def _resolve(model: mujoco.MjModel, objtype: mujoco.mjtObj, name: str, what: str
                  mujoco.mjtObj.mjOBJ_ACTUATOR: model.nu}[objtype]
         names = [mujoco.mj_id2name(model, objtype, i) for i in range(count)]
         raise ScenarioError(
-            f"unknown {what} {name!r}; the model's {what}s are: "
+            f"unknown {what} {name!r}; the model has: "
             + ", ".join(n for n in names if n))
     return idx
 

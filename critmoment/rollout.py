@@ -124,7 +124,7 @@ def simulate(twin: Twin, state0: np.ndarray, controls: np.ndarray, *,
     if record_state:
         record.append(int(STATE_SPEC))
     else:
-        record.append("time")
+        record.append(int(mujoco.mjtState.mjSTATE_TIME))
     out = batch.rollout(nstep, control=ctrl, control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
                         record=record)
     result = {"sensordata": out["sensordata"]}
@@ -133,14 +133,19 @@ def simulate(twin: Twin, state0: np.ndarray, controls: np.ndarray, *,
         result["state"] = states
         time = states[:, :, 0]
     else:
-        time = out["time"]
+        time = out[int(mujoco.mjtState.mjSTATE_TIME)][:, :, 0]
     result["time"] = time
     counts = batch.warning[:, :, 1]
     diverged = (counts > 0).any(axis=1) | ~np.isfinite(out["sensordata"]).all(axis=(1, 2))
     stopped = np.zeros(n, dtype=np.int64) - 1
     for i in np.flatnonzero(diverged):
-        same = np.flatnonzero(np.diff(time[i]) <= 0)
-        stopped[i] = int(same[0] + 1) if same.size else nstep - 1
+        if counts[i].any():
+            # the batch stops a simulation after the step whose warning counters rose and
+            # repeats that step's record: that step is the last one whose time changed
+            changed = np.flatnonzero(np.diff(time[i]) != 0)
+            stopped[i] = int(changed[-1] + 1) if changed.size else 0
+        else:
+            stopped[i] = int(np.argmax(~np.isfinite(out["sensordata"][i]).all(axis=-1)))
     result["diverged"] = diverged
     result["diverged_step"] = stopped
     result["warnings"] = np.array([
@@ -271,7 +276,7 @@ class Recording:
         """First step at which each stage 1..4 is reached (None if never)."""
         out: dict[int, int | None] = {}
         for k in range(1, 5):
-            hits = np.flatnonzero(self.stage == k)
+            hits = np.flatnonzero(self.stage >= k)
             out[k] = int(hits[0]) if hits.size else None
         return out
 

@@ -242,11 +242,21 @@ class Scenario:
         def need(name, pool, what, where):
             if name not in pool:
                 raise ScenarioError(
-                    f"{where}: unknown {what} {name!r}; valid {what}s: "
+                    f"{where}: unknown {what} {name!r}; valid names: "
                     + ", ".join(n for n in pool if n))
 
         need(self.object_body, bodies, "body", "[object] body")
         need(self.object_geom, geoms, "geom", "[object] geom")
+        body = model.body(self.object_body)
+        if body.jntnum[0] != 1 or model.jnt_type[body.jntadr[0]] != mujoco.mjtJoint.mjJNT_FREE:
+            raise ScenarioError(
+                f"[object] body: expected a body with one free joint, got {self.object_body!r} "
+                f"with {body.jntnum[0]} joint(s)")
+        owner = model.geom_bodyid[model.geom(self.object_geom).id]
+        if owner != body.id:
+            raise ScenarioError(
+                f"[object] geom: {self.object_geom!r} belongs to body {model.body(owner).name!r}, "
+                f"expected a geom of [object] body {self.object_body!r}")
         for g in self.grippers:
             for geom in g.geoms:
                 need(geom, geoms, "geom", f"[grippers.{g.name}] geoms")
@@ -393,8 +403,12 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         geoms = _get(gt, "geoms", list, f"[grippers.{gname}]")
         if not geoms or not all(isinstance(g, str) for g in geoms):
             raise ScenarioError(f"[grippers.{gname}] geoms: expected a list of geom names, got {geoms!r}")
+        if len(set(geoms)) != len(geoms):
+            raise ScenarioError(f"[grippers.{gname}] geoms: expected each geom once, got {geoms!r}")
         grippers.append(Gripper(gname, tuple(geoms)))
     support = _get(_get(raw, "support", dict, "scenario"), "geoms", list, "[support]")
+    if not support or not all(isinstance(g, str) for g in support):
+        raise ScenarioError(f"[support] geoms: expected a non-empty list of geom names, got {support!r}")
     actions_t = _get(raw, "actions", dict, "scenario")
     convention = actions_t.get("convention", "aloha14")
     if convention not in _CONVENTIONS:
@@ -418,12 +432,12 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
     if not unc:
         raise ScenarioError("[uncertainty]: expected at least one parameter table")
     box = UncertaintyBox(tuple(_parameter(n, s) for n, s in unc.items()))
-    cost_t = raw.get("cost", {})
+    cost_t = _get(raw, "cost", dict, "scenario", {})
     unknown_cost = set(cost_t) - {"A", "B", "alpha", "beta", "threshold"}
     if unknown_cost:
         raise ScenarioError(f"[cost]: unknown keys {sorted(unknown_cost)}")
-    cost = CostParams(**{k: float(v) for k, v in cost_t.items()})
-    horizon = int(raw.get("sparse", {}).get("horizon", 1))
+    cost = CostParams(**{k: _number(cost_t, k, "[cost]") for k in cost_t})
+    horizon = _get(_get(raw, "sparse", dict, "scenario", {}), "horizon", int, "[sparse]", 1)
     if horizon < 1:
         raise ScenarioError(f"[sparse] horizon: expected an integer >= 1, got {horizon}")
     try:
@@ -433,7 +447,7 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
     limits = _resolve_limits(_get(raw, "limits", dict, "scenario"), model)
     scenario = Scenario(
         name=str(raw.get("name", base.name)), path=path, mjcf=mjcf,
-        keyframe=model_t.get("keyframe"), object_body=_get(object_t, "body", str, "[object]"),
+        keyframe=_get(model_t, "keyframe", str, "[model]", None), object_body=_get(object_t, "body", str, "[object]"),
         object_geom=_get(object_t, "geom", str, "[object]"), grippers=tuple(grippers),
         support_geoms=tuple(support), actions=actions, fps=fps, range_policy=policy,
         picker=picker, receiver=receiver, limits=limits, box=box, cost=cost, horizon=horizon,

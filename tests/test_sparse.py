@@ -1,0 +1,495 @@
+"""Tests of critmoment.sparse: physics of one restored step, exactness, sweeps, critical values.
+
+Run with ``-s`` to see the critical values found on the demo (reported by the project).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import mujoco
+import numpy as np
+import pytest
+
+from critmoment import rollout, sparse
+from critmoment.exceptions import ParameterError, SimulationDivergedError
+from critmoment.scenario import load_scenario
+from critmoment.sparse import (
+    Criterion,
+    DivergencePolicy,
+    FailSide,
+    OthersAt,
+    SparseEvaluator,
+    SparseMode,
+    SweepMethod,
+    Term,
+)
+from critmoment.trajectory import Trajectory
+from critmoment.twin import Twin
+
+G = 9.81
+
+# --------------------------------------------------------------------------
+# a tiny scenario: a one-hinge "arm" with a pad, a table, and a free 4 cm box in the air
+# --------------------------------------------------------------------------
+
+TINY_MJCF = """
+<mujoco model="tiny">
+  <option timestep="0.002" gravity="0 0 -9.81"/>
+  <worldbody>
+    <geom name="table" type="plane" size="1 1 0.1"/>
+    <body name="arm" pos="0 0 0.5">
+      <joint name="hinge" type="hinge" axis="0 1 0"/>
+      <geom name="link" type="capsule" fromto="0 0 0 0.2 0 0" size="0.02" mass="1"/>
+      <geom name="pad" type="box" pos="0.2 0 0" size="0.01 0.02 0.02" mass="0.05"/>
+    </body>
+    <body name="box" pos="0.6 0 0.5">
+      <freejoint/>
+      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.05" priority="1"
+            friction="1 0.005 0.0001"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="hinge" joint="hinge" kp="20" forcerange="-30 30"/>
+  </actuator>
+</mujoco>
+"""
+
+TINY_TOML = """
+name = "tiny"
+[model]
+mjcf = "scene.xml"
+[object]
+body = "box"
+geom = "box"
+[grippers.hand]
+geoms = ["pad"]
+[support]
+geoms = ["table"]
+[actions]
+convention = "explicit"
+[[actions.channel]]
+actuators = ["hinge"]
+[task]
+picker = "hand"
+receiver = "hand"
+[limits]
+hinge = 5.0
+[uncertainty.mass]
+body = "box"
+range = [0.05, 10.0]
+nominal = 0.05
+[uncertainty.friction]
+geom = "box"
+range = [0.2, 1.5]
+nominal = 1.0
+"""
+
+#: the same scene with the hinge's force range as the one uncertain parameter
+LIMIT_TOML = TINY_TOML[:TINY_TOML.index("[uncertainty.mass]")] + """
+[uncertainty.force_limit]
+actuator = "hinge"
+range = [1.0, 30.0]
+nominal = 2.0
+"""
+
+
+def _make_twin(folder, toml: str) -> Twin:
+    (folder / "scene.xml").write_text(TINY_MJCF)
+    (folder / "scenario.toml").write_text(toml)
+    return Twin(load_scenario(folder))
+
+
+@pytest.fixture(scope="module")
+def tiny(tmp_path_factory):
+    """(twin, recording) of the tiny scenario: the box falls freely from rest."""
+    twin = _make_twin(tmp_path_factory.mktemp("tiny"), TINY_TOML)
+    recording = rollout.rollout(Trajectory(actions=np.zeros((2, 1)), fps=50.0), twin=twin)
+    return twin, recording
+
+
+@pytest.fixture(scope="module")
+def pulling(tmp_path_factory):
+    """(twin, recording) of the tiny scene whose hinge servo pulls 20 N·m, clamped to ±L."""
+    twin = _make_twin(tmp_path_factory.mktemp("limit"), LIMIT_TOML)
+    # start at q = 0 with the target at 1 rad: kp·(ctrl − q) = 20 N·m before clamping
+    traj = Trajectory(actions=np.ones((2, 1)), fps=50.0, start=np.zeros(1))
+    return twin, rollout.rollout(traj, twin=twin)
+
+
+def _lift_step(recording) -> int:
+    """First step of the last run into stage 2 (the picker holds the cube off the table) + 100."""
+    two = recording.stage == 2
+    starts = np.flatnonzero(two & ~np.concatenate([[False], two[:-1]]))
+    assert starts.size, "the demo never lifts the cube"
+    return int(starts[-1]) + 100
+
+
+def _handover_step(recording) -> int:
+    """First stage-4 step (the receiver holds the cube off the table) + 300."""
+    first = recording.stage_first_step()[4]
+    assert first is not None, "the demo never hands the cube over"
+    return int(first) + 300
+
+
+def _mass_samples(scenario, masses):
+    samples = np.tile(scenario.box.nominal, (len(masses), 1))
+    samples[:, scenario.box.index("mass")] = masses
+    return samples
+
+
+# --------------------------------------------------------------------------
+# physics of one restored step
+# --------------------------------------------------------------------------
+
+
+def test_free_fall_acceleration_is_g_for_every_mass(tiny):
+    twin, recording = tiny
+    masses = np.geomspace(0.05, 10.0, 9)
+    res = sparse.evaluate(recording, twin, [0], _mass_samples(twin.scenario, masses))
+    # Without set_const after writing body_mass the derived constants keep the 0.05 kg
+    # box's values, and the same step gives a_z = -9.81 * m / 0.05: -1962 m/s² at 10 kg.
+    np.testing.assert_allclose(res.object_acc[0], np.tile([0.0, 0.0, -G], (9, 1)), atol=1e-9)
+    assert not res.contact_gripper.any() and not res.contact_support.any()
+    assert np.isinf(res.fos_grasp).all()
+
+
+def test_held_box_heavier_mass_lowers_grip_fos_and_raises_arm_torque(scenario, twin,
+                                                                      demo_recording):
+    step = _lift_step(demo_recording)
+    picker = scenario.gripper_names.index(scenario.picker)
+    masses = np.array([0.05, 0.1, 0.2, 0.3, 0.5, 0.8, 1.0])
+    samples = _mass_samples(scenario, masses)
+    one = sparse.evaluate(demo_recording, twin, [step], samples, horizon=1)
+    assert one.contact_gripper[0, :, picker].all() and not one.contact_support[0].any()
+    assert (np.diff(one.fos_contact[0, :, picker]) < 0).all()
+    # position servos: the force of the restored step is a function of the state alone
+    np.testing.assert_array_equal(one.actuator_norm[0], np.tile(one.actuator_norm[0, :1],
+                                                                (len(masses), 1)))
+    # over a few steps the arm sags and the servos answer the load
+    ten = sparse.evaluate(demo_recording, twin, [step], samples, horizon=10)
+    for joint in ("shoulder", "elbow"):
+        a = twin.actuator_names.index(f"{scenario.picker}/{joint}")
+        load = np.abs(ten.actuator_norm[0, :, a])
+        assert (np.diff(load) > 0).all(), (joint, load)
+    assert (np.diff(ten.fos_motor[0]) < 0).all()
+
+
+def test_object_friction_below_the_fingers_lowers_contact_friction(scenario, twin,
+                                                                    demo_recording):
+    step = _lift_step(demo_recording)
+    obj = twin.object_geom_id
+    pads = [twin.model.geom(g).id for g in scenario.grippers[1].geoms]
+    low = 0.3
+    assert (twin.model.geom_friction[pads, 0] > low).all()  # max-mixing would keep theirs
+    for mu in (low, scenario.box.nominal[scenario.box.index("friction")]):
+        model = twin.copy_model()
+        values = scenario.box.nominal.copy()
+        values[scenario.box.index("friction")] = mu
+        twin.write_parameters(model, values[None])
+        data = mujoco.MjData(model)
+        twin.set_state(model, data, demo_recording.states[step])
+        mujoco.mj_forward(model, data)
+        contacts = data.contact
+        mine = (contacts.geom[:, 0] == obj) | (contacts.geom[:, 1] == obj)
+        assert mine.sum() >= 2
+        np.testing.assert_array_equal(contacts.friction[mine, :2], mu)
+
+
+# --------------------------------------------------------------------------
+# exactness
+# --------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("horizon", [1, 3])
+def test_batch_equals_serial_restore_and_step_bit_for_bit(scenario, twin, demo_recording,
+                                                          horizon):
+    steps = [_lift_step(demo_recording), _handover_step(demo_recording)]
+    samples = sparse.sweep_samples(scenario.box, n=8, seed=3)
+    res = sparse.evaluate(demo_recording, twin, steps, samples, horizon=horizon, nthread=2,
+                          keep_raw=True)
+    for j, values in enumerate(samples):
+        model = twin.copy_model()
+        twin.write_parameters(model, values[None])
+        data = mujoco.MjData(model)
+        for i, k in enumerate(steps):
+            twin.set_state(model, data, demo_recording.states[k])
+            for t in range(horizon):
+                data.ctrl[:] = demo_recording.controls[k + t]
+                mujoco.mj_step(model, data)
+                assert np.array_equal(data.sensordata, res.sensordata[i, j, t])
+            assert np.array_equal(twin.get_state(model, data), res.state[i, j])
+
+
+def test_nominal_step_reproduces_the_recording(scenario, twin, demo_recording):
+    rec = demo_recording
+    steps = [0, _lift_step(rec), _handover_step(rec), rec.n_steps - 1]
+    res = sparse.evaluate(rec, twin, steps, scenario.box.nominal[None], keep_raw=True)
+    for i, k in enumerate(steps):
+        assert np.array_equal(res.sensordata[i, 0, 0], rec.sensordata[k])
+        assert np.array_equal(res.state[i, 0], rec.states[k + 1])
+    np.testing.assert_allclose(res.cost[:, 0], rec.cost[steps], rtol=1e-12, atol=1e-15)
+    np.testing.assert_array_equal(res.fos_motor[:, 0], rec.fos_motor[steps])
+
+
+def test_solve_mode_equals_one_step(scenario, twin, demo_recording):
+    steps = [_lift_step(demo_recording), _handover_step(demo_recording)]
+    samples = sparse.sweep_samples(scenario.box, n=16, seed=1)
+    step = sparse.evaluate(demo_recording, twin, steps, samples, mode=SparseMode.STEP)
+    solve = sparse.evaluate(demo_recording, twin, steps, samples, mode=SparseMode.SOLVE)
+    for field in ("cost", "fos_contact", "fos_grasp", "fos_motor", "object_acc",
+                  "actuator_norm", "contact_gripper"):
+        assert np.array_equal(getattr(step, field), getattr(solve, field)), field
+
+
+def test_chunks_and_threads_do_not_change_results(scenario, twin, demo_recording):
+    steps = [_lift_step(demo_recording)]
+    samples = sparse.sweep_samples(scenario.box, n=13, seed=2)
+    whole = sparse.evaluate(demo_recording, twin, steps, samples, nthread=1, keep_raw=True)
+    chunked = SparseEvaluator(demo_recording, twin, nthread=2, chunk=4)
+    for _ in range(2):  # the second call reuses the batches and their parameters
+        parts = chunked.evaluate(steps, samples, keep_raw=True)
+        assert np.array_equal(whole.sensordata, parts.sensordata)
+        assert np.array_equal(whole.state, parts.state)
+        # NumPy may round a reduction over one row differently from one over many
+        np.testing.assert_allclose(parts.cost, whole.cost, rtol=1e-14)
+        np.testing.assert_array_equal(parts.motor_argmax, whole.motor_argmax)
+
+
+def test_horizon_reduces_to_the_worst_step(scenario, twin, demo_recording):
+    k = _handover_step(demo_recording)
+    samples = _mass_samples(scenario, [0.05, 1.0, 5.0])
+    res = sparse.evaluate(demo_recording, twin, [k], samples, horizon=4, keep_raw=True)
+    mu = scenario.box.nominal[scenario.box.index("friction")]
+    per_step = twin.signals(res.sensordata[0], mu=mu)  # (n, h)
+    np.testing.assert_array_equal(res.cost[0], per_step.cost.max(axis=1))
+    np.testing.assert_array_equal(res.fos_motor[0], per_step.fos_motor.min(axis=1))
+    np.testing.assert_array_equal(res.fos_contact[0], per_step.fos_contact.min(axis=1))
+    np.testing.assert_array_equal(res.worst_step[0], per_step.cost.argmax(axis=1))
+    np.testing.assert_allclose(res.cost_contact[0] + res.cost_motor[0], res.cost[0], rtol=1e-12)
+
+
+def test_divergence_is_marked_or_raised(tiny):
+    twin, recording = tiny
+    states = recording.states.copy()
+    states[0, 1 + twin.model.nq] = 1e12  # a huge hinge velocity: MuJoCo warns and resets
+    bad = dataclasses.replace(recording, states=states)
+    samples = _mass_samples(twin.scenario, [0.05, 1.0])
+    res = sparse.evaluate(bad, twin, [0, 1], samples)
+    assert res.diverged[0].all() and not res.diverged[1].any()
+    assert np.isinf(res.cost[0]).all() and res.failed[0].all()
+    assert (res.dominant[0] == Term.DIVERGED).all()
+    assert np.isnan(res.fos_motor[0]).all()
+    with pytest.raises(SimulationDivergedError, match=r"moment step 0 .*sample 0 .*BADQVEL"):
+        sparse.evaluate(bad, twin, [1, 0], samples, divergence=DivergencePolicy.RAISE)
+
+
+# --------------------------------------------------------------------------
+# the demo: sweeps, critical values, probability of success
+# --------------------------------------------------------------------------
+
+
+def test_liftoff_mass_sweep_and_critical_mass(scenario, twin, demo_recording):
+    lift = _lift_step(demo_recording)
+    picker = scenario.gripper_names.index(scenario.picker)
+    masses = np.linspace(0.05, 10.0, 41)
+    res = sparse.evaluate(demo_recording, twin, [lift], _mass_samples(scenario, masses))
+    fos = res.fos_contact[0, :, picker]
+    assert fos[0] > 5 and fos[-1] < 1.01 and (fos >= 1 - 1e-9).all()
+    assert (np.diff(fos) <= 1e-9).all()
+    assert (res.dominant[0][res.failed[0]] == Term.CONTACT).all()
+
+    cvs = sparse.critical_values(demo_recording, twin, [lift], rtol=1e-3)
+    by = {(cv.parameter, cv.others_at): cv for cv in cvs}
+    crit = by["mass", OthersAt.NOMINAL]
+    assert crit.value is not None and 0.05 < crit.value < 10.0
+    assert crit.direction == FailSide.ABOVE and crit.dominant is Term.CONTACT
+    lo, hi = crit.bracket
+    assert hi - lo <= 1e-3 * crit.value and lo <= crit.value <= hi
+    # the refined value separates passing from failing masses
+    check = sparse.evaluate(demo_recording, twin, [lift],
+                            _mass_samples(scenario, [0.99 * crit.value, 1.01 * crit.value]))
+    assert check.failed[0].tolist() == [False, True]
+    # with the others at the worst corner (lowest friction) the cube slips at a lower mass
+    worst = by["mass", OthersAt.WORST]
+    assert worst.others["friction"] == scenario.box.low[scenario.box.index("friction")]
+    assert worst.value is not None and worst.value < crit.value
+    print(f"\nlift-off, step {lift}, horizon 1:")
+    for cv in cvs:
+        print("  ", _describe(cv))
+
+
+def test_handover_motor_fos_falls_with_mass_and_critical_values(scenario, twin,
+                                                                  demo_recording):
+    hand = _handover_step(demo_recording)
+    receiver = scenario.gripper_names.index(scenario.receiver)
+    masses = np.array([0.05, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0])
+    samples = _mass_samples(scenario, masses)
+    one = sparse.evaluate(demo_recording, twin, [hand], samples, horizon=1)
+    assert one.contact_gripper[0, :, receiver].all() and not one.contact_support[0].any()
+    assert np.ptp(one.fos_motor[0]) == 0  # explicit servos: no answer to the load in one step
+    ten = sparse.evaluate(demo_recording, twin, [hand], samples, horizon=10)
+    assert (np.diff(ten.fos_motor[0]) < 0).all()
+
+    lift = _lift_step(demo_recording)
+    engine = SparseEvaluator(demo_recording, twin, horizon=10)
+    cvs = sparse.critical_values(demo_recording, twin, [lift, hand], evaluator=engine,
+                                 others=(OthersAt.NOMINAL,))
+    assert len(cvs) == 2 * scenario.box.ndim
+    handover_mass = next(cv for cv in cvs if cv.step == hand and cv.parameter == "mass")
+    assert handover_mass.value is not None and handover_mass.direction == FailSide.ABOVE
+    print(f"\nhorizon 10, others nominal (lift-off step {lift}, hand-over step {hand}):")
+    for cv in cvs:
+        print("  ", _describe(cv))
+    one_cvs = sparse.critical_values(demo_recording, twin, [hand], others=(OthersAt.NOMINAL,))
+    print(f"hand-over step {hand}, horizon 1:")
+    for cv in one_cvs:
+        print("  ", _describe(cv))
+
+
+def test_critical_force_limit_has_the_closed_form_value(pulling):
+    twin, recording = pulling
+    cost = twin.scenario.cost
+    # |τ| = L (clamped) gives FOS_motor = 5 N·m / L; no contact, so C = B·exp(−β(5/L − 1))
+    # crosses the threshold at L* = 5 / (1 + ln(B / threshold) / β)
+    exact = 5.0 / (1.0 + math.log(cost.B / cost.threshold) / cost.beta)
+    res = sparse.evaluate(recording, twin, [0], [[0.5 * exact], [2 * exact]])
+    np.testing.assert_allclose(res.fos_motor[0], [2 * 5 / exact, 0.5 * 5 / exact], rtol=1e-12)
+    (cv,) = sparse.critical_values(recording, twin, [0], rtol=1e-4, others=[OthersAt.NOMINAL])
+    assert cv.parameter == "force_limit" and cv.others == {}
+    assert cv.value == pytest.approx(exact, rel=1e-4)
+    assert cv.direction == FailSide.ABOVE and cv.dominant is Term.MOTOR
+    # under the uniform prior on [1, 30] N·m the motion succeeds with P = (L* − 1) / 29;
+    # 256 Sobol points put one point in each 1/256 of the range
+    ps = sparse.probability_of_success(recording, twin, [0], n=256, seed=5)
+    assert abs(ps.p - (exact - 1.0) / 29.0) <= 1 / 256
+    assert ps.dominant is Term.MOTOR and ps.dominant_actuator == "hinge"
+
+
+def _describe(cv: sparse.CriticalValue) -> str:
+    others = ", ".join(f"{k} = {v:g}" for k, v in cv.others.items())
+    if cv.value is None:
+        verdict = "fails everywhere" if cv.fails_everywhere else "never crosses"
+        return f"{cv.parameter:8s} ({cv.others_at.value:7s}: {others}): {verdict}"
+    return (f"{cv.parameter:8s} ({cv.others_at.value:7s}: {others}): {cv.value:.4f}, fails "
+            f"{cv.direction.value}, {cv.dominant.name.lower()} dominates")
+
+
+def test_fos_criteria(scenario, twin, demo_recording):
+    lift = _lift_step(demo_recording)
+    res = sparse.sweep(demo_recording, twin, [lift], n=64, seed=4)
+    np.testing.assert_array_equal(res.fails(), res.failed)
+    np.testing.assert_array_equal(res.fails(Criterion.CONTACT, limit=1.2), res.fos_grasp < 1.2)
+    np.testing.assert_array_equal(res.fails("motor", limit=7.0), res.fos_motor < 7.0)
+    cvs = sparse.critical_values(demo_recording, twin, [lift], criterion=Criterion.CONTACT,
+                                 others=(OthersAt.NOMINAL,))
+    mass = next(cv for cv in cvs if cv.parameter == "mass")
+    assert mass.criterion is Criterion.CONTACT and mass.limit == sparse.FOS_LIMIT
+    assert mass.value is not None and mass.direction == FailSide.ABOVE
+
+
+def test_probability_of_success(scenario, twin, demo_recording):
+    steps = [_lift_step(demo_recording), _handover_step(demo_recording)]
+    ps = sparse.probability_of_success(demo_recording, twin, steps, n=64, seed=0)
+    fail = ps.result.failed.any(axis=0)
+    assert ps.n == 64 and ps.n_fail == int(fail.sum())
+    assert ps.p == pytest.approx(1 - fail.mean())
+    assert ps.interval[0] <= ps.p <= ps.interval[1]
+    assert ps.interval == sparse.wilson_interval(ps.n - ps.n_fail, ps.n)
+    assert 0 < ps.n_fail < ps.n  # heavy, slippery cubes slip at lift-off; light ones hold
+    assert ps.dominant is Term.CONTACT and sum(ps.term_counts.values()) == ps.n_fail
+    again = sparse.probability_of_success(demo_recording, twin, steps, n=64, seed=0)
+    assert again.p == ps.p
+
+
+# --------------------------------------------------------------------------
+# statistics, sampling, validation
+# --------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("successes, n, expected", [
+    (8, 10, (0.4901625, 0.9433178)),
+    (0, 10, (0.0, 0.2775328)),
+    (10, 10, (0.7224672, 1.0)),
+    (50, 100, (0.4038315, 0.5961685)),
+])
+def test_wilson_interval_known_values(successes, n, expected):
+    assert sparse.wilson_interval(successes, n) == pytest.approx(expected, abs=1e-6)
+
+
+def test_wilson_interval_narrows_with_confidence_and_n():
+    lo90, hi90 = sparse.wilson_interval(30, 40, confidence=0.9)
+    lo99, hi99 = sparse.wilson_interval(30, 40, confidence=0.99)
+    assert lo99 < lo90 < 0.75 < hi90 < hi99
+    lo, hi = sparse.wilson_interval(300, 400)
+    assert hi - lo < hi90 - lo90
+    with pytest.raises(ParameterError, match="n: expected an integer >= 1, got 0"):
+        sparse.wilson_interval(0, 0)
+    with pytest.raises(ParameterError, match="expected at most n = 4, got 5"):
+        sparse.wilson_interval(5, 4)
+    with pytest.raises(ParameterError, match=r"confidence: expected a number in \(0, 1\)"):
+        sparse.wilson_interval(1, 4, confidence=95)
+
+
+def test_sobol_and_grid_samples(scenario):
+    box = scenario.box
+    a = sparse.sweep_samples(box, n=128, seed=7)
+    b = sparse.sweep_samples(box, n=128, seed=7)
+    c = sparse.sweep_samples(box, n=128, seed=8)
+    assert a.shape == (128, 2) and np.array_equal(a, b) and not np.array_equal(a, c)
+    assert (a >= box.low).all() and (a <= box.high).all()
+    # balanced: every eighth of each range holds exactly 1/8 of the points
+    counts = [np.histogram(box.to_unit(a)[:, j], bins=8, range=(0, 1))[0] for j in range(2)]
+    assert (np.array(counts) == 16).all()
+    grid = sparse.sweep_samples(box, n=25, method=SweepMethod.GRID)
+    assert grid.shape == (25, 2)
+    assert set(grid[:, 0]) == set(np.linspace(box.low[0], box.high[0], 5))
+    assert sparse.sweep_samples(box, n=100, method="sobol", seed=1).shape == (100, 2)
+
+
+def test_bad_inputs_raise_parameter_error(scenario, twin, demo_recording):
+    engine = SparseEvaluator(demo_recording, twin)
+    nominal = scenario.box.nominal
+    t = demo_recording.n_steps
+    with pytest.raises(ParameterError,
+                       match=r"expected samples of shape \(n, 2\).*got shape \(4, 3\)"):
+        engine.evaluate([10], np.ones((4, 3)))
+    with pytest.raises(ParameterError, match=r"'mass': expected finite .* got \[nan\]"):
+        engine.evaluate([10], [[math.nan, 1.0]])
+    with pytest.raises(ParameterError, match=r"'mass': expected finite .* got \[-1.0\]"):
+        engine.evaluate([10], [[-1.0, 1.0]])
+    with pytest.raises(ParameterError,
+                       match=rf"steps: expected physics steps in \[0, {t - 1}\].*got \[{t}\]"):
+        engine.evaluate([t], nominal[None])
+    with pytest.raises(ParameterError, match=r"got \[-1\]"):
+        engine.evaluate([5, -1], nominal[None])
+    with pytest.raises(ParameterError, match=rf"in \[0, {t - 5}\].*horizon 5"):
+        SparseEvaluator(demo_recording, twin, horizon=5).evaluate([t - 3], nominal[None])
+    with pytest.raises(ParameterError, match="expected integer step indices"):
+        engine.evaluate([1.5], nominal[None])
+    with pytest.raises(ParameterError, match="non-empty 1-D"):
+        engine.evaluate([], nominal[None])
+    with pytest.raises(ParameterError, match="at least one row"):
+        engine.evaluate([10], np.empty((0, 2)))
+    with pytest.raises(ParameterError, match="mode SOLVE .* expected horizon 1, got 3"):
+        SparseEvaluator(demo_recording, twin, horizon=3, mode=SparseMode.SOLVE)
+    with pytest.raises(ParameterError, match="horizon: expected an integer >= 1, got 0"):
+        SparseEvaluator(demo_recording, twin, horizon=0)
+    with pytest.raises(ParameterError, match=r"mode: expected one of \['step', 'solve'\]"):
+        SparseEvaluator(demo_recording, twin, mode="fast")
+    with pytest.raises(ParameterError, match="n_grid: expected an integer >= 2, got 1"):
+        sparse.critical_values(demo_recording, twin, [10], n_grid=1, evaluator=engine)
+    with pytest.raises(ParameterError, match="limit: expected a finite number"):
+        sparse.critical_values(demo_recording, twin, [10], limit=math.inf, evaluator=engine)
+
+
+def test_recording_of_another_scenario_is_rejected(tiny, twin):
+    _, tiny_recording = tiny
+    with pytest.raises(ParameterError, match=r"recording.states: expected shape \(T \+ 1, \d+\)"):
+        SparseEvaluator(tiny_recording, twin)
+
+
+def test_public_names_exist():
+    for name in sparse.__all__:
+        assert hasattr(sparse, name), name
