@@ -26,7 +26,8 @@ import mujoco
 import mujoco.batch
 import numpy as np
 
-from critmoment import demos, rollout
+from critmoment import demos
+from critmoment import recording as rollout
 from critmoment.scenario import load_scenario
 from critmoment.sparse import SparseEvaluator, SparseMode, sweep_samples
 from critmoment.twin import Twin
@@ -46,25 +47,24 @@ def demo_moments(recording) -> list[int]:
             min(t - 10, handover + 800)]
 
 
-def time_raw(twin: Twin, recording, steps, samples, *, nthread: int, horizon: int,
-             repeats: int) -> float:
-    """Best time [s] of raw batch stepping over all moments."""
-    batch = mujoco.batch.Batch(twin.model, samples.shape[0], nthread=nthread)
-    twin.write_parameters(batch, samples)
-    ctrl = slice(*_ctrl_span(twin))
-    rows = []
-    for k in steps:
-        row = recording.states[k].copy()
-        row[ctrl] = recording.controls[k]
-        rows.append(row)
-    best = np.inf
-    for _ in range(repeats):
-        start = time.perf_counter()
-        for row in rows:
-            batch.state[:] = row
-            batch.step(nstep=horizon)
-        best = min(best, time.perf_counter() - start)
-    return best
+class RawStepper:
+    """Raw ``mujoco.batch`` stepping: state rows in, ``step()``, nothing else."""
+
+    def __init__(self, twin: Twin, recording, steps, samples, *, nthread: int, horizon: int):
+        self.batch = mujoco.batch.Batch(twin.model, samples.shape[0], nthread=nthread)
+        twin.write_parameters(self.batch, samples)
+        self.horizon = horizon
+        ctrl = slice(*_ctrl_span(twin))
+        self.rows = []
+        for k in steps:
+            row = recording.states[k].copy()
+            row[ctrl] = recording.controls[k]  # the controls step k applies
+            self.rows.append(row)
+
+    def __call__(self) -> None:
+        for row in self.rows:
+            self.batch.state[:] = row
+            self.batch.step(nstep=self.horizon)
 
 
 def _ctrl_span(twin: Twin) -> tuple[int, int]:
@@ -80,17 +80,15 @@ def _ctrl_span(twin: Twin) -> tuple[int, int]:
     raise RuntimeError("no ctrl in the integration state")
 
 
-def time_critmoment(twin: Twin, recording, steps, samples, *, nthread: int, horizon: int,
-                    repeats: int, mode: SparseMode = SparseMode.STEP):
-    """Best time [s] of SparseEvaluator.evaluate over all moments, and its result."""
-    engine = SparseEvaluator(recording, twin, horizon=horizon, mode=mode, nthread=nthread)
-    engine.evaluate(steps[:1], samples)  # writes the parameters once, as raw does
-    best, result = np.inf, None
+def best_times(runs: dict, repeats: int) -> dict:
+    """Best wall time [s] of each callable, timed interleaved so that drifts hit all alike."""
+    best = dict.fromkeys(runs, np.inf)
     for _ in range(repeats):
-        start = time.perf_counter()
-        result = engine.evaluate(steps, samples)
-        best = min(best, time.perf_counter() - start)
-    return best, result
+        for name, run in runs.items():
+            start = time.perf_counter()
+            run()
+            best[name] = min(best[name], time.perf_counter() - start)
+    return best
 
 
 def main(argv=None) -> None:
@@ -114,34 +112,52 @@ def main(argv=None) -> None:
     print(f"demo seed {args.seed}: moments {steps}; {args.samples} Sobol samples of "
           f"{', '.join(scenario.box.names)}; best of {args.repeats}")
     print()
-    header = f"{'threads':>7} {'horizon':>7} {'raw eval/s':>12} {'critmoment eval/s':>18} {'ratio':>7}"
+    header = (f"{'threads':>7} {'horizon':>7} {'raw eval/s':>12} {'critmoment eval/s':>18} "
+              f"{'ratio':>7}")
     print(header)
     print("-" * len(header))
     n_eval = len(steps) * args.samples
     ratios = {}
     for nthread in args.threads:
         for horizon in args.horizons:
-            t_raw = time_raw(twin, recording, steps, samples, nthread=nthread,
-                             horizon=horizon, repeats=args.repeats)
-            t_cm, _ = time_critmoment(twin, recording, steps, samples, nthread=nthread,
-                                      horizon=horizon, repeats=args.repeats)
-            ratio = t_raw / t_cm
+            raw = RawStepper(twin, recording, steps, samples, nthread=nthread, horizon=horizon)
+            engine = SparseEvaluator(recording, twin, horizon=horizon, nthread=nthread)
+            engine.evaluate(steps[:1], samples)  # writes the parameters once, as raw does
+            best = best_times({"raw": raw, "critmoment": lambda: engine.evaluate(steps, samples)},
+                              args.repeats)
+            ratio = best["raw"] / best["critmoment"]
             ratios[nthread, horizon] = ratio
-            print(f"{nthread:>7} {horizon:>7} {n_eval / t_raw:>12,.0f} {n_eval / t_cm:>18,.0f} "
-                  f"{ratio:>7.3f}")
-    print()
+            print(f"{nthread:>7} {horizon:>7} {n_eval / best['raw']:>12,.0f} "
+                  f"{n_eval / best['critmoment']:>18,.0f} {ratio:>7.3f}")
     nthread = max(args.threads)
-    t_step, r_step = time_critmoment(twin, recording, steps, samples, nthread=nthread,
-                                     horizon=1, repeats=args.repeats)
-    t_solve, r_solve = time_critmoment(twin, recording, steps, samples, nthread=nthread,
-                                       horizon=1, repeats=args.repeats, mode=SparseMode.SOLVE)
+    nominal = np.tile(scenario.box.nominal, (args.samples, 1))
+    raw = RawStepper(twin, recording, steps, nominal, nthread=nthread, horizon=1)
+    engine = SparseEvaluator(recording, twin, horizon=1, nthread=nthread)
+    engine.evaluate(steps[:1], nominal)
+    best = best_times({"raw": raw, "critmoment": lambda: engine.evaluate(steps, nominal)},
+                      args.repeats)
+    print(f"{nthread:>7} {1:>7} {n_eval / best['raw']:>12,.0f} "
+          f"{n_eval / best['critmoment']:>18,.0f} {best['raw'] / best['critmoment']:>7.3f}"
+          "   (all samples at nominal parameters)")
+    print()
+    engines = {mode: SparseEvaluator(recording, twin, horizon=1, mode=mode, nthread=nthread)
+               for mode in SparseMode}
+    results = {}
+
+    def run(mode):
+        results[mode] = engines[mode].evaluate(steps, samples)
+
+    for mode in SparseMode:
+        run(mode)
+    best = best_times({mode: (lambda m=mode: run(m)) for mode in SparseMode}, args.repeats)
+    r_step, r_solve = results[SparseMode.STEP], results[SparseMode.SOLVE]
     same = all(np.array_equal(getattr(r_step, f), getattr(r_solve, f), equal_nan=True)
                for f in ("cost", "fos_contact", "fos_grasp", "fos_motor", "object_acc",
-                         "actuator_norm"))
-    diff = np.nanmax(np.abs(np.where(np.isfinite(r_step.cost), r_step.cost - r_solve.cost, 0)))
-    print(f"STEP  (mj_step),    {nthread} threads, horizon 1: {n_eval / t_step:,.0f} eval/s")
-    print(f"SOLVE (mj_forward), {nthread} threads, horizon 1: {n_eval / t_solve:,.0f} eval/s "
-          f"({t_step / t_solve:.3f}x STEP); results identical: {same}, max |Δcost| = {diff:.3g}")
+                         "actuator_norm", "contact_gripper", "contact_support"))
+    t_step, t_solve = best[SparseMode.STEP], best[SparseMode.SOLVE]
+    print(f"STEP  (mj_step),    {nthread} threads, horizon 1: {n_eval / t_step:>9,.0f} eval/s")
+    print(f"SOLVE (mj_forward), {nthread} threads, horizon 1: {n_eval / t_solve:>9,.0f} eval/s "
+          f"({t_step / t_solve:.3f}x STEP's speed); identical results: {same}")
     print()
     key = (2, 1) if (2, 1) in ratios else max(ratios, key=lambda nh: (nh[1] == 1, nh[0]))
     print(f"ratio critmoment/raw: {ratios[key]:.3f}")

@@ -1,9 +1,22 @@
-"""critmoment: audit robot trajectories for physical safety before they run on hardware."""
+"""critmoment: audit robot trajectories for physical safety before they run on hardware.
+
+The pipeline, one stage per module::
+
+    trajectory -> recording (frequent rollout) -> moments -> dynamics / search
+               -> sparse (evaluation) -> analysis (verdict) -> report
+
+``critmoment.analyze(traj, scenario)`` chains the stages; each stage can be called alone.
+"""
 
 from critmoment.exceptions import (CritmomentError, InputFileError, ParameterError,
                                    ScenarioError, SimulationDivergedError, TrajectoryError)
+from critmoment.moments import Moment, MomentDetector, MomentLabel, find_moments
 from critmoment.params import UncertaintyBox
+from critmoment.recording import Recording, rollout, simulate
 from critmoment.scenario import CostParams, Scenario, load_scenario
+from critmoment.sparse import (SparseEvaluator, SparseMode, SparseResult, evaluate,
+                               probability_of_success, sweep)
+from critmoment.trajectory import Trajectory, load_trajectory, save_trajectory
 from critmoment.twin import Signals, Twin
 
 __version__ = "0.1.0"
@@ -15,10 +28,26 @@ __all__ = [
     "ScenarioError",
     "SimulationDivergedError",
     "TrajectoryError",
+    "Moment",
+    "MomentDetector",
+    "MomentLabel",
+    "find_moments",
     "UncertaintyBox",
+    "Recording",
+    "rollout",
+    "simulate",
     "CostParams",
     "Scenario",
     "load_scenario",
+    "SparseEvaluator",
+    "SparseMode",
+    "SparseResult",
+    "evaluate",
+    "probability_of_success",
+    "sweep",
+    "Trajectory",
+    "load_trajectory",
+    "save_trajectory",
     "Signals",
     "Twin",
     "__version__",

@@ -72,7 +72,7 @@ def cmd_demo(args) -> int:
 
 def cmd_rollout(args) -> int:
     from critmoment import report
-    from critmoment.rollout import rollout
+    from critmoment.recording import rollout
 
     twin, traj = _load(args)
     rec = rollout(traj, twin=twin)
@@ -102,7 +102,7 @@ def cmd_rollout(args) -> int:
 def cmd_moments(args) -> int:
     from critmoment import report
     from critmoment.analysis import detect_moments
-    from critmoment.rollout import rollout
+    from critmoment.recording import rollout
 
     twin, traj = _load(args)
     rec = rollout(traj, twin=twin)

@@ -36,7 +36,7 @@ def plot_recording(recording, *, moments: Sequence[Moment] = (), path: str | Pat
     and the task stage (thesis Appendix A).
 
     Args:
-        recording: a :class:`~critmoment.rollout.Recording`.
+        recording: a :class:`~critmoment.recording.Recording`.
         moments: moments to mark as labelled vertical lines.
         path: save the figure there when given (format from the extension).
     """

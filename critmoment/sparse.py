@@ -23,7 +23,8 @@ of that step (as the recording's ``sensordata[k]`` does), so for ``h = 1`` and
 nominal parameters the evaluation reproduces ``recording.sensordata[k]`` and
 ``recording.states[k + 1]`` exactly. For ``h > 1`` the ``h`` steps are reduced
 to their worst: ``cost`` is the maximum over the horizon, ``fos_contact`` (per
-gripper) and ``fos_motor`` the minima (``motor_argmax`` at the step of the
+gripper), ``fos_grasp`` (all grippers, the one the cost uses) and ``fos_motor``
+the minima (``motor_argmax`` at the step of the
 minimum motor FOS), ``actuator_norm`` the peak (largest magnitude, signed) of
 each actuator and ``object_acc`` the acceleration of largest magnitude; the two
 cost terms, the contact flags and the stage are those of the step of maximum
@@ -105,7 +106,7 @@ __all__ = [
 _log = logging.getLogger(__name__)
 
 _WARNING_NAMES = tuple(mujoco.mjtWarning(i).name for i in range(mujoco.mjtWarning.mjNWARNING))
-#: simulations per batch chunk by default: ~4 MB of state rows per 2,048
+#: simulations per batch chunk by default (a state row of the bundled model is 232 values)
 DEFAULT_CHUNK = 4096
 #: bytes of raw sensor readings one chunk may hold for one moment before it is scored
 _MAX_BUFFER_BYTES = 256 * 2**20
@@ -157,8 +158,9 @@ class Criterion(enum.Enum):
 
 
 #: default limit of the factor-of-safety criteria: MuJoCo keeps both factors of safety
-#: >= 1 (friction cone, actuator force range), so saturation reads as FOS -> 1; at
-#: 1.05 the motor term alone reaches the default threshold (1 + ln(B / 0.9) / β ≈ 1.053)
+#: >= 1 (the friction cone; the actuator force range, when the scenario's limits are the
+#: force ranges as in the bundled one), so saturation reads as FOS -> 1; at 1.05 the motor
+#: term alone reaches the default threshold (1 + ln(B / 0.9) / β ≈ 1.053)
 FOS_LIMIT = 1.05
 
 
@@ -177,7 +179,7 @@ class OthersAt(enum.Enum):
     NOMINAL = "nominal"
     """At their nominal values."""
     WORST = "worst"
-    """At the box corner with the highest cost at that moment."""
+    """Each at the end of its range that makes the swept curve fail most at that moment."""
 
 
 class FailSide(str, enum.Enum):
@@ -373,12 +375,13 @@ def _as_steps(steps: Any) -> np.ndarray:
 class SparseEvaluator:
     """Reusable sparse-evaluation engine for one recording and twin.
 
-    Holds ``mujoco.batch.Batch`` objects (one per chunk size in use) and remembers which
-    samples each holds, so that repeated calls with the same samples write parameters and
-    run ``set_const`` only once.
+    Holds ``mujoco.batch.Batch`` objects (one per chunk size in use, the last four) and
+    remembers which samples each holds, so that repeated calls with the same samples (up to
+    ``chunk`` of them) write parameters and run ``set_const`` only once; each moment then
+    costs a state load, the stepping and the scoring.
 
     Args:
-        recording: the frequent rollout (``critmoment.rollout.Recording``) at nominal
+        recording: the frequent rollout (``critmoment.recording.Recording``) at nominal
             parameters.
         twin: the twin the recording was made with.
         horizon: physics steps per evaluation (default: the scenario's).
@@ -397,7 +400,8 @@ class SparseEvaluator:
                  divergence: DivergencePolicy = DivergencePolicy.MARK):
         self.twin = twin
         self.recording = recording
-        self.horizon = _check_int("horizon", twin.scenario.horizon if horizon is None else horizon, 1)
+        horizon = twin.scenario.horizon if horizon is None else horizon
+        self.horizon = _check_int("horizon", horizon, 1)
         self.mode = _check_enum("mode", mode, SparseMode)
         self.nthread = _check_int("nthread", nthread, 0)
         self.chunk = _check_int("chunk", chunk, 1)
@@ -415,7 +419,8 @@ class SparseEvaluator:
             raise ParameterError(
                 f"recording.states: expected shape (T + 1, {nstate}) (integration states of "
                 f"this twin's model), got {states.shape}")
-        if controls.ndim != 2 or controls.shape[1] != model.nu or states.shape[0] != controls.shape[0] + 1:
+        if (controls.ndim != 2 or controls.shape[1] != model.nu
+                or states.shape[0] != controls.shape[0] + 1):
             raise ParameterError(
                 f"recording.controls: expected shape ({states.shape[0] - 1}, {model.nu}), got "
                 f"{controls.shape}")
@@ -478,6 +483,9 @@ class SparseEvaluator:
         batch = self._batches.get(n)
         if batch is None:
             batch = mujoco.batch.Batch(self.twin.model, n, nthread=self.nthread)
+            if self.mode is SparseMode.SOLVE:
+                # a field bound after a call reads zero until the next call: bind it first
+                batch.bind("sensordata")
             self._batches[n] = batch
             while len(self._batches) > 4:
                 old, _ = self._batches.popitem(last=False)
@@ -607,7 +615,8 @@ class SparseEvaluator:
             term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp[rows, worst] - 1.0))
             term_m = cp.B * np.exp(-cp.beta * (sig.fos_motor[rows, worst] - 1.0))
         values = {
-            "fos_contact": fos_contact, "fos_grasp": fos_grasp, "fos_motor": fos_motor, "motor_argmax": motor_argmax,
+            "fos_contact": fos_contact, "fos_grasp": fos_grasp, "fos_motor": fos_motor,
+            "motor_argmax": motor_argmax,
             "cost": sig.cost[rows, worst], "cost_contact": term_c, "cost_motor": term_m,
             "object_acc": object_acc, "actuator_norm": actuator_norm,
             "contact_support": sig.contact_support[rows, worst],
@@ -735,7 +744,8 @@ def sweep(recording, twin: Twin, steps: Any, *, n: int = 256,
         horizon: physics steps per evaluation (default: the scenario's).
         mode: STEP or SOLVE.
         nthread: threads (0: all CPUs).
-        evaluator: an evaluator to reuse (then horizon, mode and nthread are its own).
+        evaluator: an evaluator to reuse; its recording, twin, horizon, mode and threads
+            are used instead of the arguments.
 
     Returns:
         The :class:`SparseResult` of the samples.
@@ -753,16 +763,17 @@ def sweep(recording, twin: Twin, steps: Any, *, n: int = 256,
 
 @dataclasses.dataclass(frozen=True)
 class CriticalValue:
-    """Where the cost crosses the threshold along one parameter at one moment.
+    """Where the motion turns from passing to failing along one parameter at one moment.
 
     Attributes:
         parameter: the swept parameter's name.
         value: the crossing nearest the parameter's nominal value (in its unit, e.g. [kg]),
-            or None when the cost never crosses the threshold over the range.
+            or None when the criterion (by default cost > threshold) never flips over the
+            range.
         direction: on which side of ``value`` the motion fails, or None without a crossing.
         step: the moment, physics step index.
         others: values of the other parameters during the sweep.
-        others_at: where the others sit (NOMINAL or the WORST corner).
+        others_at: where the others sit (NOMINAL or their WORST ends).
         bracket: (low, high) around ``value`` after refinement, or None.
         crossings: every refined crossing over the range, increasing.
         dominant: the cost term that dominates on the failing side of ``value``.
@@ -821,12 +832,66 @@ def _badness(res: SparseResult, criterion: Criterion) -> np.ndarray:
     return np.where(res.diverged, np.inf, bad)
 
 
-def _worst_corners(engine: SparseEvaluator, steps: np.ndarray, criterion: Criterion
-                   ) -> np.ndarray:
-    """Per moment, the corner (k,) of the box that is worst under ``criterion``: (m, k)."""
-    corners = engine.box.corners()
-    res = engine.evaluate(steps, corners)
-    return corners[np.argmax(_badness(res, criterion), axis=1)]
+def _curve_samples(base: np.ndarray, j: int, axes: np.ndarray) -> np.ndarray:
+    """Samples (n_grid, k) of parameter j's grid with the others at ``base`` (k,)."""
+    samples = np.repeat(base[None], axes.shape[0], axis=0)
+    samples[:, j] = axes[:, j]
+    return samples
+
+
+def _curves(engine: SparseEvaluator, steps: np.ndarray, bases: np.ndarray, axes: np.ndarray,
+            criterion: Criterion, limit: float) -> tuple[np.ndarray, np.ndarray]:
+    """Fail flags and dominant terms (C, m, k, n_grid) of every swept curve.
+
+    Curves with the same samples at several moments share one batched call.
+    """
+    ncontext, m, k, _ = bases.shape
+    n_grid = axes.shape[0]
+    failed = np.empty((ncontext, m, k, n_grid), dtype=bool)
+    term = np.empty((ncontext, m, k, n_grid), dtype=np.int8)
+    groups: dict[tuple[int, bytes], list[tuple[int, int]]] = {}
+    for c, i, j in np.ndindex(ncontext, m, k):
+        groups.setdefault((j, bases[c, i, j].tobytes()), []).append((c, i))
+    for (j, _), members in groups.items():
+        c0, i0 = members[0]
+        rows = sorted({i for _, i in members})
+        res = engine.evaluate(steps[rows], _curve_samples(bases[c0, i0, j], j, axes))
+        fails, dominant = res.fails(criterion, limit=limit), res.dominant
+        for c, i in members:
+            failed[c, i, j] = fails[rows.index(i)]
+            term[c, i, j] = dominant[rows.index(i)]
+    return failed, term
+
+
+def _worst_others(engine: SparseEvaluator, steps: np.ndarray, axes: np.ndarray,
+                  criterion: Criterion, limit: float) -> np.ndarray:
+    """The others' worst values (m, k, k) for each moment and swept parameter.
+
+    For swept parameter j and each other parameter q, the end of q's range under which
+    j's curve (the rest nominal) fails at more grid points, ties broken by the higher mean
+    badness (cost, or minus the FOS); equal curves keep q nominal.
+    """
+    box = engine.box
+    k, m = box.ndim, steps.shape[0]
+    out = np.tile(box.nominal, (m, k, 1))
+    ends = (box.low, box.high)
+    for j in range(k):
+        for q in range(k):
+            if q == j:
+                continue
+            score = []
+            for end in ends:
+                base = box.nominal.copy()
+                base[q] = end[q]
+                res = engine.evaluate(steps, _curve_samples(base, j, axes))
+                bad = np.clip(_badness(res, criterion), -1e300, 1e300)
+                score.append((res.fails(criterion, limit=limit).sum(axis=1), bad.mean(axis=1)))
+            (f_lo, b_lo), (f_hi, b_hi) = score
+            high = (f_hi > f_lo) | ((f_hi == f_lo) & (b_hi > b_lo))
+            low = (f_lo > f_hi) | ((f_hi == f_lo) & (b_lo > b_hi))
+            out[high, j, q] = box.high[q]
+            out[low, j, q] = box.low[q]
+    return out
 
 
 def critical_values(recording, twin: Twin, steps: Any, *, n_grid: int = 33,
@@ -840,13 +905,16 @@ def critical_values(recording, twin: Twin, steps: Any, *, n_grid: int = 33,
 
     For each moment and each parameter, the parameter is swept over ``n_grid`` values of
     its range (evenly spaced in prior quantiles) with the others held at their NOMINAL
-    values, and again with the others at the WORST corner of the box: the corner that is
-    worst under ``criterion`` at that moment (highest cost, or lowest FOS; for the bundled
-    scenario the heaviest mass and the lowest friction). Every change between passing
-    and failing (``cost > threshold`` by default; a diverged sample fails) between
-    neighbouring samples is refined by multi-point bisection:
+    values, and again with the others at their WORST ends: for each other parameter, the
+    end of its range under which the swept curve (the rest nominal) fails at more grid
+    points, then has the higher mean cost (or lower FOS); equal curves keep it nominal.
+    For the bundled scenario at lift-off that is the lowest friction when mass is swept and
+    the heaviest mass when friction is swept.
+
+    Every change between passing and failing (``cost > threshold`` by default; a diverged
+    sample fails) between neighbouring grid samples is refined by multi-point bisection:
     each round evaluates ``split`` interior points of every open bracket in one batched
-    call and keeps the sub-interval with the sign change, until its width is at most
+    call and keeps the sub-interval with the first change, until its width is at most
     ``rtol`` times the crossing's magnitude. The reported value is the refined crossing
     nearest the nominal value; a sign change only shows where the curve is sampled, so
     two crossings within one grid interval go unseen.
@@ -865,7 +933,8 @@ def critical_values(recording, twin: Twin, steps: Any, *, n_grid: int = 33,
         mode: STEP or SOLVE.
         nthread: threads (0: all CPUs).
         split: interior points per bracket and bisection round (>= 1).
-        evaluator: an evaluator to reuse.
+        evaluator: an evaluator to reuse; its recording, twin, horizon, mode and threads
+            are used instead of the arguments.
 
     Returns:
         One :class:`CriticalValue` per (moment, parameter, placement of the others), in
@@ -885,34 +954,21 @@ def critical_values(recording, twin: Twin, steps: Any, *, n_grid: int = 33,
     box = engine.box
     k, m = box.ndim, steps.shape[0]
     nominal = box.nominal
-    bases = np.empty((len(contexts), m, k))  # the others' values per context and moment
-    for c, ctx in enumerate(contexts):
-        bases[c] = (nominal if ctx is OthersAt.NOMINAL
-                    else _worst_corners(engine, steps, criterion))
     grid_unit = np.linspace(0.0, 1.0, n_grid)
     axes = np.clip(box.from_unit(np.repeat(grid_unit[:, None], k, axis=1)), box.low, box.high)
-
-    # grid sweeps: moments sharing the same base share one batched call
-    failed = np.empty((len(contexts), m, k, n_grid), dtype=bool)
-    term = np.empty((len(contexts), m, k, n_grid), dtype=np.int8)
-    for c in range(len(contexts)):
-        groups: dict[bytes, list[int]] = {}
-        for i in range(m):
-            groups.setdefault(bases[c, i].tobytes(), []).append(i)
-        for rows in groups.values():
-            samples = np.repeat(bases[c, rows[0]][None], k * n_grid, axis=0)
-            for j in range(k):
-                samples[j * n_grid:(j + 1) * n_grid, j] = axes[:, j]
-            res = engine.evaluate(steps[rows], samples)
-            failed[c, rows] = res.fails(criterion, limit=limit).reshape(len(rows), k, n_grid)
-            term[c, rows] = res.dominant.reshape(len(rows), k, n_grid)
+    # the others' values per placement, moment and swept parameter
+    bases = np.empty((len(contexts), m, k, k))
+    for c, ctx in enumerate(contexts):
+        bases[c] = (nominal if ctx is OthersAt.NOMINAL
+                    else _worst_others(engine, steps, axes, criterion, limit))
+    failed, term = _curves(engine, steps, bases, axes, criterion, limit)
 
     brackets: list[_Bracket] = []
     for c, i, j in np.ndindex(len(contexts), m, k):
         f = failed[c, i, j]
         for g in np.flatnonzero(f[1:] != f[:-1]):
             fail_term = term[c, i, j, g + 1] if f[g + 1] else term[c, i, j, g]
-            brackets.append(_Bracket(i=i, j=j, context=c, base=bases[c, i].copy(),
+            brackets.append(_Bracket(i=i, j=j, context=c, base=bases[c, i, j].copy(),
                                      lo=float(axes[g, j]), hi=float(axes[g + 1, j]),
                                      fail_lo=bool(f[g]), term_fail=int(fail_term)))
     _refine(engine, steps, brackets, rtol=rtol, split=split, criterion=criterion, limit=limit)
@@ -923,7 +979,8 @@ def critical_values(recording, twin: Twin, steps: Any, *, n_grid: int = 33,
             for c, ctx in enumerate(contexts):
                 mine = sorted((b for b in brackets if (b.i, b.j, b.context) == (i, j, c)),
                               key=lambda b: b.lo)
-                other_values = {box.names[q]: float(bases[c, i, q]) for q in range(k) if q != j}
+                other_values = {box.names[q]: float(bases[c, i, j, q])
+                                for q in range(k) if q != j}
                 if not mine:
                     out.append(CriticalValue(
                         parameter=name, value=None, direction=None, step=int(steps[i]),
@@ -944,7 +1001,7 @@ def critical_values(recording, twin: Twin, steps: Any, *, n_grid: int = 33,
 
 
 def _refine(engine: SparseEvaluator, steps: np.ndarray, brackets: list[_Bracket], *,
-            rtol: float, split: int, criterion: Criterion, limit: float | None,
+            rtol: float, split: int, criterion: Criterion, limit: float,
             max_rounds: int = 40) -> None:
     """Shrink every bracket around its sign change to ``rtol``, in place."""
     box = engine.box
@@ -1054,9 +1111,10 @@ def probability_of_success(recording, twin: Twin, steps: Any, *, n: int = 256,
     """Probability that the motion succeeds at all given moments, under the box's prior.
 
     A sample succeeds when its cost is at most the threshold (and it does not diverge) at
-    every moment (or, with another ``criterion``, when it does not fail that one). The samples are a scrambled Sobol sequence mapped through the prior; the
-    interval is Wilson's score interval, which treats them as independent draws (for a
-    quasi-random sample it is conservative).
+    every moment (or, with another ``criterion``, when it does not fail that one). The
+    samples are a scrambled Sobol sequence mapped through the prior; the interval is
+    Wilson's score interval, which treats them as independent draws (a scrambled Sobol
+    estimate usually spreads less than that, so the interval is usually conservative).
 
     Args:
         recording: the frequent rollout.
@@ -1071,7 +1129,8 @@ def probability_of_success(recording, twin: Twin, steps: Any, *, n: int = 256,
         horizon: physics steps per evaluation (default: the scenario's).
         mode: STEP or SOLVE.
         nthread: threads (0: all CPUs).
-        evaluator: an evaluator to reuse.
+        evaluator: an evaluator to reuse; its recording, twin, horizon, mode and threads
+            are used instead of the arguments.
 
     Returns:
         The :class:`SuccessProbability`.

@@ -8,7 +8,8 @@ import warnings
 import numpy as np
 import pytest
 
-from critmoment import demos, rollout
+from critmoment import demos
+from critmoment import recording as rollout
 from critmoment.scenario import load_scenario
 from critmoment.twin import Twin
 

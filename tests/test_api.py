@@ -16,7 +16,7 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover
     import tomli as tomllib
 
-MODULES = ["exceptions", "params", "scenario", "safety", "twin", "rollout", "trajectory", "demos"]
+MODULES = ["exceptions", "params", "scenario", "safety", "twin", "recording", "trajectory", "demos"]
 
 
 @pytest.mark.parametrize("name", critmoment.__all__)

@@ -7,7 +7,8 @@ import warnings
 import numpy as np
 import pytest
 
-from critmoment import demos, rollout
+from critmoment import demos
+from critmoment import recording as rollout
 from critmoment.exceptions import ParameterError
 
 

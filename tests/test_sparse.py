@@ -12,7 +12,8 @@ import mujoco
 import numpy as np
 import pytest
 
-from critmoment import rollout, sparse
+from critmoment import recording as rollout
+from critmoment import sparse
 from critmoment.exceptions import ParameterError, SimulationDivergedError
 from critmoment.scenario import load_scenario
 from critmoment.sparse import (

@@ -10,9 +10,9 @@ import mujoco
 import numpy as np
 import pytest
 
-from critmoment import rollout as rollout_mod
+from critmoment import recording as rollout_mod
 from critmoment.exceptions import InputFileError, SimulationDivergedError, TrajectoryError
-from critmoment.rollout import Recording, rollout, simulate, task_completed
+from critmoment.recording import Recording, rollout, simulate, task_completed
 from critmoment.scenario import bundled_scenario_path, load_scenario
 from critmoment.trajectory import Trajectory, load_trajectory
 from critmoment.twin import Twin

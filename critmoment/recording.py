@@ -1,4 +1,4 @@
-"""The frequent rollout: replay a trajectory and record state and safety signals.
+"""The frequent rollout and its Recording: replay a trajectory, record state and safety signals.
 
 :func:`simulate` steps one or many full trajectories through
 ``mujoco.batch.Batch.rollout`` (C loop, thread pool, per-simulation parameters):
