@@ -400,6 +400,9 @@ class SparseEvaluator:
                  divergence: DivergencePolicy = DivergencePolicy.MARK):
         self.twin = twin
         self.recording = recording
+        sig = recording.signals
+        self._carried = ~np.asarray(sig.contact_support, bool) & np.asarray(
+            sig.contact_gripper, bool).any(axis=-1)
         horizon = twin.scenario.horizon if horizon is None else horizon
         self.horizon = _check_int("horizon", horizon, 1)
         self.mode = _check_enum("mode", mode, SparseMode)
@@ -547,7 +550,7 @@ class SparseEvaluator:
             for i, k in enumerate(steps):
                 raised, warned = self._advance(batch, int(k), buf)
                 diverged = raised | (warned > 0).any(axis=1) | ~np.isfinite(buf).all(axis=(1, 2))
-                self._score(buf, mu, diverged, out, i, sl)
+                self._score(buf, mu, diverged, out, i, sl, carried=self._carried[k:k + h])
                 if keep_raw:
                     raw[i, sl] = buf
                     final[i, sl] = batch.state
@@ -588,11 +591,17 @@ class SparseEvaluator:
         return raised, batch.warning[:, :, 1].copy()
 
     def _score(self, buf: np.ndarray, mu: np.ndarray | float, diverged: np.ndarray,
-               out: dict[str, np.ndarray], i: int, sl: slice) -> None:
-        """Signals of buf (nsim, h, nsd), reduced over the horizon, into out[...][i, sl]."""
+               out: dict[str, np.ndarray], i: int, sl: slice, *, carried: np.ndarray) -> None:
+        """Signals of buf (nsim, h, nsd), reduced over the horizon, into out[...][i, sl].
+
+        ``carried`` (h,) says where the nominal run carries the object off its support: the
+        grip must hold it there whatever the sample does (a heavy object that sinks back onto
+        the table has failed to lift, not become safe).
+        """
         twin, cp = self.twin, self.twin.scenario.cost
         mu = np.asarray(mu, dtype=np.float64)
-        sig = twin.signals(buf, mu=mu[:, None] if mu.ndim == 1 else mu)  # leading (nsim, h)
+        sig = twin.signals(buf, mu=mu[:, None] if mu.ndim == 1 else mu,
+                           carried=carried[None, :])  # leading (nsim, h)
         nsim = buf.shape[0]
         rows = np.arange(nsim)
         if self.horizon == 1:

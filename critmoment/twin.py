@@ -48,8 +48,9 @@ class Signals:
         actuator_norm: actuator_force / force limit, (..., nu).
         fos_contact: contact FOS per gripper, (..., G); +inf without contact.
         fos_grasp: contact FOS of the grasp, eq. 12 over the contacts of all grippers,
-            while the object is off its support (+inf on the support or untouched), (...).
-            This is the contact FOS the cost uses.
+            where the object must be carried (off its support); +inf on the support, 0 when
+            it must be carried but no gripper touches it (falling), (...). This is the
+            contact FOS the cost uses.
         fos_motor: motor FOS over rotational actuators, (...).
         motor_argmax: index (into the actuators) of the limiting actuator, (...).
         cost: cost (eq. 15) of fos_grasp and fos_motor, (...).
@@ -308,13 +309,19 @@ class Twin:
     def nsensordata(self) -> int:
         return int(self.model.nsensordata)
 
-    def signals(self, sensordata: np.ndarray, mu: np.ndarray | float | None = None) -> Signals:
+    def signals(self, sensordata: np.ndarray, mu: np.ndarray | float | None = None, *,
+                carried: np.ndarray | None = None) -> Signals:
         """Safety signals from ``sensordata`` (..., nsensordata).
 
         Args:
             sensordata: sensor readings after a step (or a forward).
             mu: friction of the object's contacts, broadcastable to the leading shape
                 (...); default: the nominal model's.
+            carried: where the grip must carry the object, broadcastable to (...) bool;
+                default: wherever a gripper holds the object off its support in
+                ``sensordata``. Sparse evaluation passes the nominal run's flags, so that an
+                object too heavy to lift, which stays on (or sinks back onto) the table, still
+                counts as slipping, and one that falls out of the grip counts as falling.
         """
         sd = np.asarray(sensordata, dtype=np.float64)
         lead = sd.shape[:-1]
@@ -337,7 +344,11 @@ class Twin:
         # next to a gripper that holds; the grip only carries the object off its support
         fos_grasp = safety.contact_fos(np.concatenate(normals, axis=-1),
                                        np.concatenate(tangentials, axis=-1), mu)
-        fos_grasp = np.where(contact_support, np.inf, fos_grasp)
+        if carried is None:
+            carried = ~contact_support & contact_gripper.any(axis=-1)
+        # carried but touched by no gripper: the object is falling (FOS 0, a failure)
+        held = np.where(contact_gripper.any(axis=-1), fos_grasp, 0.0)
+        fos_grasp = np.where(np.broadcast_to(carried, fos_grasp.shape), held, np.inf)
         acc = sd[..., self._acc_adr] + self.model.opt.gravity
         force = sd[..., self._force_adr]
         fos_m, arg = safety.motor_fos(force[..., self.rotational], self.limits[self.rotational])

@@ -153,7 +153,7 @@ def test_free_fall_acceleration_is_g_for_every_mass(tiny):
     # box's values, and the same step gives a_z = -9.81 * m / 0.05: -1962 m/s² at 10 kg.
     np.testing.assert_allclose(res.object_acc[0], np.tile([0.0, 0.0, -G], (9, 1)), atol=1e-9)
     assert not res.contact_gripper.any() and not res.contact_support.any()
-    assert np.isinf(res.fos_grasp).all()
+    assert np.isinf(res.fos_grasp).all()  # nobody carries it in the nominal run
 
 
 def test_held_box_heavier_mass_lowers_grip_fos_and_raises_arm_torque(scenario, twin,

@@ -1,0 +1,627 @@
+"""The end-to-end audit: frequent rollout → moments → bounds/search → sparse sweep → verdict.
+
+:func:`analyze` chains the stages and returns an :class:`AuditReport`, the object
+``critmoment analyze`` renders as ``report.json``, figures, ``report.html`` and a terminal
+summary (see :mod:`critmoment.report`). Each stage is also callable alone.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+import logging
+import platform
+import sys
+import time
+from typing import Callable, Mapping, Sequence
+
+import numpy as np
+
+from critmoment import sparse as sp
+from critmoment.exceptions import ParameterError
+from critmoment.moments import Moment, MomentDetector, MomentLabel
+from critmoment.recording import Recording, model_hash, rollout
+from critmoment.scenario import Scenario, load_scenario
+from critmoment.trajectory import Trajectory
+from critmoment.twin import Twin
+
+__all__ = [
+    "Verdict",
+    "AnalyzeOptions",
+    "MomentReport",
+    "AuditReport",
+    "detect_moments",
+    "sensitivity_function",
+    "safe_subbox",
+    "analyze",
+    "REPORT_SCHEMA",
+]
+
+log = logging.getLogger(__name__)
+
+REPORT_SCHEMA = "critmoment.report/1"
+
+
+class Verdict(enum.Enum):
+    """Outcome of an audit."""
+
+    SAFE = "SAFE"                #: cost ≤ threshold over the whole box at every moment
+    CONDITIONAL = "CONDITIONAL"  #: fails somewhere in the box; safe in a stated sub-box
+    UNSAFE = "UNSAFE"            #: fails at the nominal parameters
+
+
+@dataclasses.dataclass(frozen=True)
+class AnalyzeOptions:
+    """Options of :func:`analyze`.
+
+    Attributes:
+        seed: seeds the Sobol sweep and the search (same seed → same report).
+        n_samples: Sobol samples of the box for P(success) (a power of 2 is best).
+        max_moments: moments audited in depth (the most sensitive ones).
+        horizon: physics steps per sparse evaluation (default: the scenario's).
+        search_trials: simulated evaluations the Optuna search may spend per moment.
+        search: run the analytic bounds and the worst-case search.
+        critical_grid: grid points per parameter for the critical values.
+        confidence: confidence level of the P(success) interval.
+        min_success: P(success) at which ``passes`` accepts a non-SAFE verdict.
+        nthread: threads for MuJoCo's batch (0: all CPUs).
+        map_resolution: cells per axis of the mass × friction cost map (0 to skip).
+    """
+
+    seed: int = 0
+    n_samples: int = 256
+    max_moments: int = 4
+    horizon: int | None = None
+    search_trials: int = 48
+    search: bool = True
+    critical_grid: int = 17
+    confidence: float = 0.95
+    min_success: float | None = None
+    nthread: int = 0
+    map_resolution: int = 16
+
+    def __post_init__(self):
+        if self.n_samples < 8:
+            raise ParameterError(f"n_samples: expected >= 8, got {self.n_samples}")
+        if self.max_moments < 1:
+            raise ParameterError(f"max_moments: expected >= 1, got {self.max_moments}")
+        if self.horizon is not None and self.horizon < 1:
+            raise ParameterError(f"horizon: expected >= 1 or None, got {self.horizon}")
+        if self.search_trials < 1:
+            raise ParameterError(f"search_trials: expected >= 1, got {self.search_trials}")
+        if not 0 < self.confidence < 1:
+            raise ParameterError(f"confidence: expected in (0, 1), got {self.confidence}")
+        if self.min_success is not None and not 0 <= self.min_success <= 1:
+            raise ParameterError(f"min_success: expected in [0, 1], got {self.min_success}")
+        if self.critical_grid < 5:
+            raise ParameterError(f"critical_grid: expected >= 5, got {self.critical_grid}")
+        if self.map_resolution < 0:
+            raise ParameterError(f"map_resolution: expected >= 0, got {self.map_resolution}")
+
+
+@dataclasses.dataclass(frozen=True)
+class MomentReport:
+    """What the audit found at one critical moment.
+
+    Attributes:
+        moment: the moment (step, time, label, reason, sensitivity score).
+        worst_case: parameter values of the highest cost found (sweep and search).
+        max_cost: that cost.
+        min_fos_contact: lowest grasp FOS over the sweep (inf when never loaded).
+        min_fos_motor: lowest motor FOS over the sweep.
+        critical: per parameter, the value where the cost crosses the threshold with the
+            others at nominal (None where it never crosses).
+        critical_side: per parameter, "above"/"below" (which side fails) or None.
+        dominant: the cost term dominating the failures here ("contact" / "motor" / None).
+        limiting_actuator: the actuator limiting the motor FOS at the worst case.
+        fail_fraction: fraction of the sweep's samples failing at this moment.
+        analytic: analytic bounds (Pinocchio), JSON-able, or None.
+        search: worst-case search summary, JSON-able, or None.
+    """
+
+    moment: Moment
+    worst_case: Mapping[str, float]
+    max_cost: float
+    min_fos_contact: float
+    min_fos_motor: float
+    critical: Mapping[str, float | None]
+    critical_side: Mapping[str, str | None]
+    dominant: str | None
+    limiting_actuator: str
+    fail_fraction: float
+    analytic: Mapping | None = None
+    search: Mapping | None = None
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class AuditReport:
+    """The result of :func:`analyze`.
+
+    Attributes:
+        verdict: SAFE, CONDITIONAL or UNSAFE.
+        p_success: probability of success under the prior (fraction of Sobol samples that
+            pass at every moment).
+        p_success_interval: Wilson interval of ``p_success``.
+        moments: the audited moments, most sensitive first.
+        candidates: every candidate moment considered, ranked.
+        safe_region: the safe sub-box, per parameter (low, high), or None when none found.
+        safe_region_text: the safe sub-box in words.
+        failure_causes: per failing moment, the cause and the suggestion, in words.
+        nominal_cost: max cost at the nominal parameters over the moments.
+        recording: the frequent rollout.
+        sweep: the sparse evaluations of the Sobol sweep (m moments × n samples).
+        curves: per moment and parameter, the 1-D sweep behind the critical values.
+        cost_map: (axes, cost grid) of the first two parameters at the worst moment, or None.
+        scenario: the scenario.
+        options: the options.
+        timings: seconds per stage.
+        manifest: versions, model hash, seed and options.
+    """
+
+    verdict: Verdict
+    p_success: float
+    p_success_interval: tuple[float, float]
+    moments: tuple[MomentReport, ...]
+    candidates: tuple[Moment, ...]
+    safe_region: Mapping[str, tuple[float, float]] | None
+    safe_region_text: str
+    failure_causes: tuple[str, ...]
+    nominal_cost: float
+    recording: Recording
+    sweep: sp.SparseResult | None
+    curves: Mapping[int, Mapping[str, sp.SparseResult]]
+    cost_map: tuple | None
+    scenario: Scenario
+    options: AnalyzeOptions
+    timings: Mapping[str, float]
+    manifest: Mapping
+
+    def passes(self, min_success: float | None = None) -> bool:
+        """SAFE, or P(success) ≥ ``min_success`` when given (the CLI's exit code 0)."""
+        if self.verdict is Verdict.SAFE:
+            return True
+        threshold = self.options.min_success if min_success is None else min_success
+        return threshold is not None and self.p_success >= threshold
+
+    def to_json(self, *, timings: bool = True) -> dict:
+        """The ``report.json`` document (schema ``critmoment.report/1``)."""
+        from critmoment.report import report_json
+
+        return report_json(self, timings=timings)
+
+
+# -- stage: critical moments ----------------------------------------------------------
+def sensitivity_function(evaluator: sp.SparseEvaluator, box) -> Callable[[np.ndarray], np.ndarray]:
+    """Score moments by how much the cost moves over the box.
+
+    The probe is the 3**k grid of each parameter's low end, prior median and high end (the
+    box's corners, its centre and the mid-points of its faces). The score is the mean cost
+    over the probe: the corners alone saturate (a 10 kg cube at μ = 0.2 fails wherever the
+    grip carries it), the mean tells moments that fail over much of the box from moments that
+    fail at one corner.
+    """
+    grids = np.meshgrid(*[[0.0, 0.5, 1.0]] * box.ndim, indexing="ij")
+    probe = box.from_unit(np.stack([g.reshape(-1) for g in grids], axis=1))
+
+    def score(steps: np.ndarray) -> np.ndarray:
+        steps = np.asarray(steps, dtype=np.int64)
+        if steps.size == 0:
+            return np.zeros(0)
+        res = evaluator.evaluate(steps, probe)
+        return np.mean(np.minimum(res.cost, 10.0), axis=1)
+
+    return score
+
+
+def detect_moments(recording: Recording, twin: Twin, *, evaluator: sp.SparseEvaluator | None = None,
+                   max_moments: int = 8, min_gap: float = 0.2, **options) -> list[Moment]:
+    """Candidate critical moments, ranked by sensitivity over the box.
+
+    Change points and contact events (:class:`~critmoment.moments.MomentDetector`) are
+    scored with :func:`sensitivity_function`; then moments are taken greedily in score order,
+    skipping any closer than ``min_gap`` to one already taken, so that one long sensitive
+    phase (carrying the object) does not crowd out the others (the hand-over). A change point
+    shortly after a contact event names that event in its reason.
+
+    Args:
+        recording: the frequent rollout.
+        twin: its twin.
+        evaluator: a sparse evaluator of ``recording`` to reuse.
+        max_moments: at most this many moments are returned.
+        min_gap: smallest time between two returned moments [s].
+        **options: keyword options of :class:`~critmoment.moments.MomentDetector`.
+
+    Returns:
+        The moments, most sensitive first; ``critical`` marks those whose score exceeds the
+        scenario's cost threshold.
+    """
+    if min_gap < 0:
+        raise ParameterError(f"min_gap: expected >= 0 s, got {min_gap}")
+    evaluator = evaluator or sp.SparseEvaluator(recording, twin)
+    options.setdefault("max_candidates", 32)
+    detector = MomentDetector(max_moments=options["max_candidates"], **options).fit(recording)
+    last = recording.n_steps - evaluator.horizon
+    sens = sensitivity_function(evaluator, twin.scenario.box)
+
+    def clipped(steps):
+        return sens(np.minimum(np.asarray(steps, dtype=np.int64), last))
+
+    ranked = detector.predict(sensitivity=clipped, threshold=twin.scenario.cost.threshold)
+    events = sorted((m for m in ranked if m.label is not MomentLabel.CHANGE_POINT),
+                    key=lambda m: m.step)
+    gap = int(round(min_gap / recording.dt))
+    chosen: list[Moment] = []
+    for m in ranked:
+        if len(chosen) == max_moments:
+            break
+        if any(abs(m.step - c.step) < gap for c in chosen):
+            continue
+        if m.label is MomentLabel.CHANGE_POINT:
+            before = [e for e in events if 0 < m.step - e.step <= 4 * gap]
+            if before:
+                e = before[-1]
+                m = dataclasses.replace(
+                    m, reason=f"{(m.step - e.step) * recording.dt:.2f} s after "
+                              f"{e.label.value} ({e.reason.split(';')[0]}); {m.reason}")
+        chosen.append(m)
+    return chosen
+
+
+# -- stage: safe region --------------------------------------------------------------
+def _fail_sides(samples: np.ndarray, cost: np.ndarray, box) -> list[str]:
+    """Per parameter, the side where cost grows (rank correlation sign): "above"/"below"."""
+    sides = []
+    rank_c = np.argsort(np.argsort(cost))
+    for j in range(box.ndim):
+        rank_x = np.argsort(np.argsort(samples[:, j]))
+        corr = np.corrcoef(rank_x, rank_c)[0, 1] if np.std(rank_c) > 0 else 0.0
+        sides.append("below" if corr < 0 else "above")
+    return sides
+
+
+def safe_subbox(samples: np.ndarray, failed: np.ndarray, box, sides: Sequence[str]
+                ) -> dict[str, tuple[float, float]] | None:
+    """The largest (prior volume) sub-box anchored at the box's safe corner with no failure.
+
+    Each parameter keeps its safe end (the one opposite its failing side) and gets a cut
+    chosen among the sample coordinates; with k ≤ 2 every pair of cuts is tried, above that
+    the cuts shrink one coordinate at a time.
+
+    Args:
+        samples: parameter samples, (n, k).
+        failed: which samples fail, (n,).
+        box: the uncertainty box.
+        sides: per parameter, "above" (large values fail) or "below".
+
+    Returns:
+        {name: (low, high)}, or None when even the safe corner's neighbourhood fails.
+    """
+    unit = box.to_unit(samples)
+    # orient every axis so that failure lies at large u
+    u = np.where(np.array(sides) == "below", 1.0 - unit, unit)
+    bad = u[failed]
+    if bad.shape[0] == 0:
+        return {p.name: (p.low, p.high) for p in box.parameters}
+    k = box.ndim
+    cands = [np.unique(np.concatenate([[1.0], bad[:, j]])) for j in range(k)]
+    best, best_vol = None, 0.0
+    if k <= 2:
+        grids = np.meshgrid(*cands, indexing="ij")
+        cuts = np.stack([g.reshape(-1) for g in grids], axis=1)  # (c, k) upper cuts in u
+        # a cut is clean when no failing sample lies strictly inside [0, cut)
+        inside = (bad[None, :, :] < cuts[:, None, :]).all(axis=2).any(axis=1)
+        vol = np.prod(cuts, axis=1)
+        vol[inside] = -1.0
+        i = int(np.argmax(vol))
+        if vol[i] > 0:
+            best, best_vol = cuts[i], vol[i]
+    else:
+        cut = np.ones(k)
+        while ((bad < cut).all(axis=1)).any():
+            inside = bad[(bad < cut).all(axis=1)]
+            j = int(np.argmax(cut - inside.min(axis=0)))
+            cut[j] = inside[:, j].min()
+        best, best_vol = cut, float(np.prod(cut))
+    if best is None or best_vol <= 0:
+        return None
+    region = {}
+    for j, p in enumerate(box.parameters):
+        lo_u, hi_u = (0.0, best[j]) if sides[j] == "above" else (1.0 - best[j], 1.0)
+        pts = box.from_unit(np.array([[lo_u if i == j else 0.5 for i in range(k)],
+                                      [hi_u if i == j else 0.5 for i in range(k)]]))
+        region[p.name] = (float(pts[0, j]), float(pts[1, j]))
+    return region
+
+
+def _region_text(region, box, verdict: Verdict) -> str:
+    if verdict is Verdict.SAFE:
+        return "safe over the whole box"
+    if region is None:
+        return "no safe sub-box found around the nominal parameters"
+    parts = []
+    for p in box.parameters:
+        lo, hi = region[p.name]
+        unit = f" {p.unit}" if p.unit else ""
+        if np.isclose(lo, p.low) and np.isclose(hi, p.high):
+            continue
+        if np.isclose(lo, p.low):
+            parts.append(f"{p.name} ≤ {hi:.3g}{unit}")
+        elif np.isclose(hi, p.high):
+            parts.append(f"{p.name} ≥ {lo:.3g}{unit}")
+        else:
+            parts.append(f"{lo:.3g} ≤ {p.name} ≤ {hi:.3g}{unit}")
+    if not parts:
+        return "safe over the whole box"
+    return "safe for " + " at ".join(parts)
+
+
+_SUGGEST = {
+    "contact": ("grip slip", "reduce the uncertainty of the object's mass and friction, grip "
+                "differently (more pad contact, more grip force), or lift more slowly"),
+    "motor": ("motor overload", "slow down, carry the object closer to the arm's base, reduce "
+              "the mass uncertainty, or push the object instead of lifting it"),
+    "diverged": ("simulation diverged", "check the model and the trajectory near this moment"),
+}
+
+
+def _cause(mr: MomentReport) -> str | None:
+    if mr.dominant is None or mr.fail_fraction == 0:
+        return None
+    name, advice = _SUGGEST[mr.dominant]
+    if mr.dominant == "motor":
+        name = f"{name} at {mr.limiting_actuator}"
+    crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
+                     if v is not None)
+    where = f" (fails for {crit})" if crit else ""
+    return (f"{mr.moment.label.value} at t = {mr.moment.time:.2f} s: {name}{where}; "
+            f"suggestion: {advice}")
+
+
+# -- the pipeline --------------------------------------------------------------------
+_TERM_NAME = {sp.Term.CONTACT: "contact", sp.Term.MOTOR: "motor", sp.Term.DIVERGED: "diverged"}
+
+
+def _dominant(res: sp.SparseResult, row: int, mask: np.ndarray) -> str | None:
+    if not mask.any():
+        return None
+    terms = res.dominant[row][mask]
+    values, counts = np.unique(terms, return_counts=True)
+    return _TERM_NAME[sp.Term(int(values[np.argmax(counts)]))]
+
+
+def _curves(evaluator, steps: np.ndarray, box, n: int) -> dict[int, dict[str, sp.SparseResult]]:
+    """1-D sweeps of each parameter (others nominal) at every moment: thesis Figs. 5–6."""
+    out: dict[int, dict[str, sp.SparseResult]] = {int(s): {} for s in steps}
+    for j, p in enumerate(box.parameters):
+        u = np.full((n, box.ndim), 0.5)
+        u[:, j] = np.linspace(0.0, 1.0, n)
+        samples = box.from_unit(u)
+        samples[:, [i for i in range(box.ndim) if i != j]] = box.nominal[
+            [i for i in range(box.ndim) if i != j]]
+        res = evaluator.evaluate(steps, samples)
+        for row, s in enumerate(steps):
+            out[int(s)][p.name] = _select(res, row)
+    return out
+
+
+def _select(res: sp.SparseResult, row: int) -> sp.SparseResult:
+    """One moment's rows of a result, as a result with m = 1."""
+    fields = {}
+    for f in dataclasses.fields(res):
+        v = getattr(res, f.name)
+        if f.name in ("steps",):
+            v = v[row:row + 1]
+        elif isinstance(v, np.ndarray) and f.name != "samples" and v.ndim >= 1 \
+                and v.shape[0] == res.n_moments:
+            v = v[row:row + 1]
+        fields[f.name] = v
+    return sp.SparseResult(**fields)
+
+
+def _crossing(samples_j: np.ndarray, cost: np.ndarray, threshold: float, nominal: float):
+    """Crossing of cost = threshold along one sampled curve nearest nominal (linear interp)."""
+    fail = cost > threshold
+    flips = np.flatnonzero(fail[1:] != fail[:-1])
+    if flips.size == 0:
+        return None, None
+    xs = []
+    for i in flips:
+        c0, c1 = cost[i], cost[i + 1]
+        if np.isfinite(c0) and np.isfinite(c1) and c1 != c0:
+            t = (threshold - c0) / (c1 - c0)
+        else:
+            t = 0.5
+        xs.append(samples_j[i] + t * (samples_j[i + 1] - samples_j[i]))
+    i = int(np.argmin(np.abs(np.array(xs) - nominal)))
+    side = "above" if fail[flips[i] + 1] else "below"
+    return float(xs[i]), side
+
+
+def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
+            twin: Twin | None = None, options: AnalyzeOptions | None = None,
+            progress: bool | Callable[[str], None] = False) -> AuditReport:
+    """Audit a trajectory: is it safe over the scenario's uncertainty box?
+
+    Args:
+        trajectory: the trajectory to audit.
+        scenario: a Scenario, a path or bundled name, or None for the bundled one.
+        twin: a twin to reuse (its scenario wins).
+        options: audit options (:class:`AnalyzeOptions`).
+        progress: True to print stage progress on stderr, or a callable taking a message.
+
+    Returns:
+        The audit report.
+    """
+    opt = options or AnalyzeOptions()
+    if twin is None:
+        twin = Twin(scenario if isinstance(scenario, Scenario) else load_scenario(scenario))
+    sc = twin.scenario
+    box = sc.box
+    threshold = sc.cost.threshold
+    say = _progress(progress)
+    timings: dict[str, float] = {}
+
+    def stage(name):
+        return _Timer(timings, name, say)
+
+    with stage("rollout"):
+        rec = rollout(trajectory, twin=twin)
+    with stage("moments"):
+        evaluator = sp.SparseEvaluator(rec, twin, horizon=opt.horizon, nthread=opt.nthread)
+        candidates = detect_moments(rec, twin, evaluator=evaluator)
+        chosen = candidates[:opt.max_moments]
+        steps = np.array([min(m.step, rec.n_steps - evaluator.horizon) for m in chosen],
+                         dtype=np.int64)
+    with stage("sweep"):
+        samples = sp.sweep_samples(box, n=opt.n_samples, seed=opt.seed)
+        probe = np.vstack([box.nominal[None, :], samples])
+        res_all = evaluator.evaluate(steps, probe)
+        nominal_cost = float(np.max(res_all.cost[:, 0])) if steps.size else 0.0
+        res = _select_samples(res_all, slice(1, None))
+        failed = res.failed_any if steps.size else np.zeros(len(samples), bool)
+        n_fail = int(failed.sum())
+        p = 1.0 - n_fail / len(samples)
+        interval = sp.wilson_interval(len(samples) - n_fail, len(samples),
+                                      confidence=opt.confidence)
+    with stage("critical values"):
+        curves = _curves(evaluator, steps, box, opt.critical_grid) if steps.size else {}
+    searches: dict[int, dict] = {}
+    analytics: dict[int, dict] = {}
+    if opt.search and steps.size:
+        with stage("analytic bounds and search"):
+            analytics, searches = _search_all(rec, twin, evaluator, steps, opt)
+    moment_reports = []
+    for row, m in enumerate(chosen):
+        s = int(steps[row])
+        cost = res.cost[row]
+        worst = int(np.argmax(np.where(np.isfinite(cost), cost, 1e9)))
+        worst_case = dict(zip(box.names, map(float, res.samples[worst])))
+        max_cost = float(cost[worst])
+        sr = searches.get(s)
+        if sr is not None and sr.get("worst_cost") is not None and sr["worst_cost"] > max_cost:
+            worst_case, max_cost = dict(sr["worst_case"]), float(sr["worst_cost"])
+        crit, side = {}, {}
+        for j, pname in enumerate(box.names):
+            c = curves[s][pname]
+            crit[pname], side[pname] = _crossing(c.samples[:, j], c.cost[0], threshold,
+                                                 box.nominal[j])
+        fails_here = res.failed[row]
+        motor = res.motor_argmax[row, worst]
+        moment_reports.append(MomentReport(
+            moment=m, worst_case=worst_case, max_cost=max_cost,
+            min_fos_contact=float(np.nanmin(res.fos_grasp[row])),
+            min_fos_motor=float(np.nanmin(res.fos_motor[row])),
+            critical=crit, critical_side=side, dominant=_dominant(res, row, fails_here),
+            limiting_actuator=twin.actuator_names[int(motor)],
+            fail_fraction=float(fails_here.mean()), analytic=analytics.get(s),
+            search=searches.get(s)))
+    if nominal_cost > threshold:
+        verdict = Verdict.UNSAFE
+    elif n_fail == 0 and all(mr.max_cost <= threshold for mr in moment_reports):
+        verdict = Verdict.SAFE
+    else:
+        verdict = Verdict.CONDITIONAL
+    region = None
+    if verdict is not Verdict.UNSAFE and steps.size:
+        worst_cost = np.max(res.cost, axis=0)
+        region = safe_subbox(res.samples, failed, box, _fail_sides(res.samples, worst_cost, box))
+    cost_map = None
+    if opt.map_resolution and box.ndim >= 2 and steps.size:
+        with stage("cost map"):
+            cost_map = _cost_map(evaluator, steps, box, opt.map_resolution)
+    causes = tuple(c for c in (_cause(mr) for mr in moment_reports) if c)
+    if verdict is Verdict.UNSAFE:
+        causes = (f"fails at the nominal parameters (max cost {nominal_cost:.3g} > "
+                  f"{threshold:g})",) + causes
+    manifest = _manifest(sc, opt, trajectory)
+    return AuditReport(
+        verdict=verdict, p_success=p, p_success_interval=interval,
+        moments=tuple(moment_reports), candidates=tuple(candidates), safe_region=region,
+        safe_region_text=_region_text(region, box, verdict), failure_causes=causes,
+        nominal_cost=nominal_cost, recording=rec, sweep=res, curves=curves, cost_map=cost_map,
+        scenario=sc, options=opt, timings=timings, manifest=manifest)
+
+
+def _select_samples(res: sp.SparseResult, cols: slice) -> sp.SparseResult:
+    fields = {}
+    n = res.n_samples
+    for f in dataclasses.fields(res):
+        v = getattr(res, f.name)
+        if f.name == "samples":
+            v = v[cols]
+        elif isinstance(v, np.ndarray) and v.ndim >= 2 and v.shape[1] == n and f.name != "steps":
+            v = v[:, cols]
+        fields[f.name] = v
+    return sp.SparseResult(**fields)
+
+
+def _cost_map(evaluator, steps, box, res_n: int):
+    """Max cost over the moments on a grid of the first two parameters (others nominal)."""
+    axes = [box.from_unit(np.tile(np.linspace(0, 1, res_n)[:, None], (1, box.ndim)))[:, j]
+            for j in range(2)]
+    g0, g1 = np.meshgrid(axes[0], axes[1], indexing="ij")
+    samples = np.tile(box.nominal, (g0.size, 1))
+    samples[:, 0], samples[:, 1] = g0.ravel(), g1.ravel()
+    res = evaluator.evaluate(steps, samples)
+    grid = np.max(np.where(np.isfinite(res.cost), res.cost, np.nan), axis=0).reshape(g0.shape)
+    return (box.names[0], axes[0], box.names[1], axes[1], grid)
+
+
+def _search_all(rec, twin, evaluator, steps, opt):
+    """Analytic bounds and worst-case search per moment (critmoment.search)."""
+    try:
+        from critmoment import search
+    except ImportError:  # pragma: no cover - search is part of the package
+        return {}, {}
+    analytics, searches = {}, {}
+    for s in steps:
+        out = search.worst_case_report(rec, twin, int(s), evaluator=evaluator,
+                                       n_trials=opt.search_trials, seed=opt.seed)
+        analytics[int(s)] = out.get("analytic")
+        searches[int(s)] = out.get("search")
+    return analytics, searches
+
+
+def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory) -> dict:
+    import mujoco
+
+    import critmoment
+
+    return {
+        "critmoment": critmoment.__version__,
+        "mujoco": mujoco.__version__,
+        "numpy": np.__version__,
+        "python": sys.version.split()[0],
+        "platform": platform.platform(terse=True),
+        "scenario": sc.name,
+        "scenario_file": str(sc.path) if sc.path else None,
+        "model_sha256": model_hash(sc),
+        "trajectory": traj.source,
+        "seed": opt.seed,
+        "options": dataclasses.asdict(opt),
+    }
+
+
+def _progress(progress):
+    if callable(progress):
+        return progress
+    if progress:
+        return lambda msg: print(msg, file=sys.stderr, flush=True)
+    return lambda msg: None
+
+
+class _Timer:
+    def __init__(self, timings, name, say):
+        self.timings, self.name, self.say = timings, name, say
+
+    def __enter__(self):
+        self.say(f"critmoment: {self.name} ...")
+        self.t0 = time.perf_counter()
+        return self
+
+    def __exit__(self, *exc):
+        dt = time.perf_counter() - self.t0
+        self.timings[self.name] = self.timings.get(self.name, 0.0) + dt
+        if exc[0] is None:
+            self.say(f"critmoment: {self.name} done in {dt:.2f} s")
+        return False
