@@ -66,6 +66,8 @@ class AnalyzeOptions:
         min_success: P(success) at which ``passes`` accepts a non-SAFE verdict.
         nthread: threads for MuJoCo's batch (0: all CPUs).
         map_resolution: cells per axis of the mass × friction cost map (0 to skip).
+        require_task: a nominal rollout that does not complete the scenario's task (stage 4
+            reached and kept) makes the verdict UNSAFE.
     """
 
     seed: int = 0
@@ -79,6 +81,7 @@ class AnalyzeOptions:
     min_success: float | None = None
     nthread: int = 0
     map_resolution: int = 16
+    require_task: bool = True
 
     def __post_init__(self):
         if self.n_samples < 8:
@@ -177,9 +180,11 @@ class AuditReport:
     manifest: Mapping
 
     def passes(self, min_success: float | None = None) -> bool:
-        """SAFE, or P(success) ≥ ``min_success`` when given (the CLI's exit code 0)."""
+        """SAFE, or CONDITIONAL with P(success) ≥ ``min_success`` (the CLI's exit code 0)."""
         if self.verdict is Verdict.SAFE:
             return True
+        if self.verdict is Verdict.UNSAFE:
+            return False
         threshold = self.options.min_success if min_success is None else min_success
         return threshold is not None and self.p_success >= threshold
 
@@ -515,7 +520,11 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             limiting_actuator=twin.actuator_names[int(motor)],
             fail_fraction=float(fails_here.mean()), analytic=analytics.get(s),
             search=searches.get(s)))
-    if nominal_cost > threshold:
+    task_failed = opt.require_task and not rec.completed
+    if task_failed:
+        # sparse evaluation perturbs a run that already failed: it cannot estimate success
+        p, interval = 0.0, sp.wilson_interval(0, len(samples), confidence=opt.confidence)
+    if nominal_cost > threshold or task_failed:
         verdict = Verdict.UNSAFE
     elif n_fail == 0 and all(mr.max_cost <= threshold for mr in moment_reports):
         verdict = Verdict.SAFE
@@ -530,9 +539,13 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         with stage("cost map"):
             cost_map = _cost_map(evaluator, steps, box, opt.map_resolution)
     causes = tuple(c for c in (_cause(mr) for mr in moment_reports) if c)
-    if verdict is Verdict.UNSAFE:
+    if nominal_cost > threshold:
         causes = (f"fails at the nominal parameters (max cost {nominal_cost:.3g} > "
                   f"{threshold:g})",) + causes
+    if task_failed:
+        causes = (f"the task is not completed at the nominal parameters (stage "
+                  f"{int(rec.stage.max())} reached, final stage {int(rec.stage[-1])}, 4 needed "
+                  f"and kept to the end)",) + causes
     manifest = _manifest(sc, opt, trajectory)
     return AuditReport(
         verdict=verdict, p_success=p, p_success_interval=interval,

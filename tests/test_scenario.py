@@ -68,7 +68,7 @@ def test_bundled_scenario_fields(scenario):
     np.testing.assert_array_equal(scenario.box.nominal, [0.05, 1.0])
     np.testing.assert_array_equal(scenario.box.low, [0.05, 0.2])
     np.testing.assert_array_equal(scenario.box.high, [10.0, 1.5])
-    assert scenario.horizon == 1
+    assert scenario.horizon == 10
 
 
 def test_load_scenario_accepts_name_folder_and_file():
@@ -142,7 +142,7 @@ def test_mjcf_that_does_not_compile(tmp_path):
     ('picker = "right"', 'picker = "middle"', r"\[task\] picker: expected one of the grippers"),
     ("waist = 10.0", "waist = -1.0", r"\[limits\] waist: expected a force limit > 0"),
     ("threshold = 0.9", "threshold = 0.0", r"\[cost\] threshold: expected a finite number > 0"),
-    ("horizon = 1", "horizon = 0", r"\[sparse\] horizon: expected an integer >= 1"),
+    ("horizon = 10", "horizon = 0", r"\[sparse\] horizon: expected an integer >= 1"),
 ])
 def test_malformed_scenario(tmp_path, old, new, message):
     folder = _toml(tmp_path, (old, new))
@@ -274,8 +274,8 @@ def test_empty_support_list_is_rejected(tmp_path):
 
 @pytest.mark.parametrize("old, new, where", [
     ("beta = 2.0", 'beta = "steep"', r"\[cost\] beta"),
-    ("horizon = 1 ", 'horizon = "two" ', r"\[sparse\] horizon"),
-    ("horizon = 1 ", "horizon = 1.5 ", r"\[sparse\] horizon"),
+    ("horizon = 10", 'horizon = "two" ', r"\[sparse\] horizon"),
+    ("horizon = 10", "horizon = 1.5 ", r"\[sparse\] horizon"),
     ('keyframe = "home"', "keyframe = 3", r"\[model\] keyframe"),
 ])
 def test_wrongly_typed_values_raise_scenario_error(tmp_path, old, new, where):

@@ -226,7 +226,7 @@ def test_batch_equals_serial_restore_and_step_bit_for_bit(scenario, twin, demo_r
 def test_nominal_step_reproduces_the_recording(scenario, twin, demo_recording):
     rec = demo_recording
     steps = [0, _lift_step(rec), _handover_step(rec), rec.n_steps - 1]
-    res = sparse.evaluate(rec, twin, steps, scenario.box.nominal[None], keep_raw=True)
+    res = sparse.evaluate(rec, twin, steps, scenario.box.nominal[None], keep_raw=True, horizon=1)
     for i, k in enumerate(steps):
         assert np.array_equal(res.sensordata[i, 0, 0], rec.sensordata[k])
         assert np.array_equal(res.state[i, 0], rec.states[k + 1])
@@ -237,8 +237,9 @@ def test_nominal_step_reproduces_the_recording(scenario, twin, demo_recording):
 def test_solve_mode_equals_one_step(scenario, twin, demo_recording):
     steps = [_lift_step(demo_recording), _handover_step(demo_recording)]
     samples = sparse.sweep_samples(scenario.box, n=16, seed=1)
-    step = sparse.evaluate(demo_recording, twin, steps, samples, mode=SparseMode.STEP)
-    solve = sparse.evaluate(demo_recording, twin, steps, samples, mode=SparseMode.SOLVE)
+    step = sparse.evaluate(demo_recording, twin, steps, samples, mode=SparseMode.STEP, horizon=1)
+    solve = sparse.evaluate(demo_recording, twin, steps, samples, mode=SparseMode.SOLVE,
+                            horizon=1)
     for field in ("cost", "fos_contact", "fos_grasp", "fos_motor", "object_acc",
                   "actuator_norm", "contact_gripper"):
         assert np.array_equal(getattr(step, field), getattr(solve, field)), field
@@ -295,13 +296,14 @@ def test_liftoff_mass_sweep_and_critical_mass(scenario, twin, demo_recording):
     lift = _lift_step(demo_recording)
     picker = scenario.gripper_names.index(scenario.picker)
     masses = np.linspace(0.05, 10.0, 41)
-    res = sparse.evaluate(demo_recording, twin, [lift], _mass_samples(scenario, masses))
+    res = sparse.evaluate(demo_recording, twin, [lift], _mass_samples(scenario, masses),
+                          horizon=1)
     fos = res.fos_contact[0, :, picker]
     assert fos[0] > 5 and fos[-1] < 1.01 and (fos >= 1 - 1e-9).all()
     assert (np.diff(fos) <= 1e-9).all()
     assert (res.dominant[0][res.failed[0]] == Term.CONTACT).all()
 
-    cvs = sparse.critical_values(demo_recording, twin, [lift], rtol=1e-3)
+    cvs = sparse.critical_values(demo_recording, twin, [lift], rtol=1e-3, horizon=1)
     by = {(cv.parameter, cv.others_at): cv for cv in cvs}
     crit = by["mass", OthersAt.NOMINAL]
     assert crit.value is not None and 0.05 < crit.value < 10.0
@@ -310,7 +312,8 @@ def test_liftoff_mass_sweep_and_critical_mass(scenario, twin, demo_recording):
     assert hi - lo <= 1e-3 * crit.value and lo <= crit.value <= hi
     # the refined value separates passing from failing masses
     check = sparse.evaluate(demo_recording, twin, [lift],
-                            _mass_samples(scenario, [0.99 * crit.value, 1.01 * crit.value]))
+                            _mass_samples(scenario, [0.99 * crit.value, 1.01 * crit.value]),
+                            horizon=1)
     assert check.failed[0].tolist() == [False, True]
     # with the others at the worst corner (lowest friction) the cube slips at a lower mass
     worst = by["mass", OthersAt.WORST]
@@ -450,7 +453,7 @@ def test_sobol_and_grid_samples(scenario):
 
 
 def test_bad_inputs_raise_parameter_error(scenario, twin, demo_recording):
-    engine = SparseEvaluator(demo_recording, twin)
+    engine = SparseEvaluator(demo_recording, twin, horizon=1)
     nominal = scenario.box.nominal
     t = demo_recording.n_steps
     with pytest.raises(ParameterError,

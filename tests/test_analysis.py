@@ -1,0 +1,115 @@
+"""The end-to-end audit: verdicts against known answers, report contents, determinism."""
+
+import json
+import warnings
+
+import numpy as np
+import pytest
+
+from critmoment import analysis, report
+from critmoment.analysis import AnalyzeOptions, Verdict, analyze, safe_subbox
+from critmoment.exceptions import ParameterError
+from critmoment.params import UncertaintyBox
+from critmoment.twin import Twin
+
+FAST = AnalyzeOptions(n_samples=64, search=False, map_resolution=6, critical_grid=9)
+
+
+@pytest.fixture(scope="module")
+def nominal_report(twin, demo_traj):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return analyze(demo_traj, twin=twin, options=FAST)
+
+
+def test_nominal_demo_is_conditional_with_a_critical_mass(nominal_report, scenario):
+    r = nominal_report
+    assert r.verdict is Verdict.CONDITIONAL
+    assert 0.0 < r.p_success < 1.0
+    lo, hi = r.p_success_interval
+    assert lo < r.p_success < hi
+    masses = [mr.critical["mass"] for mr in r.moments if mr.critical["mass"] is not None]
+    assert masses, "expected a critical mass at some moment"
+    assert all(scenario.box.low[0] < m < scenario.box.high[0] for m in masses)
+    # heavier is worse: the failing side of the mass is above the critical value
+    assert all(mr.critical_side["mass"] == "above" for mr in r.moments
+               if mr.critical["mass"] is not None)
+    assert r.safe_region is not None and r.safe_region["mass"][1] < scenario.box.high[0]
+    assert r.safe_region_text.startswith("safe for mass ≤")
+
+
+def test_narrow_box_is_safe(twin, demo_traj, scenario):
+    box = scenario.box.with_range("mass", 0.05, 0.2).with_range("friction", 0.5, 1.5)
+    r = analyze(demo_traj, twin=Twin(scenario.replace(box=box)), options=FAST)
+    assert r.verdict is Verdict.SAFE
+    assert r.p_success == 1.0 and r.passes()
+    assert all(mr.max_cost <= scenario.cost.threshold for mr in r.moments)
+
+
+def test_mass_narrowed_alone_stays_conditional_at_low_friction(twin, demo_traj, scenario):
+    # 0.2 kg at μ = 0.2 needs more friction than two 5 N pads supply: not safe everywhere
+    box = scenario.box.with_range("mass", 0.05, 0.2)
+    r = analyze(demo_traj, twin=Twin(scenario.replace(box=box)), options=FAST)
+    assert r.verdict is Verdict.CONDITIONAL
+    assert r.safe_region["friction"][0] > scenario.box.low[1]
+
+
+def test_nominal_beyond_the_critical_mass_is_unsafe(demo_traj, scenario):
+    box = scenario.box.with_range("mass", 0.05, 10.0, nominal=3.0)
+    r = analyze(demo_traj, twin=Twin(scenario.replace(box=box)), options=FAST)
+    assert r.verdict is Verdict.UNSAFE
+    assert not r.passes() and not r.passes(0.99)
+    assert any("nominal" in c for c in r.failure_causes)
+
+
+def test_report_json_schema_and_html(nominal_report, tmp_path):
+    paths = report.write_report(nominal_report, tmp_path)
+    doc = json.loads(paths["json"].read_text())
+    assert doc["schema"] == "critmoment.report/1"
+    assert doc["verdict"] == "CONDITIONAL"
+    for key in ("p_success", "p_success_interval", "moments", "uncertainty", "timings",
+                "manifest"):
+        assert key in doc
+    for m in doc["moments"]:
+        for key in ("step", "time", "label", "reason", "worst_case", "min_fos_contact",
+                    "min_fos_motor", "max_cost", "critical", "dominant"):
+            assert key in m
+    assert set(doc["manifest"]) >= {"critmoment", "mujoco", "model_sha256", "seed", "options"}
+    html = paths["html"].read_text()
+    assert "CONDITIONAL" in html and html.count("data:image/png;base64,") >= 3
+    assert "<script" not in html  # self-contained, static
+    text = report.summary_text(nominal_report)
+    assert "CONDITIONAL" in text and "P(success)" in text
+
+
+def test_same_seed_same_report(twin, demo_traj, nominal_report):
+    again = analyze(demo_traj, twin=twin, options=FAST)
+    assert again.to_json(timings=False) == nominal_report.to_json(timings=False)
+
+
+def test_safe_subbox_in_two_dimensions():
+    from critmoment.params import FrictionParameter, MassParameter
+
+    box = UncertaintyBox((MassParameter("mass", "box", 0.0 + 1e-3, 1.0, 0.1),
+                          FrictionParameter("friction", "box", 0.0 + 1e-3, 1.0, 1.0)))
+    rng = np.random.default_rng(3)
+    x = rng.uniform(1e-3, 1.0, size=(400, 2))
+    failed = (x[:, 0] > 0.6) & (x[:, 1] < 0.5)  # heavy and slippery fails
+    region = safe_subbox(x, failed, box, ["above", "below"])
+    inside = np.ones(len(x), bool)
+    for j, name in enumerate(("mass", "friction")):
+        lo, hi = region[name]
+        inside &= (x[:, j] > lo) & (x[:, j] < hi)  # a cut may sit on a failing sample
+    assert not (inside & failed).any()
+    # the best anchored box keeps one full axis: mass ≤ ~0.6 (all friction) or friction ≥ ~0.5
+    area = np.prod([region[n][1] - region[n][0] for n in ("mass", "friction")])
+    assert area > 0.45
+
+
+def test_bad_options():
+    with pytest.raises(ParameterError, match="n_samples"):
+        AnalyzeOptions(n_samples=2)
+    with pytest.raises(ParameterError, match="min_success"):
+        AnalyzeOptions(min_success=1.5)
+    with pytest.raises(ParameterError, match="horizon"):
+        AnalyzeOptions(horizon=0)
