@@ -65,7 +65,8 @@ class AnalyzeOptions:
         confidence: confidence level of the P(success) interval.
         min_success: P(success) at which ``passes`` accepts a non-SAFE verdict.
         nthread: threads for MuJoCo's batch (0: all CPUs).
-        map_resolution: cells per axis of the mass × friction cost map (0 to skip).
+        map_resolution: cells per axis of the mass × friction cost map, interpolated from the
+            Sobol sweep (0 to skip).
         require_task: a nominal rollout that does not complete the scenario's task (stage 4
             reached and kept) makes the verdict UNSAFE.
     """
@@ -80,7 +81,7 @@ class AnalyzeOptions:
     confidence: float = 0.95
     min_success: float | None = None
     nthread: int = 0
-    map_resolution: int = 16
+    map_resolution: int = 40
     require_task: bool = True
 
     def __post_init__(self):
@@ -268,8 +269,19 @@ def detect_moments(recording: Recording, twin: Twin, *, evaluator: sp.SparseEval
                 m = dataclasses.replace(
                     m, reason=f"{(m.step - e.step) * recording.dt:.2f} s after "
                               f"{e.label.value} ({e.reason.split(';')[0]}); {m.reason}")
-        chosen.append(m)
+        chosen.append(dataclasses.replace(m, reason=_dedupe(m.reason)))
     return chosen
+
+
+def _dedupe(reason: str) -> str:
+    """Keep the first of several reasons that say the same thing (change point per channel)."""
+    seen, parts = set(), []
+    for part in reason.split("; "):
+        key = part.split(" (jump")[0]
+        if key not in seen:
+            seen.add(key)
+            parts.append(part)
+    return "; ".join(parts)
 
 
 # -- stage: safe region --------------------------------------------------------------
@@ -536,8 +548,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         region = safe_subbox(res.samples, failed, box, _fail_sides(res.samples, worst_cost, box))
     cost_map = None
     if opt.map_resolution and box.ndim >= 2 and steps.size:
-        with stage("cost map"):
-            cost_map = _cost_map(evaluator, steps, box, opt.map_resolution)
+        cost_map = _cost_map(res, box, opt.map_resolution)
     causes = tuple(c for c in (_cause(mr) for mr in moment_reports) if c)
     if nominal_cost > threshold:
         causes = (f"fails at the nominal parameters (max cost {nominal_cost:.3g} > "
@@ -568,16 +579,26 @@ def _select_samples(res: sp.SparseResult, cols: slice) -> sp.SparseResult:
     return sp.SparseResult(**fields)
 
 
-def _cost_map(evaluator, steps, box, res_n: int):
-    """Max cost over the moments on a grid of the first two parameters (others nominal)."""
-    axes = [box.from_unit(np.tile(np.linspace(0, 1, res_n)[:, None], (1, box.ndim)))[:, j]
-            for j in range(2)]
-    g0, g1 = np.meshgrid(axes[0], axes[1], indexing="ij")
-    samples = np.tile(box.nominal, (g0.size, 1))
-    samples[:, 0], samples[:, 1] = g0.ravel(), g1.ravel()
-    res = evaluator.evaluate(steps, samples)
-    grid = np.max(np.where(np.isfinite(res.cost), res.cost, np.nan), axis=0).reshape(g0.shape)
-    return (box.names[0], axes[0], box.names[1], axes[1], grid)
+def _cost_map(res: sp.SparseResult, box, res_n: int):
+    """Max cost over the moments on a grid of the first two parameters, from the Sobol sweep.
+
+    The sweep's samples are scattered over the whole box (other parameters included); the map
+    interpolates their worst cost linearly (nearest sample outside their hull), so it costs
+    no simulation.
+    """
+    from scipy.interpolate import griddata
+
+    u = box.to_unit(res.samples)[:, :2]
+    worst = np.max(np.where(np.isfinite(res.cost), res.cost, np.nan), axis=0)
+    ok = np.isfinite(worst)
+    grid_u = np.linspace(0.0, 1.0, res_n)
+    g0, g1 = np.meshgrid(grid_u, grid_u, indexing="ij")
+    pts = np.stack([g0.ravel(), g1.ravel()], axis=1)
+    grid = griddata(u[ok], worst[ok], pts, method="linear")
+    near = griddata(u[ok], worst[ok], pts, method="nearest")
+    grid = np.where(np.isfinite(grid), grid, near).reshape(g0.shape)
+    axes = box.from_unit(np.tile(grid_u[:, None], (1, box.ndim)))
+    return (box.names[0], axes[:, 0], box.names[1], axes[:, 1], grid)
 
 
 def _search_all(rec, twin, evaluator, steps, opt):

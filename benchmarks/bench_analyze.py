@@ -1,0 +1,77 @@
+"""One audit vs one frequent rollout vs brute-force full rollouts, side by side in one run.
+
+    python benchmarks/bench_analyze.py [--samples 256] [--seed 0] [--threads 0]
+
+Prints the wall time of (a) one audit's computation (``analysis.analyze``, report rendering
+timed separately), (b) one nominal frequent rollout, (c) brute-force full rollouts of the
+whole trajectory for the same parameter samples the verdict uses (batched through
+``mujoco.batch``, all threads), and the ratios. Ends with ``ratio audit/brute-force: R``.
+"""
+
+import argparse
+import tempfile
+import time
+import warnings
+
+import numpy as np
+
+import critmoment as cm
+from critmoment import analysis, demos, report, sparse
+from critmoment.recording import initial_state, prepare_controls, simulate
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--samples", type=int, default=256)
+    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--threads", type=int, default=0)
+    parser.add_argument("--chunk", type=int, default=32, help="simulations per brute-force batch")
+    args = parser.parse_args()
+    warnings.simplefilter("ignore")
+
+    twin = cm.Twin(cm.load_scenario())
+    traj = demos.scripted_transfer(args.seed, twin=twin)
+    opts = analysis.AnalyzeOptions(seed=args.seed, n_samples=args.samples, nthread=args.threads)
+    analysis.analyze(traj, twin=twin, options=opts)  # warm-up (imports, first batch)
+
+    t0 = time.perf_counter()
+    audit = analysis.analyze(traj, twin=twin, options=opts)
+    t_audit = time.perf_counter() - t0
+    with tempfile.TemporaryDirectory() as tmp:
+        t0 = time.perf_counter()
+        report.write_report(audit, tmp)
+        t_render = time.perf_counter() - t0
+
+    reps = 5
+    t0 = time.perf_counter()
+    for _ in range(reps):
+        cm.rollout(traj, twin=twin)
+    t_rollout = (time.perf_counter() - t0) / reps
+
+    samples = sparse.sweep_samples(twin.scenario.box, n=args.samples, seed=args.seed)
+    controls = prepare_controls(twin, traj)
+    state0 = initial_state(twin, traj)
+    t0 = time.perf_counter()
+    for start in range(0, len(samples), args.chunk):
+        chunk = samples[start:start + args.chunk]
+        simulate(twin, state0, controls, samples=chunk, nthread=args.threads)
+    t_brute = time.perf_counter() - t0
+
+    print(f"trajectory: {traj.source}, {controls.shape[0]} physics steps; "
+          f"{args.samples} parameter samples; audit verdict {audit.verdict.value}, "
+          f"P(success) {audit.p_success:.3f}, {len(audit.moments)} moments, "
+          f"horizon {audit.sweep.horizon}")
+    print(f"{'what':44s} {'seconds':>10s}")
+    print(f"{'audit computation (analyze)':44s} {t_audit:10.3f}")
+    for stage, sec in audit.timings.items():
+        print(f"{'  ' + stage:44s} {sec:10.3f}")
+    print(f"{'report rendering (json, figures, html)':44s} {t_render:10.3f}")
+    print(f"{'one frequent rollout (nominal)':44s} {t_rollout:10.3f}")
+    print(f"{f'brute force: {args.samples} full rollouts':44s} {t_brute:10.3f}")
+    print(f"audit / frequent rollout: {t_audit / t_rollout:.2f} rollouts")
+    print(f"brute force / audit: {t_brute / t_audit:.1f}x")
+    print(f"ratio audit/brute-force: {t_audit / t_brute:.4f}")
+
+
+if __name__ == "__main__":
+    main()

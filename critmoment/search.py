@@ -1,0 +1,896 @@
+"""Worst-case search at critical moments: analytic bounds, CasADi, Optuna, verification.
+
+Three views of the same question, "how bad can it get over the uncertainty box at this
+moment?", each checked against the next:
+
+1. **Analytic bounds** (:func:`analytic_bounds`). At a recorded moment the object is a
+   payload rigidly held by a gripper, so the actuator forces the arm needs are affine in the
+   object's mass, ``τ(m) = τ0 + m·y`` (Pinocchio inverse dynamics,
+   :func:`critmoment.dynamics.payload_regressor`). The worst force over a mass interval is at
+   an end point and the mass at which each joint reaches its force limit is closed-form. The
+   grip needs friction ``m·|P⊥(a − g)|`` against ``μ·ΣFn`` available, which gives a
+   closed-form contact factor of safety.
+2. **CasADi** (:func:`analytic_worst_case`). The analytic cost
+   ``C(m, μ) = A·exp(−α(FOS_c − 1)) + B·exp(−β(FOS_m − 1))`` as a smooth CasADi expression,
+   maximised over the box by IPOPT from every corner; the failure boundary
+   ``C(m, μ) = threshold`` from the exact closed form.
+3. **Optuna** (:func:`search_worst_case`). The *simulated* cost (sparse evaluation) maximised
+   by a seeded sampler with batched ask/tell.
+
+:func:`verify` re-evaluates every worst case with sparse evaluation and reports how far the
+analytic model is from the simulation; :func:`audit_moment` chains everything into the JSON
+object that ``report.json`` carries per moment.
+
+Modelling choices (see ``docs/search.md`` for the measurements behind them):
+
+* **Attachment body.** The object is attached to the *gripper body*: the body carrying the
+  gripper's pad geoms after stepping out of bodies moved by slide joints (the fingers). For the
+  ViperX that is ``<arm>/gripper_link``. The fingers of a parallel gripper move symmetrically
+  about it, and the wrench a payload puts on every rotational joint upstream is the same
+  whether it is attached to a finger or to the gripper link (inverse dynamics passes the whole
+  wrench up the chain), so only the fingers' own slide forces would differ, and those are not
+  part of the motor factor of safety.
+* **Acceleration.** ``q̈`` is MuJoCo's ``qacc`` after ``mj_forward`` at the restored state
+  with step ``k``'s controls: the acceleration of the forces of step ``k``, the same solve
+  whose sensor readings the recording holds (bit-identical). The finite difference
+  ``(qvel[k+1] − qvel[k]) / dt`` is *not* that acceleration with ``implicitfast``: the
+  velocity update solves ``(M − dt·∂f/∂v)·Δv = dt·f``, so damped joints (servo ``kv``, joint
+  damping) move by up to ~20 % less than ``qacc`` says (measured on the demo at lift-off:
+  2.44 vs 2.10 rad/s² on the right wrist). The difference in force, ``dt·kv·q̈``, is
+  ~0.05 N·m there, small beside the limits; for the free object both agree exactly.
+* **Required actuator force.** ``τ0`` is inverse dynamics with armature plus joint damping
+  ``dof_damping·q̇``, divided by the transmission gear; dry joint friction (``frictionloss``,
+  0.1 N·m on the ViperX) is left out because its sign is not known at a moment.
+* **Grip.** The grip is modelled as ``ΣFn = pads × finger force limit`` (each pad presses with
+  its finger's saturated force, the bundled demo's 5 N per finger) and Coulomb friction with
+  the object's friction coefficient. Only the component of ``m(a − g)`` *perpendicular to the
+  grasp axis* (the dominant contact normal) needs friction; the component along it is carried
+  by the pads' normal forces (the finger servo, then the finger's joint limit). At the demo's
+  hand-over the receiving gripper holds the cube with a vertical grasp axis, so the weight
+  rests on the lower pad and friction is not what limits the grip.
+* **Two grippers.** When both hold, the load sharing is unknown: the motor bound lets either
+  arm carry the whole load (the worse of the two) and the contact bound takes the stronger
+  single grasp (if one gripper alone can hold the object, both can); the moment is flagged.
+* **Static vs step load.** The analytic force is what holds the payload once the servos have
+  taken the load. Sparse evaluation changes the mass *suddenly* at the restored state, and an
+  under-damped position servo overshoots a suddenly applied load (up to twice the static change
+  for an undamped one). :attr:`AnalyticBounds.step_load_critical_mass` is the critical mass
+  under that factor of 2; simulated critical masses fall between it and the static one.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import dataclasses
+import enum
+import importlib.util
+import math
+import numbers
+import warnings
+from typing import Any, Mapping, Sequence
+
+import mujoco
+import numpy as np
+
+from critmoment import dynamics as dyn
+from critmoment.exceptions import ParameterError
+from critmoment.params import FrictionParameter, MassParameter, Prior, UncertaintyBox
+from critmoment.scenario import CostParams
+from critmoment.twin import Twin
+
+__all__ = [
+    "SearchMethod",
+    "GraspLoad",
+    "AnalyticBounds",
+    "analytic_bounds",
+    "BoundaryPoint",
+    "AnalyticWorstCase",
+    "analytic_worst_case",
+    "SearchTrial",
+    "SearchResult",
+    "search_worst_case",
+    "CheckedPoint",
+    "Verification",
+    "verify",
+    "audit_moment",
+    "DEFAULT_SMOOTHING",
+]
+
+#: sharpness κ of the log-sum-exp smooth maximum of joint utilisations |τ_j|/τmax_j in the
+#: CasADi model: the smooth value exceeds the true maximum by at most ln(n_terms)/κ
+#: (≤ 0.013 for 12 terms), so the smooth motor FOS is at most ~1.3 % below the exact one
+DEFAULT_SMOOTHING = 200.0
+#: cost told to Optuna for a diverged sample (cost +inf): larger than any finite cost
+_DIVERGED_COST = 1e6
+#: |τ| is smoothed as sqrt(τ² + ε²) with ε this fraction of the joint's limit
+_ABS_EPS = 1e-9
+#: grid points per parameter scanned before Brent refines a boundary crossing
+_SCAN = 2049
+
+
+class SearchMethod(enum.Enum):
+    """Optuna sampler of :func:`search_worst_case`."""
+
+    TPE = "tpe"
+    """Multivariate tree-structured Parzen estimator (seeded, constant liar for batches).
+    The default: it models the mass–friction interaction from a few dozen trials, handles
+    log-uniform ranges natively and needs nothing beyond Optuna."""
+    CMAES = "cmaes"
+    """CMA-ES (Optuna's ``CmaEsSampler``, one generation per batch); needs the ``cmaes``
+    package."""
+
+
+# --------------------------------------------------------------------------
+# validation helpers
+# --------------------------------------------------------------------------
+
+
+def _check_int(name: str, value: Any, minimum: int) -> int:
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
+        raise ParameterError(f"{name}: expected an integer >= {minimum}, got {value!r}")
+    return int(value)
+
+
+def _check_positive(name: str, value: Any) -> float:
+    if (isinstance(value, bool) or not isinstance(value, numbers.Real)
+            or not math.isfinite(value) or value <= 0):
+        raise ParameterError(f"{name}: expected a finite number > 0, got {value!r}")
+    return float(value)
+
+
+def _check_method(value: Any) -> SearchMethod:
+    if isinstance(value, SearchMethod):
+        return value
+    try:
+        return SearchMethod(value)
+    except ValueError:
+        raise ParameterError(
+            f"method: expected one of {[m.value for m in SearchMethod]} (SearchMethod), "
+            f"got {value!r}") from None
+
+
+def _step_of(step: Any) -> int:
+    """A physics step index from an int or an object with an int ``step`` (a Moment)."""
+    value = getattr(step, "step", step)
+    if isinstance(value, bool) or not isinstance(value, (numbers.Integral, np.integer)):
+        raise ParameterError(f"step: expected an integer physics step index, got {step!r}")
+    return int(value)
+
+
+def _finite_or_none(x: float) -> float | None:
+    x = float(x)
+    return x if math.isfinite(x) else None
+
+
+def _rel(analytic: float, simulated: float) -> float:
+    """Signed relative disagreement (analytic − simulated)/|simulated|; 0 if both are +inf."""
+    a, s = float(analytic), float(simulated)
+    if math.isnan(a) or math.isnan(s):
+        return math.nan
+    if math.isinf(a) or math.isinf(s):
+        return 0.0 if a == s else math.copysign(math.inf, a - s)
+    if s == 0.0:
+        return 0.0 if a == 0.0 else math.copysign(math.inf, a)
+    return (a - s) / abs(s)
+
+
+# --------------------------------------------------------------------------
+# analytic bounds
+# --------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class GraspLoad:
+    """One gripper holding the object at a moment, as the analytic model sees it.
+
+    Attributes:
+        gripper: the gripper's name in the scenario.
+        attach_body: the body the object is attached to (the gripper body, see the module
+            docstring).
+        pads: number of pad geoms of the gripper.
+        normal_force: assumed total normal force of the grasp ΣFn [N]: pads × the finger
+            actuators' force limit, or the caller's value.
+        measured_normal_force: total normal force of the object's contacts with this
+            gripper in the recorded step [N].
+        grasp_axis: the dominant contact normal in the world frame, (3,) unit vector
+            (sign arbitrary).
+        demand_per_kg: |P⊥(a − g)|, the friction force each kg of object needs [N/kg]:
+            the object's acceleration against gravity projected off the grasp axis.
+        axial_per_kg: |n·(a − g)|, the part carried by the pads' normal forces [N/kg].
+        y: actuator force per kg of object on each rotational actuator, (J,) [N·m/kg];
+            non-zero only on the joints that move ``attach_body``.
+    """
+
+    gripper: str
+    attach_body: str
+    pads: int
+    normal_force: float
+    measured_normal_force: float
+    grasp_axis: np.ndarray
+    demand_per_kg: float
+    axial_per_kg: float
+    y: np.ndarray
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class AnalyticBounds:
+    """Closed-form motor and grip bounds at one moment over the uncertainty box.
+
+    Forces are actuator forces [N·m] on the J rotational actuators (the ones the motor FOS
+    covers). With H holding grippers, row h of ``y`` is the load if gripper h carries the
+    whole object (see the module docstring for two grippers).
+
+    Attributes:
+        step: the moment, physics step index.
+        time: its time [s].
+        holding: grippers touching the object.
+        on_support: the object touches its support (table) in the recorded step.
+        grasps: one :class:`GraspLoad` per holding gripper, (H,).
+        joints: names of the J rotational actuators.
+        tau0: actuator force needed without the object, (J,) [N·m].
+        y: actuator force per kg of object, (H, J) [N·m/kg].
+        tau_max: force limits, (J,) [N·m].
+        mass_range: (low, high) of the object's mass over the box [kg].
+        mass_nominal: the nominal mass [kg].
+        friction_range: (low, high) of the friction coefficient over the box.
+        friction_nominal: the nominal friction coefficient.
+        object_acc: the object's linear acceleration in the world [m/s²], (3,).
+        gravity: gravity [m/s²], (3,).
+        cost_params: the scenario's cost constants.
+        parameter_names: the box's parameter names.
+        parameter_nominal: their nominal values.
+        mass_index: column of the object's mass in the box, or None.
+        friction_index: column of the object's friction in the box, or None.
+        critical_mass: per joint, the smallest mass ≥ 0 at which |τ| reaches the limit
+            (worst over the holding grippers), (J,) [kg]; inf if never, 0 if already over.
+        worst_torque: per joint, the largest |τ| over the mass range (at an end), (J,) [N·m].
+        worst_mass: the mass at which it occurs, (J,) [kg].
+        limiting_joint: the joint with the smallest critical mass, or None when no joint
+            depends on the mass.
+        motor_critical_mass: the smallest critical mass over the joints [kg] (FOS_m = 1).
+        motor_critical_mass_threshold: the smallest mass at which the motor term alone
+            reaches the cost threshold (FOS_m = 1 + ln(B/threshold)/β) [kg]; inf if never.
+        step_load_critical_mass: the mass at which a suddenly applied load reaches a limit if
+            the servo overshoots the static change by a factor 2 (undamped servo):
+            ``|τ(m_nom) + 2(m − m_nom)·y| = τmax`` [kg].
+        contact_critical_mass: mass at which the analytic contact FOS is 1 at nominal
+            friction [kg]; inf when friction is not needed (or no grasp).
+        contact_critical_mass_threshold: mass at which the contact term alone reaches the
+            cost threshold at nominal friction (FOS_c = 1 + ln(A/threshold)/α) [kg]; inf if
+            it never does.
+        assumptions_hold: False when the object rests on the support, no gripper holds it,
+            two grippers hold it, or the grasp force is unknown.
+        notes: why the assumptions do not hold, and other caveats.
+    """
+
+    step: int
+    time: float
+    holding: tuple[str, ...]
+    on_support: bool
+    grasps: tuple[GraspLoad, ...]
+    joints: tuple[str, ...]
+    tau0: np.ndarray
+    y: np.ndarray
+    tau_max: np.ndarray
+    mass_range: tuple[float, float]
+    mass_nominal: float
+    friction_range: tuple[float, float]
+    friction_nominal: float
+    object_acc: np.ndarray
+    gravity: np.ndarray
+    cost_params: CostParams
+    parameter_names: tuple[str, ...]
+    parameter_nominal: tuple[float, ...]
+    mass_index: int | None
+    friction_index: int | None
+    critical_mass: np.ndarray
+    worst_torque: np.ndarray
+    worst_mass: np.ndarray
+    limiting_joint: str | None
+    motor_critical_mass: float
+    motor_critical_mass_threshold: float
+    step_load_critical_mass: float
+    contact_critical_mass: float
+    contact_critical_mass_threshold: float
+    assumptions_hold: bool
+    notes: tuple[str, ...]
+
+    # -- parameters ----------------------------------------------------------------
+    def parameters_at(self, mass: float, friction: float) -> dict[str, float]:
+        """Every box parameter by name: the object's mass and friction set, the rest nominal."""
+        values = {n: float(v) for n, v in zip(self.parameter_names, self.parameter_nominal)}
+        if self.mass_index is not None:
+            values[self.parameter_names[self.mass_index]] = float(mass)
+        if self.friction_index is not None:
+            values[self.parameter_names[self.friction_index]] = float(friction)
+        return values
+
+    def point_of(self, parameters: Mapping[str, float] | np.ndarray) -> tuple[float, float]:
+        """(mass, friction) of a parameter point (a name -> value mapping or a (k,) row)."""
+        if isinstance(parameters, Mapping):
+            row = [parameters.get(n, v) for n, v in zip(self.parameter_names,
+                                                        self.parameter_nominal)]
+        else:
+            row = np.asarray(parameters, dtype=np.float64).reshape(-1)
+            if row.shape[0] != len(self.parameter_names):
+                raise ParameterError(
+                    f"expected a point of {len(self.parameter_names)} values "
+                    f"{self.parameter_names}, got {row.shape[0]}")
+        mass = float(row[self.mass_index]) if self.mass_index is not None else self.mass_nominal
+        friction = (float(row[self.friction_index]) if self.friction_index is not None
+                    else self.friction_nominal)
+        return mass, friction
+
+    # -- closed forms, vectorised ------------------------------------------------
+    def torques(self, mass: np.ndarray | float) -> np.ndarray:
+        """Needed actuator forces τ0 + m·y, (..., H, J) [N·m] (H ≥ 1; τ0 alone if no grasp)."""
+        m = np.asarray(mass, dtype=np.float64)[..., None, None]
+        y = self.y if self.y.shape[0] else np.zeros((1, self.tau0.shape[0]))
+        return self.tau0 + m * y
+
+    def fos_motor_joints(self, mass: np.ndarray | float) -> np.ndarray:
+        """Motor FOS per joint τmax/|τ(m)|, worst over the holding grippers, (..., J)."""
+        tau = np.abs(self.torques(mass))
+        with np.errstate(divide="ignore"):
+            ratio = np.where(tau > 0, self.tau_max / tau, np.inf)
+        return ratio.min(axis=-2)
+
+    def fos_motor(self, mass: np.ndarray | float) -> np.ndarray:
+        """Analytic motor FOS min_j τmax_j/|τ0_j + m·y_j|, shape of ``mass``."""
+        return self.fos_motor_joints(mass).min(axis=-1)
+
+    def fos_contact(self, mass: np.ndarray | float, friction: np.ndarray | float
+                    ) -> np.ndarray:
+        """Analytic contact FOS μ·ΣFn/(m·|P⊥(a − g)|), broadcast shape of the inputs.
+
+        With two grippers, the stronger single grasp; +inf without a grasp or without
+        friction demand.
+        """
+        m, mu = np.broadcast_arrays(np.asarray(mass, dtype=np.float64),
+                                    np.asarray(friction, dtype=np.float64))
+        out = np.full(m.shape, -np.inf if self.grasps else np.inf)
+        for g in self.grasps:
+            with np.errstate(divide="ignore", invalid="ignore"):
+                demand = m * g.demand_per_kg
+                fos = np.where(demand > 0, mu * g.normal_force / demand, np.inf)
+            out = np.maximum(out, fos)
+        return out
+
+    def cost(self, mass: np.ndarray | float, friction: np.ndarray | float) -> np.ndarray:
+        """Analytic cost (eq. 15) of the closed-form factors of safety."""
+        cp = self.cost_params
+        with np.errstate(over="ignore"):
+            c = cp.A * np.exp(-cp.alpha * (self.fos_contact(mass, friction) - 1.0))
+            mm = cp.B * np.exp(-cp.beta * (self.fos_motor(mass) - 1.0))
+        return c + np.broadcast_to(mm, np.shape(c))
+
+    @property
+    def min_fos_motor(self) -> float:
+        """Smallest analytic motor FOS over the mass range (at an end of it)."""
+        return float(self.fos_motor(np.array(self.mass_range)).min())
+
+    @property
+    def min_fos_contact(self) -> float:
+        """Smallest analytic contact FOS over the box (heaviest, most slippery corner)."""
+        return float(self.fos_contact(self.mass_range[1], self.friction_range[0]))
+
+    def summary(self) -> dict:
+        """JSON-able summary (the ``"analytic"`` object of ``report.json``; None = never)."""
+        return {
+            "step": self.step,
+            "time": self.time,
+            "holding": list(self.holding),
+            "on_support": self.on_support,
+            "critical_mass": {j: _finite_or_none(v)
+                              for j, v in zip(self.joints, self.critical_mass)},
+            "limiting_joint": self.limiting_joint,
+            "motor_critical_mass": _finite_or_none(self.motor_critical_mass),
+            "motor_critical_mass_threshold": _finite_or_none(self.motor_critical_mass_threshold),
+            "step_load_critical_mass": _finite_or_none(self.step_load_critical_mass),
+            "min_fos_motor": _finite_or_none(self.min_fos_motor),
+            "min_fos_contact": _finite_or_none(self.min_fos_contact),
+            "contact_critical_mass": _finite_or_none(self.contact_critical_mass),
+            "contact_critical_mass_threshold": _finite_or_none(
+                self.contact_critical_mass_threshold),
+            "grasps": [{"gripper": g.gripper, "attach_body": g.attach_body,
+                        "normal_force": _finite_or_none(g.normal_force),
+                        "measured_normal_force": float(g.measured_normal_force),
+                        "grasp_axis": [float(v) for v in g.grasp_axis],
+                        "demand_per_kg": float(g.demand_per_kg)} for g in self.grasps],
+            "assumptions_hold": self.assumptions_hold,
+            "notes": list(self.notes),
+        }
+
+
+def _mass_and_friction(twin: Twin) -> tuple[int | None, int | None]:
+    """Columns of the box's object-mass and object-friction parameters (None if absent)."""
+    sc = twin.scenario
+    mass_col = friction_col = None
+    for j, p in enumerate(sc.box.parameters):
+        if isinstance(p, MassParameter) and p.target == sc.object_body and mass_col is None:
+            mass_col = j
+        elif (isinstance(p, FrictionParameter) and p.target == sc.object_geom
+              and friction_col is None):
+            friction_col = j
+    return mass_col, friction_col
+
+
+def _gripper_body(model: mujoco.MjModel, pad_bodies: Sequence[int]) -> int:
+    """The gripper body: step out of slide-jointed (finger) bodies, then the common ancestor."""
+    def has_slide(b: int) -> bool:
+        start, num = model.body_jntadr[b], model.body_jntnum[b]
+        return any(model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE
+                   for j in range(start, start + num))
+
+    def chain(b: int) -> list[int]:
+        out = [b]
+        while b != 0:
+            b = int(model.body_parentid[b])
+            out.append(b)
+        return out
+
+    bases = []
+    for b in pad_bodies:
+        b = int(b)
+        while b != 0 and has_slide(b):
+            b = int(model.body_parentid[b])
+        bases.append(b)
+    common = chain(bases[0])
+    for b in bases[1:]:
+        ancestors = set(chain(b))
+        common = [c for c in common if c in ancestors]
+    return common[0]
+
+
+def _finger_limits(twin: Twin, pad_bodies: Sequence[int]) -> list[float]:
+    """Force limits of the actuators on the slide joints that move the pad bodies."""
+    model = twin.model
+    limits = []
+    for b in pad_bodies:
+        b = int(b)
+        while b != 0:
+            start, num = model.body_jntadr[b], model.body_jntnum[b]
+            slides = [j for j in range(start, start + num)
+                      if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE]
+            acts = [a for a in range(model.nu)
+                    if model.actuator_trntype[a] == mujoco.mjtTrn.mjTRN_JOINT
+                    and model.actuator_trnid[a, 0] in slides]
+            if acts:
+                limits.extend(float(twin.limits[a]) for a in acts)
+                break
+            if not slides:
+                break
+            b = int(model.body_parentid[b])
+    return limits
+
+
+def _contacts_with(model: mujoco.MjModel, data: mujoco.MjData, obj_geom: int,
+                   geoms: set[int]) -> tuple[float, np.ndarray | None]:
+    """Total normal force [N] of the object's contacts with ``geoms``, dominant normal (3,)."""
+    force = np.zeros(6)
+    total = 0.0
+    scatter = np.zeros((3, 3))
+    for i in range(data.ncon):
+        con = data.contact[i]
+        pair = (int(con.geom1), int(con.geom2))
+        if obj_geom not in pair or not ({pair[0], pair[1]} - {obj_geom}) & geoms:
+            continue
+        if con.efc_address < 0:
+            continue
+        mujoco.mj_contactForce(model, data, i, force)
+        fn = max(float(force[0]), 0.0)
+        normal = np.asarray(con.frame[:3], dtype=np.float64)
+        total += fn
+        scatter += fn * np.outer(normal, normal)
+    if total <= 0:
+        return 0.0, None
+    w, v = np.linalg.eigh(scatter)
+    return total, v[:, int(np.argmax(w))]
+
+
+def analytic_bounds(recording, twin: Twin, step: Any, *,
+                    pin_model: dyn.PinocchioModel | None = None,
+                    normal_force: float | None = None) -> AnalyticBounds:
+    """Closed-form motor and grip bounds at one recorded moment.
+
+    Restores the recorded integration state before ``step`` with that step's controls,
+    solves the forward dynamics once (``mj_forward``: the recorded sensor readings of the
+    step, bit for bit), finds the grippers that touch the object, attaches the object's
+    inertia (unit inertia per kg, at its recorded pose) to each holding gripper's body and
+    computes ``τ(m) = τ0 + m·y`` on the rotational actuators with Pinocchio.
+
+    Args:
+        recording: the frequent rollout (``states`` (T + 1, nstate), ``controls`` (T, nu),
+            ``dt``), recorded with ``twin``.
+        twin: the twin.
+        step: physics step index in [0, T − 1], or an object with an int ``step``.
+        pin_model: the Pinocchio model of ``twin.model`` (built when None; cheap).
+        normal_force: total normal force of a grasp ΣFn [N]; default pads × the finger
+            actuators' force limit.
+
+    Returns:
+        The :class:`AnalyticBounds`.
+
+    Raises:
+        ParameterError: step out of range, or a bad ``normal_force``.
+    """
+    model = twin.model
+    states = np.asarray(recording.states, dtype=np.float64)
+    controls = np.asarray(recording.controls, dtype=np.float64)
+    k = _step_of(step)
+    n_steps = controls.shape[0]
+    if not 0 <= k < n_steps:
+        raise ParameterError(
+            f"step: expected a physics step in [0, {n_steps - 1}] (recording of {n_steps} "
+            f"steps), got {k}")
+    if normal_force is not None:
+        normal_force = _check_positive("normal_force", normal_force)
+    pm = pin_model if pin_model is not None else dyn.from_mujoco(model)
+    sc = twin.scenario
+    cp = sc.cost
+
+    data = mujoco.MjData(model)
+    twin.set_state(model, data, states[k])
+    data.ctrl[:] = controls[k]
+    mujoco.mj_forward(model, data)
+    sig = twin.signals(data.sensordata.copy())
+    on_support = bool(sig.contact_support)
+    touching = np.asarray(sig.contact_gripper, dtype=bool)
+    holding = tuple(g.name for g, t in zip(sc.grippers, touching) if t)
+    acc = np.asarray(sig.object_acc, dtype=np.float64)
+    gravity = np.array(model.opt.gravity, dtype=np.float64)
+
+    # the box: the object's mass and friction (others stay at nominal)
+    mass_col, friction_col = _mass_and_friction(twin)
+    box = sc.box
+    ob = twin.object_body_id
+    if mass_col is None:
+        m_lo = m_hi = m_nom = float(model.body_mass[ob])
+    else:
+        m_lo, m_hi, m_nom = box.low[mass_col], box.high[mass_col], box.nominal[mass_col]
+    if friction_col is None:
+        f_lo = f_hi = f_nom = twin.object_friction()
+    else:
+        f_lo, f_hi, f_nom = (box.low[friction_col], box.high[friction_col],
+                             box.nominal[friction_col])
+
+    # rotational actuators -> dofs, limits, gears
+    rot = np.flatnonzero(twin.rotational)
+    joints = tuple(twin.actuator_names[a] for a in rot)
+    dofs = model.jnt_dofadr[model.actuator_trnid[rot, 0]]
+    gear = model.actuator_gear[rot, 0]
+    tau_max = np.asarray(twin.limits, dtype=np.float64)[rot]
+
+    unit_inertia = np.diag(model.body_inertia[ob] / model.body_mass[ob])
+    pose = np.empty(7)
+    pose[:3] = data.xipos[ob]
+    mujoco.mju_mat2Quat(pose[3:], data.ximat[ob])
+
+    notes: list[str] = []
+    grasps: list[GraspLoad] = []
+    tau0_full = None
+    obj_geom = twin.object_geom_id
+    for g, touch in zip(sc.grippers, touching):
+        if not touch:
+            continue
+        geom_ids = [model.geom(name).id for name in g.geoms]
+        pad_bodies = [int(model.geom_bodyid[i]) for i in geom_ids]
+        body = _gripper_body(model, pad_bodies)
+        tau0_g, y_g = dyn.payload_regressor(
+            pm, data.qpos, data.qvel, data.qacc, attach_body=body,
+            payload_pose_world=pose, unit_inertia=unit_inertia, include_armature=True)
+        tau0_full = tau0_g
+        measured, axis = _contacts_with(model, data, obj_geom, set(geom_ids))
+        if axis is None:
+            # touching without force: fall back on the first finger's slide axis
+            axis = np.array([0.0, 0.0, 1.0])
+        fingers = _finger_limits(twin, pad_bodies)
+        if normal_force is not None:
+            fn = normal_force
+        elif fingers:
+            fn = len(g.geoms) * max(fingers)
+        else:
+            fn = math.nan
+            notes.append(f"gripper {g.name!r}: no actuated finger moves its pads, so the grasp "
+                         "force is unknown; pass normal_force to bound the grip")
+        rel = acc - gravity
+        axial = float(abs(axis @ rel))
+        perp = float(np.linalg.norm(rel - axis * (axis @ rel)))
+        grasps.append(GraspLoad(
+            gripper=g.name, attach_body=model.body(body).name, pads=len(g.geoms),
+            normal_force=float(fn), measured_normal_force=float(measured),
+            grasp_axis=axis, demand_per_kg=perp, axial_per_kg=axial,
+            y=y_g[dofs] / gear))
+        if math.isfinite(fn) and measured < 0.9 * fn:
+            notes.append(
+                f"gripper {g.name!r}: recorded grasp force {measured:.3g} N is below the assumed "
+                f"{fn:.3g} N (pads × finger force limit): the contact bound is optimistic here")
+        if axial > 0.5 * np.linalg.norm(rel):
+            notes.append(
+                f"gripper {g.name!r}: grasp axis within "
+                f"{math.degrees(math.acos(min(1.0, axial / np.linalg.norm(rel)))):.0f}° of the "
+                "load: the pads' normal forces (finger servo, then the finger's joint limit) "
+                "carry most of the weight; only the rest needs friction")
+    if tau0_full is None:
+        qfrc = pm.rnea(data.qpos, data.qvel, data.qacc, include_armature=True)
+        tau0_full = qfrc
+    tau0 = (tau0_full[dofs] + model.dof_damping[dofs] * data.qvel[dofs]) / gear
+    y = (np.stack([g.y for g in grasps]) if grasps else np.zeros((0, rot.size)))
+
+    if not holding:
+        notes.append("no gripper touches the object: nothing carries it, no payload bound")
+    if on_support:
+        notes.append("the object touches its support: the grip does not carry the whole "
+                     "weight; the bounds assume it does (as right after lift-off)")
+    if len(holding) > 1:
+        notes.append(f"{len(holding)} grippers hold the object ({', '.join(holding)}): load "
+                     "sharing is unknown; the motor bound lets either arm carry the whole "
+                     "load, the contact bound takes the stronger single grasp")
+    if friction_col is None:
+        notes.append("the box has no friction parameter of the object: friction fixed at "
+                     f"{f_nom:g}")
+    others = [p.name for j, p in enumerate(box.parameters) if j not in (mass_col, friction_col)]
+    if others:
+        notes.append(f"the analytic model holds {', '.join(others)} at nominal")
+    assumptions_hold = (bool(holding) and not on_support and len(holding) == 1
+                        and all(math.isfinite(g.normal_force) for g in grasps))
+
+    # per joint: critical mass (worst over grippers), worst |τ| over the mass range
+    y_rows = y if y.shape[0] else np.zeros((1, rot.size))
+    crit = dyn.critical_mass(tau0[None], y_rows, tau_max[None]).min(axis=0)
+    ends = np.array([m_lo, m_hi])
+    tau_ends = np.abs(tau0[None, None] + ends[:, None, None] * y_rows[None])  # (2, H, J)
+    per_end = tau_ends.max(axis=1)  # (2, J)
+    worst_torque = per_end.max(axis=0)
+    worst_mass = ends[np.argmax(per_end, axis=0)]
+    depends = np.abs(y_rows).max(axis=0) > 0
+    limiting = None
+    motor_crit = math.inf
+    if depends.any() and np.isfinite(crit[depends]).any():
+        j = int(np.flatnonzero(depends)[np.argmin(crit[depends])])
+        limiting, motor_crit = joints[j], float(crit[j])
+    fos_m_star = 1.0 + math.log(cp.B / cp.threshold) / cp.beta if cp.B > cp.threshold else None
+    if fos_m_star is None:
+        motor_thr = math.inf
+    else:
+        motor_thr = float(dyn.critical_mass(tau0[None], y_rows,
+                                            tau_max[None] / fos_m_star).min())
+    step_load = float(dyn.critical_mass(tau0[None] - m_nom * y_rows, 2.0 * y_rows,
+                                        tau_max[None]).min())
+    # contact: the stronger single grasp at nominal friction
+    fos_c_star = 1.0 + math.log(cp.A / cp.threshold) / cp.alpha if cp.A > cp.threshold else None
+    contact_crit = contact_thr = math.inf
+    finite = [g for g in grasps if math.isfinite(g.normal_force)]
+    if finite and len(finite) == len(grasps):
+        caps = [f_nom * g.normal_force / g.demand_per_kg if g.demand_per_kg > 0 else math.inf
+                for g in grasps]
+        contact_crit = float(max(caps))
+        if fos_c_star is not None:
+            contact_thr = contact_crit / fos_c_star
+    return AnalyticBounds(
+        step=k, time=float(k * getattr(recording, "dt", model.opt.timestep)),
+        holding=holding, on_support=on_support, grasps=tuple(grasps), joints=joints,
+        tau0=tau0, y=y, tau_max=tau_max, mass_range=(float(m_lo), float(m_hi)),
+        mass_nominal=float(m_nom), friction_range=(float(f_lo), float(f_hi)),
+        friction_nominal=float(f_nom), object_acc=acc, gravity=gravity, cost_params=cp,
+        parameter_names=box.names, parameter_nominal=tuple(float(v) for v in box.nominal),
+        mass_index=mass_col, friction_index=friction_col,
+        critical_mass=crit, worst_torque=worst_torque, worst_mass=worst_mass,
+        limiting_joint=limiting, motor_critical_mass=motor_crit,
+        motor_critical_mass_threshold=motor_thr, step_load_critical_mass=step_load,
+        contact_critical_mass=contact_crit, contact_critical_mass_threshold=contact_thr,
+        assumptions_hold=assumptions_hold, notes=tuple(notes))
+
+
+# --------------------------------------------------------------------------
+# CasADi: worst case of the analytic cost and its failure boundary
+# --------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class BoundaryPoint:
+    """The failure boundary of the analytic cost at one friction value.
+
+    Attributes:
+        friction: the friction coefficient.
+        critical_mass: the smallest mass in the range where the analytic cost exceeds the
+            threshold [kg], or None when it never does.
+        fails_everywhere: the whole mass range fails at this friction.
+    """
+
+    friction: float
+    critical_mass: float | None
+    fails_everywhere: bool = False
+
+
+@dataclasses.dataclass(frozen=True)
+class AnalyticWorstCase:
+    """The worst case of the analytic cost over the box (CasADi + IPOPT) and its boundary.
+
+    Attributes:
+        step: the moment.
+        parameters: the worst case, every box parameter by name (the ones the analytic model
+            does not know at nominal).
+        cost: exact analytic cost there (not the smoothed one the optimiser saw).
+        fos_motor: exact analytic motor FOS there.
+        fos_contact: exact analytic contact FOS there.
+        dominant: "contact" or "motor", the larger cost term.
+        fails: cost > threshold.
+        starts: number of IPOPT starts (box corners, nominal, centre).
+        solver_status: IPOPT's return status per start.
+        boundary: the failure boundary, one :class:`BoundaryPoint` per friction value.
+        critical_mass_nominal_friction: where the analytic cost crosses the threshold along
+            mass at nominal friction [kg] (None if it never does).
+        critical_friction_nominal_mass: the largest friction at which the analytic cost
+            exceeds the threshold at nominal mass (fails below it), or None.
+        smoothing: κ of the smooth maximum used by the optimiser.
+        bounds: the analytic bounds the model was built from.
+    """
+
+    step: int
+    parameters: Mapping[str, float]
+    cost: float
+    fos_motor: float
+    fos_contact: float
+    dominant: str
+    fails: bool
+    starts: int
+    solver_status: tuple[str, ...]
+    boundary: tuple[BoundaryPoint, ...]
+    critical_mass_nominal_friction: float | None
+    critical_friction_nominal_mass: float | None
+    smoothing: float
+    bounds: AnalyticBounds = dataclasses.field(repr=False, compare=False)
+
+    def summary(self) -> dict:
+        """JSON-able summary."""
+        return {
+            "parameters": dict(self.parameters), "cost": float(self.cost),
+            "fos_motor": _finite_or_none(self.fos_motor),
+            "fos_contact": _finite_or_none(self.fos_contact), "dominant": self.dominant,
+            "fails": self.fails, "solver_status": list(self.solver_status),
+            "critical_mass_nominal_friction": self.critical_mass_nominal_friction,
+            "critical_friction_nominal_mass": self.critical_friction_nominal_mass,
+            "boundary": [{"friction": b.friction, "critical_mass": b.critical_mass,
+                          "fails_everywhere": b.fails_everywhere} for b in self.boundary],
+        }
+
+
+def _smooth_cost(bounds: AnalyticBounds, kappa: float):
+    """CasADi function (m, μ) -> smooth analytic cost, and the symbols."""
+    import casadi as ca
+
+    cp = bounds.cost_params
+    m = ca.SX.sym("m")
+    mu = ca.SX.sym("mu")
+    finite = np.isfinite(bounds.tau_max) & (bounds.tau_max > 0)
+    tau0, tmax = bounds.tau0[finite], bounds.tau_max[finite]
+    rows = bounds.y[:, finite] if bounds.y.shape[0] else np.zeros((1, int(finite.sum())))
+    terms = []
+    for row in rows:
+        for t0, yj, tm in zip(tau0, row, tmax):
+            tau = t0 + m * yj
+            terms.append(ca.sqrt(tau * tau + (_ABS_EPS * tm) ** 2) / tm)
+    cost = 0
+    if terms:
+        u_motor = ca.logsumexp(kappa * ca.vertcat(*terms)) / kappa
+        cost = cost + cp.B * ca.exp(-cp.beta * (1.0 / u_motor - 1.0))
+    grips = [g for g in bounds.grasps if math.isfinite(g.normal_force) and g.demand_per_kg > 0]
+    if grips and len(grips) == len(bounds.grasps):
+        util = [m * g.demand_per_kg / (mu * g.normal_force) for g in grips]
+        u_contact = (util[0] if len(util) == 1
+                     else -ca.logsumexp(-kappa * ca.vertcat(*util)) / kappa)
+        cost = cost + cp.A * ca.exp(-cp.alpha * (1.0 / u_contact - 1.0))
+    return m, mu, cost
+
+
+def _first_crossing(f, lo: float, hi: float, threshold: float, *, from_high: bool = False
+                    ) -> tuple[float | None, bool]:
+    """First x in [lo, hi] (scanning up, or down with from_high) where f(x) > threshold.
+
+    Returns (x refined by Brent, or None if f never exceeds the threshold; fails at the
+    scan's start).
+    """
+    from scipy.optimize import brentq
+
+    if hi <= lo:
+        return (lo if f(np.array([lo]))[0] > threshold else None), False
+    xs = np.linspace(lo, hi, _SCAN)
+    if from_high:
+        xs = xs[::-1]
+    bad = f(xs) > threshold
+    if not bad.any():
+        return None, False
+    i = int(np.argmax(bad))
+    if i == 0:
+        return float(xs[0]), True
+    a, b = float(xs[i - 1]), float(xs[i])
+    g = lambda x: float(f(np.array([x]))[0]) - threshold  # noqa: E731
+    if g(a) * g(b) > 0:  # pragma: no cover - a jump exactly at a grid point
+        return b, False
+    return float(brentq(g, min(a, b), max(a, b), xtol=1e-12 * max(1.0, abs(b)))), False
+
+
+def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SMOOTHING,
+                        n_boundary: int = 9, max_iter: int = 200) -> AnalyticWorstCase:
+    """Maximise the analytic cost over the box with IPOPT and trace its failure boundary.
+
+    The smooth model: |τ| ≈ sqrt(τ² + ε²), the motor FOS is the reciprocal of a log-sum-exp
+    smooth maximum of the joint utilisations |τ_j|/τmax_j (sharpness ``smoothing``; it never
+    exceeds the true FOS and is within ln(n)/κ of its reciprocal), the contact FOS is exact
+    (one grasp) or a smooth maximum over grasps. IPOPT starts from every box corner, the
+    nominal point and the centre; the answer is the start whose *exact* closed-form cost is
+    highest. The boundary C(m, μ) = threshold is solved on the exact closed form: for each
+    of ``n_boundary`` friction values a scan of the mass range brackets the first crossing and
+    Brent's method refines it (a 1-D root of a closed form: bracketing cannot miss it, where a
+    local optimiser could stop at the wrong side of a kink of the exact minimum).
+
+    Args:
+        bounds: from :func:`analytic_bounds`.
+        smoothing: κ of the smooth maximum (> 0).
+        n_boundary: friction values of the boundary (>= 1), evenly spaced over the range.
+        max_iter: IPOPT iteration limit per start.
+
+    Returns:
+        The :class:`AnalyticWorstCase`.
+    """
+    import casadi as ca
+
+    smoothing = _check_positive("smoothing", smoothing)
+    n_boundary = _check_int("n_boundary", n_boundary, 1)
+    max_iter = _check_int("max_iter", max_iter, 1)
+    (m_lo, m_hi), (f_lo, f_hi) = bounds.mass_range, bounds.friction_range
+    lo, hi = np.array([m_lo, f_lo]), np.array([m_hi, f_hi])
+    span = np.where(hi > lo, hi - lo, 1.0)
+    m, mu, cost = _smooth_cost(bounds, smoothing)
+    u = ca.SX.sym("u", 2)  # unit-box coordinates: IPOPT sees well-scaled variables
+    x = lo + span * u
+    objective = -ca.substitute(ca.substitute(ca.SX(cost), m, x[0]), mu, x[1])
+    solver = ca.nlpsol("worst", "ipopt", {"x": u, "f": objective},
+                       {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
+                        "ipopt.max_iter": max_iter, "ipopt.tol": 1e-10})
+    ub = np.where(hi > lo, 1.0, 0.0)
+    starts = [np.array(c, dtype=float) for c in ((0, 0), (0, 1), (1, 0), (1, 1))]
+    nominal = (np.array([bounds.mass_nominal, bounds.friction_nominal]) - lo) / span
+    starts += [nominal, np.full(2, 0.5)]
+    candidates, status = [], []
+    for s in starts:
+        s = np.minimum(s, ub)
+        sol = solver(x0=s, lbx=np.zeros(2), ubx=ub)
+        status.append(str(solver.stats()["return_status"]))
+        for point in (np.clip(np.asarray(sol["x"]).reshape(-1), 0.0, ub), s):
+            candidates.append(lo + span * point)
+    candidates = np.array(candidates)
+    exact = bounds.cost(candidates[:, 0], candidates[:, 1])
+    best = candidates[int(np.argmax(exact))]
+    m_w, f_w = float(best[0]), float(best[1])
+
+    cp = bounds.cost_params
+    fos_m = float(bounds.fos_motor(m_w))
+    fos_c = float(bounds.fos_contact(m_w, f_w))
+    with np.errstate(over="ignore"):
+        term_c = cp.A * math.exp(-cp.alpha * (fos_c - 1.0)) if math.isfinite(fos_c) else 0.0
+        term_m = cp.B * math.exp(-cp.beta * (fos_m - 1.0)) if math.isfinite(fos_m) else 0.0
+    total = term_c + term_m
+
+    boundary = []
+    frictions = (np.linspace(f_lo, f_hi, n_boundary) if n_boundary > 1
+                 else np.array([bounds.friction_nominal]))
+    for f in frictions:
+        crit, everywhere = _first_crossing(lambda ms: bounds.cost(ms, f), m_lo, m_hi,
+                                           cp.threshold)
+        boundary.append(BoundaryPoint(friction=float(f), critical_mass=crit,
+                                      fails_everywhere=everywhere))
+    crit_m, _ = _first_crossing(lambda ms: bounds.cost(ms, bounds.friction_nominal),
+                                m_lo, m_hi, cp.threshold)
+    crit_f, _ = _first_crossing(lambda fs: bounds.cost(bounds.mass_nominal, fs), f_lo, f_hi,
+                                cp.threshold, from_high=True)
+    return AnalyticWorstCase(
+        step=bounds.step, parameters=bounds.parameters_at(m_w, f_w), cost=total,
+        fos_motor=fos_m, fos_contact=fos_c,
+        dominant="contact" if term_c > term_m else "motor", fails=total > cp.threshold,
+        starts=len(starts), solver_status=tuple(status), boundary=tuple(boundary),
+        critical_mass_nominal_friction=crit_m, critical_friction_nominal_mass=crit_f,
+        smoothing=smoothing, bounds=bounds)
+
+
