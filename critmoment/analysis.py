@@ -602,17 +602,16 @@ def _cost_map(res: sp.SparseResult, box, res_n: int):
 
 
 def _search_all(rec, twin, evaluator, steps, opt):
-    """Analytic bounds and worst-case search per moment (critmoment.search)."""
-    try:
-        from critmoment import search
-    except ImportError:  # pragma: no cover - search is part of the package
-        return {}, {}
+    """Analytic bounds, CasADi/Optuna worst cases and their verification per moment."""
+    from critmoment import dynamics, search
+
+    pin_model = dynamics.from_mujoco(twin.model)
     analytics, searches = {}, {}
     for s in steps:
-        out = search.worst_case_report(rec, twin, int(s), evaluator=evaluator,
-                                       n_trials=opt.search_trials, seed=opt.seed)
-        analytics[int(s)] = out.get("analytic")
-        searches[int(s)] = out.get("search")
+        out = search.audit_moment(evaluator, int(s), pin_model=pin_model,
+                                  n_trials=opt.search_trials, seed=opt.seed)
+        analytics[int(s)] = {**out["analytic"], "verification": out.get("verification")}
+        searches[int(s)] = out["search"]
     return analytics, searches
 
 

@@ -35,9 +35,9 @@ Modelling choices (see ``docs/search.md`` for the measurements behind them):
   whose sensor readings the recording holds (bit-identical). The finite difference
   ``(qvel[k+1] − qvel[k]) / dt`` is *not* that acceleration with ``implicitfast``: the
   velocity update solves ``(M − dt·∂f/∂v)·Δv = dt·f``, so damped joints (servo ``kv``, joint
-  damping) move by up to ~20 % less than ``qacc`` says (measured on the demo at lift-off:
-  2.44 vs 2.10 rad/s² on the right wrist). The difference in force, ``dt·kv·q̈``, is
-  ~0.05 N·m there, small beside the limits; for the free object both agree exactly.
+  damping) move by 12–20 % less than ``qacc`` says (measured on the demo at lift-off, e.g.
+  2.44 vs 2.10 rad/s² on the right wrist_rotate). The difference in inverse-dynamics force is
+  ≤ 0.01 N·m there, small beside the limits; for the free object both agree exactly.
 * **Required actuator force.** ``τ0`` is inverse dynamics with armature plus joint damping
   ``dof_damping·q̇``, divided by the transmission gear; dry joint friction (``frictionloss``,
   0.1 N·m on the ViperX) is left out because its sign is not known at a moment.
@@ -343,13 +343,14 @@ class AnalyticBounds:
                     ) -> np.ndarray:
         """Analytic contact FOS μ·ΣFn/(m·|P⊥(a − g)|), broadcast shape of the inputs.
 
-        With two grippers, the stronger single grasp; +inf without a grasp or without
-        friction demand.
+        With two grippers, the stronger single grasp; +inf without a grasp (or without a
+        known grasp force) or without friction demand.
         """
         m, mu = np.broadcast_arrays(np.asarray(mass, dtype=np.float64),
                                     np.asarray(friction, dtype=np.float64))
-        out = np.full(m.shape, -np.inf if self.grasps else np.inf)
-        for g in self.grasps:
+        known = [g for g in self.grasps if math.isfinite(g.normal_force)]
+        out = np.full(m.shape, -np.inf if known else np.inf)
+        for g in known:
             with np.errstate(divide="ignore", invalid="ignore"):
                 demand = m * g.demand_per_kg
                 fos = np.where(demand > 0, mu * g.normal_force / demand, np.inf)
@@ -383,6 +384,7 @@ class AnalyticBounds:
             "on_support": self.on_support,
             "critical_mass": {j: _finite_or_none(v)
                               for j, v in zip(self.joints, self.critical_mass)},
+            "worst_torque": {j: float(v) for j, v in zip(self.joints, self.worst_torque)},
             "limiting_joint": self.limiting_joint,
             "motor_critical_mass": _finite_or_none(self.motor_critical_mass),
             "motor_critical_mass_threshold": _finite_or_none(self.motor_critical_mass_threshold),
@@ -462,6 +464,17 @@ def _finger_limits(twin: Twin, pad_bodies: Sequence[int]) -> list[float]:
                 break
             b = int(model.body_parentid[b])
     return limits
+
+
+def _slide_axis(model: mujoco.MjModel, data: mujoco.MjData, pad_bodies: Sequence[int]
+                ) -> np.ndarray:
+    """World axis (3,) of the first slide joint moving a pad body; the world z if none."""
+    for b in pad_bodies:
+        start, num = model.body_jntadr[b], model.body_jntnum[b]
+        for j in range(start, start + num):
+            if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE:
+                return np.array(data.xaxis[j], dtype=np.float64)
+    return np.array([0.0, 0.0, 1.0])
 
 
 def _contacts_with(model: mujoco.MjModel, data: mujoco.MjData, obj_geom: int,
@@ -582,8 +595,8 @@ def analytic_bounds(recording, twin: Twin, step: Any, *,
         tau0_full = tau0_g
         measured, axis = _contacts_with(model, data, obj_geom, set(geom_ids))
         if axis is None:
-            # touching without force: fall back on the first finger's slide axis
-            axis = np.array([0.0, 0.0, 1.0])
+            # touching without force: fall back on a finger's slide axis (or the world z)
+            axis = _slide_axis(model, data, pad_bodies)
         fingers = _finger_limits(twin, pad_bodies)
         if normal_force is not None:
             fn = normal_force
@@ -606,11 +619,11 @@ def analytic_bounds(recording, twin: Twin, step: Any, *,
                 f"gripper {g.name!r}: recorded grasp force {measured:.3g} N is below the assumed "
                 f"{fn:.3g} N (pads × finger force limit): the contact bound is optimistic here")
         if axial > 0.5 * np.linalg.norm(rel):
+            angle = math.degrees(math.acos(min(1.0, axial / np.linalg.norm(rel))))
             notes.append(
-                f"gripper {g.name!r}: grasp axis within "
-                f"{math.degrees(math.acos(min(1.0, axial / np.linalg.norm(rel)))):.0f}° of the "
-                "load: the pads' normal forces (finger servo, then the finger's joint limit) "
-                "carry most of the weight; only the rest needs friction")
+                f"gripper {g.name!r}: the grasp axis is {angle:.0f}° from the load direction: "
+                "the pads' normal forces (finger servo, then the finger's joint limit) carry "
+                "most of the load, friction only the rest")
     if tau0_full is None:
         qfrc = pm.rnea(data.qpos, data.qvel, data.qacc, include_armature=True)
         tau0_full = qfrc
@@ -850,16 +863,18 @@ def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SM
                        {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
                         "ipopt.max_iter": max_iter, "ipopt.tol": 1e-10})
     ub = np.where(hi > lo, 1.0, 0.0)
-    starts = [np.array(c, dtype=float) for c in ((0, 0), (0, 1), (1, 0), (1, 1))]
+    starts = [np.array(c, dtype=float) for c in ((1, 0), (1, 1), (0, 0), (0, 1))]
     nominal = (np.array([bounds.mass_nominal, bounds.friction_nominal]) - lo) / span
     starts += [nominal, np.full(2, 0.5)]
-    candidates, status = [], []
+    # the starts themselves are candidates too, first, so that a flat cost (nothing depends
+    # on the parameters) reports the heaviest, most slippery corner rather than where IPOPT
+    # happened to stop
+    candidates = [lo + span * np.minimum(s, ub) for s in starts]
+    status = []
     for s in starts:
-        s = np.minimum(s, ub)
-        sol = solver(x0=s, lbx=np.zeros(2), ubx=ub)
+        sol = solver(x0=np.minimum(s, ub), lbx=np.zeros(2), ubx=ub)
         status.append(str(solver.stats()["return_status"]))
-        for point in (np.clip(np.asarray(sol["x"]).reshape(-1), 0.0, ub), s):
-            candidates.append(lo + span * point)
+        candidates.append(lo + span * np.clip(np.asarray(sol["x"]).reshape(-1), 0.0, ub))
     candidates = np.array(candidates)
     exact = bounds.cost(candidates[:, 0], candidates[:, 1])
     best = candidates[int(np.argmax(exact))]
@@ -868,9 +883,9 @@ def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SM
     cp = bounds.cost_params
     fos_m = float(bounds.fos_motor(m_w))
     fos_c = float(bounds.fos_contact(m_w, f_w))
-    with np.errstate(over="ignore"):
-        term_c = cp.A * math.exp(-cp.alpha * (fos_c - 1.0)) if math.isfinite(fos_c) else 0.0
-        term_m = cp.B * math.exp(-cp.beta * (fos_m - 1.0)) if math.isfinite(fos_m) else 0.0
+    # both factors of safety are >= 0, so neither exponent exceeds α or β
+    term_c = cp.A * math.exp(-cp.alpha * (fos_c - 1.0)) if math.isfinite(fos_c) else 0.0
+    term_m = cp.B * math.exp(-cp.beta * (fos_m - 1.0)) if math.isfinite(fos_m) else 0.0
     total = term_c + term_m
 
     boundary = []
@@ -894,3 +909,463 @@ def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SM
         smoothing=smoothing, bounds=bounds)
 
 
+
+
+# --------------------------------------------------------------------------
+# Optuna: worst case of the simulated cost
+# --------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class SearchTrial:
+    """One simulated evaluation of the search.
+
+    Attributes:
+        number: the trial's index (0-based, in evaluation order).
+        batch: the batch (one ``evaluate`` call) it ran in.
+        parameters: its parameter values by name.
+        cost: the simulated cost, maximum over the moments (+inf if diverged).
+        cost_per_moment: the cost at each moment, in ``SearchResult.steps`` order.
+        enqueued: a box corner or the nominal point, enqueued before sampling.
+    """
+
+    number: int
+    batch: int
+    parameters: Mapping[str, float]
+    cost: float
+    cost_per_moment: tuple[float, ...]
+    enqueued: bool
+
+
+@dataclasses.dataclass(frozen=True)
+class SearchResult:
+    """The worst case of the simulated cost found by Optuna.
+
+    Attributes:
+        method: the sampler.
+        steps: the moments searched over (the objective is the maximum cost over them).
+        evaluations: parameter samples evaluated (each at every moment).
+        worst_case: the most severe sample, parameter values by name.
+        worst_cost: its cost (maximum over the moments; +inf if it diverged).
+        worst_cost_per_moment: its cost at each moment.
+        evaluations_to_worst: how many samples it took to first reach ``worst_cost``.
+        stopped_early: the search stopped because the cost reached its ceiling.
+        ceiling: the largest cost the simulation can give (see :func:`search_worst_case`),
+            or None when ``stop_at_ceiling`` was off.
+        seed: the sampler's seed.
+        history: every trial, in evaluation order.
+    """
+
+    method: SearchMethod
+    steps: tuple[int, ...]
+    evaluations: int
+    worst_case: Mapping[str, float]
+    worst_cost: float
+    worst_cost_per_moment: tuple[float, ...]
+    evaluations_to_worst: int
+    stopped_early: bool
+    ceiling: float | None
+    seed: int
+    history: tuple[SearchTrial, ...]
+
+    def summary(self) -> dict:
+        """JSON-able summary (the ``"search"`` object of ``report.json``)."""
+        return {
+            "method": self.method.value, "steps": list(self.steps),
+            "evaluations": self.evaluations, "worst_case": dict(self.worst_case),
+            "worst_cost": _finite_or_none(self.worst_cost),
+            "diverged": math.isinf(self.worst_cost),
+            "worst_cost_per_moment": [_finite_or_none(c) for c in self.worst_cost_per_moment],
+            "evaluations_to_worst": self.evaluations_to_worst,
+            "stopped_early": self.stopped_early, "seed": self.seed,
+        }
+
+
+def _cost_ceiling(twin: Twin) -> float:
+    """The largest cost the simulation can give: A·e^α + B (or B·e^β).
+
+    The grasp's contact FOS is ≥ 0 (0 when a carried object is dropped), so the contact
+    term never exceeds A·e^α. The motor FOS is ≥ 1 when every rotational actuator is
+    force-limited within its scenario limit (as in the bundled scenario), so the motor term
+    never exceeds B; otherwise only FOS ≥ 0 holds and the bound is B·e^β.
+    """
+    model, cp = twin.model, twin.scenario.cost
+    rot = np.flatnonzero(twin.rotational)
+    limited = model.actuator_forcelimited[rot].astype(bool)
+    reach = np.abs(model.actuator_forcerange[rot]).max(axis=1)
+    bounded = limited.all() and (reach <= np.asarray(twin.limits)[rot] * (1 + 1e-12)).all()
+    return float(cp.A * math.exp(cp.alpha) + (cp.B if bounded else cp.B * math.exp(cp.beta)))
+
+
+@contextlib.contextmanager
+def _quiet_optuna():
+    """Optuna at WARNING and its experimental warnings muted, restored afterwards."""
+    import optuna
+
+    previous = optuna.logging.get_verbosity()
+    optuna.logging.set_verbosity(optuna.logging.WARNING)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", optuna.exceptions.ExperimentalWarning)
+            yield optuna
+    finally:
+        optuna.logging.set_verbosity(previous)
+
+
+def _sampler(optuna, method: SearchMethod, seed: int, batch_size: int):
+    if method is SearchMethod.TPE:
+        return optuna.samplers.TPESampler(seed=seed, multivariate=True, constant_liar=True)
+    return optuna.samplers.CmaEsSampler(seed=seed, popsize=max(2, batch_size),
+                                        warn_independent_sampling=False)
+
+
+def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, *,
+                      method: SearchMethod = SearchMethod.TPE, n_trials: int = 48,
+                      batch_size: int = 8, seed: int = 0, enqueue_corners: bool = True,
+                      stop_at_ceiling: bool = True) -> SearchResult:
+    """Search the box for the parameters that maximise the simulated cost.
+
+    Ask/tell with Optuna: each batch of ``batch_size`` asked trials is evaluated in one
+    ``evaluator.evaluate(steps, samples)`` call (sparse evaluation at every moment), and the
+    objective of a sample is its largest cost over the moments (a diverged sample counts as
+    the worst possible). Before sampling, the box corners and the nominal point are enqueued:
+    the cost of this task is monotone in mass and friction at most moments, so its worst case
+    is usually a corner, found in the first batch.
+
+    The default sampler is multivariate TPE: it models the mass–friction interaction from a
+    few dozen trials, handles log-uniform priors natively, is deterministic with a seed and
+    needs no extra package; ``constant_liar`` makes the trials of one batch differ. CMA-ES
+    (one generation per batch) needs ``cmaes`` and a few generations to move its mean.
+
+    Stopping early: the simulated cost has a ceiling. The grasp's contact FOS is ≥ 0 (it is
+    0 when a carried object is dropped), so the contact term is at most A·e^α; when every
+    rotational actuator is force-limited within its scenario limit (the bundled scenario) the
+    motor FOS is ≥ 1 and the motor term at most B (else B·e^β). The search stops once a
+    sample reaches the ceiling (a dropped object with a saturated motor, or a diverged
+    simulation): nothing can be more severe. Below the ceiling every trial of the budget
+    runs; the simulated cost is not monotone beyond failure (at lift-off a grippier cube
+    is dropped later and loads the arm longer), so its worst case need not be a corner.
+
+    Args:
+        evaluator: a :class:`~critmoment.sparse.SparseEvaluator` (its horizon applies).
+        steps: the moments, physics step indices (m,).
+        box: the box to search (same parameter names as the evaluator's; ranges may be
+            narrower); default the evaluator's.
+        method: TPE (default) or CMAES.
+        n_trials: samples to evaluate at most (>= 1).
+        batch_size: samples per ``evaluate`` call (>= 1).
+        seed: sampler seed (>= 0); the same seed gives the same result.
+        enqueue_corners: evaluate the box corners and the nominal point first.
+        stop_at_ceiling: stop once the cost reaches its ceiling (see above).
+
+    Returns:
+        The :class:`SearchResult`.
+
+    Raises:
+        ParameterError: bad steps, options or box; CMAES without the ``cmaes`` package.
+    """
+    method = _check_method(method)
+    n_trials = _check_int("n_trials", n_trials, 1)
+    batch_size = _check_int("batch_size", batch_size, 1)
+    seed = _check_int("seed", seed, 0)
+    steps_arr = evaluator.check_steps(steps)
+    base: UncertaintyBox = evaluator.box
+    box = base if box is None else box
+    if not isinstance(box, UncertaintyBox) or box.names != base.names:
+        raise ParameterError(
+            f"box: expected an UncertaintyBox with parameters {base.names} (the evaluator's), "
+            f"got {getattr(box, 'names', box)!r}")
+    if method is SearchMethod.CMAES and importlib.util.find_spec("cmaes") is None:
+        raise ParameterError(
+            "method CMAES: expected the 'cmaes' package to be importable (pip install cmaes), "
+            "got none; use SearchMethod.TPE")
+    ceiling = _cost_ceiling(evaluator.twin) if stop_at_ceiling else None
+
+    names = box.names
+    with _quiet_optuna() as optuna:
+        from optuna.distributions import FloatDistribution
+
+        dists = {p.name: FloatDistribution(p.low, p.high, log=p.prior is Prior.LOGUNIFORM)
+                 for p in box.parameters}
+        study = optuna.create_study(direction="maximize",
+                                    sampler=_sampler(optuna, method, seed, batch_size))
+        queued = []
+        if enqueue_corners:
+            for row in np.vstack([box.corners(), box.nominal[None]]):
+                if not any(np.array_equal(row, q) for q in queued):
+                    queued.append(row)
+            queued = queued[:n_trials]
+            for row in queued:
+                study.enqueue_trial({n: float(v) for n, v in zip(names, row)})
+        history: list[SearchTrial] = []
+        stopped = False
+        batch = 0
+        while len(history) < n_trials and not stopped:
+            size = min(batch_size, n_trials - len(history))
+            trials = [study.ask(dists) for _ in range(size)]
+            samples = np.array([[t.params[n] for n in names] for t in trials], dtype=np.float64)
+            samples = np.clip(samples, box.low, box.high)
+            res = evaluator.evaluate(steps_arr, samples)
+            per_moment = res.cost  # (m, size)
+            costs = per_moment.max(axis=0)
+            for i, t in enumerate(trials):
+                value = float(costs[i])
+                study.tell(t, min(value, _DIVERGED_COST))
+                history.append(SearchTrial(
+                    number=len(history), batch=batch,
+                    parameters={n: float(v) for n, v in zip(names, samples[i])}, cost=value,
+                    cost_per_moment=tuple(float(c) for c in per_moment[:, i]),
+                    enqueued=len(history) < len(queued)))
+            batch += 1
+            best = max(h.cost for h in history)
+            stopped = (ceiling is not None and best >= ceiling * (1 - 1e-12)
+                       and len(history) < n_trials)
+    costs = np.array([h.cost for h in history])
+    first = int(np.argmax(costs))  # argmax returns the first of equal maxima
+    worst = history[first]
+    return SearchResult(
+        method=method, steps=tuple(int(s) for s in steps_arr), evaluations=len(history),
+        worst_case=dict(worst.parameters), worst_cost=worst.cost,
+        worst_cost_per_moment=worst.cost_per_moment, evaluations_to_worst=first + 1,
+        stopped_early=stopped, ceiling=ceiling, seed=seed, history=tuple(history))
+
+
+# --------------------------------------------------------------------------
+# verification by sparse evaluation
+# --------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class CheckedPoint:
+    """One parameter point, analytic model against sparse evaluation.
+
+    Disagreements are signed and relative, ``(analytic − simulated)/|simulated|`` (0 when
+    both are +inf, ±inf when only one is): a positive FOS disagreement means the analytic
+    model is optimistic.
+
+    Attributes:
+        source: where the point comes from: "analytic" (CasADi worst case), "search"
+            (Optuna worst case), "nominal", or "analytic_boundary" (the analytic critical
+            mass at nominal friction).
+        parameters: the parameter values by name.
+        analytic_cost: cost of the analytic model.
+        analytic_fos_motor: analytic motor FOS.
+        analytic_fos_contact: analytic contact FOS.
+        simulated_cost: cost of the sparse evaluation (+inf if diverged).
+        simulated_fos_motor: simulated motor FOS.
+        simulated_fos_contact: simulated contact FOS of the grasp (``fos_grasp``).
+        simulated_diverged: the simulation diverged.
+        cost_disagreement: relative disagreement of the costs.
+        fos_motor_disagreement: relative disagreement of the motor FOS.
+        fos_contact_disagreement: relative disagreement of the contact FOS.
+        analytic_fails: the analytic cost exceeds the threshold.
+        simulated_fails: the simulated cost exceeds the threshold (or it diverged).
+
+    Beyond failure the two are not on one scale: the simulation clamps actuator forces at
+    their range (FOS_m → 1) and a slipping contact sits on its friction cone (FOS_c → 1, or
+    0 once the object is dropped), while the analytic FOS keep falling below 1. Compare
+    factors of safety where both pass; where they fail, compare ``agree``.
+    """
+
+    source: str
+    parameters: Mapping[str, float]
+    analytic_cost: float
+    analytic_fos_motor: float
+    analytic_fos_contact: float
+    simulated_cost: float
+    simulated_fos_motor: float
+    simulated_fos_contact: float
+    simulated_diverged: bool
+    cost_disagreement: float
+    fos_motor_disagreement: float
+    fos_contact_disagreement: float
+    analytic_fails: bool
+    simulated_fails: bool
+
+    @property
+    def agree(self) -> bool:
+        """The analytic model and the simulation classify the point alike (fail or pass)."""
+        return self.analytic_fails == self.simulated_fails
+
+    def summary(self) -> dict:
+        """JSON-able summary (non-finite numbers as None)."""
+        out: dict[str, Any] = {"source": self.source, "parameters": dict(self.parameters)}
+        for f in ("analytic_cost", "analytic_fos_motor", "analytic_fos_contact",
+                  "simulated_cost", "simulated_fos_motor", "simulated_fos_contact",
+                  "cost_disagreement", "fos_motor_disagreement", "fos_contact_disagreement"):
+            out[f] = _finite_or_none(getattr(self, f))
+        out["simulated_diverged"] = self.simulated_diverged
+        out["analytic_fails"] = self.analytic_fails
+        out["simulated_fails"] = self.simulated_fails
+        out["agree"] = self.agree
+        return out
+
+
+@dataclasses.dataclass(frozen=True)
+class Verification:
+    """Every worst case found at a moment, re-evaluated by sparse evaluation.
+
+    Attributes:
+        step: the moment.
+        horizon: the evaluator's horizon [steps].
+        threshold: the cost threshold.
+        points: the checked points.
+        most_severe: the source whose point has the highest simulated cost.
+        assumptions_hold: the analytic model's assumptions hold at this moment.
+        notes: the analytic model's notes and what the comparison showed.
+    """
+
+    step: int
+    horizon: int
+    threshold: float
+    points: tuple[CheckedPoint, ...]
+    most_severe: str
+    assumptions_hold: bool
+    notes: tuple[str, ...]
+
+    def point(self, source: str) -> CheckedPoint:
+        """The checked point of ``source``."""
+        for p in self.points:
+            if p.source == source:
+                return p
+        raise ParameterError(f"no checked point from {source!r}; have "
+                             f"{[p.source for p in self.points]}")
+
+    def summary(self) -> dict:
+        """JSON-able summary."""
+        return {"step": self.step, "horizon": self.horizon, "threshold": self.threshold,
+                "points": [p.summary() for p in self.points], "most_severe": self.most_severe,
+                "assumptions_hold": self.assumptions_hold, "notes": list(self.notes)}
+
+
+def verify(evaluator, step: Any, analytic: AnalyticWorstCase | AnalyticBounds,
+           search: SearchResult | None = None, *, include_nominal: bool = True
+           ) -> Verification:
+    """Re-evaluate the worst cases found at a moment by sparse evaluation.
+
+    Checks the CasADi worst case (when ``analytic`` is an :class:`AnalyticWorstCase`), the
+    analytic critical mass at nominal friction, the Optuna worst case and the nominal point,
+    all in one ``evaluate`` call, and compares the analytic model's FOS and cost with the
+    simulated ones at the same parameters.
+
+    With a horizon of one step the simulated motor FOS of position servos does not depend on
+    the payload (their force is a function of the restored state) and soft contacts have not
+    taken the full load yet: the comparison then says more about the horizon than about the
+    model, and a note says so.
+
+    Args:
+        evaluator: the sparse evaluator (its horizon applies).
+        step: the moment (physics step, or an object with an int ``step``).
+        analytic: the analytic worst case (or only the bounds) at this moment.
+        search: the Optuna result to check too, or None.
+        include_nominal: also check the nominal point.
+
+    Returns:
+        The :class:`Verification`.
+
+    Raises:
+        ParameterError: bad step, or analytic bounds of another step.
+    """
+    k = _step_of(step)
+    evaluator.check_steps([k])
+    if isinstance(analytic, AnalyticWorstCase):
+        bounds, worst = analytic.bounds, analytic
+    elif isinstance(analytic, AnalyticBounds):
+        bounds, worst = analytic, None
+    else:
+        raise ParameterError(
+            f"analytic: expected AnalyticWorstCase or AnalyticBounds, got "
+            f"{type(analytic).__name__}")
+    if bounds.step != k:
+        raise ParameterError(
+            f"analytic: expected the bounds of step {k}, got those of step {bounds.step}")
+    box = evaluator.box
+    if box.names != bounds.parameter_names:
+        raise ParameterError(f"analytic: expected parameters {box.names}, got "
+                             f"{bounds.parameter_names}")
+    points: list[tuple[str, dict[str, float]]] = []
+    if worst is not None:
+        points.append(("analytic", dict(worst.parameters)))
+        if worst.critical_mass_nominal_friction is not None:
+            points.append(("analytic_boundary", bounds.parameters_at(
+                worst.critical_mass_nominal_friction, bounds.friction_nominal)))
+    if search is not None:
+        points.append(("search", {n: float(search.worst_case.get(n, v))
+                                  for n, v in zip(box.names, box.nominal)}))
+    if include_nominal:
+        points.append(("nominal", {n: float(v) for n, v in zip(box.names, box.nominal)}))
+    if not points:
+        raise ParameterError("verify: expected at least one point to check (an "
+                             "AnalyticWorstCase, a SearchResult or include_nominal=True)")
+    samples = np.array([[p[n] for n in box.names] for _, p in points], dtype=np.float64)
+    res = evaluator.evaluate([k], samples)
+    checked = []
+    for i, (source, params) in enumerate(points):
+        m, f = bounds.point_of(params)
+        a_cost = float(bounds.cost(m, f))
+        a_fm = float(bounds.fos_motor(m))
+        a_fc = float(bounds.fos_contact(m, f))
+        s_cost = float(res.cost[0, i])
+        s_fm = float(res.fos_motor[0, i])
+        s_fc = float(res.fos_grasp[0, i])
+        checked.append(CheckedPoint(
+            source=source, parameters=params, analytic_cost=a_cost, analytic_fos_motor=a_fm,
+            analytic_fos_contact=a_fc, simulated_cost=s_cost, simulated_fos_motor=s_fm,
+            simulated_fos_contact=s_fc, simulated_diverged=bool(res.diverged[0, i]),
+            cost_disagreement=_rel(a_cost, s_cost), fos_motor_disagreement=_rel(a_fm, s_fm),
+            fos_contact_disagreement=_rel(a_fc, s_fc),
+            analytic_fails=a_cost > bounds.cost_params.threshold,
+            simulated_fails=bool(res.failed[0, i])))
+    notes = list(bounds.notes)
+    masses = np.array([bounds.point_of(p)[0] for _, p in points])
+    fm = res.fos_motor[0][~res.diverged[0]]
+    if np.ptp(masses) > 0 and fm.size > 1 and np.ptp(fm) == 0:
+        notes.append(
+            f"the simulated motor FOS did not change with the mass over the horizon of "
+            f"{evaluator.horizon} step(s): position servos answer a load only as the arm "
+            "sags; compare motor FOS at a horizon of ~100 steps")
+    if res.diverged.any():
+        notes.append("a checked point diverged in simulation (counted as cost +inf)")
+    most = max(checked, key=lambda c: c.simulated_cost)
+    return Verification(step=k, horizon=int(evaluator.horizon),
+                        threshold=float(bounds.cost_params.threshold), points=tuple(checked),
+                        most_severe=most.source, assumptions_hold=bounds.assumptions_hold,
+                        notes=tuple(notes))
+
+
+def audit_moment(evaluator, step: Any, *, pin_model: dyn.PinocchioModel | None = None,
+                 method: SearchMethod = SearchMethod.TPE, n_trials: int = 48,
+                 batch_size: int = 8, seed: int = 0, smoothing: float = DEFAULT_SMOOTHING
+                 ) -> dict:
+    """Analytic bounds, CasADi and Optuna worst cases and their verification at one moment.
+
+    Args:
+        evaluator: the sparse evaluator of the recording (``evaluator.recording`` and
+            ``evaluator.twin`` give the moment's state).
+        step: the moment (physics step, or an object with an int ``step``).
+        pin_model: the Pinocchio model of the twin's model (built when None).
+        method: the Optuna sampler.
+        n_trials: Optuna's budget of samples.
+        batch_size: samples per sparse-evaluation call.
+        seed: the sampler's seed.
+        smoothing: κ of the CasADi model's smooth maximum.
+
+    Returns:
+        A JSON-able dict: ``step``, ``time``, ``horizon``, ``analytic`` (critical masses per
+        joint, limiting joint, minimum factors of safety, contact critical masses,
+        assumptions, notes, and the CasADi ``worst_case``), ``search`` (method, evaluations,
+        worst case, worst cost) and ``verification``. Non-finite numbers are None (a
+        critical mass of None: the limit is never reached).
+    """
+    k = _step_of(step)
+    evaluator.check_steps([k])
+    bounds = analytic_bounds(evaluator.recording, evaluator.twin, k, pin_model=pin_model)
+    worst = analytic_worst_case(bounds, smoothing=smoothing)
+    found = search_worst_case(evaluator, [k], method=method, n_trials=n_trials,
+                              batch_size=batch_size, seed=seed)
+    check = verify(evaluator, k, worst, found)
+    analytic = bounds.summary()
+    analytic["worst_case"] = worst.summary()
+    return {"step": k, "time": bounds.time, "horizon": int(evaluator.horizon),
+            "analytic": analytic, "search": found.summary(),
+            "verification": check.summary()}

@@ -1,0 +1,1062 @@
+"""Ground truth: check the audit's sparse verdicts against brute-force full rollouts.
+
+For every parameter sample of the uncertainty box, :func:`brute_force` re-runs the *whole*
+trajectory with that sample's physics (batched through :func:`critmoment.recording.simulate`,
+i.e. ``mujoco.batch.Batch.rollout`` on all threads) and :func:`classify` names the real
+outcome (:class:`Outcome`). :func:`predict` runs the audit's own sparse method on the same
+samples: the frequent rollout at nominal parameters, the audit's critical moments
+(:func:`critmoment.analysis.detect_moments`, the same selection :func:`critmoment.analysis.analyze`
+makes), and one sparse evaluation per moment and sample; a sample is predicted to fail when its
+cost exceeds the scenario's threshold at any audited moment (or diverges there), or when the
+nominal rollout itself does not complete the task (the audit then says UNSAFE whatever the
+parameters). :func:`compare` builds the confusion matrix; :func:`validate` chains the three.
+
+Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
+
+* ``DIVERGED``: the sample's simulation diverged (MuJoCo warning or non-finite readings).
+* ``MOTOR``: a rotational actuator's force stays at its limit (|force| ≥ ``saturation`` ×
+  limit) for longer than ``motor_time``, or a rotational joint lags its target by more than the
+  nominal run does, by over ``tracking_tolerance``, for longer than ``tracking_time``.
+* ``DROPPED``: the task is not completed and, for longer than ``drop_time``, the object is not
+  carried (touches the support, or no gripper) at steps where the nominal run carries it.
+* ``SLIPPED``: the object moved in a holding gripper by more than ``slip_tolerance`` for
+  longer than ``slip_time``: its position in the frame of the gripper's base body, with the
+  component along the fingers' closing axes removed (squeezing is not slip), counted from the
+  step both the sample and the nominal run first hold it with that gripper, minus the nominal
+  run's own displacement, at steps where both hold it with that gripper. With
+  ``slip_is_failure`` (default) a run that slips counts as a failure even when it completes
+  the task; otherwise it is ``SUCCESS`` when completed.
+* ``NOT_COMPLETED``: the task (stage 4 reached and kept to the end, see
+  :func:`critmoment.recording.task_completed`) is not completed, and none of the above
+  explains it (e.g. the object was never grasped, as in the nominal run itself).
+* ``SUCCESS``: completed, and none of the above.
+
+A sample has exactly one outcome, the first in the order DIVERGED, MOTOR, DROPPED, SLIPPED,
+NOT_COMPLETED that applies; the step of its earliest failure event (``first_failure_step``)
+is kept for the analysis of missed failures.
+
+The confusion matrix counts ``true_safe`` (predicted safe, succeeded), ``false_safe``
+(predicted safe, failed), ``true_unsafe`` (predicted unsafe, failed) and ``false_unsafe``
+(predicted unsafe, succeeded). The **false-safe rate** is false_safe / (false_safe +
+true_unsafe): the fraction of the real failures that the audit called safe (the miss rate;
+``None`` when no sample fails). Agreement is (true_safe + true_unsafe) / n.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+import math
+import numbers
+import time
+from typing import Any, Mapping, Sequence
+
+import mujoco
+import mujoco.batch
+import numpy as np
+
+from critmoment import sparse as sp
+from critmoment.analysis import detect_moments
+from critmoment.exceptions import ParameterError
+from critmoment.moments import Moment
+from critmoment.recording import (Recording, initial_state, prepare_controls, rollout, simulate,
+                                  task_completed)
+from critmoment.trajectory import Trajectory
+from critmoment.twin import Twin
+
+__all__ = [
+    "Outcome",
+    "OutcomeCriteria",
+    "Classification",
+    "classify",
+    "grip_slip",
+    "BruteForce",
+    "brute_force",
+    "Prediction",
+    "predict",
+    "envelope_steps",
+    "MissedFailure",
+    "ValidationResult",
+    "confusion_counts",
+    "compare",
+    "validate",
+    "VALIDATION_SCHEMA",
+]
+
+VALIDATION_SCHEMA = "critmoment.validation/1"
+
+_SENSOR_PREFIX = "critmoment:validate:"
+
+
+class Outcome(enum.Enum):
+    """Real outcome of one full rollout (see the module docstring for the definitions)."""
+
+    SUCCESS = "success"
+    DIVERGED = "diverged"
+    MOTOR = "motor"
+    DROPPED = "dropped"
+    SLIPPED = "slipped"
+    NOT_COMPLETED = "not_completed"
+
+
+#: precedence of the failure outcomes, most severe first
+_PRECEDENCE = (Outcome.DIVERGED, Outcome.MOTOR, Outcome.DROPPED, Outcome.SLIPPED,
+               Outcome.NOT_COMPLETED)
+
+
+@dataclasses.dataclass(frozen=True)
+class OutcomeCriteria:
+    """Tolerances that turn a full rollout into an :class:`Outcome`.
+
+    Attributes:
+        slip_tolerance: largest displacement of the object in a holding gripper, relative to
+            the nominal run, that is not slip [m] (1 cm: a quarter of the bundled 4 cm cube).
+        slip_time: how long the displacement must exceed the tolerance to count [s]
+            (transients at the hand-over settle within a few tens of ms).
+        slip_is_failure: a run that slips but completes the task counts as a failure.
+        saturation: fraction of the force limit at which a rotational actuator is saturated.
+        motor_time: how long a saturation must last to count [s].
+        tracking_tolerance: how much more than in the nominal run a rotational joint may lag
+            its target [rad].
+        tracking_time: how long a tracking loss must last to count [s].
+        drop_time: longest ignored loss of the object where the nominal run carries it [s]
+            (the debounce of :func:`critmoment.recording.task_completed`).
+    """
+
+    slip_tolerance: float = 0.01
+    slip_time: float = 0.05
+    slip_is_failure: bool = True
+    saturation: float = 0.999
+    motor_time: float = 0.05
+    tracking_tolerance: float = 0.1
+    tracking_time: float = 0.05
+    drop_time: float = 0.02
+
+    def __post_init__(self):
+        for name in ("slip_tolerance", "tracking_tolerance"):
+            _check_positive(name, getattr(self, name))
+        for name in ("slip_time", "motor_time", "tracking_time", "drop_time"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, numbers.Real) or not (
+                    math.isfinite(value) and value >= 0):
+                raise ParameterError(f"{name}: expected a finite time >= 0 s, got {value!r}")
+        if not isinstance(self.saturation, numbers.Real) or not 0 < self.saturation <= 1:
+            raise ParameterError(f"saturation: expected a fraction in (0, 1], got "
+                                 f"{self.saturation!r}")
+
+    def steps(self, seconds: float, dt: float) -> int:
+        """Shortest run of steps that lasts *longer* than ``seconds`` at step ``dt`` [s]."""
+        return int(round(seconds / dt)) + 1
+
+
+def _check_positive(name: str, value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not (
+            math.isfinite(value) and value > 0):
+        raise ParameterError(f"{name}: expected a finite number > 0, got {value!r}")
+    return float(value)
+
+
+def _check_int(name: str, value: Any, minimum: int) -> int:
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
+        raise ParameterError(f"{name}: expected an integer >= {minimum}, got {value!r}")
+    return int(value)
+
+
+# --------------------------------------------------------------------------
+# classification of full rollouts
+# --------------------------------------------------------------------------
+
+
+def _run_length(flags: np.ndarray) -> np.ndarray:
+    """Length of the run of True ending at each step, (n, T) int (0 where False)."""
+    t = flags.shape[-1]
+    idx = np.arange(t)
+    last_false = np.maximum.accumulate(np.where(flags, -1, idx), axis=-1)
+    return idx - last_false
+
+
+def _first_run(flags: np.ndarray, min_len: int) -> np.ndarray:
+    """First step of the first run of at least ``min_len`` True values, (n,) int, −1 if none."""
+    long = _run_length(flags) >= min_len
+    hit = long.any(axis=-1)
+    return np.where(hit, np.argmax(long, axis=-1) - min_len + 1, -1)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class Classification:
+    """Real outcomes of n full rollouts.
+
+    Attributes:
+        outcome: one :class:`Outcome` per sample.
+        completed: the task was completed, (n,) bool.
+        first_failure_step: step of the earliest failure event of a failed sample (slip,
+            drop, motor, divergence; for NOT_COMPLETED the start of the final loss of stage
+            4, or −1 when stage 4 was never reached); −1 for a success, (n,) int.
+        slip_step: first step of the first slip, −1 if none, (n,) int.
+        drop_step: first step of the first loss of the object where the nominal run carries
+            it, −1 if none (counted as DROPPED only when not completed), (n,) int.
+        motor_step: first step of the first motor saturation or tracking loss, −1 if none,
+            (n,) int.
+        max_slip: largest displacement in a holding gripper relative to the nominal run [m],
+            (n,) (0 where never held).
+        saturation_time: longest saturation of a rotational actuator [s], (n,).
+        dt: physics step [s].
+        criteria: the tolerances used.
+    """
+
+    outcome: tuple[Outcome, ...]
+    completed: np.ndarray
+    first_failure_step: np.ndarray
+    slip_step: np.ndarray
+    drop_step: np.ndarray
+    motor_step: np.ndarray
+    max_slip: np.ndarray
+    saturation_time: np.ndarray
+    dt: float
+    criteria: OutcomeCriteria
+
+    @property
+    def failed(self) -> np.ndarray:
+        """(n,) bool: the outcome is anything but SUCCESS."""
+        return np.array([o is not Outcome.SUCCESS for o in self.outcome], dtype=bool)
+
+    def counts(self) -> dict[str, int]:
+        """Samples per outcome, every outcome listed."""
+        return {o.value: sum(1 for x in self.outcome if x is o) for o in Outcome}
+
+    @staticmethod
+    def concatenate(parts: Sequence["Classification"]) -> "Classification":
+        """Join classifications of successive chunks of samples."""
+        if not parts:
+            raise ParameterError("expected at least one classification to concatenate")
+        arrays = {f.name: np.concatenate([getattr(p, f.name) for p in parts])
+                  for f in dataclasses.fields(Classification)
+                  if f.name not in ("outcome", "dt", "criteria")}
+        return Classification(outcome=tuple(o for p in parts for o in p.outcome),
+                              dt=parts[0].dt, criteria=parts[0].criteria, **arrays)
+
+
+def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
+             contact_support: np.ndarray, nominal_carried: np.ndarray,
+             actuator_norm: np.ndarray, tracking_excess: np.ndarray | None = None,
+             slip: np.ndarray | None = None, diverged: np.ndarray | None = None,
+             diverged_step: np.ndarray | None = None,
+             criteria: OutcomeCriteria = OutcomeCriteria()) -> Classification:
+    """Classify n full rollouts from their signals.
+
+    Args:
+        dt: physics step [s].
+        stage: task stage per step, (n, T) int.
+        contact_gripper: the object touches gripper g, (n, T, G) bool.
+        contact_support: the object touches the support, (n, T) bool.
+        nominal_carried: the nominal run carries the object (off the support, touched by a
+            gripper), (T,) bool.
+        actuator_norm: force / limit of the rotational actuators, (n, T, r).
+        tracking_excess: how much more than in the nominal run each rotational joint lags
+            its target, |q − target| − |q_nominal − target| [rad], (n, T, r), or None.
+        slip: displacement of the object in its holding gripper relative to the nominal run
+            [m], (n, T) (0 where not held), or None (see :func:`grip_slip`).
+        diverged: the simulation diverged, (n,) bool, or None.
+        diverged_step: the step it diverged at, (n,) int, or None.
+        criteria: the tolerances.
+
+    Returns:
+        The :class:`Classification`.
+
+    Raises:
+        ParameterError: arrays of inconsistent shapes.
+    """
+    _check_positive("dt", dt)
+    stage = np.asarray(stage)
+    if stage.ndim != 2:
+        raise ParameterError(f"stage: expected shape (n, T), got {stage.shape}")
+    n, t = stage.shape
+    contact_gripper = np.asarray(contact_gripper, dtype=bool)
+    contact_support = np.asarray(contact_support, dtype=bool)
+    nominal_carried = np.asarray(nominal_carried, dtype=bool)
+    actuator_norm = np.asarray(actuator_norm, dtype=np.float64)
+    expect = {"contact_gripper": (contact_gripper, 3), "contact_support": (contact_support, 2),
+              "actuator_norm": (actuator_norm, 3)}
+    if tracking_excess is not None:
+        tracking_excess = np.asarray(tracking_excess, dtype=np.float64)
+        expect["tracking_excess"] = (tracking_excess, 3)
+    if slip is not None:
+        slip = np.asarray(slip, dtype=np.float64)
+        expect["slip"] = (slip, 2)
+    for name, (arr, ndim) in expect.items():
+        if arr.ndim != ndim or arr.shape[:2] != (n, t):
+            raise ParameterError(
+                f"{name}: expected {ndim} axes with leading shape (n, T) = {(n, t)}, got "
+                f"{arr.shape}")
+    if nominal_carried.shape != (t,):
+        raise ParameterError(f"nominal_carried: expected shape ({t},), got {nominal_carried.shape}")
+    diverged = np.zeros(n, bool) if diverged is None else np.asarray(diverged, dtype=bool)
+    if diverged.shape != (n,):
+        raise ParameterError(f"diverged: expected shape ({n},), got {diverged.shape}")
+    diverged_step = (np.full(n, -1) if diverged_step is None
+                     else np.asarray(diverged_step, dtype=np.int64))
+    c = criteria
+
+    completed = task_completed(stage, dt=dt)
+    # motor: saturation, or tracking lost, for longer than the stated times
+    saturated = np.abs(actuator_norm) >= c.saturation
+    sat_run = _run_length(saturated.transpose(0, 2, 1))  # (n, r, T)
+    saturation_time = (sat_run.max(axis=(1, 2)) if sat_run.size else np.zeros(n)) * dt
+    starts = [_first_run(saturated[..., j], c.steps(c.motor_time, dt))
+              for j in range(actuator_norm.shape[-1])]
+    if tracking_excess is not None:
+        lost = tracking_excess > c.tracking_tolerance
+        starts += [_first_run(lost[..., j], c.steps(c.tracking_time, dt))
+                   for j in range(tracking_excess.shape[-1])]
+    motor_step = _earliest(np.stack(starts, axis=-1)) if starts else np.full(n, -1)
+    # drop: not carried where the nominal run carries the object
+    carried = ~contact_support & contact_gripper.any(axis=-1)
+    drop_step = _first_run(nominal_carried[None, :] & ~carried, c.steps(c.drop_time, dt))
+    # slip: moved in the grip beyond the tolerance for longer than slip_time
+    if slip is None:
+        slip_step, max_slip = np.full(n, -1), np.zeros(n)
+    else:
+        slip_step = _first_run(slip > c.slip_tolerance, c.steps(c.slip_time, dt))
+        max_slip = np.nan_to_num(slip, nan=0.0).max(axis=1) if t else np.zeros(n)
+    # the final loss of stage 4 of an incomplete run (for its failure step)
+    at4 = stage >= 4
+    ever4 = at4.any(axis=1)
+    last4 = t - 1 - np.argmax(at4[:, ::-1], axis=1)
+    final_loss = np.where(ever4 & (last4 < t - 1), last4 + 1, -1)
+
+    outcome, first = [], np.full(n, -1, dtype=np.int64)
+    for i in range(n):
+        events = {Outcome.DIVERGED: diverged_step[i] if diverged[i] else None,
+                  Outcome.MOTOR: motor_step[i] if motor_step[i] >= 0 else None,
+                  Outcome.DROPPED: (drop_step[i] if drop_step[i] >= 0 and not completed[i]
+                                    else None),
+                  Outcome.SLIPPED: (slip_step[i] if slip_step[i] >= 0
+                                    and (c.slip_is_failure or not completed[i]) else None),
+                  Outcome.NOT_COMPLETED: None if completed[i] else final_loss[i]}
+        if diverged[i] and diverged_step[i] < 0:
+            events[Outcome.DIVERGED] = -1
+        present = [o for o in _PRECEDENCE if events[o] is not None]
+        if not present:
+            outcome.append(Outcome.SUCCESS)
+            continue
+        outcome.append(present[0])
+        steps = [int(events[o]) for o in present if events[o] is not None and events[o] >= 0]
+        first[i] = min(steps) if steps else -1
+    return Classification(
+        outcome=tuple(outcome), completed=completed, first_failure_step=first,
+        slip_step=slip_step.astype(np.int64), drop_step=drop_step.astype(np.int64),
+        motor_step=motor_step.astype(np.int64), max_slip=np.asarray(max_slip, dtype=float),
+        saturation_time=np.asarray(saturation_time, dtype=float), dt=float(dt), criteria=c)
+
+
+def _earliest(steps: np.ndarray) -> np.ndarray:
+    """Earliest non-negative entry along the last axis, −1 where none, (n,)."""
+    big = np.iinfo(np.int64).max
+    masked = np.where(steps >= 0, steps, big).min(axis=-1)
+    return np.where(masked == big, -1, masked)
+
+
+def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarray,
+              nominal_held: np.ndarray, *, projectors: np.ndarray | None = None) -> np.ndarray:
+    """Displacement of the object in its holding grippers, relative to the nominal run.
+
+    For gripper g, from the first step ``t0`` at which both the sample and the nominal run
+    hold the object with g, the displacement at t is
+    ``(p(t) − p(t0)) − (p_nom(t) − p_nom(t0))`` of the object's position in g's base frame,
+    projected by ``projectors[g]`` (to drop the fingers' closing axis), counted where both
+    hold it with g; the result is the largest magnitude over the grippers.
+
+    Args:
+        position: object position in each gripper's frame [m], (n, T, G, 3).
+        nominal_position: the same in the nominal run [m], (T, G, 3).
+        held: the sample holds the object with gripper g (touch, off the support),
+            (n, T, G) bool.
+        nominal_held: the same in the nominal run, (T, G) bool.
+        projectors: per gripper, a (3, 3) projector applied to the displacement, (G, 3, 3);
+            None for the identity.
+
+    Returns:
+        (n, T) displacement [m], 0 where no gripper holds the object in both runs.
+    """
+    position = np.asarray(position, dtype=np.float64)
+    nominal_position = np.asarray(nominal_position, dtype=np.float64)
+    if position.ndim != 4 or position.shape[-1] != 3 or position.shape[1:] != nominal_position.shape:
+        raise ParameterError(
+            f"position: expected (n, T, G, 3) matching nominal_position (T, G, 3), got "
+            f"{position.shape} and {nominal_position.shape}")
+    n, t, g, _ = position.shape
+    both = np.asarray(held, dtype=bool) & np.asarray(nominal_held, dtype=bool)[None]
+    if both.shape != (n, t, g):
+        raise ParameterError(f"held: expected shape {(n, t, g)}, got {both.shape}")
+    t0 = np.argmax(both, axis=1)  # (n, G)
+    rows = np.arange(n)[:, None]
+    cols = np.arange(g)[None, :]
+    rel = ((position - position[rows, t0, cols][:, None])
+           - (nominal_position[None] - nominal_position[t0, cols][:, None]))
+    if projectors is not None:
+        rel = np.einsum("gij,ntgj->ntgi", np.asarray(projectors, dtype=np.float64), rel)
+    disp = np.where(both, np.linalg.norm(rel, axis=-1), 0.0)
+    return disp.max(axis=-1) if g else np.zeros((n, t))
+
+
+# --------------------------------------------------------------------------
+# brute force
+# --------------------------------------------------------------------------
+
+
+class _Probe:
+    """The twin's model with extra sensors for the brute force, and how to read them.
+
+    The twin's own sensors come first and keep their addresses (the extra ones are appended),
+    so ``Twin.signals`` reads the first ``twin.nsensordata`` values unchanged and the physics
+    is the twin's: sensors do not act on the dynamics.
+    """
+
+    def __init__(self, twin: Twin):
+        sc = twin.scenario
+        base = twin.model
+        self.anchors = [_gripper_anchor(base, g.geoms) for g in sc.grippers]
+        spec = mujoco.MjSpec.from_file(str(sc.mjcf))
+        twin._add_sensors(spec)  # the twin's sensors first, at the same addresses
+        for g, anchor in zip(sc.grippers, self.anchors):
+            s = spec.add_sensor()
+            s.name = f"{_SENSOR_PREFIX}pos:{g.name}"
+            s.type = mujoco.mjtSensor.mjSENS_FRAMEPOS
+            s.objtype = mujoco.mjtObj.mjOBJ_BODY
+            s.objname = sc.object_body
+            s.reftype = mujoco.mjtObj.mjOBJ_BODY
+            s.refname = base.body(anchor).name
+        self.rotational = np.flatnonzero(twin.rotational)
+        for a in self.rotational:
+            s = spec.add_sensor()
+            s.name = f"{_SENSOR_PREFIX}q:{base.actuator(int(a)).name}"
+            s.type = mujoco.mjtSensor.mjSENS_ACTUATORPOS
+            s.objtype = mujoco.mjtObj.mjOBJ_ACTUATOR
+            s.objname = base.actuator(int(a)).name
+        self.model = spec.compile()
+        twin.write_parameters(self.model, sc.box.nominal[None, :])
+        nsd = twin.nsensordata
+        ngrip = len(sc.grippers)
+        self.pos = slice(nsd, nsd + 3 * ngrip)
+        self.q = slice(self.pos.stop, self.pos.stop + self.rotational.size)
+        self.projectors = np.stack([_closing_projector(base, g.geoms, a)
+                                    for g, a in zip(sc.grippers, self.anchors)])
+
+
+def _gripper_anchor(model: mujoco.MjModel, geoms: Sequence[str]) -> int:
+    """The deepest body that is an ancestor of every geom of a gripper (its base)."""
+    chains = []
+    for name in geoms:
+        body = int(model.geom_bodyid[model.geom(name).id])
+        chain = [body]
+        while body != 0:
+            body = int(model.body_parentid[body])
+            chain.append(body)
+        chains.append(chain)
+    return next(b for b in chains[0] if all(b in c for c in chains[1:]))
+
+
+def _closing_projector(model: mujoco.MjModel, geoms: Sequence[str], anchor: int) -> np.ndarray:
+    """Projector (3, 3) onto the plane normal to the gripper's slide (finger) axes in its frame."""
+    data = mujoco.MjData(model)
+    mujoco.mj_kinematics(model, data)
+    frame = data.xmat[anchor].reshape(3, 3)
+    axes = []
+    for name in geoms:
+        body = int(model.geom_bodyid[model.geom(name).id])
+        while body not in (anchor, 0):
+            for j in range(model.body_jntadr[body], model.body_jntadr[body] + model.body_jntnum[body]):
+                if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE:
+                    axes.append(frame.T @ data.xaxis[j])
+            body = int(model.body_parentid[body])
+    if not axes:
+        return np.eye(3)
+    u, s, _ = np.linalg.svd(np.array(axes).T, full_matrices=False)
+    basis = u[:, s > 1e-9 * s.max()]
+    return np.eye(3) - basis @ basis.T
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class BruteForce:
+    """Real outcomes of full rollouts for parameter samples.
+
+    Attributes:
+        samples: the parameter values, (n, k), columns in ``parameter_names`` order.
+        parameter_names: names of the k parameters.
+        classification: the outcomes.
+        diverged: the simulation diverged, (n,) bool.
+        nominal_completed: the nominal-parameter run (the reference) completes the task.
+        n_steps: physics steps per rollout.
+        dt: physics step [s].
+        seconds: wall time of the rollouts and their classification [s].
+    """
+
+    samples: np.ndarray
+    parameter_names: tuple[str, ...]
+    classification: Classification
+    diverged: np.ndarray
+    nominal_completed: bool
+    n_steps: int
+    dt: float
+    seconds: float
+
+    @property
+    def outcome(self) -> tuple[Outcome, ...]:
+        return self.classification.outcome
+
+    @property
+    def failed(self) -> np.ndarray:
+        """(n,) bool: the real outcome is anything but SUCCESS."""
+        return self.classification.failed
+
+
+def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
+                criteria: OutcomeCriteria = OutcomeCriteria(), chunk: int = 16,
+                nthread: int = 0) -> BruteForce:
+    """Run the whole trajectory once per parameter sample and classify each real outcome.
+
+    The samples run in chunks of at most ``chunk`` simulations through
+    :func:`critmoment.recording.simulate` (``mujoco.batch.Batch.rollout``, ``nthread``
+    threads), on the twin's model with sensors appended for the object's position in each
+    gripper and the joints' positions; each chunk is classified and dropped before the next,
+    so memory stays at about ``chunk × T × nsensordata × 8`` bytes. The nominal parameters run
+    first, as the reference of the drop, slip and tracking criteria.
+
+    Args:
+        traj: the trajectory.
+        twin: the twin.
+        samples: parameter values, (n, k) in the box's column order.
+        criteria: the outcome tolerances.
+        chunk: most simulations per batch call.
+        nthread: threads (0: all CPUs).
+
+    Returns:
+        The :class:`BruteForce` result.
+    """
+    t_start = time.perf_counter()
+    box = twin.scenario.box
+    samples = box.check_samples(samples)
+    if samples.shape[0] == 0:
+        raise ParameterError(f"samples: expected at least one row of {box.names}, got none")
+    chunk = _check_int("chunk", chunk, 1)
+    nthread = _check_int("nthread", nthread, 0)
+    probe = _Probe(twin)
+    controls = prepare_controls(twin, traj)
+    state0 = initial_state(twin, traj)
+    dt = float(twin.model.opt.timestep)
+    everything = np.vstack([box.nominal[None, :], samples])
+    total = everything.shape[0]
+    n_chunks = -(-total // chunk)
+    size = -(-total // n_chunks)  # equal chunks: at most two batch sizes
+    batches: dict[int, mujoco.batch.Batch] = {}
+    reference = None
+    parts, diverged = [], []
+    for start in range(0, total, size):
+        rows = everything[start:start + size]
+        batch = batches.get(rows.shape[0])
+        if batch is None:
+            batch = batches[rows.shape[0]] = mujoco.batch.Batch(probe.model, rows.shape[0],
+                                                                nthread=nthread)
+        out = simulate(twin, state0, controls, samples=rows, nthread=nthread, batch=batch)
+        mu = _object_friction(twin, batch)
+        frames = _Frames.read(twin, probe, out["sensordata"], mu)
+        if reference is None:
+            reference = frames.row(0)
+        parts.append(_classify_frames(frames, reference, controls, probe, dt, criteria,
+                                      out["diverged"], out["diverged_step"]))
+        diverged.append(out["diverged"])
+    result = Classification.concatenate(parts)
+    keep = slice(1, None)
+    classification = Classification(
+        outcome=result.outcome[1:], dt=dt, criteria=criteria,
+        **{f.name: getattr(result, f.name)[keep] for f in dataclasses.fields(Classification)
+           if f.name not in ("outcome", "dt", "criteria")})
+    return BruteForce(samples=samples, parameter_names=box.names, classification=classification,
+                      diverged=np.concatenate(diverged)[keep],
+                      nominal_completed=bool(result.completed[0]), n_steps=controls.shape[0],
+                      dt=dt, seconds=time.perf_counter() - t_start)
+
+
+def _object_friction(twin: Twin, batch: mujoco.batch.Batch) -> np.ndarray | float:
+    friction = batch.expanded("geom_friction")
+    if friction is None:
+        return twin.object_friction()
+    return friction[:, twin.object_geom_id, 0].copy()
+
+
+@dataclasses.dataclass(frozen=True)
+class _Frames:
+    """What the classification reads from a chunk of full rollouts (leading (c, T))."""
+
+    stage: np.ndarray
+    contact_gripper: np.ndarray
+    contact_support: np.ndarray
+    actuator_norm: np.ndarray
+    position: np.ndarray
+    q: np.ndarray
+
+    @classmethod
+    def read(cls, twin: Twin, probe: _Probe, sensordata: np.ndarray, mu) -> "_Frames":
+        mu = np.asarray(mu, dtype=np.float64)
+        sig = twin.signals(sensordata[..., :twin.nsensordata],
+                           mu=mu[:, None] if mu.ndim == 1 else mu)
+        c, t = sensordata.shape[:2]
+        return cls(stage=sig.stage, contact_gripper=sig.contact_gripper,
+                   contact_support=sig.contact_support,
+                   actuator_norm=sig.actuator_norm[..., probe.rotational],
+                   position=sensordata[..., probe.pos].reshape(c, t, -1, 3),
+                   q=sensordata[..., probe.q])
+
+    def row(self, i: int) -> "_Frames":
+        return _Frames(**{f.name: getattr(self, f.name)[i] for f in dataclasses.fields(self)})
+
+    @property
+    def held(self) -> np.ndarray:
+        return self.contact_gripper & ~self.contact_support[..., None]
+
+
+def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, probe: _Probe,
+                     dt: float, criteria: OutcomeCriteria, diverged: np.ndarray,
+                     diverged_step: np.ndarray) -> Classification:
+    target = controls[:, probe.rotational]
+    excess = np.abs(frames.q - target[None]) - np.abs(reference.q - target)[None]
+    slip = grip_slip(frames.position, reference.position, frames.held, reference.held,
+                     projectors=probe.projectors)
+    nominal_carried = ~reference.contact_support & reference.contact_gripper.any(axis=-1)
+    return classify(dt=dt, stage=frames.stage, contact_gripper=frames.contact_gripper,
+                    contact_support=frames.contact_support, nominal_carried=nominal_carried,
+                    actuator_norm=frames.actuator_norm, tracking_excess=excess, slip=slip,
+                    diverged=diverged, diverged_step=diverged_step, criteria=criteria)
+
+
+# --------------------------------------------------------------------------
+# sparse prediction
+# --------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class Prediction:
+    """The audit's sparse prediction for parameter samples.
+
+    Attributes:
+        samples: the parameter values, (n, k).
+        moments: the audited critical moments.
+        steps: their physics steps as evaluated (clipped to T − horizon), (m,) int.
+        envelope_steps: extra steps of the envelope check, (e,) int (empty without one).
+        horizon: physics steps per sparse evaluation.
+        mode: STEP or SOLVE.
+        cost: highest cost over the moments (and the envelope), (n,); +inf where diverged.
+        cost_moments: highest cost over the moments alone, (n,).
+        failed: predicted to fail, (n,) bool.
+        nominal_completed: the frequent rollout completes the task.
+        require_task: whether an incomplete nominal rollout makes every sample fail.
+        seconds: wall time of the sparse method: frequent rollout, moment detection and
+            sparse evaluations [s].
+        timings: that time per stage [s].
+    """
+
+    samples: np.ndarray
+    moments: tuple[Moment, ...]
+    steps: np.ndarray
+    envelope_steps: np.ndarray
+    horizon: int
+    mode: sp.SparseMode
+    cost: np.ndarray
+    cost_moments: np.ndarray
+    failed: np.ndarray
+    nominal_completed: bool
+    require_task: bool
+    seconds: float
+    timings: Mapping[str, float]
+
+
+def envelope_steps(recording: Recording, *, spacing: float, horizon: int = 1) -> np.ndarray:
+    """Steps every ``spacing`` seconds over the phase where the nominal run carries the object.
+
+    Args:
+        recording: the frequent rollout.
+        spacing: time between two envelope steps [s].
+        horizon: the sparse horizon (steps are kept at most T − horizon).
+
+    Returns:
+        (e,) int steps, empty when the object is never carried.
+    """
+    spacing = _check_positive("spacing", spacing)
+    sig = recording.signals
+    carried = ~np.asarray(sig.contact_support, bool) & np.asarray(sig.contact_gripper,
+                                                                  bool).any(axis=-1)
+    where = np.flatnonzero(carried)
+    if where.size == 0:
+        return np.zeros(0, dtype=np.int64)
+    stride = max(1, int(round(spacing / recording.dt)))
+    steps = np.arange(where[0], where[-1] + 1, stride)
+    steps = steps[carried[steps]]
+    return np.unique(np.minimum(steps, recording.n_steps - horizon)).astype(np.int64)
+
+
+def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int | None = None,
+            mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int = 4,
+            envelope: float | None = None, require_task: bool = True,
+            nthread: int = 0) -> Prediction:
+    """The audit's sparse prediction for parameter samples (the method under test).
+
+    Runs what :func:`critmoment.analysis.analyze` runs to decide which samples fail: the
+    frequent rollout, :func:`critmoment.analysis.detect_moments` with the evaluator's horizon
+    (the first ``max_moments`` moments), and one sparse evaluation per moment and sample. A
+    sample fails where its cost exceeds the scenario's threshold (or diverges) at any
+    moment, or, with ``require_task``, everywhere when the nominal rollout does not complete
+    the task.
+
+    Args:
+        traj: the trajectory.
+        twin: the twin.
+        samples: parameter values, (n, k).
+        horizon: physics steps per sparse evaluation (default: the scenario's).
+        mode: STEP or SOLVE (horizon 1).
+        max_moments: moments audited.
+        envelope: if given, also evaluate every ``envelope`` seconds over the phase where the
+            nominal run carries the object (:func:`envelope_steps`) [s].
+        require_task: an incomplete nominal rollout makes every sample fail.
+        nthread: threads (0: all CPUs).
+
+    Returns:
+        The :class:`Prediction`.
+    """
+    max_moments = _check_int("max_moments", max_moments, 1)
+    samples = twin.scenario.box.check_samples(samples)
+    timings: dict[str, float] = {}
+    t0 = time.perf_counter()
+    rec = rollout(traj, twin=twin)
+    t1 = time.perf_counter()
+    timings["rollout"] = t1 - t0
+    evaluator = sp.SparseEvaluator(rec, twin, horizon=horizon, mode=mode, nthread=nthread)
+    h = evaluator.horizon
+    moments = tuple(detect_moments(rec, twin, evaluator=evaluator, max_moments=max_moments))
+    steps = np.array([min(m.step, rec.n_steps - h) for m in moments], dtype=np.int64)
+    t2 = time.perf_counter()
+    timings["moments"] = t2 - t1
+    extra = (envelope_steps(rec, spacing=envelope, horizon=h) if envelope is not None
+             else np.zeros(0, dtype=np.int64))
+    extra = np.setdiff1d(extra, steps)
+    every = np.concatenate([steps, extra])
+    n = samples.shape[0]
+    if every.size:
+        res = evaluator.evaluate(every, samples)
+        cost = np.where(res.diverged, np.inf, res.cost)
+        cost_all = cost.max(axis=0)
+        cost_moments = cost[:steps.size].max(axis=0) if steps.size else np.zeros(n)
+        failed = res.failed_any
+    else:
+        cost_all = cost_moments = np.zeros(n)
+        failed = np.zeros(n, dtype=bool)
+    timings["sparse evaluation"] = time.perf_counter() - t2
+    nominal_completed = rec.completed
+    if require_task and not nominal_completed:
+        failed = np.ones(n, dtype=bool)
+    return Prediction(samples=samples, moments=moments, steps=steps, envelope_steps=extra,
+                      horizon=h, mode=evaluator.mode, cost=cost_all, cost_moments=cost_moments,
+                      failed=np.asarray(failed, dtype=bool), nominal_completed=nominal_completed,
+                      require_task=bool(require_task), seconds=time.perf_counter() - t0,
+                      timings=timings)
+
+
+# --------------------------------------------------------------------------
+# comparison
+# --------------------------------------------------------------------------
+
+
+def confusion_counts(predicted_failed: np.ndarray, real_failed: np.ndarray) -> dict[str, int]:
+    """Confusion matrix of predictions against real outcomes.
+
+    Args:
+        predicted_failed: the audit predicts failure, (n,) bool.
+        real_failed: the full rollout fails, (n,) bool.
+
+    Returns:
+        ``{"true_safe", "false_safe", "true_unsafe", "false_unsafe"}`` counts: predicted
+        safe and succeeded, predicted safe and failed, predicted unsafe and failed, predicted
+        unsafe and succeeded.
+    """
+    p = np.asarray(predicted_failed, dtype=bool)
+    r = np.asarray(real_failed, dtype=bool)
+    if p.shape != r.shape or p.ndim != 1:
+        raise ParameterError(
+            f"expected predicted_failed and real_failed of the same shape (n,), got {p.shape} "
+            f"and {r.shape}")
+    return {"true_safe": int((~p & ~r).sum()), "false_safe": int((~p & r).sum()),
+            "true_unsafe": int((p & r).sum()), "false_unsafe": int((p & ~r).sum())}
+
+
+@dataclasses.dataclass(frozen=True)
+class MissedFailure:
+    """A real failure the audit called safe.
+
+    Attributes:
+        sample: index of the sample.
+        values: its parameter values, by name.
+        outcome: its real outcome.
+        max_cost: its highest sparse cost over the audited steps.
+        first_failure_step: step of its earliest failure event (−1 if undetermined).
+        first_failure_time: that step's time [s] (nan if undetermined).
+        nearest_moment: the audited moment step nearest to the failure (−1 without moments).
+        offset: failure time minus that moment's time [s] (nan if undetermined).
+    """
+
+    sample: int
+    values: Mapping[str, float]
+    outcome: Outcome
+    max_cost: float
+    first_failure_step: int
+    first_failure_time: float
+    nearest_moment: int
+    offset: float
+
+    def to_json(self) -> dict:
+        return {"sample": self.sample, "values": dict(self.values),
+                "outcome": self.outcome.value, "max_cost": _finite(self.max_cost),
+                "first_failure_step": self.first_failure_step,
+                "first_failure_time": _finite(self.first_failure_time),
+                "nearest_moment": self.nearest_moment, "offset": _finite(self.offset)}
+
+
+def _finite(x: float) -> float | None:
+    x = float(x)
+    return x if math.isfinite(x) else None
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class ValidationResult:
+    """Sparse predictions against brute-force outcomes for one trajectory.
+
+    Attributes:
+        trajectory: the trajectory's source.
+        parameter_names: names of the k parameters.
+        samples: the parameter values, (n, k).
+        outcome: the real outcome per sample.
+        real_failed: the full rollout failed, (n,) bool.
+        predicted_failed: the audit predicted failure, (n,) bool.
+        max_cost: highest sparse cost per sample over the audited steps, (n,).
+        first_failure_step: earliest failure event per sample, −1 for none, (n,) int.
+        moment_steps: the audited moments' steps, (m,) int.
+        envelope_steps: the envelope check's extra steps, (e,) int.
+        horizon: sparse horizon [physics steps].
+        mode: sparse mode.
+        max_moments: moments audited.
+        dt: physics step [s].
+        sparse_seconds: wall time of the sparse method (frequent rollout, moments,
+            evaluations) [s].
+        brute_force_seconds: wall time of the full rollouts and their classification [s].
+        nominal_completed: the nominal run completes the task.
+        criteria: the outcome tolerances.
+        missed: the false safes, with where they fail relative to the moments.
+        seed: Sobol seed of the samples, or None when the samples were given.
+    """
+
+    trajectory: str
+    parameter_names: tuple[str, ...]
+    samples: np.ndarray
+    outcome: tuple[Outcome, ...]
+    real_failed: np.ndarray
+    predicted_failed: np.ndarray
+    max_cost: np.ndarray
+    first_failure_step: np.ndarray
+    moment_steps: np.ndarray
+    envelope_steps: np.ndarray
+    horizon: int
+    mode: sp.SparseMode
+    max_moments: int
+    dt: float
+    sparse_seconds: float
+    brute_force_seconds: float
+    nominal_completed: bool
+    criteria: OutcomeCriteria
+    missed: tuple[MissedFailure, ...]
+    seed: int | None = None
+
+    @property
+    def n_samples(self) -> int:
+        return int(self.samples.shape[0])
+
+    @property
+    def confusion(self) -> dict[str, int]:
+        """``{"true_safe", "false_safe", "true_unsafe", "false_unsafe"}`` counts."""
+        return confusion_counts(self.predicted_failed, self.real_failed)
+
+    @property
+    def false_safe_rate(self) -> float | None:
+        """false_safe / (false_safe + true_unsafe): the share of real failures called safe;
+        None when no sample really fails."""
+        c = self.confusion
+        failures = c["false_safe"] + c["true_unsafe"]
+        return c["false_safe"] / failures if failures else None
+
+    @property
+    def agreement(self) -> float:
+        """(true_safe + true_unsafe) / n."""
+        c = self.confusion
+        return (c["true_safe"] + c["true_unsafe"]) / self.n_samples
+
+    @property
+    def compute_ratio(self) -> float:
+        """sparse_seconds / brute_force_seconds."""
+        return self.sparse_seconds / self.brute_force_seconds if self.brute_force_seconds else math.nan
+
+    def outcome_counts(self) -> dict[str, int]:
+        """Samples per real outcome."""
+        return {o.value: sum(1 for x in self.outcome if x is o) for o in Outcome}
+
+    def to_json(self, *, timings: bool = True) -> dict:
+        """JSON-able document (schema ``critmoment.validation/1``).
+
+        Args:
+            timings: include the wall times (off for byte-comparable documents).
+        """
+        doc = {
+            "schema": VALIDATION_SCHEMA,
+            "trajectory": self.trajectory,
+            "samples": self.n_samples,
+            "seed": self.seed,
+            "parameters": list(self.parameter_names),
+            "horizon": self.horizon,
+            "mode": self.mode.value,
+            "max_moments": self.max_moments,
+            "moment_steps": [int(s) for s in self.moment_steps],
+            "envelope_steps": [int(s) for s in self.envelope_steps],
+            "nominal_completed": self.nominal_completed,
+            "criteria": dataclasses.asdict(self.criteria),
+            "confusion": self.confusion,
+            "false_safe_rate": self.false_safe_rate,
+            "agreement": self.agreement,
+            "outcomes": self.outcome_counts(),
+            "missed": [m.to_json() for m in self.missed],
+            "per_sample": [
+                {"values": dict(zip(self.parameter_names, map(float, self.samples[i]))),
+                 "outcome": self.outcome[i].value, "real_failed": bool(self.real_failed[i]),
+                 "predicted_failed": bool(self.predicted_failed[i]),
+                 "max_cost": _finite(self.max_cost[i]),
+                 "first_failure_step": int(self.first_failure_step[i])}
+                for i in range(self.n_samples)],
+        }
+        if timings:
+            doc["sparse_seconds"] = self.sparse_seconds
+            doc["brute_force_seconds"] = self.brute_force_seconds
+            doc["compute_ratio"] = self.compute_ratio
+        return doc
+
+    def summary_text(self) -> str:
+        """A few lines for the terminal."""
+        c = self.confusion
+        fsr = self.false_safe_rate
+        counts = ", ".join(f"{k} {v}" for k, v in self.outcome_counts().items() if v)
+        lines = [
+            f"validation of {self.trajectory}: {self.n_samples} samples, horizon "
+            f"{self.horizon} ({self.mode.value}), moments at steps "
+            f"{[int(s) for s in self.moment_steps]}"
+            + (f" + {self.envelope_steps.size} envelope steps" if self.envelope_steps.size else ""),
+            f"real outcomes: {counts}",
+            f"confusion: true safe {c['true_safe']}, false safe {c['false_safe']}, true unsafe "
+            f"{c['true_unsafe']}, false unsafe {c['false_unsafe']}",
+            f"false-safe rate {'n/a (no real failure)' if fsr is None else f'{fsr:.3f}'}, "
+            f"agreement {self.agreement:.3f}",
+            f"time: sparse {self.sparse_seconds:.2f} s, brute force "
+            f"{self.brute_force_seconds:.2f} s (ratio {self.compute_ratio:.3g})",
+        ]
+        for m in self.missed:
+            vals = ", ".join(f"{k} = {v:.3g}" for k, v in m.values.items())
+            where = ("" if m.first_failure_step < 0 else
+                     f" first fails at t = {m.first_failure_time:.2f} s, "
+                     f"{m.offset:+.2f} s from the moment at step {m.nearest_moment}")
+            lines.append(f"  missed: sample {m.sample} ({vals}) {m.outcome.value}, max cost "
+                         f"{m.max_cost:.3g};{where}")
+        return "\n".join(lines)
+
+
+def compare(brute: BruteForce, prediction: Prediction, *, trajectory: str = "",
+            max_moments: int | None = None, seed: int | None = None) -> ValidationResult:
+    """Compare a sparse prediction with the brute-force outcomes of the same samples.
+
+    Args:
+        brute: the brute-force result.
+        prediction: the sparse prediction.
+        trajectory: the trajectory's source, for the report.
+        max_moments: the moments audited (default: as many as the prediction has).
+        seed: the Sobol seed of the samples, for the report.
+
+    Returns:
+        The :class:`ValidationResult`.
+    """
+    if brute.samples.shape != prediction.samples.shape or not np.array_equal(
+            brute.samples, prediction.samples):
+        raise ParameterError(
+            f"expected the brute force and the prediction of the same samples, got shapes "
+            f"{brute.samples.shape} and {prediction.samples.shape} (or different values)")
+    real = brute.failed
+    pred = prediction.failed
+    first = brute.classification.first_failure_step
+    dt = brute.dt
+    moments = prediction.steps
+    missed = []
+    for i in np.flatnonzero(~pred & real):
+        step = int(first[i])
+        if step >= 0 and moments.size:
+            j = int(np.argmin(np.abs(moments - step)))
+            nearest, offset = int(moments[j]), (step - int(moments[j])) * dt
+        else:
+            nearest, offset = (int(moments[0]) if moments.size and step < 0 else -1), math.nan
+        missed.append(MissedFailure(
+            sample=int(i), values=dict(zip(brute.parameter_names, map(float, brute.samples[i]))),
+            outcome=brute.outcome[i], max_cost=float(prediction.cost[i]),
+            first_failure_step=step, first_failure_time=step * dt if step >= 0 else math.nan,
+            nearest_moment=nearest if step >= 0 else -1, offset=offset))
+    return ValidationResult(
+        trajectory=trajectory, parameter_names=brute.parameter_names, samples=brute.samples,
+        outcome=brute.outcome, real_failed=real, predicted_failed=pred,
+        max_cost=prediction.cost, first_failure_step=first, moment_steps=moments,
+        envelope_steps=prediction.envelope_steps, horizon=prediction.horizon,
+        mode=prediction.mode,
+        max_moments=len(prediction.moments) if max_moments is None else max_moments, dt=dt,
+        sparse_seconds=prediction.seconds, brute_force_seconds=brute.seconds,
+        nominal_completed=brute.nominal_completed, criteria=brute.classification.criteria,
+        missed=tuple(missed), seed=seed)
+
+
+def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | None = 0,
+             samples: np.ndarray | None = None, horizon: int | None = None,
+             mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int = 4,
+             envelope: float | None = None, require_task: bool = True,
+             criteria: OutcomeCriteria = OutcomeCriteria(), chunk: int = 16,
+             nthread: int = 0) -> ValidationResult:
+    """Check the audit's sparse verdicts against brute-force full rollouts.
+
+    Args:
+        traj: the trajectory.
+        twin: the twin.
+        n_samples: Sobol samples of the uncertainty box (a power of 2 is best).
+        seed: Sobol seed.
+        samples: explicit parameter values (n, k) instead of the Sobol samples.
+        horizon: sparse horizon [physics steps] (default: the scenario's).
+        mode: sparse mode, STEP or SOLVE (horizon 1).
+        max_moments: moments audited.
+        envelope: spacing of the envelope check over the carrying phase [s], or None.
+        require_task: an incomplete nominal rollout makes every prediction a failure.
+        criteria: the outcome tolerances.
+        chunk: most full rollouts per batch call.
+        nthread: threads (0: all CPUs).
+
+    Returns:
+        The :class:`ValidationResult`.
+    """
+    box = twin.scenario.box
+    if samples is None:
+        n_samples = _check_int("n_samples", n_samples, 1)
+        samples = sp.sweep_samples(box, n=n_samples, seed=seed)
+        used_seed = seed
+    else:
+        samples, used_seed = box.check_samples(samples), None
+    prediction = predict(traj, twin=twin, samples=samples, horizon=horizon, mode=mode,
+                         max_moments=max_moments, envelope=envelope, require_task=require_task,
+                         nthread=nthread)
+    brute = brute_force(traj, twin=twin, samples=samples, criteria=criteria, chunk=chunk,
+                        nthread=nthread)
+    return compare(brute, prediction, trajectory=traj.source, max_moments=max_moments,
+                   seed=used_seed)
