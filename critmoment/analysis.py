@@ -224,10 +224,11 @@ def detect_moments(recording: Recording, twin: Twin, *, evaluator: sp.SparseEval
     """Candidate critical moments, ranked by sensitivity over the box.
 
     Change points and contact events (:class:`~critmoment.moments.MomentDetector`) are
-    scored with :func:`sensitivity_function`; then moments are taken greedily in score order,
-    skipping any closer than ``min_gap`` to one already taken, so that one long sensitive
-    phase (carrying the object) does not crowd out the others (the hand-over). A change point
-    shortly after a contact event names that event in its reason.
+    scored with :func:`sensitivity_function`. Contact events (grasp, lift-off, hand-over, ...)
+    are always kept; change points fill the remaining places in score order, skipping any
+    closer than ``min_gap`` to a moment already taken, so that one long sensitive phase
+    (carrying the object) does not crowd out the others. A change point shortly after a
+    contact event names that event in its reason.
 
     Args:
         recording: the frequent rollout.
@@ -256,21 +257,24 @@ def detect_moments(recording: Recording, twin: Twin, *, evaluator: sp.SparseEval
     events = sorted((m for m in ranked if m.label is not MomentLabel.CHANGE_POINT),
                     key=lambda m: m.step)
     gap = int(round(min_gap / recording.dt))
-    chosen: list[Moment] = []
+    # contact events are always candidates; change points fill the other places, at least
+    # min_gap away from everything taken, in order of sensitivity
+    chosen: list[Moment] = list(events[:max_moments])
     for m in ranked:
-        if len(chosen) == max_moments:
+        if len(chosen) >= max_moments:
             break
-        if any(abs(m.step - c.step) < gap for c in chosen):
+        if m.label is not MomentLabel.CHANGE_POINT or any(
+                abs(m.step - c.step) < gap for c in chosen):
             continue
-        if m.label is MomentLabel.CHANGE_POINT:
-            before = [e for e in events if 0 < m.step - e.step <= 4 * gap]
-            if before:
-                e = before[-1]
-                m = dataclasses.replace(
-                    m, reason=f"{(m.step - e.step) * recording.dt:.2f} s after "
-                              f"{e.label.value} ({e.reason.split(';')[0]}); {m.reason}")
-        chosen.append(dataclasses.replace(m, reason=_dedupe(m.reason)))
-    return chosen
+        before = [e for e in events if 0 < m.step - e.step <= 4 * gap]
+        if before:
+            e = before[-1]
+            m = dataclasses.replace(
+                m, reason=f"{(m.step - e.step) * recording.dt:.2f} s after {e.label.value} "
+                          f"({e.reason.split(';')[0]}); {m.reason}")
+        chosen.append(m)
+    chosen.sort(key=lambda m: (-m.score, m.step))
+    return [dataclasses.replace(m, reason=_dedupe(m.reason)) for m in chosen]
 
 
 def _dedupe(reason: str) -> str:

@@ -99,7 +99,7 @@ class Outcome(enum.Enum):
     NOT_COMPLETED = "not_completed"
 
 
-#: precedence of the failure outcomes, most severe first
+#: precedence of the failure outcomes: the first that applies names the sample's outcome
 _PRECEDENCE = (Outcome.DIVERGED, Outcome.MOTOR, Outcome.DROPPED, Outcome.SLIPPED,
                Outcome.NOT_COMPLETED)
 
@@ -324,24 +324,20 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
     last4 = t - 1 - np.argmax(at4[:, ::-1], axis=1)
     final_loss = np.where(ever4 & (last4 < t - 1), last4 + 1, -1)
 
-    outcome, first = [], np.full(n, -1, dtype=np.int64)
-    for i in range(n):
-        events = {Outcome.DIVERGED: diverged_step[i] if diverged[i] else None,
-                  Outcome.MOTOR: motor_step[i] if motor_step[i] >= 0 else None,
-                  Outcome.DROPPED: (drop_step[i] if drop_step[i] >= 0 and not completed[i]
-                                    else None),
-                  Outcome.SLIPPED: (slip_step[i] if slip_step[i] >= 0
-                                    and (c.slip_is_failure or not completed[i]) else None),
-                  Outcome.NOT_COMPLETED: None if completed[i] else final_loss[i]}
-        if diverged[i] and diverged_step[i] < 0:
-            events[Outcome.DIVERGED] = -1
-        present = [o for o in _PRECEDENCE if events[o] is not None]
-        if not present:
-            outcome.append(Outcome.SUCCESS)
-            continue
-        outcome.append(present[0])
-        steps = [int(events[o]) for o in present if events[o] is not None and events[o] >= 0]
-        first[i] = min(steps) if steps else -1
+    drop_ok = (drop_step >= 0) & ~completed
+    # a motor event after the object is lost is a consequence (the arms move unloaded, may
+    # touch each other), not the cause
+    motor_ok = (motor_step >= 0) & ~(drop_ok & (motor_step > drop_step))
+    slip_ok = (slip_step >= 0) & (c.slip_is_failure | ~completed)
+    conditions = [diverged, motor_ok, drop_ok, slip_ok, ~completed]
+    codes = np.select(conditions, np.arange(len(_PRECEDENCE)), default=-1)
+    outcome = tuple(Outcome.SUCCESS if k < 0 else _PRECEDENCE[k] for k in codes)
+    event_steps = np.stack([np.where(diverged, diverged_step, -1),
+                            np.where(motor_ok, motor_step, -1),
+                            np.where(drop_ok, drop_step, -1),
+                            np.where(slip_ok, slip_step, -1)], axis=-1)
+    first = _earliest(event_steps)
+    first = np.where(first < 0, np.where(~completed, final_loss, -1), first)
     return Classification(
         outcome=tuple(outcome), completed=completed, first_failure_step=first,
         slip_step=slip_step.astype(np.int64), drop_step=drop_step.astype(np.int64),

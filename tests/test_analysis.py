@@ -113,3 +113,41 @@ def test_bad_options():
         AnalyzeOptions(min_success=1.5)
     with pytest.raises(ParameterError, match="horizon"):
         AnalyzeOptions(horizon=0)
+
+
+@pytest.mark.parametrize("seed", [0, 7, 14])
+def test_moments_include_lift_off_and_hand_over(twin, seed):
+    import sys
+    from pathlib import Path
+
+    from critmoment import demos
+    from critmoment.recording import rollout
+
+    sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "benchmarks"))
+    from moments_recall import ground_truth
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        rec = rollout(demos.scripted_transfer(seed, twin=twin), twin=twin)
+    moments = analysis.detect_moments(rec, twin)
+    assert len(moments) <= 8
+    steps = np.array([m.step for m in moments])
+    lift, handover = ground_truth(rec, twin.scenario)
+    assert np.min(np.abs(steps - lift)) <= 10
+    assert np.min(np.abs(steps - handover)) <= 10
+    labels = {m.label.value for m in moments}
+    assert {"lift-off", "hand-over"} <= labels
+    scores = [m.score for m in moments]
+    assert scores == sorted(scores, reverse=True)
+
+
+def test_untouched_box_has_no_critical_moment(twin):
+    from critmoment import suite
+    from critmoment.recording import rollout
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        rec = rollout(suite.make("no_grasp", seed=0, twin=twin), twin=twin)
+    moments = analysis.detect_moments(rec, twin)
+    assert moments
+    assert all(not m.critical and m.score < twin.scenario.cost.threshold for m in moments)

@@ -581,3 +581,14 @@ def test_state_round_trip(twin):
     mujoco.mj_step(twin.model, other)
     np.testing.assert_array_equal(twin.get_state(twin.model, other),
                                   twin.get_state(twin.model, data))
+
+
+def test_carried_object_without_grip_is_falling(twin):
+    # off the support and touched by no gripper: if the nominal run carries it here, it is
+    # falling (FOS 0, the cost fails); if nobody carries it, there is no grip demand (inf)
+    sd = np.zeros((2, twin.nsensordata))
+    sig = twin.signals(sd, carried=np.array([True, False]))
+    assert sig.fos_grasp[0] == 0.0 and np.isposinf(sig.fos_grasp[1])
+    assert sig.cost[0] > twin.scenario.cost.threshold >= sig.cost[1]
+    # the default (no nominal flags): carried only where a gripper holds it off the support
+    assert np.isposinf(twin.signals(sd).fos_grasp).all()
