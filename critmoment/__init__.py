@@ -8,6 +8,7 @@ The pipeline, one stage per module::
 ``critmoment.analyze(traj, scenario)`` chains the stages; each stage can be called alone.
 """
 
+from critmoment.analysis import AnalyzeOptions, AuditReport, Verdict, analyze
 from critmoment.exceptions import (CritmomentError, InputFileError, ParameterError,
                                    ScenarioError, SimulationDivergedError, TrajectoryError)
 from critmoment.moments import Moment, MomentDetector, MomentLabel, find_moments
@@ -22,6 +23,10 @@ from critmoment.twin import Signals, Twin
 __version__ = "0.1.0"
 
 __all__ = [
+    "AnalyzeOptions",
+    "AuditReport",
+    "Verdict",
+    "analyze",
     "CritmomentError",
     "InputFileError",
     "ParameterError",

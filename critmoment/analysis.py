@@ -459,13 +459,15 @@ def _crossing(samples_j: np.ndarray, cost: np.ndarray, threshold: float, nominal
 
 
 def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
-            twin: Twin | None = None, options: AnalyzeOptions | None = None,
+            seed: int | None = None, twin: Twin | None = None,
+            options: AnalyzeOptions | None = None,
             progress: bool | Callable[[str], None] = False) -> AuditReport:
     """Audit a trajectory: is it safe over the scenario's uncertainty box?
 
     Args:
         trajectory: the trajectory to audit.
         scenario: a Scenario, a path or bundled name, or None for the bundled one.
+        seed: shortcut for ``options.seed``.
         twin: a twin to reuse (its scenario wins).
         options: audit options (:class:`AnalyzeOptions`).
         progress: True to print stage progress on stderr, or a callable taking a message.
@@ -474,6 +476,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         The audit report.
     """
     opt = options or AnalyzeOptions()
+    if seed is not None:
+        opt = dataclasses.replace(opt, seed=int(seed))
     if twin is None:
         twin = Twin(scenario if isinstance(scenario, Scenario) else load_scenario(scenario))
     sc = twin.scenario

@@ -274,8 +274,12 @@ def _html(report, doc, images) -> str:
         an = mr.get("analytic") or {}
         an_txt = ""
         if an:
-            an_txt = e(", ".join(f"{k}: {v}" for k, v in an.items()
-                                 if k in ("limiting_joint", "min_fos_motor", "contact_critical_mass")))
+            def fmt(v):
+                return f"{v:.3g}" if isinstance(v, float) else str(v)
+
+            an_txt = e(", ".join(f"{k.replace('_', ' ')}: {fmt(an[k])}" for k in (
+                "limiting_joint", "motor_critical_mass", "contact_critical_mass_threshold")
+                if an.get(k) is not None))
         rows.append(
             f"<tr><td>{mr['step']}<br><span class=muted>{mr['time']:.2f} s</span></td>"
             f"<td>{e(mr['label'])}</td><td>{e(mr['reason'])}</td><td>{e(worst)}</td>"

@@ -50,6 +50,12 @@ def test_error_hierarchy():
 
 
 def test_version_matches_pyproject():
-    pyproject = Path(critmoment.__file__).resolve().parent.parent / "pyproject.toml"
+    from importlib.metadata import PackageNotFoundError, version
+
+    pyproject = Path(__file__).resolve().parent.parent / "pyproject.toml"
     meta = tomllib.loads(pyproject.read_text())
     assert critmoment.__version__ == meta["project"]["version"]
+    try:  # the installed distribution, when there is one, carries the same version
+        assert version("critmoment") == critmoment.__version__
+    except PackageNotFoundError:
+        pass
