@@ -65,8 +65,8 @@ class AnalyzeOptions:
         confidence: confidence level of the P(success) interval.
         min_success: P(success) at which ``passes`` accepts a non-SAFE verdict.
         nthread: threads for MuJoCo's batch (0: all CPUs).
-        map_resolution: cells per axis of the mass × friction cost map, interpolated from the
-            Sobol sweep (0 to skip).
+        map_resolution: cells per axis of the mass × friction cost map, the nearest Sobol
+            sample's cost per cell (0 to skip).
         require_task: a nominal rollout that does not complete the scenario's task (stage 4
             reached and kept) makes the verdict UNSAFE.
     """
@@ -324,7 +324,14 @@ def safe_subbox(samples: np.ndarray, failed: np.ndarray, box, sides: Sequence[st
     if bad.shape[0] == 0:
         return {p.name: (p.low, p.high) for p in box.parameters}
     k = box.ndim
-    cands = [np.unique(np.concatenate([[1.0], bad[:, j]])) for j in range(k)]
+    # cut candidates: the failing samples' coordinates (at most 64 per axis, by quantile)
+    cands = []
+    for j in range(k):
+        c = np.unique(np.concatenate([[1.0], bad[:, j]]))
+        if c.size > 64:
+            c = np.unique(np.concatenate([[1.0], np.quantile(bad[:, j], np.linspace(0, 1, 63),
+                                                               method="lower")]))
+        cands.append(c)
     best, best_vol = None, 0.0
     if k <= 2:
         grids = np.meshgrid(*cands, indexing="ij")
@@ -590,21 +597,16 @@ def _select_samples(res: sp.SparseResult, cols: slice) -> sp.SparseResult:
 def _cost_map(res: sp.SparseResult, box, res_n: int):
     """Max cost over the moments on a grid of the first two parameters, from the Sobol sweep.
 
-    The sweep's samples are scattered over the whole box (other parameters included); the map
-    interpolates their worst cost linearly (nearest sample outside their hull), so it costs
-    no simulation.
+    Each cell shows the worst cost of the nearest Sobol sample (in the prior's unit square of
+    the two parameters; the others vary over the box), so the map costs no simulation.
     """
-    from scipy.interpolate import griddata
-
     u = box.to_unit(res.samples)[:, :2]
     worst = np.max(np.where(np.isfinite(res.cost), res.cost, np.nan), axis=0)
-    ok = np.isfinite(worst)
     grid_u = np.linspace(0.0, 1.0, res_n)
     g0, g1 = np.meshgrid(grid_u, grid_u, indexing="ij")
-    pts = np.stack([g0.ravel(), g1.ravel()], axis=1)
-    grid = griddata(u[ok], worst[ok], pts, method="linear")
-    near = griddata(u[ok], worst[ok], pts, method="nearest")
-    grid = np.where(np.isfinite(grid), grid, near).reshape(g0.shape)
+    cells = np.stack([g0.ravel(), g1.ravel()], axis=1)
+    d2 = ((cells[:, None, :] - u[None, :, :]) ** 2).sum(axis=-1)
+    grid = worst[np.argmin(d2, axis=1)].reshape(g0.shape)
     axes = box.from_unit(np.tile(grid_u[:, None], (1, box.ndim)))
     return (box.names[0], axes[:, 0], box.names[1], axes[:, 1], grid)
 

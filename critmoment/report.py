@@ -191,7 +191,7 @@ def plot_cost_map(report) -> Figure | None:
     thr = report.scenario.cost.threshold
     if np.nanmin(grid) < thr < np.nanmax(grid):
         ax.contour(a0, a1, grid.T, levels=[thr], colors="k", linewidths=1.2)
-    fig.colorbar(mesh, ax=ax, label="max cost over the moments (interpolated Sobol sweep)")
+    fig.colorbar(mesh, ax=ax, label="max cost over the moments (nearest Sobol sample)")
     box = report.scenario.box
     ax.plot(box.nominal[0], box.nominal[1], "w*", ms=12, mec="k", label="nominal")
     ax.set_xlabel(n0)
