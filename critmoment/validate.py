@@ -4,30 +4,36 @@ For every parameter sample of the uncertainty box, :func:`brute_force` re-runs t
 trajectory with that sample's physics (batched through :func:`critmoment.recording.simulate`,
 i.e. ``mujoco.batch.Batch.rollout`` on all threads) and :func:`classify` names the real
 outcome (:class:`Outcome`). :func:`predict` runs the audit's own sparse method on the same
-samples: the frequent rollout at nominal parameters, the audit's critical moments
-(:func:`critmoment.analysis.detect_moments`, the same selection :func:`critmoment.analysis.analyze`
-makes), and one sparse evaluation per moment and sample; a sample is predicted to fail when its
-cost exceeds the scenario's threshold at any audited moment (or diverges there), or when the
-nominal rollout itself does not complete the task (the audit then says UNSAFE whatever the
-parameters). :func:`compare` builds the confusion matrix; :func:`validate` chains the three.
+samples: the frequent rollout at nominal parameters, the audit's critical moments (the ranked
+candidates of :func:`critmoment.analysis.detect_moments`, the first ``max_moments`` of them, as
+:func:`critmoment.analysis.analyze` takes them), and one sparse evaluation per moment and
+sample; a sample is predicted to fail when its cost exceeds the scenario's threshold at any
+audited moment (or diverges there), or when the nominal rollout itself does not complete the
+task (the audit then says UNSAFE whatever the parameters). Two optional additions to the
+method are prototyped here: an *envelope* check (sparse evaluations every ~0.1 s of the
+carrying phase) and the *verification* of near-threshold safes by their own full rollout.
+:func:`compare` builds the confusion matrix; :func:`validate` chains the three.
 
 Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
 
 * ``DIVERGED``: the sample's simulation diverged (MuJoCo warning or non-finite readings).
 * ``MOTOR``: a rotational actuator's force stays at its limit (|force| ≥ ``saturation`` ×
   limit) for longer than ``motor_time``, or a rotational joint lags its target by more than the
-  nominal run does, by over ``tracking_tolerance``, for longer than ``tracking_time``.
+  nominal run does, by over ``tracking_tolerance``, for longer than ``tracking_time`` —
+  unless this happens only after the object was dropped (then it is a consequence).
 * ``DROPPED``: the task is not completed and, for longer than ``drop_time``, the object is not
-  carried (touches the support, or no gripper) at steps where the nominal run carries it.
+  carried (touches the support, or no gripper) at steps where the nominal run carries it; the
+  drop is the last such loss (an earlier one, a late lift, was recovered from).
 * ``SLIPPED``: the object moved in a holding gripper by more than ``slip_tolerance`` for
-  longer than ``slip_time``: its position in the frame of the gripper's base body, with the
-  component along the fingers' closing axes removed (squeezing is not slip), counted from the
-  step both the sample and the nominal run first hold it with that gripper, minus the nominal
-  run's own displacement, at steps where both hold it with that gripper. With
-  ``slip_is_failure`` (default) a run that slips counts as a failure even when it completes
-  the task; otherwise it is ``SUCCESS`` when completed.
-* ``NOT_COMPLETED``: the task (stage 4 reached and kept to the end, see
-  :func:`critmoment.recording.task_completed`) is not completed, and none of the above
+  longer than ``slip_time`` (see :func:`grip_slip`): its position in the frame of the
+  gripper's base body, along the pads (the fingers' closing axes removed: squeezing is not
+  slip), counted from the step both the sample and the nominal run first hold it with that
+  gripper, minus the nominal run's own displacement, at steps where the nominal run holds it
+  with that gripper alone (an object moves in a gripper that lets go: that is the release).
+  With ``slip_is_failure`` (default) a run that slips counts as a failure even when it
+  completes the task; otherwise it is ``SUCCESS`` when completed.
+* ``NOT_COMPLETED``: the task is not completed (:func:`ends_completed`: stage 4 at the end,
+  its final acquisition kept, losses up to ``drop_time`` ignored) and none of the above
   explains it (e.g. the object was never grasped, as in the nominal run itself).
 * ``SUCCESS``: completed, and none of the above.
 
@@ -56,7 +62,7 @@ import mujoco.batch
 import numpy as np
 
 from critmoment import sparse as sp
-from critmoment.analysis import detect_moments
+from critmoment.analysis import AnalyzeOptions, detect_moments
 from critmoment.exceptions import ParameterError
 from critmoment.moments import Moment
 from critmoment.recording import (Recording, initial_state, prepare_controls, rollout, simulate,
@@ -69,6 +75,7 @@ __all__ = [
     "OutcomeCriteria",
     "Classification",
     "classify",
+    "ends_completed",
     "grip_slip",
     "BruteForce",
     "brute_force",
@@ -167,6 +174,14 @@ def _check_int(name: str, value: Any, minimum: int) -> int:
 # --------------------------------------------------------------------------
 
 
+def _carried(contact_support: np.ndarray, contact_gripper: np.ndarray) -> np.ndarray:
+    """Where the object is carried: off its support and touched by a gripper, (...) bool.
+
+    The definition :class:`critmoment.sparse.SparseEvaluator` gates the grasp FOS with.
+    """
+    return ~np.asarray(contact_support, bool) & np.asarray(contact_gripper, bool).any(axis=-1)
+
+
 def _run_length(flags: np.ndarray) -> np.ndarray:
     """Length of the run of True ending at each step, (n, T) int (0 where False)."""
     t = flags.shape[-1]
@@ -182,6 +197,16 @@ def _first_run(flags: np.ndarray, min_len: int) -> np.ndarray:
     return np.where(hit, np.argmax(long, axis=-1) - min_len + 1, -1)
 
 
+def _last_run(flags: np.ndarray, min_len: int) -> np.ndarray:
+    """First step of the last run of at least ``min_len`` True values, (n,) int, −1 if none."""
+    length = _run_length(flags)
+    long = length >= min_len
+    hit = long.any(axis=-1)
+    end = flags.shape[-1] - 1 - np.argmax(long[:, ::-1], axis=-1)
+    start = end - length[np.arange(flags.shape[0]), end] + 1
+    return np.where(hit, start, -1)
+
+
 @dataclasses.dataclass(frozen=True, eq=False)
 class Classification:
     """Real outcomes of n full rollouts.
@@ -193,8 +218,9 @@ class Classification:
             drop, motor, divergence; for NOT_COMPLETED the start of the final loss of stage
             4, or −1 when stage 4 was never reached); −1 for a success, (n,) int.
         slip_step: first step of the first slip, −1 if none, (n,) int.
-        drop_step: first step of the first loss of the object where the nominal run carries
-            it, −1 if none (counted as DROPPED only when not completed), (n,) int.
+        drop_step: first step of the last loss of the object where the nominal run carries
+            it (the drop; an earlier loss, such as a lift that starts late, was recovered
+            from), −1 if none (counted as DROPPED only when not completed), (n,) int.
         motor_step: first step of the first motor saturation or tracking loss, −1 if none,
             (n,) int.
         max_slip: largest displacement in a holding gripper relative to the nominal run [m],
@@ -234,6 +260,35 @@ class Classification:
                   if f.name not in ("outcome", "dt", "criteria")}
         return Classification(outcome=tuple(o for p in parts for o in p.outcome),
                               dt=parts[0].dt, criteria=parts[0].criteria, **arrays)
+
+
+def ends_completed(stage: np.ndarray, *, dt: float, debounce: float = 0.02) -> np.ndarray:
+    """Whether each run ends with the task completed: its final acquisition of stage 4 kept.
+
+    Like :func:`critmoment.recording.task_completed` (stage 4 kept to the end, losses up to
+    ``debounce`` ignored, a loss reaching the end never), except that losses of stage 4
+    *before* its final acquisition do not count: a receiver that bumps into the object before
+    it closes on it (stage 4 for a few steps, then 2 again) and then takes it over completes
+    the task. ACT itself counts an episode as a success once stage 4 is reached.
+
+    Args:
+        stage: task stage per step, (n, T).
+        dt: physics step [s].
+        debounce: longest ignored loss of stage 4 [s].
+
+    Returns:
+        (n,) bool.
+    """
+    stage = np.asarray(stage)
+    if stage.ndim != 2:
+        raise ParameterError(f"stage: expected shape (n, T), got {stage.shape}")
+    n, t = stage.shape
+    if t == 0:
+        return np.zeros(n, dtype=bool)
+    width = max(1, int(round(debounce / dt)))
+    long_loss = _run_length(stage < 4) > width
+    last = np.where(long_loss.any(axis=1), t - 1 - np.argmax(long_loss[:, ::-1], axis=1), -1)
+    return (last < t - 1) & (stage[:, -1] >= 4)
 
 
 def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
@@ -297,7 +352,7 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
                      else np.asarray(diverged_step, dtype=np.int64))
     c = criteria
 
-    completed = task_completed(stage, dt=dt)
+    completed = ends_completed(stage, dt=dt, debounce=c.drop_time)
     # motor: saturation, or tracking lost, for longer than the stated times
     saturated = np.abs(actuator_norm) >= c.saturation
     sat_run = _run_length(saturated.transpose(0, 2, 1))  # (n, r, T)
@@ -310,8 +365,8 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
                    for j in range(tracking_excess.shape[-1])]
     motor_step = _earliest(np.stack(starts, axis=-1)) if starts else np.full(n, -1)
     # drop: not carried where the nominal run carries the object
-    carried = ~contact_support & contact_gripper.any(axis=-1)
-    drop_step = _first_run(nominal_carried[None, :] & ~carried, c.steps(c.drop_time, dt))
+    carried = _carried(contact_support, contact_gripper)
+    drop_step = _last_run(nominal_carried[None, :] & ~carried, c.steps(c.drop_time, dt))
     # slip: moved in the grip beyond the tolerance for longer than slip_time
     if slip is None:
         slip_step, max_slip = np.full(n, -1), np.zeros(n)
@@ -353,14 +408,16 @@ def _earliest(steps: np.ndarray) -> np.ndarray:
 
 
 def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarray,
-              nominal_held: np.ndarray, *, projectors: np.ndarray | None = None) -> np.ndarray:
+              nominal_held: np.ndarray, *, counted: np.ndarray | None = None,
+              projectors: np.ndarray | None = None) -> np.ndarray:
     """Displacement of the object in its holding grippers, relative to the nominal run.
 
     For gripper g, from the first step ``t0`` at which both the sample and the nominal run
     hold the object with g, the displacement at t is
     ``(p(t) − p(t0)) − (p_nom(t) − p_nom(t0))`` of the object's position in g's base frame,
-    projected by ``projectors[g]`` (to drop the fingers' closing axis), counted where both
-    hold it with g; the result is the largest magnitude over the grippers.
+    projected by ``projectors[g]`` (to drop the fingers' closing axis). It counts where both
+    runs hold the object with g and ``counted`` allows it; the result is the largest magnitude
+    over the grippers.
 
     Args:
         position: object position in each gripper's frame [m], (n, T, G, 3).
@@ -368,15 +425,20 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
         held: the sample holds the object with gripper g (touch, off the support),
             (n, T, G) bool.
         nominal_held: the same in the nominal run, (T, G) bool.
+        counted: where a gripper's displacement counts, (T, G) bool; default everywhere.
+            Brute force counts a gripper only while it holds the object alone in the nominal
+            run: the object moves in a gripper that is letting go, which is the release, not
+            slip (what slipped during a hand-over still shows once the receiver holds alone).
         projectors: per gripper, a (3, 3) projector applied to the displacement, (G, 3, 3);
             None for the identity.
 
     Returns:
-        (n, T) displacement [m], 0 where no gripper holds the object in both runs.
+        (n, T) displacement [m], 0 where it does not count.
     """
     position = np.asarray(position, dtype=np.float64)
     nominal_position = np.asarray(nominal_position, dtype=np.float64)
-    if position.ndim != 4 or position.shape[-1] != 3 or position.shape[1:] != nominal_position.shape:
+    if (position.ndim != 4 or position.shape[-1] != 3
+            or position.shape[1:] != nominal_position.shape):
         raise ParameterError(
             f"position: expected (n, T, G, 3) matching nominal_position (T, G, 3), got "
             f"{position.shape} and {nominal_position.shape}")
@@ -384,6 +446,12 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
     both = np.asarray(held, dtype=bool) & np.asarray(nominal_held, dtype=bool)[None]
     if both.shape != (n, t, g):
         raise ParameterError(f"held: expected shape {(n, t, g)}, got {both.shape}")
+    mask = both
+    if counted is not None:
+        counted = np.asarray(counted, dtype=bool)
+        if counted.shape != (t, g):
+            raise ParameterError(f"counted: expected shape {(t, g)}, got {counted.shape}")
+        mask = both & counted[None]
     t0 = np.argmax(both, axis=1)  # (n, G)
     rows = np.arange(n)[:, None]
     cols = np.arange(g)[None, :]
@@ -391,7 +459,7 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
            - (nominal_position[None] - nominal_position[t0, cols][:, None]))
     if projectors is not None:
         rel = np.einsum("gij,ntgj->ntgi", np.asarray(projectors, dtype=np.float64), rel)
-    disp = np.where(both, np.linalg.norm(rel, axis=-1), 0.0)
+    disp = np.where(mask, np.linalg.norm(rel, axis=-1), 0.0)
     return disp.max(axis=-1) if g else np.zeros((n, t))
 
 
@@ -461,7 +529,8 @@ def _closing_projector(model: mujoco.MjModel, geoms: Sequence[str], anchor: int)
     for name in geoms:
         body = int(model.geom_bodyid[model.geom(name).id])
         while body not in (anchor, 0):
-            for j in range(model.body_jntadr[body], model.body_jntadr[body] + model.body_jntnum[body]):
+            first = model.body_jntadr[body]
+            for j in range(first, first + model.body_jntnum[body]):
                 if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE:
                     axes.append(frame.T @ data.xaxis[j])
             body = int(model.body_parentid[body])
@@ -541,20 +610,10 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
     state0 = initial_state(twin, traj)
     dt = float(twin.model.opt.timestep)
     everything = np.vstack([box.nominal[None, :], samples])
-    total = everything.shape[0]
-    n_chunks = -(-total // chunk)
-    size = -(-total // n_chunks)  # equal chunks: at most two batch sizes
-    batches: dict[int, mujoco.batch.Batch] = {}
     reference = None
     parts, diverged = [], []
-    for start in range(0, total, size):
-        rows = everything[start:start + size]
-        batch = batches.get(rows.shape[0])
-        if batch is None:
-            batch = batches[rows.shape[0]] = mujoco.batch.Batch(probe.model, rows.shape[0],
-                                                                nthread=nthread)
-        out = simulate(twin, state0, controls, samples=rows, nthread=nthread, batch=batch)
-        mu = _object_friction(twin, batch)
+    for _, out, mu in _rollouts(twin, probe.model, state0, controls, everything, chunk=chunk,
+                                nthread=nthread):
         frames = _Frames.read(twin, probe, out["sensordata"], mu)
         if reference is None:
             reference = frames.row(0)
@@ -573,11 +632,28 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
                       dt=dt, seconds=time.perf_counter() - t_start)
 
 
-def _object_friction(twin: Twin, batch: mujoco.batch.Batch) -> np.ndarray | float:
-    friction = batch.expanded("geom_friction")
-    if friction is None:
-        return twin.object_friction()
-    return friction[:, twin.object_geom_id, 0].copy()
+def _rollouts(twin: Twin, model: mujoco.MjModel, state0: np.ndarray, controls: np.ndarray,
+              samples: np.ndarray, *, chunk: int, nthread: int):
+    """Full rollouts of ``samples`` in equal chunks of at most ``chunk`` simulations.
+
+    Yields (offset of the chunk's first sample, :func:`critmoment.recording.simulate`'s
+    result, the object friction per simulation (c,)). ``model`` is the twin's model or one
+    with sensors appended (same bodies, geoms and actuators).
+    """
+    total = samples.shape[0]
+    size = -(-total // -(-total // chunk))  # equal chunks: at most two batch sizes
+    batches: dict[int, mujoco.batch.Batch] = {}
+    for start in range(0, total, size):
+        rows = samples[start:start + size]
+        batch = batches.get(rows.shape[0])
+        if batch is None:
+            batch = batches[rows.shape[0]] = mujoco.batch.Batch(model, rows.shape[0],
+                                                                nthread=nthread)
+        out = simulate(twin, state0, controls, samples=rows, nthread=nthread, batch=batch)
+        friction = batch.expanded("geom_friction")
+        mu = (np.full(rows.shape[0], twin.object_friction()) if friction is None
+              else friction[:, twin.object_geom_id, 0].copy())
+        yield start, out, mu
 
 
 @dataclasses.dataclass(frozen=True)
@@ -592,10 +668,9 @@ class _Frames:
     q: np.ndarray
 
     @classmethod
-    def read(cls, twin: Twin, probe: _Probe, sensordata: np.ndarray, mu) -> "_Frames":
-        mu = np.asarray(mu, dtype=np.float64)
-        sig = twin.signals(sensordata[..., :twin.nsensordata],
-                           mu=mu[:, None] if mu.ndim == 1 else mu)
+    def read(cls, twin: Twin, probe: _Probe, sensordata: np.ndarray,
+             mu: np.ndarray) -> "_Frames":
+        sig = twin.signals(sensordata[..., :twin.nsensordata], mu=mu[:, None])
         c, t = sensordata.shape[:2]
         return cls(stage=sig.stage, contact_gripper=sig.contact_gripper,
                    contact_support=sig.contact_support,
@@ -616,9 +691,11 @@ def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, 
                      diverged_step: np.ndarray) -> Classification:
     target = controls[:, probe.rotational]
     excess = np.abs(frames.q - target[None]) - np.abs(reference.q - target)[None]
-    slip = grip_slip(frames.position, reference.position, frames.held, reference.held,
-                     projectors=probe.projectors)
-    nominal_carried = ~reference.contact_support & reference.contact_gripper.any(axis=-1)
+    nominal_held = reference.held
+    alone = nominal_held & (nominal_held.sum(axis=-1, keepdims=True) == 1)
+    slip = grip_slip(frames.position, reference.position, frames.held, nominal_held,
+                     counted=alone, projectors=probe.projectors)
+    nominal_carried = _carried(reference.contact_support, reference.contact_gripper)
     return classify(dt=dt, stage=frames.stage, contact_gripper=frames.contact_gripper,
                     contact_support=frames.contact_support, nominal_carried=nominal_carried,
                     actuator_norm=frames.actuator_norm, tracking_excess=excess, slip=slip,
@@ -639,15 +716,17 @@ class Prediction:
         moments: the audited critical moments.
         steps: their physics steps as evaluated (clipped to T − horizon), (m,) int.
         envelope_steps: extra steps of the envelope check, (e,) int (empty without one).
+        max_moments: moments asked for (``moments`` may hold fewer).
         horizon: physics steps per sparse evaluation.
         mode: STEP or SOLVE.
         cost: highest cost over the moments (and the envelope), (n,); +inf where diverged.
         cost_moments: highest cost over the moments alone, (n,).
         failed: predicted to fail, (n,) bool.
+        verified: decided by the sample's own full rollout (``verify``), (n,) bool.
         nominal_completed: the frequent rollout completes the task.
         require_task: whether an incomplete nominal rollout makes every sample fail.
-        seconds: wall time of the sparse method: frequent rollout, moment detection and
-            sparse evaluations [s].
+        seconds: wall time of the sparse method: frequent rollout, moment detection, sparse
+            evaluations (and the verification's full rollouts) [s].
         timings: that time per stage [s].
     """
 
@@ -655,11 +734,13 @@ class Prediction:
     moments: tuple[Moment, ...]
     steps: np.ndarray
     envelope_steps: np.ndarray
+    max_moments: int
     horizon: int
     mode: sp.SparseMode
     cost: np.ndarray
     cost_moments: np.ndarray
     failed: np.ndarray
+    verified: np.ndarray
     nominal_completed: bool
     require_task: bool
     seconds: float
@@ -679,8 +760,7 @@ def envelope_steps(recording: Recording, *, spacing: float, horizon: int = 1) ->
     """
     spacing = _check_positive("spacing", spacing)
     sig = recording.signals
-    carried = ~np.asarray(sig.contact_support, bool) & np.asarray(sig.contact_gripper,
-                                                                  bool).any(axis=-1)
+    carried = _carried(sig.contact_support, sig.contact_gripper)
     where = np.flatnonzero(carried)
     if where.size == 0:
         return np.zeros(0, dtype=np.int64)
@@ -691,14 +771,15 @@ def envelope_steps(recording: Recording, *, spacing: float, horizon: int = 1) ->
 
 
 def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int | None = None,
-            mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int = 4,
-            envelope: float | None = None, require_task: bool = True,
-            nthread: int = 0) -> Prediction:
+            mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int | None = None,
+            envelope: float | None = None, verify: float | None = None,
+            require_task: bool = True, chunk: int = 16, nthread: int = 0) -> Prediction:
     """The audit's sparse prediction for parameter samples (the method under test).
 
     Runs what :func:`critmoment.analysis.analyze` runs to decide which samples fail: the
     frequent rollout, :func:`critmoment.analysis.detect_moments` with the evaluator's horizon
-    (the first ``max_moments`` moments), and one sparse evaluation per moment and sample. A
+    (the first ``max_moments`` of its ranked candidates), and one sparse evaluation per moment
+    and sample. A
     sample fails where its cost exceeds the scenario's threshold (or diverges) at any
     moment, or, with ``require_task``, everywhere when the nominal rollout does not complete
     the task.
@@ -709,16 +790,29 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
         samples: parameter values, (n, k).
         horizon: physics steps per sparse evaluation (default: the scenario's).
         mode: STEP or SOLVE (horizon 1).
-        max_moments: moments audited.
+        max_moments: moments audited (default: the audit's,
+            :attr:`critmoment.analysis.AnalyzeOptions.max_moments`).
         envelope: if given, also evaluate every ``envelope`` seconds over the phase where the
             nominal run carries the object (:func:`envelope_steps`) [s].
+        verify: if given, a fraction of the cost threshold: every sample predicted safe with
+            a sparse cost at or above ``verify × threshold`` gets its own frequent rollout (a
+            full rollout at its parameters) and fails when its cost exceeds the threshold at
+            any step (where the nominal run carries the object, as in sparse evaluation) or
+            it does not complete the task (:func:`critmoment.recording.task_completed`).
         require_task: an incomplete nominal rollout makes every sample fail.
+        chunk: most full rollouts per batch call in the verification.
         nthread: threads (0: all CPUs).
 
     Returns:
         The :class:`Prediction`.
     """
+    if max_moments is None:
+        max_moments = AnalyzeOptions().max_moments
     max_moments = _check_int("max_moments", max_moments, 1)
+    if verify is not None and (isinstance(verify, bool) or not isinstance(verify, numbers.Real)
+                               or not 0 < verify <= 1):
+        raise ParameterError(f"verify: expected a fraction of the threshold in (0, 1] or None, "
+                             f"got {verify!r}")
     samples = twin.scenario.box.check_samples(samples)
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
@@ -727,7 +821,10 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     timings["rollout"] = t1 - t0
     evaluator = sp.SparseEvaluator(rec, twin, horizon=horizon, mode=mode, nthread=nthread)
     h = evaluator.horizon
-    moments = tuple(detect_moments(rec, twin, evaluator=evaluator, max_moments=max_moments))
+    # the audit's selection (critmoment.analysis.analyze): the ranked candidates, the first few
+    # (detect_moments returns 8 candidates by default; more when more moments are asked for)
+    moments = tuple(detect_moments(rec, twin, evaluator=evaluator,
+                                   max_moments=max(8, max_moments))[:max_moments])
     steps = np.array([min(m.step, rec.n_steps - h) for m in moments], dtype=np.int64)
     t2 = time.perf_counter()
     timings["moments"] = t2 - t1
@@ -745,15 +842,47 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     else:
         cost_all = cost_moments = np.zeros(n)
         failed = np.zeros(n, dtype=bool)
-    timings["sparse evaluation"] = time.perf_counter() - t2
+    t3 = time.perf_counter()
+    timings["sparse evaluation"] = t3 - t2
+    failed = np.asarray(failed, dtype=bool).copy()
     nominal_completed = rec.completed
     if require_task and not nominal_completed:
-        failed = np.ones(n, dtype=bool)
+        failed[:] = True
+    verified = np.zeros(n, dtype=bool)
+    if verify is not None:
+        threshold = twin.scenario.cost.threshold
+        verified = ~failed & (cost_all >= verify * threshold)
+        if verified.any():
+            failed[verified] = _own_rollouts_fail(rec, twin, samples[verified],
+                                                  chunk=_check_int("chunk", chunk, 1),
+                                                  nthread=nthread)
+        timings["verification"] = time.perf_counter() - t3
     return Prediction(samples=samples, moments=moments, steps=steps, envelope_steps=extra,
-                      horizon=h, mode=evaluator.mode, cost=cost_all, cost_moments=cost_moments,
-                      failed=np.asarray(failed, dtype=bool), nominal_completed=nominal_completed,
+                      max_moments=max_moments, horizon=h, mode=evaluator.mode, cost=cost_all,
+                      cost_moments=cost_moments,
+                      failed=failed, verified=verified, nominal_completed=nominal_completed,
                       require_task=bool(require_task), seconds=time.perf_counter() - t0,
                       timings=timings)
+
+
+def _own_rollouts_fail(rec: Recording, twin: Twin, samples: np.ndarray, *, chunk: int,
+                       nthread: int) -> np.ndarray:
+    """Frequent evaluation at each sample's own parameters: (n,) bool, fails anywhere.
+
+    The sample's full rollout fails when it diverges, when its cost (eq. 15, with the grasp
+    gated by where the nominal run carries the object, as sparse evaluation gates it) exceeds
+    the threshold at any step, or when it does not complete the task.
+    """
+    threshold = twin.scenario.cost.threshold
+    carried = _carried(rec.signals.contact_support, rec.signals.contact_gripper)
+    out = np.empty(samples.shape[0], dtype=bool)
+    for start, run, mu in _rollouts(twin, twin.model, rec.states[0], rec.controls, samples,
+                                    chunk=chunk, nthread=nthread):
+        sig = twin.signals(run["sensordata"], mu=mu[:, None], carried=carried[None, :])
+        out[start:start + mu.shape[0]] = (
+            run["diverged"] | (sig.cost > threshold).any(axis=1)
+            | ~task_completed(sig.stage, dt=rec.dt))
+    return out
 
 
 # --------------------------------------------------------------------------
@@ -840,11 +969,12 @@ class ValidationResult:
         max_moments: moments audited.
         dt: physics step [s].
         sparse_seconds: wall time of the sparse method (frequent rollout, moments,
-            evaluations) [s].
+            evaluations, and the verification's full rollouts) [s].
         brute_force_seconds: wall time of the full rollouts and their classification [s].
         nominal_completed: the nominal run completes the task.
         criteria: the outcome tolerances.
         missed: the false safes, with where they fail relative to the moments.
+        verified: the prediction was decided by the sample's own full rollout, (n,) bool.
         seed: Sobol seed of the samples, or None when the samples were given.
     """
 
@@ -867,6 +997,7 @@ class ValidationResult:
     nominal_completed: bool
     criteria: OutcomeCriteria
     missed: tuple[MissedFailure, ...]
+    verified: np.ndarray
     seed: int | None = None
 
     @property
@@ -895,7 +1026,9 @@ class ValidationResult:
     @property
     def compute_ratio(self) -> float:
         """sparse_seconds / brute_force_seconds."""
-        return self.sparse_seconds / self.brute_force_seconds if self.brute_force_seconds else math.nan
+        if not self.brute_force_seconds:
+            return math.nan
+        return self.sparse_seconds / self.brute_force_seconds
 
     def outcome_counts(self) -> dict[str, int]:
         """Samples per real outcome."""
@@ -918,6 +1051,7 @@ class ValidationResult:
             "max_moments": self.max_moments,
             "moment_steps": [int(s) for s in self.moment_steps],
             "envelope_steps": [int(s) for s in self.envelope_steps],
+            "verified": int(self.verified.sum()),
             "nominal_completed": self.nominal_completed,
             "criteria": dataclasses.asdict(self.criteria),
             "confusion": self.confusion,
@@ -929,6 +1063,7 @@ class ValidationResult:
                 {"values": dict(zip(self.parameter_names, map(float, self.samples[i]))),
                  "outcome": self.outcome[i].value, "real_failed": bool(self.real_failed[i]),
                  "predicted_failed": bool(self.predicted_failed[i]),
+                 "verified": bool(self.verified[i]),
                  "max_cost": _finite(self.max_cost[i]),
                  "first_failure_step": int(self.first_failure_step[i])}
                 for i in range(self.n_samples)],
@@ -948,7 +1083,9 @@ class ValidationResult:
             f"validation of {self.trajectory}: {self.n_samples} samples, horizon "
             f"{self.horizon} ({self.mode.value}), moments at steps "
             f"{[int(s) for s in self.moment_steps]}"
-            + (f" + {self.envelope_steps.size} envelope steps" if self.envelope_steps.size else ""),
+            + (f" + {self.envelope_steps.size} envelope steps" if self.envelope_steps.size else "")
+            + (f"; {int(self.verified.sum())} samples verified by full rollouts"
+               if self.verified.any() else ""),
             f"real outcomes: {counts}",
             f"confusion: true safe {c['true_safe']}, false safe {c['false_safe']}, true unsafe "
             f"{c['true_unsafe']}, false unsafe {c['false_unsafe']}",
@@ -968,14 +1105,13 @@ class ValidationResult:
 
 
 def compare(brute: BruteForce, prediction: Prediction, *, trajectory: str = "",
-            max_moments: int | None = None, seed: int | None = None) -> ValidationResult:
+            seed: int | None = None) -> ValidationResult:
     """Compare a sparse prediction with the brute-force outcomes of the same samples.
 
     Args:
         brute: the brute-force result.
         prediction: the sparse prediction.
         trajectory: the trajectory's source, for the report.
-        max_moments: the moments audited (default: as many as the prediction has).
         seed: the Sobol seed of the samples, for the report.
 
     Returns:
@@ -1010,18 +1146,18 @@ def compare(brute: BruteForce, prediction: Prediction, *, trajectory: str = "",
         max_cost=prediction.cost, first_failure_step=first, moment_steps=moments,
         envelope_steps=prediction.envelope_steps, horizon=prediction.horizon,
         mode=prediction.mode,
-        max_moments=len(prediction.moments) if max_moments is None else max_moments, dt=dt,
+        max_moments=prediction.max_moments, dt=dt,
         sparse_seconds=prediction.seconds, brute_force_seconds=brute.seconds,
         nominal_completed=brute.nominal_completed, criteria=brute.classification.criteria,
-        missed=tuple(missed), seed=seed)
+        missed=tuple(missed), verified=prediction.verified, seed=seed)
 
 
 def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | None = 0,
              samples: np.ndarray | None = None, horizon: int | None = None,
-             mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int = 4,
-             envelope: float | None = None, require_task: bool = True,
-             criteria: OutcomeCriteria = OutcomeCriteria(), chunk: int = 16,
-             nthread: int = 0) -> ValidationResult:
+             mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int | None = None,
+             envelope: float | None = None, verify: float | None = None,
+             require_task: bool = True, criteria: OutcomeCriteria = OutcomeCriteria(),
+             chunk: int = 16, nthread: int = 0) -> ValidationResult:
     """Check the audit's sparse verdicts against brute-force full rollouts.
 
     Args:
@@ -1032,8 +1168,10 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
         samples: explicit parameter values (n, k) instead of the Sobol samples.
         horizon: sparse horizon [physics steps] (default: the scenario's).
         mode: sparse mode, STEP or SOLVE (horizon 1).
-        max_moments: moments audited.
+        max_moments: moments audited (default: the audit's, now 4).
         envelope: spacing of the envelope check over the carrying phase [s], or None.
+        verify: re-run in full the samples predicted safe with a cost at or above this
+            fraction of the threshold (see :func:`predict`), or None.
         require_task: an incomplete nominal rollout makes every prediction a failure.
         criteria: the outcome tolerances.
         chunk: most full rollouts per batch call.
@@ -1050,9 +1188,8 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
     else:
         samples, used_seed = box.check_samples(samples), None
     prediction = predict(traj, twin=twin, samples=samples, horizon=horizon, mode=mode,
-                         max_moments=max_moments, envelope=envelope, require_task=require_task,
-                         nthread=nthread)
+                         max_moments=max_moments, envelope=envelope, verify=verify,
+                         require_task=require_task, chunk=chunk, nthread=nthread)
     brute = brute_force(traj, twin=twin, samples=samples, criteria=criteria, chunk=chunk,
                         nthread=nthread)
-    return compare(brute, prediction, trajectory=traj.source, max_moments=max_moments,
-                   seed=used_seed)
+    return compare(brute, prediction, trajectory=traj.source, seed=used_seed)

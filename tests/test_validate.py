@@ -1,0 +1,320 @@
+"""Tests of critmoment.validate: outcome classification, slip measure, confusion arithmetic,
+the brute force on the bundled scene, and the end-to-end comparison (few samples, fast)."""
+
+from __future__ import annotations
+
+import json
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+from critmoment import recording as rec_mod
+from critmoment import suite
+from critmoment import validate as val
+from critmoment.exceptions import ParameterError
+from critmoment.sparse import SparseMode
+from critmoment.validate import Outcome, OutcomeCriteria
+
+DT = 0.002
+T = 400          # 0.8 s of hand-made signals
+LIFT = 100       # the nominal run lifts the object here and carries it to the end
+G = 2            # grippers
+
+
+def _signals(n: int = 1):
+    """Hand-made signals of n runs that all go like the nominal one: grasp, lift, carry.
+
+    Stage 4 from LIFT on (ACT's stage: the receiver holds the object off the table); one
+    gripper touches the object from step 50, the support until LIFT.
+    """
+    stage = np.zeros((n, T), np.int8)
+    stage[:, 50:LIFT] = 1
+    stage[:, LIFT:] = 4
+    grip = np.zeros((n, T, G), bool)
+    grip[:, 50:, 0] = True
+    support = np.zeros((n, T), bool)
+    support[:, :LIFT] = True
+    nominal_carried = np.zeros(T, bool)
+    nominal_carried[LIFT:] = True
+    return dict(stage=stage, contact_gripper=grip, contact_support=support,
+                nominal_carried=nominal_carried, actuator_norm=np.full((n, T, 3), 0.5))
+
+
+def _classify(sig, **kw):
+    return val.classify(dt=DT, **sig, **kw)
+
+
+# --------------------------------------------------------------------------
+# classification of hand-made runs
+# --------------------------------------------------------------------------
+
+
+def test_held_box_is_success():
+    c = _classify(_signals())
+    assert c.outcome == (Outcome.SUCCESS,)
+    assert c.completed.tolist() == [True]
+    assert c.first_failure_step.tolist() == [-1]
+    assert c.failed.tolist() == [False]
+
+
+def test_dropped_box_is_dropped_at_the_drop():
+    sig = _signals()
+    drop = 250
+    sig["contact_gripper"][0, drop:] = False     # the grip lets go ...
+    sig["contact_support"][0, drop + 30:] = True  # ... and the box lands on the table
+    sig["stage"][0, drop:] = 0
+    c = _classify(sig)
+    assert c.outcome == (Outcome.DROPPED,)
+    assert c.drop_step.tolist() == [drop]
+    assert c.first_failure_step.tolist() == [drop]
+
+
+def test_late_lift_then_drop_reports_the_drop_not_the_late_lift():
+    sig = _signals()
+    sig["contact_support"][0, LIFT:LIFT + 20] = True  # lifts 40 ms late (a loss > 20 ms)
+    sig["stage"][0, LIFT:LIFT + 20] = 1
+    sig["contact_gripper"][0, 300:] = False
+    sig["stage"][0, 300:] = 0
+    c = _classify(sig)
+    assert c.outcome == (Outcome.DROPPED,)
+    assert c.drop_step.tolist() == [300]
+
+
+def test_never_grasped_box_is_not_completed():
+    sig = _signals()
+    sig["stage"][:] = 0
+    sig["contact_gripper"][:] = False
+    sig["contact_support"][:] = True
+    sig["nominal_carried"][:] = False  # the nominal run never grasps it either (no_grasp)
+    c = _classify(sig)
+    assert c.outcome == (Outcome.NOT_COMPLETED,)
+    assert c.first_failure_step.tolist() == [-1]
+
+
+def test_motor_saturation_counts_only_when_longer_than_the_stated_time():
+    criteria = OutcomeCriteria()
+    steps = criteria.steps(criteria.motor_time, DT)  # shortest run longer than 50 ms
+    assert steps == 26
+    sig = _signals(2)
+    sig["actuator_norm"][0, 200:200 + steps, 1] = -1.0         # 52 ms at the limit
+    sig["actuator_norm"][1, 200:200 + steps - 1, 1] = 0.9995   # 50 ms: not longer than 50 ms
+    c = _classify(sig, criteria=criteria)
+    assert c.outcome == (Outcome.MOTOR, Outcome.SUCCESS)
+    assert c.motor_step.tolist() == [200, -1]
+    np.testing.assert_allclose(c.saturation_time, [steps * DT, (steps - 1) * DT])
+
+
+def test_tracking_loss_is_motor_but_not_after_the_drop():
+    sig = _signals(2)
+    excess = np.zeros((2, T, 3))
+    excess[:, 300:360, 2] = 0.2  # lags 0.2 rad more than the nominal run for 120 ms
+    sig["contact_gripper"][1, 250:] = False  # run 1 has dropped the box before
+    sig["stage"][1, 250:] = 0
+    c = _classify(sig, tracking_excess=excess)
+    assert c.outcome == (Outcome.MOTOR, Outcome.DROPPED)
+    assert c.first_failure_step.tolist() == [300, 250]
+
+
+def test_slip_beyond_tolerance_is_slipped_and_can_be_counted_as_success():
+    sig = _signals(2)
+    slip = np.zeros((2, T))
+    slip[0, 200:] = 0.015       # 1.5 cm, held to the end
+    slip[1, 200:215] = 0.03     # 3 cm for 30 ms: a transient
+    c = _classify(sig, slip=slip)
+    assert c.outcome == (Outcome.SLIPPED, Outcome.SUCCESS)
+    assert c.slip_step.tolist() == [200, -1]
+    np.testing.assert_allclose(c.max_slip, [0.015, 0.03])
+    lenient = _classify(sig, slip=slip, criteria=OutcomeCriteria(slip_is_failure=False))
+    assert lenient.outcome == (Outcome.SUCCESS, Outcome.SUCCESS)
+
+
+def test_diverged_run_wins():
+    sig = _signals()
+    c = _classify(sig, diverged=np.array([True]), diverged_step=np.array([123]))
+    assert c.outcome == (Outcome.DIVERGED,)
+    assert c.first_failure_step.tolist() == [123]
+
+
+def test_early_touch_before_the_final_grasp_still_completes():
+    stage = np.zeros((1, T), np.int8)
+    stage[0, 100:] = 2
+    stage[0, 150:152] = 4   # the receiver bumps the object ...
+    stage[0, 200:] = 4      # ... and takes it 96 ms later, to the end
+    assert val.ends_completed(stage, dt=DT).tolist() == [True]
+    # the recording's stricter definition calls the same run incomplete
+    assert not rec_mod.task_completed(stage, dt=DT)[0]
+    stage[0, -5:] = 2       # a loss that reaches the end fails both
+    assert val.ends_completed(stage, dt=DT).tolist() == [False]
+
+
+def test_classify_rejects_inconsistent_shapes():
+    sig = _signals()
+    sig["contact_support"] = sig["contact_support"][:, :-1]
+    with pytest.raises(ParameterError, match="contact_support"):
+        _classify(sig)
+    with pytest.raises(ParameterError, match="slip_tolerance"):
+        OutcomeCriteria(slip_tolerance=0.0)
+    with pytest.raises(ParameterError, match="motor_time"):
+        OutcomeCriteria(motor_time=-1.0)
+
+
+def test_grip_slip_counts_motion_along_the_pads_from_the_grasp():
+    n, t = 1, 50
+    nominal = np.zeros((t, G, 3))
+    pos = np.zeros((n, t, G, 3))
+    pos[0, :, 0] = [0.0, 0.0, 0.05]          # grasped 5 cm off-centre: an offset, not slip
+    pos[0, 30:, 0, 0] += 0.02                 # then slides 2 cm along the pads (x)
+    pos[0, 10:, 0, 1] += 0.01                 # and the fingers squeeze it 1 cm along y
+    held = np.zeros((n, t, G), bool)
+    held[:, 5:, 0] = True
+    nominal_held = held[0].copy()
+    closing = np.diag([1.0, 0.0, 1.0])        # drop the fingers' closing axis (y)
+    s = val.grip_slip(pos, nominal, held, nominal_held,
+                      projectors=np.stack([closing, closing]))
+    np.testing.assert_allclose(s[0, :30], 0.0, atol=1e-15)
+    np.testing.assert_allclose(s[0, 30:], 0.02)
+    # a gripper that does not count (it is letting go) adds nothing
+    counted = np.zeros((t, G), bool)
+    none = val.grip_slip(pos, nominal, held, nominal_held, counted=counted)
+    assert not none.any()
+
+
+# --------------------------------------------------------------------------
+# confusion arithmetic and the result document
+# --------------------------------------------------------------------------
+
+
+def test_confusion_counts_by_hand():
+    predicted = np.array([False, False, True, True, False, True])
+    real = np.array([False, True, True, False, False, True])
+    assert val.confusion_counts(predicted, real) == {
+        "true_safe": 2, "false_safe": 1, "true_unsafe": 2, "false_unsafe": 1}
+    with pytest.raises(ParameterError, match="same shape"):
+        val.confusion_counts(predicted, real[:-1])
+
+
+def _result(predicted, real):
+    n = len(predicted)
+    outcome = tuple(Outcome.DROPPED if r else Outcome.SUCCESS for r in real)
+    return val.ValidationResult(
+        trajectory="hand-made", parameter_names=("mass", "friction"),
+        samples=np.column_stack([np.linspace(0.1, 1.0, n), np.ones(n)]), outcome=outcome,
+        real_failed=np.asarray(real), predicted_failed=np.asarray(predicted),
+        max_cost=np.linspace(0.1, 1.2, n), first_failure_step=np.where(real, 100, -1),
+        moment_steps=np.array([90]), envelope_steps=np.zeros(0, np.int64), horizon=10,
+        mode=SparseMode.STEP, max_moments=1, dt=DT, sparse_seconds=0.5,
+        brute_force_seconds=5.0, nominal_completed=True, criteria=OutcomeCriteria(),
+        missed=(), verified=np.zeros(n, bool), seed=0)
+
+
+def test_rates_and_json_document():
+    r = _result([False, False, True, True, False, True], [False, True, True, False, False, True])
+    assert r.false_safe_rate == pytest.approx(1 / 3)
+    assert r.agreement == pytest.approx(4 / 6)
+    assert r.compute_ratio == pytest.approx(0.1)
+    doc = json.loads(json.dumps(r.to_json(), allow_nan=False))
+    assert {"samples", "confusion", "false_safe_rate", "agreement", "sparse_seconds",
+            "brute_force_seconds", "per_sample"} <= doc.keys()
+    assert set(doc["confusion"]) == {"true_safe", "false_safe", "true_unsafe", "false_unsafe"}
+    assert doc["samples"] == 6 and len(doc["per_sample"]) == 6
+    assert doc["per_sample"][1]["outcome"] == "dropped"
+    assert "sparse_seconds" not in r.to_json(timings=False)
+    assert "false-safe rate 0.333" in r.summary_text()
+
+
+def test_false_safe_rate_undefined_without_failures():
+    r = _result([False, True], [False, False])
+    assert r.false_safe_rate is None
+    assert r.to_json()["false_safe_rate"] is None
+    assert "n/a" in r.summary_text()
+
+
+# --------------------------------------------------------------------------
+# the bundled scene
+# --------------------------------------------------------------------------
+
+
+def test_probe_model_reproduces_the_recording(twin, demo_traj, demo_recording):
+    """Appended sensors leave the physics and the twin's own readings bit-identical."""
+    probe = val._Probe(twin)
+    controls = rec_mod.prepare_controls(twin, demo_traj)
+    state0 = rec_mod.initial_state(twin, demo_traj)
+    import mujoco.batch
+
+    batch = mujoco.batch.Batch(probe.model, 1)
+    out = rec_mod.simulate(twin, state0, controls, samples=twin.scenario.box.nominal[None],
+                           batch=batch)
+    np.testing.assert_array_equal(out["sensordata"][0, :, :twin.nsensordata],
+                                  demo_recording.sensordata)
+    # the closing axis of the fingers (y of the gripper frame) is projected out
+    np.testing.assert_allclose(probe.projectors[0] @ [0.0, 1.0, 0.0], 0.0, atol=1e-12)
+
+
+def test_brute_force_heavy_box_drops_light_box_succeeds(twin, demo_traj):
+    samples = np.array([[0.1, 1.0], [5.0, 1.0]])
+    bf = val.brute_force(demo_traj, twin=twin, samples=samples)
+    assert bf.nominal_completed
+    assert bf.outcome == (Outcome.SUCCESS, Outcome.DROPPED)
+    # the 5 kg box never leaves the table: lost where the nominal run lifts it (step ~1707)
+    lift = 1707
+    assert abs(int(bf.classification.drop_step[1]) - lift) < 50
+    assert bf.classification.max_slip[0] < 0.005
+    assert bf.seconds > 0
+
+
+def test_brute_force_no_grasp_is_not_completed(twin):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        traj = suite.make("no_grasp", seed=0, twin=twin)
+    bf = val.brute_force(traj, twin=twin, samples=np.array([[0.05, 1.0]]))
+    assert not bf.nominal_completed
+    assert bf.outcome == (Outcome.NOT_COMPLETED,)
+
+
+def test_envelope_steps_cover_the_carrying_phase(demo_recording):
+    steps = val.envelope_steps(demo_recording, spacing=0.1, horizon=10)
+    carried = ~demo_recording.contact_support & demo_recording.contact_gripper.any(axis=-1)
+    assert steps.size > 10
+    assert carried[steps].all()
+    assert np.all(np.diff(steps) >= 50)
+    assert steps.max() <= demo_recording.n_steps - 10
+    with pytest.raises(ParameterError, match="spacing"):
+        val.envelope_steps(demo_recording, spacing=0.0)
+
+
+def test_validate_end_to_end_is_deterministic(twin, demo_traj):
+    kw = dict(twin=twin, n_samples=4, seed=3, horizon=10, max_moments=8)
+    a = val.validate(demo_traj, **kw)
+    b = val.validate(demo_traj, **kw)
+    assert a.to_json(timings=False) == b.to_json(timings=False)
+    c = a.confusion
+    assert sum(c.values()) == 4
+    assert set(c) == {"true_safe", "false_safe", "true_unsafe", "false_unsafe"}
+    assert a.sparse_seconds > 0 and a.brute_force_seconds > 0
+    assert a.moment_steps.size == 8
+    # the CLI's interface
+    assert isinstance(a.confusion["false_safe"], int)
+    assert "confusion:" in a.summary_text()
+    assert math.isfinite(a.agreement)
+
+
+def test_predict_verifies_near_threshold_safes(twin, demo_traj):
+    samples = np.array([[0.05, 1.0], [9.0, 0.3]])
+    p = val.predict(demo_traj, twin=twin, samples=samples, horizon=10, max_moments=8,
+                    verify=0.01)
+    # the light box is safe near no threshold, yet above 1 % of it: its own rollout confirms
+    # it; the heavy one fails the sparse evaluation and is never verified
+    assert p.failed.tolist() == [False, True]
+    assert p.verified.tolist() == [True, False]
+    with pytest.raises(ParameterError, match="verify"):
+        val.predict(demo_traj, twin=twin, samples=samples, verify=1.5)
+
+
+def test_compare_rejects_other_samples(twin, demo_traj):
+    bf = val.brute_force(demo_traj, twin=twin, samples=np.array([[0.1, 1.0]]))
+    p = val.predict(demo_traj, twin=twin, samples=np.array([[0.2, 1.0]]), horizon=1,
+                    max_moments=1)
+    with pytest.raises(ParameterError, match="same samples"):
+        val.compare(bf, p)
