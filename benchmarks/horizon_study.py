@@ -31,7 +31,7 @@ import numpy as np
 
 from critmoment import sparse as sp
 from critmoment import suite
-from critmoment import validate as val
+from critmoment import validation as val
 from critmoment.scenario import load_scenario
 from critmoment.twin import Twin
 

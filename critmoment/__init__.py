@@ -4,6 +4,7 @@ The pipeline, one stage per module::
 
     trajectory -> recording (frequent rollout) -> moments -> dynamics / search
                -> sparse (evaluation) -> analysis (verdict) -> report
+    validate: the verdicts against brute-force full rollouts
 
 ``critmoment.analyze(traj, scenario)`` chains the stages; each stage can be called alone.
 """
@@ -19,6 +20,7 @@ from critmoment.sparse import (SparseEvaluator, SparseMode, SparseResult, evalua
                                probability_of_success, sweep)
 from critmoment.trajectory import Trajectory, load_trajectory, save_trajectory
 from critmoment.twin import Signals, Twin
+from critmoment.validation import Outcome, ValidationResult, validate
 
 __version__ = "0.1.0"
 
@@ -55,5 +57,8 @@ __all__ = [
     "save_trajectory",
     "Signals",
     "Twin",
+    "Outcome",
+    "ValidationResult",
+    "validate",
     "__version__",
 ]

@@ -20,7 +20,7 @@ import numpy as np
 from critmoment import sparse as sp
 from critmoment.exceptions import ParameterError
 from critmoment.moments import Moment, MomentDetector, MomentLabel
-from critmoment.recording import Recording, model_hash, rollout
+from critmoment.recording import Recording, model_hash, rollout, rollouts_fail
 from critmoment.scenario import Scenario, load_scenario
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin
@@ -31,6 +31,7 @@ __all__ = [
     "MomentReport",
     "AuditReport",
     "detect_moments",
+    "audit_moments",
     "sensitivity_function",
     "safe_subbox",
     "analyze",
@@ -69,11 +70,18 @@ class AnalyzeOptions:
             sample's cost per cell (0 to skip).
         require_task: a nominal rollout that does not complete the scenario's task (stage 4
             reached and kept) makes the verdict UNSAFE.
+        verify: a fraction of the cost threshold, or None. Every Sobol sample that passes
+            the sparse evaluation with a cost at or above ``verify × threshold`` at some
+            moment gets its own full rollout (:func:`critmoment.recording.rollouts_fail`) and
+            fails if that rollout's cost exceeds the threshold anywhere or the task is not
+            completed. Near the boundary sparse evaluation at a few moments can miss a
+            failure that happens between them; the default 0.8 brings the measured
+            false-safe rate to 0 (``docs/validation.md``) for a few full rollouts.
     """
 
     seed: int = 0
     n_samples: int = 256
-    max_moments: int = 4
+    max_moments: int = 8
     horizon: int | None = None
     search_trials: int = 48
     search: bool = True
@@ -83,6 +91,7 @@ class AnalyzeOptions:
     nthread: int = 0
     map_resolution: int = 40
     require_task: bool = True
+    verify: float | None = 0.8
 
     def __post_init__(self):
         if self.n_samples < 8:
@@ -101,6 +110,10 @@ class AnalyzeOptions:
             raise ParameterError(f"critical_grid: expected >= 5, got {self.critical_grid}")
         if self.map_resolution < 0:
             raise ParameterError(f"map_resolution: expected >= 0, got {self.map_resolution}")
+        if self.verify is not None and (isinstance(self.verify, bool)
+                                        or not 0 < self.verify <= 1):
+            raise ParameterError(f"verify: expected a fraction of the threshold in (0, 1] or "
+                                 f"None, got {self.verify!r}")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -160,6 +173,10 @@ class AuditReport:
         options: the options.
         timings: seconds per stage.
         manifest: versions, model hash, seed and options.
+        failed: per Sobol sample of ``sweep``, whether it fails (sparse evaluation at the
+            moments, then the verification rollouts), (n,) bool.
+        verification: the verification stage's summary (``fraction``, ``cost_from``,
+            ``rollouts``, ``failed``), or None when it did not run.
     """
 
     verdict: Verdict
@@ -179,6 +196,8 @@ class AuditReport:
     options: AnalyzeOptions
     timings: Mapping[str, float]
     manifest: Mapping
+    failed: np.ndarray | None = None
+    verification: Mapping | None = None
 
     def passes(self, min_success: float | None = None) -> bool:
         """SAFE, or CONDITIONAL with P(success) ≥ ``min_success`` (the CLI's exit code 0)."""
@@ -275,6 +294,27 @@ def detect_moments(recording: Recording, twin: Twin, *, evaluator: sp.SparseEval
         chosen.append(m)
     chosen.sort(key=lambda m: (-m.score, m.step))
     return [dataclasses.replace(m, reason=_dedupe(m.reason)) for m in chosen]
+
+
+def audit_moments(recording: Recording, twin: Twin, evaluator: sp.SparseEvaluator,
+                  max_moments: int) -> tuple[list[Moment], np.ndarray]:
+    """The audit's moments: the ranked candidates and the steps of the first ``max_moments``.
+
+    :func:`analyze` and :func:`critmoment.validation.predict` both call this, so validation
+    tests exactly the moments the audit evaluates.
+
+    Returns:
+        (candidates, most sensitive first; steps of the audited ones, clipped so that the
+        evaluator's horizon fits in the recording, (m,) int64).
+    """
+    if isinstance(max_moments, bool) or not isinstance(max_moments, (int, np.integer)) \
+            or max_moments < 1:
+        raise ParameterError(f"max_moments: expected an integer >= 1, got {max_moments!r}")
+    candidates = detect_moments(recording, twin, evaluator=evaluator,
+                                max_moments=max(8, int(max_moments)))
+    steps = np.array([min(m.step, recording.n_steps - evaluator.horizon)
+                      for m in candidates[:max_moments]], dtype=np.int64)
+    return candidates, steps
 
 
 def _dedupe(reason: str) -> str:
@@ -392,17 +432,23 @@ _SUGGEST = {
 }
 
 
-def _cause(mr: MomentReport) -> str | None:
-    if mr.dominant is None or mr.fail_fraction == 0:
-        return None
-    name, advice = _SUGGEST[mr.dominant]
-    if mr.dominant == "motor":
-        name = f"{name} at {mr.limiting_actuator}"
-    crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
-                     if v is not None)
-    where = f" (fails for {crit})" if crit else ""
-    return (f"{mr.moment.label.value} at t = {mr.moment.time:.2f} s: {name}{where}; "
-            f"suggestion: {advice}")
+def _causes(reports: Sequence[MomentReport]) -> list[str]:
+    """One line per failure cause (grip slip, overload of one actuator, ...), the moments where
+    it limits (with their critical values) and the suggestion."""
+    groups: dict[str, list[str]] = {}
+    for mr in reports:
+        if mr.dominant is None or mr.fail_fraction == 0:
+            continue
+        name = _SUGGEST[mr.dominant][0]
+        if mr.dominant == "motor":
+            name = f"{name} at {mr.limiting_actuator}"
+        crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
+                         if v is not None)
+        where = f" (fails for {crit})" if crit else f" ({mr.fail_fraction:.0%} of the box)"
+        groups.setdefault(f"{mr.dominant}|{name}", []).append(
+            f"{mr.moment.label.value} at t = {mr.moment.time:.2f} s{where}")
+    return [f"{key.split('|', 1)[1]}: {'; '.join(where)}; suggestion: "
+            f"{_SUGGEST[key.split('|', 1)[0]][1]}" for key, where in groups.items()]
 
 
 # -- the pipeline --------------------------------------------------------------------
@@ -500,10 +546,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         rec = rollout(trajectory, twin=twin)
     with stage("moments"):
         evaluator = sp.SparseEvaluator(rec, twin, horizon=opt.horizon, nthread=opt.nthread)
-        candidates = detect_moments(rec, twin, evaluator=evaluator)
-        chosen = candidates[:opt.max_moments]
-        steps = np.array([min(m.step, rec.n_steps - evaluator.horizon) for m in chosen],
-                         dtype=np.int64)
+        candidates, steps = audit_moments(rec, twin, evaluator, opt.max_moments)
+        chosen = candidates[:steps.size]
     with stage("sweep"):
         samples = sp.sweep_samples(box, n=opt.n_samples, seed=opt.seed)
         probe = np.vstack([box.nominal[None, :], samples])
@@ -511,10 +555,21 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_cost = float(np.max(res_all.cost[:, 0])) if steps.size else 0.0
         res = _select_samples(res_all, slice(1, None))
         failed = res.failed_any if steps.size else np.zeros(len(samples), bool)
-        n_fail = int(failed.sum())
-        p = 1.0 - n_fail / len(samples)
-        interval = sp.wilson_interval(len(samples) - n_fail, len(samples),
-                                      confidence=opt.confidence)
+    verification = None
+    if opt.verify is not None and steps.size:
+        with stage("verification"):
+            worst = np.max(np.where(res.diverged, np.inf, res.cost), axis=0)
+            near = ~failed & (worst >= opt.verify * threshold)
+            failed = failed.copy()
+            if near.any():
+                failed[near] = rollouts_fail(rec, twin, res.samples[near], nthread=opt.nthread)
+            verification = {"fraction": float(opt.verify),
+                            "cost_from": float(opt.verify * threshold),
+                            "rollouts": int(near.sum()),
+                            "failed": int(failed[near].sum())}
+    n_fail = int(failed.sum())
+    p = 1.0 - n_fail / len(samples)
+    interval = sp.wilson_interval(len(samples) - n_fail, len(samples), confidence=opt.confidence)
     with stage("critical values"):
         curves = _curves(evaluator, steps, box, opt.critical_grid) if steps.size else {}
     searches: dict[int, dict] = {}
@@ -564,10 +619,15 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     cost_map = None
     if opt.map_resolution and box.ndim >= 2 and steps.size:
         cost_map = _cost_map(res, box, opt.map_resolution)
-    causes = tuple(c for c in (_cause(mr) for mr in moment_reports) if c)
+    causes = tuple(_causes(moment_reports))
     if nominal_cost > threshold:
         causes = (f"fails at the nominal parameters (max cost {nominal_cost:.3g} > "
                   f"{threshold:g})",) + causes
+    if verification and verification["failed"]:
+        causes += (f"{verification['failed']} of {verification['rollouts']} samples that pass "
+                   f"at the moments with a cost ≥ {verification['cost_from']:.3g} fail in "
+                   f"their own full rollout (between the moments or by not completing the "
+                   f"task); suggestion: reduce the uncertainty near the safe region's edge",)
     if task_failed:
         causes = (f"the task is not completed at the nominal parameters (stage "
                   f"{int(rec.stage.max())} reached, final stage {int(rec.stage[-1])}, 4 needed "
@@ -578,7 +638,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         moments=tuple(moment_reports), candidates=tuple(candidates), safe_region=region,
         safe_region_text=_region_text(region, box, verdict), failure_causes=causes,
         nominal_cost=nominal_cost, recording=rec, sweep=res, curves=curves, cost_map=cost_map,
-        scenario=sc, options=opt, timings=timings, manifest=manifest)
+        scenario=sc, options=opt, timings=timings, manifest=manifest, failed=failed,
+        verification=verification)
 
 
 def _select_samples(res: sp.SparseResult, cols: slice) -> sp.SparseResult:

@@ -121,12 +121,38 @@ def cmd_moments(args) -> int:
     return EXIT_OK
 
 
+def _method(args) -> dict:
+    """The sparse method's options shared by ``analyze`` and ``validate``."""
+    from critmoment.analysis import AnalyzeOptions
+
+    default = AnalyzeOptions()
+    return {"horizon": args.horizon,
+            "max_moments": default.max_moments if args.max_moments is None else args.max_moments,
+            "verify": None if args.no_verify else (
+                default.verify if args.verify is None else args.verify)}
+
+
+def _add_method(p) -> None:
+    from critmoment.analysis import AnalyzeOptions
+
+    default = AnalyzeOptions()
+    p.add_argument("--horizon", type=int, default=None,
+                   help="physics steps per sparse evaluation (default: the scenario's)")
+    p.add_argument("--max-moments", type=int, default=None,
+                   help=f"critical moments audited (default {default.max_moments})")
+    p.add_argument("--verify", type=float, default=None, metavar="FRACTION",
+                   help="re-run in full the samples that pass with a cost >= FRACTION x "
+                        f"threshold (default {default.verify})")
+    p.add_argument("--no-verify", action="store_true", help="skip the verification rollouts")
+
+
 def cmd_analyze(args) -> int:
     from critmoment import report
     from critmoment.analysis import AnalyzeOptions, analyze
 
     twin, traj = _load(args)
-    options = AnalyzeOptions(seed=args.seed, n_samples=args.samples, min_success=args.min_success)
+    options = AnalyzeOptions(seed=args.seed, n_samples=args.samples, min_success=args.min_success,
+                             **_method(args))
     result = analyze(traj, twin.scenario, twin=twin, options=options,
                      progress=not args.json and sys.stderr.isatty())
     out = _out_dir(args.out)
@@ -142,10 +168,10 @@ def cmd_analyze(args) -> int:
 
 
 def cmd_validate(args) -> int:
-    from critmoment.validate import validate
+    from critmoment.validation import validate
 
     twin, traj = _load(args)
-    result = validate(traj, twin=twin, n_samples=args.samples, seed=args.seed)
+    result = validate(traj, twin=twin, n_samples=args.samples, seed=args.seed, **_method(args))
     out = _out_dir(args.out)
     payload = result.to_json()
     if out is not None:
@@ -196,12 +222,14 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--samples", type=int, default=256, help="Sobol samples of the box")
     p.add_argument("--min-success", type=float, default=None,
                    help="exit 0 when P(success) >= this even if not SAFE")
+    _add_method(p)
     p.set_defaults(func=cmd_analyze)
 
     p = sub.add_parser("validate", help="check sparse verdicts against brute-force full rollouts")
     add_traj(p)
-    p.add_argument("--samples", type=int, default=64)
-    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--samples", type=int, default=64, help="Sobol samples of the box")
+    p.add_argument("--seed", type=int, default=0, help="Sobol seed")
+    _add_method(p)
     p.set_defaults(func=cmd_validate)
     return parser
 

@@ -3,7 +3,7 @@
 :func:`simulate` steps one or many full trajectories through
 ``mujoco.batch.Batch.rollout`` (C loop, thread pool, per-simulation parameters):
 the frequent rollout is the case n = 1 at nominal parameters, and brute-force
-validation (``critmoment.validate``) is the same call with n parameter samples.
+validation (``critmoment.validation``) is the same call with n parameter samples.
 
 :func:`rollout` returns a :class:`Recording`: the integration state before every
 physics step (restorable bit-exactly, warmstart included), the sensor data of
@@ -16,6 +16,7 @@ import dataclasses
 import hashlib
 import json
 from pathlib import Path
+from typing import Iterator
 
 import mujoco
 import mujoco.batch
@@ -25,7 +26,7 @@ from critmoment import trajectory as trajectory_mod
 from critmoment.exceptions import InputFileError, SimulationDivergedError, TrajectoryError
 from critmoment.scenario import Scenario, load_scenario
 from critmoment.trajectory import Trajectory
-from critmoment.twin import STATE_SPEC, Signals, Twin
+from critmoment.twin import STATE_SPEC, Signals, Twin, carried_flags
 
 __all__ = [
     "Recording",
@@ -34,6 +35,9 @@ __all__ = [
     "prepare_controls",
     "initial_state",
     "task_completed",
+    "ends_completed",
+    "batched_rollouts",
+    "rollouts_fail",
     "model_hash",
 ]
 
@@ -189,6 +193,102 @@ def task_completed(stage: np.ndarray, *, dt: float, debounce: float = 0.02) -> n
         starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
         flat_ok[i] = bool(((ends - starts) <= width).all() and ends[-1] < t)
     return ok & reached
+
+
+def ends_completed(stage: np.ndarray) -> np.ndarray:
+    """Whether each run *ends* with the task completed (stage 4 at its last step).
+
+    The outcome rule of brute-force validation (:mod:`critmoment.validation`) and of the
+    audit's verification rollouts. It is more lenient than :func:`task_completed` in one
+    way: a loss of stage 4 before the final acquisition does not count, so a receiver that
+    bumps into the object before it closes on it (stage 4 for a few steps, then 2 again, then
+    4 to the end) completes the task. ACT itself counts an episode as a success once stage 4
+    is reached at all.
+
+    Args:
+        stage: task stage per step, (..., T).
+
+    Returns:
+        (...) bool.
+    """
+    stage = np.asarray(stage)
+    if stage.ndim == 0 or stage.shape[-1] == 0:
+        return np.zeros(stage.shape[:-1] if stage.ndim else (), dtype=bool)
+    return stage[..., -1] >= 4
+
+
+def batched_rollouts(twin: Twin, state0: np.ndarray, controls: np.ndarray, samples: np.ndarray,
+                     *, model: mujoco.MjModel | None = None, chunk: int = 16,
+                     nthread: int = 0) -> Iterator[tuple[int, dict[str, np.ndarray], np.ndarray]]:
+    """Full rollouts of many parameter samples, in equal chunks of at most ``chunk``.
+
+    A whole 8 s rollout records (T, nsensordata) floats per simulation (about 6 MB for the
+    bundled scenario), so the samples go through :func:`simulate` a chunk at a time, each
+    chunk batched over MuJoCo's thread pool; at most two Batch objects are made.
+
+    Args:
+        twin: the twin.
+        state0: initial integration state, (nstate,).
+        controls: controls per physics step, (T, nu).
+        samples: parameter values, (n, k).
+        model: the twin's model or one with sensors appended after the twin's
+            (:meth:`Twin.add_sensors`); default the twin's.
+        chunk: most simulations per batch call.
+        nthread: threads (0: all CPUs).
+
+    Yields:
+        (index of the chunk's first sample, :func:`simulate`'s result, the friction of the
+        object's contacts per simulation (c,)).
+    """
+    model = twin.model if model is None else model
+    total = samples.shape[0]
+    if total == 0:
+        return
+    size = -(-total // -(-total // max(1, int(chunk))))  # equal chunks: two sizes at most
+    batches: dict[int, mujoco.batch.Batch] = {}
+    for start in range(0, total, size):
+        rows = samples[start:start + size]
+        batch = batches.get(rows.shape[0])
+        if batch is None:
+            batch = batches[rows.shape[0]] = mujoco.batch.Batch(model, rows.shape[0],
+                                                                nthread=nthread)
+        out = simulate(twin, state0, controls, samples=rows, nthread=nthread, batch=batch)
+        friction = batch.expanded("geom_friction")
+        mu = (np.full(rows.shape[0], twin.object_friction()) if friction is None
+              else friction[:, twin.object_geom_id, 0].copy())
+        yield start, out, mu
+
+
+def rollouts_fail(recording: "Recording", twin: Twin, samples: np.ndarray, *, chunk: int = 16,
+                  nthread: int = 0) -> np.ndarray:
+    """Frequent evaluation at each sample's own parameters: does its full rollout fail?
+
+    The audit's *verification* of near-threshold samples. A sample fails when its rollout
+    diverges, when its cost (eq. 15, the grasp gated where the nominal ``recording`` carries
+    the object, as sparse evaluation gates it) exceeds the threshold at any step, or when it
+    does not end with the task completed (:func:`ends_completed`).
+
+    Args:
+        recording: the nominal frequent rollout (initial state, controls, carried flags).
+        twin: its twin.
+        samples: parameter values, (n, k).
+        chunk: most rollouts per batch call.
+        nthread: threads (0: all CPUs).
+
+    Returns:
+        (n,) bool.
+    """
+    samples = twin.scenario.box.check_samples(samples)
+    threshold = twin.scenario.cost.threshold
+    sig = recording.signals
+    carried = carried_flags(sig.contact_support, sig.contact_gripper)
+    out = np.zeros(samples.shape[0], dtype=bool)
+    for start, run, mu in batched_rollouts(twin, recording.states[0], recording.controls,
+                                           samples, chunk=chunk, nthread=nthread):
+        s = twin.signals(run["sensordata"], mu=mu[:, None], carried=carried[None, :])
+        out[start:start + mu.shape[0]] = (run["diverged"] | (s.cost > threshold).any(axis=1)
+                                          | ~ends_completed(s.stage))
+    return out
 
 
 @dataclasses.dataclass(frozen=True)

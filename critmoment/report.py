@@ -118,6 +118,7 @@ def report_json(report, *, timings: bool = True) -> dict:
                         for p in box.parameters},
         "cost": dataclasses_asdict(report.scenario.cost),
         "horizon": int(report.sweep.horizon) if report.sweep is not None else None,
+        "verification": _jsonable(report.verification),
         "rollout": report.recording.summary(),
         "manifest": _jsonable(report.manifest),
     }
@@ -217,6 +218,10 @@ def summary_text(report) -> str:
         lines.append(f"  {i}. {m.label.value:12s} step {m.step:5d} (t = {m.time:.2f} s): max cost "
                      f"{mr.max_cost:.3f} at {worst}; min FOS contact {mr.min_fos_contact:.3g}, "
                      f"motor {mr.min_fos_motor:.3g}; critical: {crit}")
+    v = report.verification
+    if v is not None:
+        lines.append(f"  verification: {v['rollouts']} sample(s) with cost ≥ {v['cost_from']:.3g} "
+                     f"re-run in full, {v['failed']} of them fail")
     for cause in report.failure_causes:
         lines.append(f"  ! {cause}")
     return "\n".join(lines)
@@ -259,6 +264,14 @@ td,th{border:1px solid #ccc;padding:.3em .6em;text-align:left;vertical-align:top
 th{background:#f4f4f4} img{max-width:100%;border:1px solid #eee;margin:.4em 0}
 .muted{color:#666;font-size:.9em} code{background:#f4f4f4;padding:0 .2em}
 """
+
+
+def _verification_html(doc) -> str:
+    v = doc.get("verification")
+    if not v:
+        return ""
+    return (f" · verification: {v['rollouts']} near-threshold sample(s) (cost ≥ "
+            f"{v['cost_from']:.3g}) re-run in full, {v['failed']} fail")
 
 
 def _html(report, doc, images) -> str:
@@ -305,7 +318,7 @@ def _html(report, doc, images) -> str:
 nominal max cost {doc['nominal_cost']:.3f} against threshold {doc['threshold']:g}.</p>
 <p class=muted>Trajectory {e(str(man['trajectory']))} · scenario {e(str(man['scenario']))} ·
 model {e(str(man['model_sha256'])[:12])} · seed {man['seed']} · critmoment {e(man['critmoment'])},
-MuJoCo {e(man['mujoco'])} · sparse horizon {doc['horizon']} step(s)</p>
+MuJoCo {e(man['mujoco'])} · sparse horizon {doc['horizon']} step(s){_verification_html(doc)}</p>
 <h2>Failure causes and suggestions</h2><ul>{causes}</ul>
 <h2>Critical moments</h2>
 <table><tr><th>step</th><th>label</th><th>why chosen</th><th>worst case</th><th>max cost</th>

@@ -80,7 +80,7 @@ import numpy as np
 from critmoment.exceptions import ParameterError, SimulationDivergedError
 from critmoment.params import UncertaintyBox
 from critmoment.scenario import CostParams
-from critmoment.twin import STATE_SPEC, Twin
+from critmoment.twin import STATE_SPEC, Twin, carried_flags
 
 __all__ = [
     "SparseMode",
@@ -401,8 +401,7 @@ class SparseEvaluator:
         self.twin = twin
         self.recording = recording
         sig = recording.signals
-        self._carried = ~np.asarray(sig.contact_support, bool) & np.asarray(
-            sig.contact_gripper, bool).any(axis=-1)
+        self._carried = carried_flags(sig.contact_support, sig.contact_gripper)
         horizon = twin.scenario.horizon if horizon is None else horizon
         self.horizon = _check_int("horizon", horizon, 1)
         self.mode = _check_enum("mode", mode, SparseMode)

@@ -22,7 +22,6 @@ from __future__ import annotations
 
 from typing import Callable
 
-import numpy as np
 
 from critmoment.demos import DemoOptions, sample_box_pose, scripted_transfer
 from critmoment.exceptions import ParameterError

@@ -30,7 +30,7 @@ from critmoment import safety
 from critmoment.exceptions import ParameterError, ScenarioError, TrajectoryError
 from critmoment.scenario import Scenario
 
-__all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "Twin"]
+__all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "Twin", "carried_flags"]
 
 #: contact slots read per object/geom pair; MuJoCo's box-box collider makes at most 8
 CONTACT_SLOTS = 8
@@ -72,6 +72,19 @@ class Signals:
     stage: np.ndarray
 
 
+def carried_flags(contact_support: np.ndarray, contact_gripper: np.ndarray) -> np.ndarray:
+    """Where the object is carried: off its support and touched by a gripper.
+
+    Args:
+        contact_support: object touches a support geom, (...) bool.
+        contact_gripper: object touches each gripper, (..., n_grippers) bool.
+
+    Returns:
+        (...) bool. Sparse evaluation gates the grasp FOS with the nominal run's flags.
+    """
+    return ~np.asarray(contact_support, bool) & np.asarray(contact_gripper, bool).any(axis=-1)
+
+
 def _sensor_name(*parts: str) -> str:
     return "critmoment:" + ":".join(parts)
 
@@ -91,7 +104,7 @@ class Twin:
     def __init__(self, scenario: Scenario):
         self.scenario = scenario
         spec = mujoco.MjSpec.from_file(str(scenario.mjcf))
-        self._add_sensors(spec)
+        self.add_sensors(spec)
         try:
             model = spec.compile()
         except ValueError as exc:
@@ -106,7 +119,15 @@ class Twin:
         self.write_parameters(model, scenario.box.nominal[None, :])
 
     # -- construction ---------------------------------------------------------
-    def _add_sensors(self, spec: mujoco.MjSpec) -> None:
+    def add_sensors(self, spec: mujoco.MjSpec) -> None:
+        """Add the twin's safety sensors to ``spec`` (the scenario's model, as an MjSpec).
+
+        The twin's model is the scenario's MJCF with these sensors. Tools that need more
+        readings (e.g. :mod:`critmoment.validation`) call this first and append their own
+        sensors after it: the twin's readings then keep their addresses, ``signals`` reads
+        the first :attr:`nsensordata` values unchanged, and the physics is the same (sensors
+        do not act on the dynamics).
+        """
         sc = self.scenario
         found_force = (1 << int(mujoco.mjtConDataField.mjCONDATA_FOUND)) | (
             1 << int(mujoco.mjtConDataField.mjCONDATA_FORCE))
@@ -345,7 +366,7 @@ class Twin:
         fos_grasp = safety.contact_fos(np.concatenate(normals, axis=-1),
                                        np.concatenate(tangentials, axis=-1), mu)
         if carried is None:
-            carried = ~contact_support & contact_gripper.any(axis=-1)
+            carried = carried_flags(contact_support, contact_gripper)
         # carried but touched by no gripper: the object is falling (FOS 0, a failure)
         held = np.where(contact_gripper.any(axis=-1), fos_grasp, 0.0)
         fos_grasp = np.where(np.broadcast_to(carried, fos_grasp.shape), held, np.inf)

@@ -7,7 +7,7 @@ import argparse
 
 import critmoment as cm
 from critmoment import demos
-from critmoment.validate import validate
+from critmoment.validation import validate
 
 
 def main(samples: int):

@@ -32,8 +32,8 @@ Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
   with that gripper alone (an object moves in a gripper that lets go: that is the release).
   With ``slip_is_failure`` (default) a run that slips counts as a failure even when it
   completes the task; otherwise it is ``SUCCESS`` when completed.
-* ``NOT_COMPLETED``: the task is not completed (:func:`ends_completed`: stage 4 at the end,
-  its final acquisition kept, losses up to ``drop_time`` ignored) and none of the above
+* ``NOT_COMPLETED``: the task is not completed (:func:`~critmoment.recording.ends_completed`:
+  the run ends in stage 4) and none of the above
   explains it (e.g. the object was never grasped, as in the nominal run itself).
 * ``SUCCESS``: completed, and none of the above.
 
@@ -62,13 +62,13 @@ import mujoco.batch
 import numpy as np
 
 from critmoment import sparse as sp
-from critmoment.analysis import AnalyzeOptions, detect_moments
+from critmoment.analysis import AnalyzeOptions, audit_moments
 from critmoment.exceptions import ParameterError
 from critmoment.moments import Moment
-from critmoment.recording import (Recording, initial_state, prepare_controls, rollout, simulate,
-                                  task_completed)
+from critmoment.recording import (Recording, batched_rollouts, ends_completed, initial_state,
+                                  prepare_controls, rollout, rollouts_fail)
 from critmoment.trajectory import Trajectory
-from critmoment.twin import Twin
+from critmoment.twin import Twin, carried_flags
 
 __all__ = [
     "Outcome",
@@ -91,6 +91,9 @@ __all__ = [
 ]
 
 VALIDATION_SCHEMA = "critmoment.validation/1"
+
+#: the audit's default options: validation tests what ``analyze`` does unless told otherwise
+_AUDIT = AnalyzeOptions()
 
 _SENSOR_PREFIX = "critmoment:validate:"
 
@@ -127,7 +130,7 @@ class OutcomeCriteria:
             its target [rad].
         tracking_time: how long a tracking loss must last to count [s].
         drop_time: longest ignored loss of the object where the nominal run carries it [s]
-            (the debounce of :func:`critmoment.recording.task_completed`).
+            (the debounce of the drop test).
     """
 
     slip_tolerance: float = 0.01
@@ -172,14 +175,6 @@ def _check_int(name: str, value: Any, minimum: int) -> int:
 # --------------------------------------------------------------------------
 # classification of full rollouts
 # --------------------------------------------------------------------------
-
-
-def _carried(contact_support: np.ndarray, contact_gripper: np.ndarray) -> np.ndarray:
-    """Where the object is carried: off its support and touched by a gripper, (...) bool.
-
-    The definition :class:`critmoment.sparse.SparseEvaluator` gates the grasp FOS with.
-    """
-    return ~np.asarray(contact_support, bool) & np.asarray(contact_gripper, bool).any(axis=-1)
 
 
 def _run_length(flags: np.ndarray) -> np.ndarray:
@@ -262,35 +257,6 @@ class Classification:
                               dt=parts[0].dt, criteria=parts[0].criteria, **arrays)
 
 
-def ends_completed(stage: np.ndarray, *, dt: float, debounce: float = 0.02) -> np.ndarray:
-    """Whether each run ends with the task completed: its final acquisition of stage 4 kept.
-
-    Like :func:`critmoment.recording.task_completed` (stage 4 kept to the end, losses up to
-    ``debounce`` ignored, a loss reaching the end never), except that losses of stage 4
-    *before* its final acquisition do not count: a receiver that bumps into the object before
-    it closes on it (stage 4 for a few steps, then 2 again) and then takes it over completes
-    the task. ACT itself counts an episode as a success once stage 4 is reached.
-
-    Args:
-        stage: task stage per step, (n, T).
-        dt: physics step [s].
-        debounce: longest ignored loss of stage 4 [s].
-
-    Returns:
-        (n,) bool.
-    """
-    stage = np.asarray(stage)
-    if stage.ndim != 2:
-        raise ParameterError(f"stage: expected shape (n, T), got {stage.shape}")
-    n, t = stage.shape
-    if t == 0:
-        return np.zeros(n, dtype=bool)
-    width = max(1, int(round(debounce / dt)))
-    long_loss = _run_length(stage < 4) > width
-    last = np.where(long_loss.any(axis=1), t - 1 - np.argmax(long_loss[:, ::-1], axis=1), -1)
-    return (last < t - 1) & (stage[:, -1] >= 4)
-
-
 def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
              contact_support: np.ndarray, nominal_carried: np.ndarray,
              actuator_norm: np.ndarray, tracking_excess: np.ndarray | None = None,
@@ -352,7 +318,7 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
                      else np.asarray(diverged_step, dtype=np.int64))
     c = criteria
 
-    completed = ends_completed(stage, dt=dt, debounce=c.drop_time)
+    completed = ends_completed(stage)
     # motor: saturation, or tracking lost, for longer than the stated times
     saturated = np.abs(actuator_norm) >= c.saturation
     sat_run = _run_length(saturated.transpose(0, 2, 1))  # (n, r, T)
@@ -365,7 +331,7 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
                    for j in range(tracking_excess.shape[-1])]
     motor_step = _earliest(np.stack(starts, axis=-1)) if starts else np.full(n, -1)
     # drop: not carried where the nominal run carries the object
-    carried = _carried(contact_support, contact_gripper)
+    carried = carried_flags(contact_support, contact_gripper)
     drop_step = _last_run(nominal_carried[None, :] & ~carried, c.steps(c.drop_time, dt))
     # slip: moved in the grip beyond the tolerance for longer than slip_time
     if slip is None:
@@ -481,7 +447,7 @@ class _Probe:
         base = twin.model
         self.anchors = [_gripper_anchor(base, g.geoms) for g in sc.grippers]
         spec = mujoco.MjSpec.from_file(str(sc.mjcf))
-        twin._add_sensors(spec)  # the twin's sensors first, at the same addresses
+        twin.add_sensors(spec)  # the twin's sensors first, at the same addresses
         for g, anchor in zip(sc.grippers, self.anchors):
             s = spec.add_sensor()
             s.name = f"{_SENSOR_PREFIX}pos:{g.name}"
@@ -612,8 +578,8 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
     everything = np.vstack([box.nominal[None, :], samples])
     reference = None
     parts, diverged = [], []
-    for _, out, mu in _rollouts(twin, probe.model, state0, controls, everything, chunk=chunk,
-                                nthread=nthread):
+    for _, out, mu in batched_rollouts(twin, state0, controls, everything, model=probe.model,
+                                       chunk=chunk, nthread=nthread):
         frames = _Frames.read(twin, probe, out["sensordata"], mu)
         if reference is None:
             reference = frames.row(0)
@@ -630,30 +596,6 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
                       diverged=np.concatenate(diverged)[keep],
                       nominal_completed=bool(result.completed[0]), n_steps=controls.shape[0],
                       dt=dt, seconds=time.perf_counter() - t_start)
-
-
-def _rollouts(twin: Twin, model: mujoco.MjModel, state0: np.ndarray, controls: np.ndarray,
-              samples: np.ndarray, *, chunk: int, nthread: int):
-    """Full rollouts of ``samples`` in equal chunks of at most ``chunk`` simulations.
-
-    Yields (offset of the chunk's first sample, :func:`critmoment.recording.simulate`'s
-    result, the object friction per simulation (c,)). ``model`` is the twin's model or one
-    with sensors appended (same bodies, geoms and actuators).
-    """
-    total = samples.shape[0]
-    size = -(-total // -(-total // chunk))  # equal chunks: at most two batch sizes
-    batches: dict[int, mujoco.batch.Batch] = {}
-    for start in range(0, total, size):
-        rows = samples[start:start + size]
-        batch = batches.get(rows.shape[0])
-        if batch is None:
-            batch = batches[rows.shape[0]] = mujoco.batch.Batch(model, rows.shape[0],
-                                                                nthread=nthread)
-        out = simulate(twin, state0, controls, samples=rows, nthread=nthread, batch=batch)
-        friction = batch.expanded("geom_friction")
-        mu = (np.full(rows.shape[0], twin.object_friction()) if friction is None
-              else friction[:, twin.object_geom_id, 0].copy())
-        yield start, out, mu
 
 
 @dataclasses.dataclass(frozen=True)
@@ -695,7 +637,7 @@ def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, 
     alone = nominal_held & (nominal_held.sum(axis=-1, keepdims=True) == 1)
     slip = grip_slip(frames.position, reference.position, frames.held, nominal_held,
                      counted=alone, projectors=probe.projectors)
-    nominal_carried = _carried(reference.contact_support, reference.contact_gripper)
+    nominal_carried = carried_flags(reference.contact_support, reference.contact_gripper)
     return classify(dt=dt, stage=frames.stage, contact_gripper=frames.contact_gripper,
                     contact_support=frames.contact_support, nominal_carried=nominal_carried,
                     actuator_norm=frames.actuator_norm, tracking_excess=excess, slip=slip,
@@ -760,7 +702,7 @@ def envelope_steps(recording: Recording, *, spacing: float, horizon: int = 1) ->
     """
     spacing = _check_positive("spacing", spacing)
     sig = recording.signals
-    carried = _carried(sig.contact_support, sig.contact_gripper)
+    carried = carried_flags(sig.contact_support, sig.contact_gripper)
     where = np.flatnonzero(carried)
     if where.size == 0:
         return np.zeros(0, dtype=np.int64)
@@ -772,7 +714,7 @@ def envelope_steps(recording: Recording, *, spacing: float, horizon: int = 1) ->
 
 def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int | None = None,
             mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int | None = None,
-            envelope: float | None = None, verify: float | None = None,
+            envelope: float | None = None, verify: float | None = _AUDIT.verify,
             require_task: bool = True, chunk: int = 16, nthread: int = 0) -> Prediction:
     """The audit's sparse prediction for parameter samples (the method under test).
 
@@ -794,11 +736,13 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
             :attr:`critmoment.analysis.AnalyzeOptions.max_moments`).
         envelope: if given, also evaluate every ``envelope`` seconds over the phase where the
             nominal run carries the object (:func:`envelope_steps`) [s].
-        verify: if given, a fraction of the cost threshold: every sample predicted safe with
+        verify: a fraction of the cost threshold (default the audit's,
+            :attr:`critmoment.analysis.AnalyzeOptions.verify`), or None: every sample predicted safe with
             a sparse cost at or above ``verify × threshold`` gets its own frequent rollout (a
             full rollout at its parameters) and fails when its cost exceeds the threshold at
             any step (where the nominal run carries the object, as in sparse evaluation) or
-            it does not complete the task (:func:`critmoment.recording.task_completed`).
+            it does not end with the task completed
+            (:func:`critmoment.recording.rollouts_fail`).
         require_task: an incomplete nominal rollout makes every sample fail.
         chunk: most full rollouts per batch call in the verification.
         nthread: threads (0: all CPUs).
@@ -807,7 +751,7 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
         The :class:`Prediction`.
     """
     if max_moments is None:
-        max_moments = AnalyzeOptions().max_moments
+        max_moments = _AUDIT.max_moments
     max_moments = _check_int("max_moments", max_moments, 1)
     if verify is not None and (isinstance(verify, bool) or not isinstance(verify, numbers.Real)
                                or not 0 < verify <= 1):
@@ -821,11 +765,9 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     timings["rollout"] = t1 - t0
     evaluator = sp.SparseEvaluator(rec, twin, horizon=horizon, mode=mode, nthread=nthread)
     h = evaluator.horizon
-    # the audit's selection (critmoment.analysis.analyze): the ranked candidates, the first few
-    # (detect_moments returns 8 candidates by default; more when more moments are asked for)
-    moments = tuple(detect_moments(rec, twin, evaluator=evaluator,
-                                   max_moments=max(8, max_moments))[:max_moments])
-    steps = np.array([min(m.step, rec.n_steps - h) for m in moments], dtype=np.int64)
+    # the audit's own selection (critmoment.analysis.audit_moments)
+    candidates, steps = audit_moments(rec, twin, evaluator, max_moments)
+    moments = tuple(candidates[:steps.size])
     t2 = time.perf_counter()
     timings["moments"] = t2 - t1
     extra = (envelope_steps(rec, spacing=envelope, horizon=h) if envelope is not None
@@ -853,9 +795,9 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
         threshold = twin.scenario.cost.threshold
         verified = ~failed & (cost_all >= verify * threshold)
         if verified.any():
-            failed[verified] = _own_rollouts_fail(rec, twin, samples[verified],
-                                                  chunk=_check_int("chunk", chunk, 1),
-                                                  nthread=nthread)
+            failed[verified] = rollouts_fail(rec, twin, samples[verified],
+                                             chunk=_check_int("chunk", chunk, 1),
+                                             nthread=nthread)
         timings["verification"] = time.perf_counter() - t3
     return Prediction(samples=samples, moments=moments, steps=steps, envelope_steps=extra,
                       max_moments=max_moments, horizon=h, mode=evaluator.mode, cost=cost_all,
@@ -863,26 +805,6 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
                       failed=failed, verified=verified, nominal_completed=nominal_completed,
                       require_task=bool(require_task), seconds=time.perf_counter() - t0,
                       timings=timings)
-
-
-def _own_rollouts_fail(rec: Recording, twin: Twin, samples: np.ndarray, *, chunk: int,
-                       nthread: int) -> np.ndarray:
-    """Frequent evaluation at each sample's own parameters: (n,) bool, fails anywhere.
-
-    The sample's full rollout fails when it diverges, when its cost (eq. 15, with the grasp
-    gated by where the nominal run carries the object, as sparse evaluation gates it) exceeds
-    the threshold at any step, or when it does not complete the task.
-    """
-    threshold = twin.scenario.cost.threshold
-    carried = _carried(rec.signals.contact_support, rec.signals.contact_gripper)
-    out = np.empty(samples.shape[0], dtype=bool)
-    for start, run, mu in _rollouts(twin, twin.model, rec.states[0], rec.controls, samples,
-                                    chunk=chunk, nthread=nthread):
-        sig = twin.signals(run["sensordata"], mu=mu[:, None], carried=carried[None, :])
-        out[start:start + mu.shape[0]] = (
-            run["diverged"] | (sig.cost > threshold).any(axis=1)
-            | ~task_completed(sig.stage, dt=rec.dt))
-    return out
 
 
 # --------------------------------------------------------------------------
@@ -1155,7 +1077,7 @@ def compare(brute: BruteForce, prediction: Prediction, *, trajectory: str = "",
 def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | None = 0,
              samples: np.ndarray | None = None, horizon: int | None = None,
              mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int | None = None,
-             envelope: float | None = None, verify: float | None = None,
+             envelope: float | None = None, verify: float | None = _AUDIT.verify,
              require_task: bool = True, criteria: OutcomeCriteria = OutcomeCriteria(),
              chunk: int = 16, nthread: int = 0) -> ValidationResult:
     """Check the audit's sparse verdicts against brute-force full rollouts.
@@ -1168,10 +1090,12 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
         samples: explicit parameter values (n, k) instead of the Sobol samples.
         horizon: sparse horizon [physics steps] (default: the scenario's).
         mode: sparse mode, STEP or SOLVE (horizon 1).
-        max_moments: moments audited (default: the audit's, now 4).
+        max_moments: moments audited (default: the audit's,
+            :attr:`critmoment.analysis.AnalyzeOptions.max_moments`).
         envelope: spacing of the envelope check over the carrying phase [s], or None.
         verify: re-run in full the samples predicted safe with a cost at or above this
-            fraction of the threshold (see :func:`predict`), or None.
+            fraction of the threshold (see :func:`predict`; default the audit's,
+            :attr:`critmoment.analysis.AnalyzeOptions.verify`), or None.
         require_task: an incomplete nominal rollout makes every prediction a failure.
         criteria: the outcome tolerances.
         chunk: most full rollouts per batch call.

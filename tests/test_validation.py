@@ -1,4 +1,4 @@
-"""Tests of critmoment.validate: outcome classification, slip measure, confusion arithmetic,
+"""Tests of critmoment.validation: outcome classification, slip measure, confusion arithmetic,
 the brute force on the bundled scene, and the end-to-end comparison (few samples, fast)."""
 
 from __future__ import annotations
@@ -12,10 +12,10 @@ import pytest
 
 from critmoment import recording as rec_mod
 from critmoment import suite
-from critmoment import validate as val
+from critmoment import validation as val
 from critmoment.exceptions import ParameterError
 from critmoment.sparse import SparseMode
-from critmoment.validate import Outcome, OutcomeCriteria
+from critmoment.validation import Outcome, OutcomeCriteria
 
 DT = 0.002
 T = 400          # 0.8 s of hand-made signals
@@ -142,11 +142,11 @@ def test_early_touch_before_the_final_grasp_still_completes():
     stage[0, 100:] = 2
     stage[0, 150:152] = 4   # the receiver bumps the object ...
     stage[0, 200:] = 4      # ... and takes it 96 ms later, to the end
-    assert val.ends_completed(stage, dt=DT).tolist() == [True]
+    assert val.ends_completed(stage).tolist() == [True]
     # the recording's stricter definition calls the same run incomplete
     assert not rec_mod.task_completed(stage, dt=DT)[0]
     stage[0, -5:] = 2       # a loss that reaches the end fails both
-    assert val.ends_completed(stage, dt=DT).tolist() == [False]
+    assert val.ends_completed(stage).tolist() == [False]
 
 
 def test_classify_rejects_inconsistent_shapes():
