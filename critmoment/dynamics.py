@@ -736,13 +736,29 @@ def v_mj_to_pin(pm: PinocchioModel, qpos: np.ndarray, qvel: np.ndarray) -> np.nd
     Returns:
         (..., nv) Pinocchio velocity.
     """
-    qpos, qvel = np.asarray(qpos, dtype=float), np.asarray(qvel, dtype=float)
-    v = np.empty_like(qvel)
-    v[..., pm._v_pin] = qvel[..., pm._v_mj]
+    return _mj_to_pin(pm, qpos, qvel)
+
+
+def _mj_to_pin(pm: PinocchioModel, qpos: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Reorder MuJoCo dof vectors to Pinocchio's, free joints' linear part world → local."""
+    qpos, x = np.asarray(qpos, dtype=float), np.asarray(x, dtype=float)
+    out = np.empty_like(x)
+    out[..., pm._v_pin] = x[..., pm._v_mj]
     for jm in pm._free:
         rot = _free_rot(qpos, jm)
-        v[..., jm.idx_v : jm.idx_v + 3] = _rot_t(rot, qvel[..., jm.dofadr : jm.dofadr + 3])
-    return v
+        out[..., jm.idx_v : jm.idx_v + 3] = _rot_t(rot, x[..., jm.dofadr : jm.dofadr + 3])
+    return out
+
+
+def _pin_to_mj(pm: PinocchioModel, qpos: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Reorder Pinocchio dof vectors to MuJoCo's, free joints' linear part local → world."""
+    qpos, x = np.asarray(qpos, dtype=float), np.asarray(x, dtype=float)
+    out = np.empty_like(x)
+    out[..., pm._v_mj] = x[..., pm._v_pin]
+    for jm in pm._free:
+        rot = _free_rot(qpos, jm)
+        out[..., jm.dofadr : jm.dofadr + 3] = _rot(rot, x[..., jm.idx_v : jm.idx_v + 3])
+    return out
 
 
 def v_pin_to_mj(pm: PinocchioModel, qpos: np.ndarray, v: np.ndarray) -> np.ndarray:
@@ -756,13 +772,7 @@ def v_pin_to_mj(pm: PinocchioModel, qpos: np.ndarray, v: np.ndarray) -> np.ndarr
     Returns:
         (..., nv) MuJoCo velocities.
     """
-    qpos, v = np.asarray(qpos, dtype=float), np.asarray(v, dtype=float)
-    qvel = np.empty_like(v)
-    qvel[..., pm._v_mj] = v[..., pm._v_pin]
-    for jm in pm._free:
-        rot = _free_rot(qpos, jm)
-        qvel[..., jm.dofadr : jm.dofadr + 3] = _rot(rot, v[..., jm.idx_v : jm.idx_v + 3])
-    return qvel
+    return _pin_to_mj(pm, qpos, v)
 
 
 def a_mj_to_pin(pm: PinocchioModel, qpos: np.ndarray, qvel: np.ndarray, qacc: np.ndarray) -> np.ndarray:
@@ -806,13 +816,7 @@ def tau_pin_to_mj(pm: PinocchioModel, qpos: np.ndarray, tau: np.ndarray) -> np.n
     Returns:
         (..., nv) MuJoCo generalised forces.
     """
-    qpos, tau = np.asarray(qpos, dtype=float), np.asarray(tau, dtype=float)
-    qfrc = np.empty_like(tau)
-    qfrc[..., pm._v_mj] = tau[..., pm._v_pin]
-    for jm in pm._free:
-        rot = _free_rot(qpos, jm)
-        qfrc[..., jm.dofadr : jm.dofadr + 3] = _rot(rot, tau[..., jm.idx_v : jm.idx_v + 3])
-    return qfrc
+    return _pin_to_mj(pm, qpos, tau)
 
 
 def tau_mj_to_pin(pm: PinocchioModel, qpos: np.ndarray, qfrc: np.ndarray) -> np.ndarray:
@@ -826,13 +830,7 @@ def tau_mj_to_pin(pm: PinocchioModel, qpos: np.ndarray, qfrc: np.ndarray) -> np.
     Returns:
         (..., nv) Pinocchio generalised forces.
     """
-    qpos, qfrc = np.asarray(qpos, dtype=float), np.asarray(qfrc, dtype=float)
-    tau = np.empty_like(qfrc)
-    tau[..., pm._v_pin] = qfrc[..., pm._v_mj]
-    for jm in pm._free:
-        rot = _free_rot(qpos, jm)
-        tau[..., jm.idx_v : jm.idx_v + 3] = _rot_t(rot, qfrc[..., jm.dofadr : jm.dofadr + 3])
-    return tau
+    return _mj_to_pin(pm, qpos, qfrc)
 
 
 # --------------------------------------------------------------------------
