@@ -17,7 +17,7 @@ import numpy as np
 
 import critmoment as cm
 from critmoment import analysis, demos, report, sparse
-from critmoment.recording import initial_state, prepare_controls, simulate
+from critmoment.recording import batched_rollouts, initial_state, prepare_controls
 
 
 def main():
@@ -52,15 +52,16 @@ def main():
     controls = prepare_controls(twin, traj)
     state0 = initial_state(twin, traj)
     t0 = time.perf_counter()
-    for start in range(0, len(samples), args.chunk):
-        chunk = samples[start:start + args.chunk]
-        simulate(twin, state0, controls, samples=chunk, nthread=args.threads)
+    for _ in batched_rollouts(twin, state0, controls, samples, chunk=args.chunk,
+                              nthread=args.threads):
+        pass
     t_brute = time.perf_counter() - t0
 
     print(f"trajectory: {traj.source}, {controls.shape[0]} physics steps; "
           f"{args.samples} parameter samples; audit verdict {audit.verdict.value}, "
           f"P(success) {audit.p_success:.3f}, {len(audit.moments)} moments, "
-          f"horizon {audit.sweep.horizon}")
+          f"horizon {audit.sweep.horizon}; verification: "
+          f"{(audit.verification or {}).get('rollouts', 0)} full rollouts")
     print(f"{'what':44s} {'seconds':>10s}")
     print(f"{'audit computation (analyze)':44s} {t_audit:10.3f}")
     for stage, sec in audit.timings.items():

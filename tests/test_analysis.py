@@ -1,5 +1,6 @@
 """The end-to-end audit: verdicts against known answers, report contents, determinism."""
 
+import dataclasses
 import json
 import warnings
 
@@ -10,6 +11,7 @@ from critmoment import analysis, report
 from critmoment.analysis import AnalyzeOptions, Verdict, analyze, safe_subbox
 from critmoment.exceptions import ParameterError
 from critmoment.params import UncertaintyBox
+from critmoment.recording import rollouts_fail
 from critmoment.twin import Twin
 
 FAST = AnalyzeOptions(n_samples=64, search=False, map_resolution=6, critical_grid=9)
@@ -113,6 +115,52 @@ def test_bad_options():
         AnalyzeOptions(min_success=1.5)
     with pytest.raises(ParameterError, match="horizon"):
         AnalyzeOptions(horizon=0)
+    for bad in (0.0, 1.5, True):
+        with pytest.raises(ParameterError, match="verify"):
+            AnalyzeOptions(verify=bad)
+    with pytest.raises(ParameterError, match="max_moments"):
+        AnalyzeOptions(max_moments=0)
+
+
+@pytest.fixture(scope="module")
+def boundary_reports(twin, demo_traj, scenario):
+    """Audits of a box that ends near the critical mass, with and without verification."""
+    box = scenario.box.with_range("mass", 0.05, 1.5)
+    boundary = Twin(scenario.replace(box=box))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return {v: analyze(demo_traj, twin=boundary, options=dataclasses.replace(FAST, verify=v))
+                for v in (None, 0.8)}, boundary
+
+
+def test_verification_reruns_the_near_threshold_safes(boundary_reports):
+    reports, boundary = boundary_reports
+    plain, checked = reports[None], reports[0.8]
+    assert plain.verification is None
+    np.testing.assert_array_equal(plain.failed, plain.sweep.failed_any)
+    # same moments and sweep; verification only adds failures, among the near-threshold safes
+    np.testing.assert_array_equal(checked.sweep.cost, plain.sweep.cost)
+    threshold = boundary.scenario.cost.threshold
+    worst = checked.sweep.cost.max(axis=0)
+    near = ~checked.sweep.failed_any & (worst >= 0.8 * threshold)
+    v = checked.verification
+    assert v["rollouts"] == int(near.sum()) > 0
+    assert v["cost_from"] == pytest.approx(0.8 * threshold)
+    np.testing.assert_array_equal(checked.failed[~near], plain.failed[~near])
+    # the verdict of each re-run sample is its own full rollout's
+    own = rollouts_fail(checked.recording, boundary, checked.sweep.samples[near])
+    np.testing.assert_array_equal(checked.failed[near], own)
+    assert v["failed"] == int(own.sum())
+    assert checked.p_success == pytest.approx(1.0 - checked.failed.mean())
+    assert checked.to_json()["verification"] == {k: v[k] for k in v}
+
+
+def test_full_rollout_check_knows_a_held_and_a_dropped_cube(twin, demo_recording, scenario):
+    nominal = scenario.box.nominal
+    heavy = nominal.copy()
+    heavy[scenario.box.index("mass")] = 5.0
+    out = rollouts_fail(demo_recording, twin, np.stack([nominal, heavy]))
+    assert out.tolist() == [False, True]
 
 
 @pytest.mark.parametrize("seed", [0, 7, 14])

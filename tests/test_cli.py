@@ -53,6 +53,18 @@ def test_analyze_exit_codes(traj_file, capsys, tmp_path):
     assert json.loads(capsys.readouterr().out)["verdict"] == "CONDITIONAL"
 
 
+def test_analyze_method_flags(traj_file, capsys):
+    assert main(["analyze", str(traj_file), "--samples", "16", "--json", "--no-verify",
+                 "--max-moments", "3", "--horizon", "5"]) == 1
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["verification"] is None and len(doc["moments"]) == 3 and doc["horizon"] == 5
+    assert doc["manifest"]["options"]["max_moments"] == 3
+    assert main(["analyze", str(traj_file), "--samples", "16", "--json", "--verify", "0.5"]) == 1
+    assert json.loads(capsys.readouterr().out)["verification"]["fraction"] == 0.5
+    assert main(["analyze", str(traj_file), "--verify", "2"]) == 2
+    assert "verify" in capsys.readouterr().err
+
+
 @pytest.mark.parametrize("args, message", [
     (["rollout", "missing.npz"], "does not exist"),
     (["rollout", "{traj}", "--scenario", "no_such_scenario"], "scenario file not found"),
