@@ -174,39 +174,21 @@ def test_unknown_gripper_geom_lists_valid_names(tmp_path):
         assert valid in msg
 
 
-def test_unknown_object_body(tmp_path):
-    folder = _toml(tmp_path, ('body = "box"\ngeom', 'body = "cube"\ngeom'))
-    with pytest.raises(ScenarioError, match=r"\[object\] body: unknown body 'cube'; valid names: .*box"):
-        load_scenario(folder)
-
-
-def test_unknown_support_geom(tmp_path):
-    folder = _toml(tmp_path, ('geoms = ["table"]', 'geoms = ["floor"]'))
-    with pytest.raises(ScenarioError, match=r"\[support\] geoms: unknown geom 'floor'.*table"):
-        load_scenario(folder)
-
-
-def test_unknown_limit_actuator(tmp_path):
-    folder = _toml(tmp_path, ("waist = 10.0", "waist = 10.0\nhip = 3.0"))
-    with pytest.raises(ScenarioError, match=r"\[limits\] 'hip' matches no actuator; actuators: .*left/waist"):
-        load_scenario(folder)
-
-
-def test_missing_limit(tmp_path):
-    folder = _toml(tmp_path, ("waist = 10.0\n", ""))
-    with pytest.raises(ScenarioError, match=r"missing \['left/waist', 'right/waist'\]"):
-        load_scenario(folder)
-
-
-def test_unknown_keyframe(tmp_path):
-    folder = _toml(tmp_path, ('keyframe = "home"', 'keyframe = "away"'))
-    with pytest.raises(ScenarioError, match=r"unknown keyframe 'away'; valid: \['home'\]"):
-        load_scenario(folder)
-
-
-def test_unknown_parameter_target(tmp_path):
-    folder = _toml(tmp_path, ('[uncertainty.mass]\nbody = "box"', '[uncertainty.mass]\nbody = "brick"'))
-    with pytest.raises(ScenarioError, match=r"unknown body 'brick'; the model has: .*box"):
+@pytest.mark.parametrize("edit, message", [
+    (('body = "box"\ngeom', 'body = "cube"\ngeom'),
+     r"\[object\] body: unknown body 'cube'; valid names: .*box"),
+    (('geoms = ["table"]', 'geoms = ["floor"]'), r"\[support\] geoms: unknown geom 'floor'.*table"),
+    (("waist = 10.0", "waist = 10.0\nhip = 3.0"),
+     r"\[limits\] 'hip' matches no actuator; actuators: .*left/waist"),
+    (("waist = 10.0\n", ""), r"missing \['left/waist', 'right/waist'\]"),
+    (('keyframe = "home"', 'keyframe = "away"'), r"unknown keyframe 'away'; valid: \['home'\]"),
+    (('[uncertainty.mass]\nbody = "box"', '[uncertainty.mass]\nbody = "brick"'),
+     r"unknown body 'brick'; the model has: .*box"),
+], ids=["object body", "support geom", "limit actuator", "missing limit", "keyframe",
+        "parameter target"])
+def test_unknown_names_say_what_is_valid(tmp_path, edit, message):
+    folder = _toml(tmp_path, edit)
+    with pytest.raises(ScenarioError, match=message):
         load_scenario(folder)
 
 

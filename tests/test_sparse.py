@@ -28,6 +28,7 @@ from critmoment.sparse import (
 )
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin
+from scenarios import one_actuator_toml
 
 G = 9.81
 
@@ -57,27 +58,9 @@ TINY_MJCF = """
 </mujoco>
 """
 
-TINY_TOML = """
-name = "tiny"
-[model]
-mjcf = "scene.xml"
-[object]
-body = "box"
-geom = "box"
-[grippers.hand]
-geoms = ["pad"]
-[support]
-geoms = ["table"]
-[actions]
-convention = "explicit"
-[[actions.channel]]
-actuators = ["hinge"]
-[task]
-picker = "hand"
-receiver = "hand"
-[limits]
-hinge = 5.0
-[uncertainty.mass]
+TINY_TOML = one_actuator_toml("tiny", mjcf="scene.xml", gripper="hand", gripper_geom="pad",
+                              support="table", actuator="hinge", limit=5.0, task=True,
+                              uncertainty="""[uncertainty.mass]
 body = "box"
 range = [0.05, 10.0]
 nominal = 0.05
@@ -85,7 +68,7 @@ nominal = 0.05
 geom = "box"
 range = [0.2, 1.5]
 nominal = 1.0
-"""
+""")
 
 #: the same scene with the hinge's force range as the one uncertain parameter
 LIMIT_TOML = TINY_TOML[:TINY_TOML.index("[uncertainty.mass]")] + """

@@ -19,6 +19,7 @@ import pytest
 from critmoment.exceptions import ParameterError, TrajectoryError
 from critmoment.scenario import load_scenario
 from critmoment.twin import CONTACT_SLOTS, Twin
+from scenarios import one_actuator_toml
 
 G = 9.81
 
@@ -60,28 +61,13 @@ ARM_XML = f"""<mujoco model="hinge_arm">
 </mujoco>
 """
 
-ARM_TOML = f"""name = "hinge_arm"
-[model]
-mjcf = "arm.xml"
-[object]
-body = "box"
-geom = "box"
-[grippers.hand]
-geoms = ["pad"]
-[support]
-geoms = ["floor"]
-[actions]
-convention = "explicit"
-[[actions.channel]]
-actuators = ["servo"]
-label = "hinge"
-[limits]
-servo = {ARM_LIMIT}
-[uncertainty.mass]
+ARM_TOML = one_actuator_toml("hinge_arm", mjcf="arm.xml", gripper="hand", gripper_geom="pad",
+                             support="floor", actuator="servo", limit=ARM_LIMIT, label="hinge",
+                             uncertainty=f"""[uncertainty.mass]
 body = "box"
 range = [0.1, 5.0]
 nominal = {ARM_BOX_MASS}
-"""
+""")
 
 SLOPE_MU = 0.5          # the box's friction (it has priority over the slope)
 SLOPE_OWN_MU = 0.3      # the slope's own friction, ignored thanks to the box's priority
@@ -117,23 +103,9 @@ def _slope_xml(theta_deg: float, condim: int) -> str:
 """
 
 
-SLOPE_TOML = f"""name = "slope"
-[model]
-mjcf = "slope.xml"
-[object]
-body = "box"
-geom = "box"
-[grippers.slope]
-geoms = ["slope"]
-[support]
-geoms = ["floor"]
-[actions]
-convention = "explicit"
-[[actions.channel]]
-actuators = ["servo"]
-[limits]
-servo = 5.0
-[uncertainty.mass]
+SLOPE_TOML = one_actuator_toml("slope", mjcf="slope.xml", gripper="slope", gripper_geom="slope",
+                               support="floor", actuator="servo", limit=5.0,
+                               uncertainty=f"""[uncertainty.mass]
 body = "box"
 range = [0.1, 20.0]
 nominal = 1.0
@@ -141,7 +113,7 @@ nominal = 1.0
 geom = "box"
 range = [0.1, 1.5]
 nominal = {SLOPE_MU}
-"""
+""")
 
 
 def _write(folder: Path, files: dict[str, str]) -> Path:
