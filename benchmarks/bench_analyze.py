@@ -13,8 +13,6 @@ import tempfile
 import time
 import warnings
 
-import numpy as np
-
 import critmoment as cm
 from critmoment import analysis, demos, report, sparse
 from critmoment.recording import batched_rollouts, initial_state, prepare_controls

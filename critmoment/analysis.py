@@ -13,7 +13,7 @@ import logging
 import platform
 import sys
 import time
-from typing import Callable, Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
@@ -61,6 +61,8 @@ class AnalyzeOptions:
         max_moments: moments audited in depth (the most sensitive ones).
         horizon: physics steps per sparse evaluation (default: the scenario's).
         search_trials: simulated evaluations the Optuna search may spend per moment.
+        search_patience: the search of a moment stops after this many batches (of 8
+            samples) without a higher cost (None: it spends ``search_trials``).
         search: run the analytic bounds and the worst-case search.
         critical_grid: grid points per parameter for the critical values.
         confidence: confidence level of the P(success) interval.
@@ -70,6 +72,13 @@ class AnalyzeOptions:
             sample's cost per cell (0 to skip).
         require_task: a nominal rollout that does not complete the scenario's task (stage 4
             reached and kept) makes the verdict UNSAFE.
+        exhaustive: evaluate every Sobol sample at every moment over the whole horizon.
+            By default each sample stops at its first failure, as the real run would
+            (:meth:`critmoment.sparse.SparseEvaluator.evaluate` with ``first_failure``):
+            the verdict, P(success), the safe region and each sample's first failing moment
+            are the same, the per-moment box statistics then cover the samples that reach
+            the moment (``MomentReport.reached``), and the sweep costs a fraction of the
+            stepping wherever much of the box fails.
         verify: a fraction of the cost threshold, or None. Every Sobol sample that passes
             the sparse evaluation with a cost at or above ``verify × threshold`` at some
             moment gets its own full rollout (:func:`critmoment.recording.rollouts_fail`) and
@@ -84,6 +93,7 @@ class AnalyzeOptions:
     max_moments: int = 8
     horizon: int | None = None
     search_trials: int = 48
+    search_patience: int | None = 2
     search: bool = True
     critical_grid: int = 17
     confidence: float = 0.95
@@ -92,6 +102,7 @@ class AnalyzeOptions:
     map_resolution: int = 40
     require_task: bool = True
     verify: float | None = 0.8
+    exhaustive: bool = False
 
     def __post_init__(self):
         if self.n_samples < 8:
@@ -100,6 +111,9 @@ class AnalyzeOptions:
             raise ParameterError(f"max_moments: expected >= 1, got {self.max_moments}")
         if self.horizon is not None and self.horizon < 1:
             raise ParameterError(f"horizon: expected >= 1 or None, got {self.horizon}")
+        if self.search_patience is not None and self.search_patience < 1:
+            raise ParameterError(
+                f"search_patience: expected >= 1 or None, got {self.search_patience}")
         if self.search_trials < 1:
             raise ParameterError(f"search_trials: expected >= 1, got {self.search_trials}")
         if not 0 < self.confidence < 1:
@@ -122,16 +136,23 @@ class MomentReport:
 
     Attributes:
         moment: the moment (step, time, label, reason, sensitivity score).
-        worst_case: parameter values of the highest cost found (sweep and search).
-        max_cost: that cost.
-        min_fos_contact: lowest grasp FOS over the sweep (inf when never loaded).
-        min_fos_motor: lowest motor FOS over the sweep.
+        worst_case: parameter values of the highest cost found (sweep and search; empty
+            when no sample reached the moment and the search did not run).
+        max_cost: that cost (NaN when none was found).
+        min_fos_contact: lowest grasp FOS over the sweep's samples that reach the moment
+            (inf when never loaded, NaN when none reaches it).
+        min_fos_motor: lowest motor FOS over the same samples.
         critical: per parameter, the value where the cost crosses the threshold with the
             others at nominal (None where it never crosses).
         critical_side: per parameter, "above"/"below" (which side fails) or None.
-        dominant: the cost term dominating the failures here ("contact" / "motor" / None).
+        dominant: the cost term dominating the failures here ("contact" / "motor" / None):
+            over the sweep's samples failing here, or else over the failing points of the
+            critical-value curves.
         limiting_actuator: the actuator limiting the motor FOS at the worst case.
-        fail_fraction: fraction of the sweep's samples failing at this moment.
+        fail_fraction: fraction of the sweep's samples failing at this moment; unless the
+            sweep is exhaustive, the samples whose first failure is here.
+        reached: fraction of the sweep's samples evaluated at this moment: all of them when
+            the sweep is exhaustive, else those that pass at every earlier moment.
         analytic: analytic bounds (Pinocchio), JSON-able, or None.
         search: worst-case search summary, JSON-able, or None.
     """
@@ -148,6 +169,7 @@ class MomentReport:
     fail_fraction: float
     analytic: Mapping | None = None
     search: Mapping | None = None
+    reached: float = 1.0
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -434,10 +456,16 @@ _SUGGEST = {
 
 def _causes(reports: Sequence[MomentReport]) -> list[str]:
     """One line per failure cause (grip slip, overload of one actuator, ...), the moments where
-    it limits (with their critical values) and the suggestion."""
+    it limits (with their critical values) and the suggestion.
+
+    A moment counts where sweep samples fail there, or where the cost crosses the threshold
+    along a critical-value curve (with a first-failure sweep a later moment's failures are
+    hidden behind earlier ones, but its critical values still say where it would fail).
+    """
     groups: dict[str, list[str]] = {}
     for mr in reports:
-        if mr.dominant is None or mr.fail_fraction == 0:
+        crossed = any(v is not None for v in mr.critical.values())
+        if mr.dominant is None or (mr.fail_fraction == 0 and not crossed):
             continue
         name = _SUGGEST[mr.dominant][0]
         if mr.dominant == "motor":
@@ -551,14 +579,14 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     with stage("sweep"):
         samples = sp.sweep_samples(box, n=opt.n_samples, seed=opt.seed)
         probe = np.vstack([box.nominal[None, :], samples])
-        res_all = evaluator.evaluate(steps, probe)
-        nominal_cost = float(np.max(res_all.cost[:, 0])) if steps.size else 0.0
+        res_all = evaluator.evaluate(steps, probe, first_failure=not opt.exhaustive)
+        nominal_cost = float(res_all.worst_cost()[0]) if steps.size else 0.0
         res = _select_samples(res_all, slice(1, None))
         failed = res.failed_any if steps.size else np.zeros(len(samples), bool)
     verification = None
     if opt.verify is not None and steps.size:
         with stage("verification"):
-            worst = np.max(np.where(res.diverged, np.inf, res.cost), axis=0)
+            worst = res.worst_cost()
             near = ~failed & (worst >= opt.verify * threshold)
             failed = failed.copy()
             if near.any():
@@ -581,11 +609,15 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     for row, m in enumerate(chosen):
         s = int(steps[row])
         cost = res.cost[row]
-        worst = int(np.argmax(np.where(np.isfinite(cost), cost, 1e9)))
-        worst_case = dict(zip(box.names, map(float, res.samples[worst])))
-        max_cost = float(cost[worst])
+        here = ~np.isnan(cost)  # the samples evaluated at this moment (inf: diverged)
+        worst_case, max_cost, motor = {}, float("nan"), None
+        if here.any():
+            worst = int(np.argmax(np.where(here, np.where(np.isinf(cost), 1e9, cost), -np.inf)))
+            worst_case = dict(zip(box.names, map(float, res.samples[worst])))
+            max_cost, motor = float(cost[worst]), int(res.motor_argmax[row, worst])
         sr = searches.get(s)
-        if sr is not None and sr.get("worst_cost") is not None and sr["worst_cost"] > max_cost:
+        if sr is not None and sr.get("worst_cost") is not None and not (
+                sr["worst_cost"] <= max_cost):
             worst_case, max_cost = dict(sr["worst_case"]), float(sr["worst_cost"])
         crit, side = {}, {}
         for j, pname in enumerate(box.names):
@@ -593,15 +625,21 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             crit[pname], side[pname] = _crossing(c.samples[:, j], c.cost[0], threshold,
                                                  box.nominal[j])
         fails_here = res.failed[row]
-        motor = res.motor_argmax[row, worst]
+        dominant = _dominant(res, row, fails_here)
+        if dominant is None:
+            dominant = next((d for c in curves[s].values()
+                             if (d := _dominant(c, 0, c.failed[0])) is not None), None)
+        if motor is None:  # no sample reached the moment: the first curve's worst point
+            c = curves[s][box.names[0]]
+            motor = int(c.motor_argmax[0, int(np.argmax(np.nan_to_num(c.cost[0], nan=-1.0)))])
         moment_reports.append(MomentReport(
             moment=m, worst_case=worst_case, max_cost=max_cost,
-            min_fos_contact=float(np.nanmin(res.fos_grasp[row])),
-            min_fos_motor=float(np.nanmin(res.fos_motor[row])),
-            critical=crit, critical_side=side, dominant=_dominant(res, row, fails_here),
-            limiting_actuator=twin.actuator_names[int(motor)],
+            min_fos_contact=_nanmin(res.fos_grasp[row]),
+            min_fos_motor=_nanmin(res.fos_motor[row]),
+            critical=crit, critical_side=side, dominant=dominant,
+            limiting_actuator=twin.actuator_names[motor],
             fail_fraction=float(fails_here.mean()), analytic=analytics.get(s),
-            search=searches.get(s)))
+            search=searches.get(s), reached=float(here.mean())))
     task_failed = opt.require_task and not rec.completed
     if task_failed:
         # sparse evaluation perturbs a run that already failed: it cannot estimate success
@@ -614,7 +652,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         verdict = Verdict.CONDITIONAL
     region = None
     if verdict is not Verdict.UNSAFE and steps.size:
-        worst_cost = np.max(res.cost, axis=0)
+        worst_cost = res.worst_cost()
         region = safe_subbox(res.samples, failed, box, _fail_sides(res.samples, worst_cost, box))
     cost_map = None
     if opt.map_resolution and box.ndim >= 2 and steps.size:
@@ -642,6 +680,12 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         verification=verification)
 
 
+def _nanmin(values: np.ndarray) -> float:
+    """Smallest non-NaN value, NaN when there is none (no warning)."""
+    values = values[~np.isnan(values)]
+    return float(values.min()) if values.size else float("nan")
+
+
 def _select_samples(res: sp.SparseResult, cols: slice) -> sp.SparseResult:
     fields = {}
     n = res.n_samples
@@ -662,7 +706,8 @@ def _cost_map(res: sp.SparseResult, box, res_n: int):
     the two parameters; the others vary over the box), so the map costs no simulation.
     """
     u = box.to_unit(res.samples)[:, :2]
-    worst = np.max(np.where(np.isfinite(res.cost), res.cost, np.nan), axis=0)
+    worst = res.worst_cost()
+    worst = np.where(np.isfinite(worst), worst, np.nan)
     grid_u = np.linspace(0.0, 1.0, res_n)
     g0, g1 = np.meshgrid(grid_u, grid_u, indexing="ij")
     cells = np.stack([g0.ravel(), g1.ravel()], axis=1)
@@ -680,7 +725,8 @@ def _search_all(rec, twin, evaluator, steps, opt):
     analytics, searches = {}, {}
     for s in steps:
         out = search.audit_moment(evaluator, int(s), pin_model=pin_model,
-                                  n_trials=opt.search_trials, seed=opt.seed)
+                                  n_trials=opt.search_trials, seed=opt.seed,
+                                  patience=opt.search_patience)
         analytics[int(s)] = {**out["analytic"], "verification": out.get("verification")}
         searches[int(s)] = out["search"]
     return analytics, searches

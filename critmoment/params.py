@@ -15,7 +15,8 @@ from __future__ import annotations
 
 import dataclasses
 import enum
-from typing import ClassVar, Mapping
+from collections.abc import Mapping
+from typing import ClassVar
 
 import mujoco
 import numpy as np
@@ -295,7 +296,7 @@ class UncertaintyBox:
         return np.stack([g.reshape(-1) for g in grids], axis=1)
 
     def with_range(self, name: str, low: float, high: float,
-                   nominal: float | None = None) -> "UncertaintyBox":
+                   nominal: float | None = None) -> UncertaintyBox:
         """A copy with parameter ``name``'s range (and optionally nominal) replaced."""
         j = self.index(name)
         p = self.parameters[j]

@@ -15,8 +15,8 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+from collections.abc import Iterator
 from pathlib import Path
-from typing import Iterator
 
 import mujoco
 import mujoco.batch
@@ -259,7 +259,7 @@ def batched_rollouts(twin: Twin, state0: np.ndarray, controls: np.ndarray, sampl
         yield start, out, mu
 
 
-def rollouts_fail(recording: "Recording", twin: Twin, samples: np.ndarray, *, chunk: int = 16,
+def rollouts_fail(recording: Recording, twin: Twin, samples: np.ndarray, *, chunk: int = 16,
                   nthread: int = 0) -> np.ndarray:
     """Frequent evaluation at each sample's own parameters: does its full rollout fail?
 
@@ -415,7 +415,7 @@ class Recording:
         return path
 
     @classmethod
-    def load(cls, path: str | Path, twin: Twin) -> "Recording":
+    def load(cls, path: str | Path, twin: Twin) -> Recording:
         """Read a recording written by :meth:`save`; ``twin`` recomputes the signals."""
         path = Path(path)
         if not path.is_file():

@@ -10,8 +10,8 @@ import base64
 import html
 import io
 import json
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Sequence
 
 import numpy as np
 from matplotlib.figure import Figure
@@ -94,6 +94,7 @@ def report_json(report, *, timings: bool = True) -> dict:
             "dominant": mr.dominant,
             "limiting_actuator": mr.limiting_actuator,
             "fail_fraction": float(mr.fail_fraction),
+            "reached": float(mr.reached),
             "analytic": _jsonable(mr.analytic),
             "search": _jsonable(mr.search),
         })
@@ -217,7 +218,8 @@ def summary_text(report) -> str:
         worst = ", ".join(f"{k}={v:.3g}" for k, v in mr.worst_case.items())
         lines.append(f"  {i}. {m.label.value:12s} step {m.step:5d} (t = {m.time:.2f} s): max cost "
                      f"{mr.max_cost:.3f} at {worst}; min FOS contact {mr.min_fos_contact:.3g}, "
-                     f"motor {mr.min_fos_motor:.3g}; critical: {crit}")
+                     f"motor {mr.min_fos_motor:.3g}; fails {mr.fail_fraction:.0%} of the box "
+                     f"(reached by {mr.reached:.0%}); critical: {crit}")
     v = report.verification
     if v is not None:
         lines.append(f"  verification: {v['rollouts']} sample(s) with cost ≥ {v['cost_from']:.3g} "
@@ -284,6 +286,7 @@ def _html(report, doc, images) -> str:
         worst = ", ".join(f"{k} = {v:.3g}" for k, v in mr["worst_case"].items())
         fc = "—" if mr["min_fos_contact"] is None else f"{mr['min_fos_contact']:.3g}"
         fm = "—" if mr["min_fos_motor"] is None else f"{mr['min_fos_motor']:.3g}"
+        mc = "—" if mr["max_cost"] is None else f"{mr['max_cost']:.3f}"
         an = mr.get("analytic") or {}
         an_txt = ""
         if an:
@@ -296,7 +299,8 @@ def _html(report, doc, images) -> str:
         rows.append(
             f"<tr><td>{mr['step']}<br><span class=muted>{mr['time']:.2f} s</span></td>"
             f"<td>{e(mr['label'])}</td><td>{e(mr['reason'])}</td><td>{e(worst)}</td>"
-            f"<td>{mr['max_cost']:.3f}</td><td>{fc}</td><td>{fm} "
+            f"<td>{mc}</td><td>{mr['fail_fraction']:.0%}<br><span class=muted>reached by "
+            f"{mr['reached']:.0%}</span></td><td>{fc}</td><td>{fm} "
             f"<span class=muted>({e(mr['limiting_actuator'])})</span></td>"
             f"<td>{e(crit)}</td><td>{e(str(mr['dominant'] or '—'))}</td><td>{an_txt}</td></tr>")
     unc = "".join(
@@ -322,7 +326,7 @@ MuJoCo {e(man['mujoco'])} · sparse horizon {doc['horizon']} step(s){_verificati
 <h2>Failure causes and suggestions</h2><ul>{causes}</ul>
 <h2>Critical moments</h2>
 <table><tr><th>step</th><th>label</th><th>why chosen</th><th>worst case</th><th>max cost</th>
-<th>min FOS contact</th><th>min FOS motor</th><th>critical values</th><th>dominant</th><th>analytic</th></tr>
+<th>fails here</th><th>min FOS contact</th><th>min FOS motor</th><th>critical values</th><th>dominant</th><th>analytic</th></tr>
 {''.join(rows)}</table>
 <h2>Uncertainty box</h2>
 <table><tr><th>parameter</th><th>acts on</th><th>range</th><th>nominal</th><th>prior</th></tr>{unc}</table>

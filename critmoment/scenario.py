@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import dataclasses
 import sys
+from collections.abc import Mapping
 from pathlib import Path
-from typing import Any, Mapping
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -219,7 +220,7 @@ class Scenario:
     def gripper_names(self) -> tuple[str, ...]:
         return tuple(g.name for g in self.grippers)
 
-    def replace(self, **changes) -> "Scenario":
+    def replace(self, **changes) -> Scenario:
         """A copy with fields replaced (e.g. ``box=scenario.box.with_range(...)``)."""
         return dataclasses.replace(self, **changes)
 

@@ -67,7 +67,8 @@ import importlib.util
 import math
 import numbers
 import warnings
-from typing import Any, Mapping, Sequence
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -949,11 +950,13 @@ class SearchResult:
         worst_cost: its cost (maximum over the moments; +inf if it diverged).
         worst_cost_per_moment: its cost at each moment.
         evaluations_to_worst: how many samples it took to first reach ``worst_cost``.
-        stopped_early: the search stopped because the cost reached its ceiling.
+        stopped_early: the search stopped before its budget (``stop_reason`` says why).
         ceiling: the largest cost the simulation can give (see :func:`search_worst_case`),
             or None when ``stop_at_ceiling`` was off.
         seed: the sampler's seed.
         history: every trial, in evaluation order.
+        stop_reason: "ceiling" (the cost reached its ceiling), "patience" (no higher cost
+            in ``patience`` batches) or None (the budget ran out).
     """
 
     method: SearchMethod
@@ -967,6 +970,7 @@ class SearchResult:
     ceiling: float | None
     seed: int
     history: tuple[SearchTrial, ...]
+    stop_reason: str | None = None
 
     def summary(self) -> dict:
         """JSON-able summary (the ``"search"`` object of ``report.json``)."""
@@ -977,7 +981,8 @@ class SearchResult:
             "diverged": math.isinf(self.worst_cost),
             "worst_cost_per_moment": [_finite_or_none(c) for c in self.worst_cost_per_moment],
             "evaluations_to_worst": self.evaluations_to_worst,
-            "stopped_early": self.stopped_early, "seed": self.seed,
+            "stopped_early": self.stopped_early, "stop_reason": self.stop_reason,
+            "seed": self.seed,
         }
 
 
@@ -1019,10 +1024,15 @@ def _sampler(optuna, method: SearchMethod, seed: int, batch_size: int):
                                         warn_independent_sampling=False)
 
 
+#: relative rise of the highest cost that counts as progress for ``patience``
+PATIENCE_RTOL = 0.01
+
+
 def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, *,
                       method: SearchMethod = SearchMethod.TPE, n_trials: int = 48,
                       batch_size: int = 8, seed: int = 0, enqueue_corners: bool = True,
-                      stop_at_ceiling: bool = True) -> SearchResult:
+                      stop_at_ceiling: bool = True, patience: int | None = None
+                      ) -> SearchResult:
     """Search the box for the parameters that maximise the simulated cost.
 
     Ask/tell with Optuna: each batch of ``batch_size`` asked trials is evaluated in one
@@ -1045,6 +1055,9 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
     simulation): nothing can be more severe. Below the ceiling every trial of the budget
     runs; the simulated cost is not monotone beyond failure (at lift-off a grippier cube
     is dropped later and loads the arm longer), so its worst case need not be a corner.
+    With ``patience`` the search also stops after that many batches in a row that do not
+    raise the highest cost by more than :data:`PATIENCE_RTOL` (the audit's default; the
+    budget is then a cap).
 
     Args:
         evaluator: a :class:`~critmoment.sparse.SparseEvaluator` (its horizon applies).
@@ -1057,6 +1070,8 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
         seed: sampler seed (>= 0); the same seed gives the same result.
         enqueue_corners: evaluate the box corners and the nominal point first.
         stop_at_ceiling: stop once the cost reaches its ceiling (see above).
+        patience: stop after this many batches (>= 1) without a higher cost (by more than
+            :data:`PATIENCE_RTOL`), or None to run the whole budget below the ceiling.
 
     Returns:
         The :class:`SearchResult`.
@@ -1080,6 +1095,7 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
             "method CMAES: expected the 'cmaes' package to be importable (pip install cmaes), "
             "got none; use SearchMethod.TPE")
     ceiling = _cost_ceiling(evaluator.twin) if stop_at_ceiling else None
+    patience = None if patience is None else _check_int("patience", patience, 1)
 
     names = box.names
     with _quiet_optuna() as optuna:
@@ -1098,8 +1114,9 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
             for row in queued:
                 study.enqueue_trial({n: float(v) for n, v in zip(names, row)})
         history: list[SearchTrial] = []
-        stopped = False
+        stopped: str | None = None
         batch = 0
+        best, since = -np.inf, 0
         while len(history) < n_trials and not stopped:
             size = min(batch_size, n_trials - len(history))
             trials = [study.ask(dists) for _ in range(size)]
@@ -1117,9 +1134,15 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
                     cost_per_moment=tuple(float(c) for c in per_moment[:, i]),
                     enqueued=len(history) < len(queued)))
             batch += 1
-            best = max(h.cost for h in history)
-            stopped = (ceiling is not None and best >= ceiling * (1 - 1e-12)
-                       and len(history) < n_trials)
+            top = max(h.cost for h in history)
+            progress = batch == 1 or top > best + PATIENCE_RTOL * abs(best)
+            since = 0 if progress else since + 1
+            best = top
+            if len(history) < n_trials:
+                if ceiling is not None and best >= ceiling * (1 - 1e-12):
+                    stopped = "ceiling"
+                elif patience is not None and since >= patience:
+                    stopped = "patience"
     costs = np.array([h.cost for h in history])
     first = int(np.argmax(costs))  # argmax returns the first of equal maxima
     worst = history[first]
@@ -1127,7 +1150,8 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
         method=method, steps=tuple(int(s) for s in steps_arr), evaluations=len(history),
         worst_case=dict(worst.parameters), worst_cost=worst.cost,
         worst_cost_per_moment=worst.cost_per_moment, evaluations_to_worst=first + 1,
-        stopped_early=stopped, ceiling=ceiling, seed=seed, history=tuple(history))
+        stopped_early=stopped is not None, ceiling=ceiling, seed=seed, history=tuple(history),
+        stop_reason=stopped)
 
 
 # --------------------------------------------------------------------------
@@ -1335,8 +1359,8 @@ def verify(evaluator, step: Any, analytic: AnalyticWorstCase | AnalyticBounds,
 
 def audit_moment(evaluator, step: Any, *, pin_model: dyn.PinocchioModel | None = None,
                  method: SearchMethod = SearchMethod.TPE, n_trials: int = 48,
-                 batch_size: int = 8, seed: int = 0, smoothing: float = DEFAULT_SMOOTHING
-                 ) -> dict:
+                 batch_size: int = 8, seed: int = 0, smoothing: float = DEFAULT_SMOOTHING,
+                 patience: int | None = None) -> dict:
     """Analytic bounds, CasADi and Optuna worst cases and their verification at one moment.
 
     Args:
@@ -1349,6 +1373,8 @@ def audit_moment(evaluator, step: Any, *, pin_model: dyn.PinocchioModel | None =
         batch_size: samples per sparse-evaluation call.
         seed: the sampler's seed.
         smoothing: κ of the CasADi model's smooth maximum.
+        patience: Optuna stops after this many batches without a higher cost (None: the
+            whole budget).
 
     Returns:
         A JSON-able dict: ``step``, ``time``, ``horizon``, ``analytic`` (critical masses per
@@ -1362,7 +1388,7 @@ def audit_moment(evaluator, step: Any, *, pin_model: dyn.PinocchioModel | None =
     bounds = analytic_bounds(evaluator.recording, evaluator.twin, k, pin_model=pin_model)
     worst = analytic_worst_case(bounds, smoothing=smoothing)
     found = search_worst_case(evaluator, [k], method=method, n_trials=n_trials,
-                              batch_size=batch_size, seed=seed)
+                              batch_size=batch_size, seed=seed, patience=patience)
     check = verify(evaluator, k, worst, found)
     analytic = bounds.summary()
     analytic["worst_case"] = worst.summary()

@@ -71,7 +71,8 @@ import logging
 import math
 import numbers
 import warnings
-from typing import Any, Mapping, Sequence
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import mujoco
 import mujoco.batch
@@ -229,6 +230,11 @@ class SparseResult:
         diverged: the sample's simulation diverged at that moment, (m, n) bool.
         sensordata: raw readings of every step, (m, n, h, nsensordata), when asked for.
         state: integration state after the horizon, (m, n, nstate), when asked for.
+        evaluated: which (moment, sample) pairs were evaluated, (m, n) bool, or None when
+            all were. Only ``first_failure`` evaluation skips pairs: there a sample's
+            moments after its first failure are not evaluated (NaN values, False flags,
+            ``stage``, ``worst_step`` and ``motor_argmax`` −1), and the moment where it
+            fails is reduced over the steps up to the failing one.
     """
 
     steps: np.ndarray
@@ -255,6 +261,7 @@ class SparseResult:
     diverged: np.ndarray
     sensordata: np.ndarray | None = None
     state: np.ndarray | None = None
+    evaluated: np.ndarray | None = None
 
     @property
     def threshold(self) -> float:
@@ -273,6 +280,15 @@ class SparseResult:
     def failed(self) -> np.ndarray:
         """(m, n) bool: cost above the threshold, or diverged."""
         return (self.cost > self.cost_params.threshold) | self.diverged
+
+    def worst_cost(self, rows: Any = None) -> np.ndarray:
+        """(n,) each sample's highest cost over the moments (the ``rows`` of them, if given)
+        where it was evaluated: +inf where it diverged, NaN where it was evaluated at none."""
+        cost = self.cost if rows is None else self.cost[rows]
+        if cost.shape[0] == 0:
+            return np.full(self.n_samples, np.nan)
+        top = np.max(np.where(np.isnan(cost), -np.inf, cost), axis=0)
+        return np.where(np.isnan(cost).all(axis=0), np.nan, top)
 
     @property
     def failed_any(self) -> np.ndarray:
@@ -505,7 +521,8 @@ class SparseEvaluator:
         return batch, self._mu[n]
 
     # -- evaluation ----------------------------------------------------------------
-    def evaluate(self, steps: Any, samples: Any, *, keep_raw: bool = False) -> SparseResult:
+    def evaluate(self, steps: Any, samples: Any, *, keep_raw: bool = False,
+                 first_failure: bool = False) -> SparseResult:
         """Evaluate every sample at every moment.
 
         Args:
@@ -513,6 +530,14 @@ class SparseEvaluator:
                 a ``step`` attribute, such as ``critmoment.moments.Moment``).
             samples: parameter values (n, k) in the box's column order (mass [kg], ...).
             keep_raw: also keep the raw sensor readings and the final states.
+            first_failure: stop each sample at its first failure, as the real run would:
+                the moments are evaluated in time order, one step at a time, and a sample
+                stops stepping at the first step whose cost exceeds the threshold (or that
+                diverges) and is not evaluated at the later moments (``evaluated`` says
+                which pairs were). Which samples fail, and at which moment first, is the
+                same as with full evaluation; the values of a failing pair are those of the
+                steps up to the failure. For a verdict this skips most of the stepping
+                wherever much of the box fails.
 
         Returns:
             The :class:`SparseResult`.
@@ -540,26 +565,121 @@ class SparseEvaluator:
         }
         raw = np.empty((m, n, h, nsd)) if keep_raw else None
         final = np.empty((m, n, self._states.shape[1])) if keep_raw else None
+        evaluated = np.ones((m, n), bool) if first_failure else None
+        # in time order, so that a sample's first failure comes first (stable: same result
+        # for repeated steps)
+        order = np.argsort(steps, kind="stable") if first_failure else range(m)
         # chunks bound the batch and the per-moment buffer of raw readings
         chunk = max(1, min(self.chunk, _MAX_BUFFER_BYTES // (8 * h * nsd)))
         for start in range(0, n, chunk):
             sl = slice(start, min(n, start + chunk))
             batch, mu = self._batch(samples[sl])
             buf = np.empty((batch.nsim, h, nsd))
-            for i, k in enumerate(steps):
-                raised, warned = self._advance(batch, int(k), buf)
+            alive = np.ones(batch.nsim, bool)
+            for i in order:
+                k = int(steps[i])
+                if first_failure:
+                    evaluated[i, sl] = alive
+                    raised, warned, carried, fails = self._advance_until_failure(
+                        batch, k, buf, alive, mu)
+                else:
+                    raised, warned = self._advance(batch, k, buf)
+                    carried = self._carried[k:k + h][None, :]
                 diverged = raised | (warned > 0).any(axis=1) | ~np.isfinite(buf).all(axis=(1, 2))
-                self._score(buf, mu, diverged, out, i, sl, carried=self._carried[k:k + h])
+                self._score(buf, mu, diverged, out, i, sl, carried=carried)
                 if keep_raw:
                     raw[i, sl] = buf
                     final[i, sl] = batch.state
+                if first_failure:
+                    diverged &= alive
+                    self._unevaluated(out, i, sl, ~alive)
+                    alive &= ~fails
                 if diverged.any():
-                    self._on_divergence(int(k), samples[sl], start, diverged, raised, warned)
+                    self._on_divergence(k, samples[sl], start, diverged, raised, warned)
         return SparseResult(
             steps=steps, samples=samples, parameter_names=self.box.names,
             gripper_names=twin.scenario.gripper_names, actuator_names=twin.actuator_names,
             horizon=h, mode=self.mode, cost_params=twin.scenario.cost, sensordata=raw,
-            state=final, **out)
+            state=final, evaluated=evaluated, **out)
+
+    @staticmethod
+    def _unevaluated(out: dict[str, np.ndarray], i: int, sl: slice, skip: np.ndarray) -> None:
+        """Mark the skipped samples of moment i as not evaluated."""
+        if not skip.any():
+            return
+        for value in out.values():
+            part = value[i, sl]
+            if value.dtype == bool:
+                part[skip] = False
+            elif value.dtype.kind in "iu":
+                part[skip] = -1
+            else:
+                part[skip] = np.nan
+
+    def _advance_until_failure(self, batch: mujoco.batch.Batch, k: int, buf: np.ndarray,
+                               alive: np.ndarray, mu: np.ndarray | float):
+        """As :meth:`_advance` for the ``alive`` simulations, one step at a time, each
+        stopping at its first failing step (its later rows of buf repeat the failing one).
+
+        Returns raised and warned as :meth:`_advance`, the carried flags (nsim, h) to score
+        buf with, and which simulations failed (nsim,) bool.
+        """
+        h, nsim = self.horizon, batch.nsim
+        threshold = self.twin.scenario.cost.threshold
+        mu = np.broadcast_to(np.asarray(mu, dtype=np.float64), (nsim,))
+        carried = np.repeat(self._carried[k:k + h][None, :], nsim, axis=0)
+        raised = np.zeros(nsim, dtype=bool)
+        fails = np.zeros(nsim, dtype=bool)
+        buf[~alive] = 0.0
+        row = self._states[k].copy()
+        row[self._ctrl] = self._controls[k]
+        run = np.flatnonzero(alive)
+        batch.warning[...] = 0
+        if run.size == 0:
+            return raised, batch.warning[:, :, 1].copy(), carried, fails
+        batch.state[run] = row
+        if self.mode is SparseMode.SOLVE:
+            # one forward solve: the whole horizon (h = 1) in one call
+            try:
+                batch.forward(ids=run)
+            except mujoco.batch.SimulationError as exc:
+                raised[exc.ids] = True
+            buf[run, 0] = batch.bind("sensordata")[run]
+            h_run = 0
+        else:
+            h_run = h
+        one = np.empty((nsim, 1, buf.shape[2]))
+        for j in range(h_run):
+            if run.size == 0:
+                if j:
+                    buf[alive, j:] = buf[alive, j - 1:j]
+                    carried[alive, j:] = carried[alive, j - 1:j]
+                break
+            part = one[:run.size]
+            try:
+                batch.rollout(1, control=self._controls[k + j:k + j + 1][None],
+                              control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
+                              record=("sensordata",), ids=run, out={"sensordata": part})
+            except mujoco.batch.SimulationError as exc:
+                raised[exc.ids] = True
+            buf[run, j] = part[:, 0]
+            done = np.setdiff1d(np.flatnonzero(alive), run, assume_unique=True)
+            if j and done.size:
+                buf[done, j] = buf[done, j - 1]
+                carried[done, j] = carried[done, j - 1]
+            warned = (batch.warning[run, :, 1] > 0).any(axis=1)
+            with np.errstate(over="ignore", invalid="ignore"):
+                cost = self.twin.signals(part[:, 0], mu=mu[run], carried=carried[run, j]).cost
+            bad = raised[run] | warned | ~np.isfinite(part[:, 0]).all(axis=1) \
+                | (cost > threshold)
+            fails[run[bad]] = True
+            run = run[~bad]
+        if self.mode is SparseMode.SOLVE:
+            with np.errstate(over="ignore", invalid="ignore"):
+                cost = self.twin.signals(buf[run, 0], mu=mu[run], carried=carried[run, 0]).cost
+            fails[run] = raised[run] | ~np.isfinite(buf[run, 0]).all(axis=1) \
+                | (cost > threshold) | (batch.warning[run, :, 1] > 0).any(axis=1)
+        return raised, batch.warning[:, :, 1].copy(), carried, fails
 
     def _advance(self, batch: mujoco.batch.Batch, k: int, buf: np.ndarray
                  ) -> tuple[np.ndarray, np.ndarray]:
@@ -593,14 +713,14 @@ class SparseEvaluator:
                out: dict[str, np.ndarray], i: int, sl: slice, *, carried: np.ndarray) -> None:
         """Signals of buf (nsim, h, nsd), reduced over the horizon, into out[...][i, sl].
 
-        ``carried`` (h,) says where the nominal run carries the object off its support: the
-        grip must hold it there whatever the sample does (a heavy object that sinks back onto
+        ``carried`` (h,) or (nsim, h) says where the nominal run carries the object off its
+        support: the grip must hold it there whatever the sample does (a heavy object that sinks back onto
         the table has failed to lift, not become safe).
         """
         twin, cp = self.twin, self.twin.scenario.cost
         mu = np.asarray(mu, dtype=np.float64)
         sig = twin.signals(buf, mu=mu[:, None] if mu.ndim == 1 else mu,
-                           carried=carried[None, :])  # leading (nsim, h)
+                           carried=carried)  # leading (nsim, h)
         nsim = buf.shape[0]
         rows = np.arange(nsim)
         if self.horizon == 1:
@@ -665,7 +785,7 @@ class SparseEvaluator:
 def evaluate(recording, twin: Twin, steps: Any, samples: Any, *, horizon: int | None = None,
              mode: SparseMode = SparseMode.STEP, nthread: int = 0, chunk: int = DEFAULT_CHUNK,
              divergence: DivergencePolicy = DivergencePolicy.MARK,
-             keep_raw: bool = False) -> SparseResult:
+             keep_raw: bool = False, first_failure: bool = False) -> SparseResult:
     """Sparse evaluation of parameter samples at moments of a recording (thesis Algorithm 1).
 
     A one-off :class:`SparseEvaluator`; keep an evaluator to evaluate repeatedly.
@@ -681,13 +801,15 @@ def evaluate(recording, twin: Twin, steps: Any, samples: Any, *, horizon: int | 
         chunk: most simulations per batch.
         divergence: MARK diverged samples (cost +inf) or RAISE.
         keep_raw: also keep the raw sensor readings and final states.
+        first_failure: stop each sample at its first failure
+            (:meth:`SparseEvaluator.evaluate`).
 
     Returns:
         The :class:`SparseResult`, (m, n) per quantity.
     """
     engine = SparseEvaluator(recording, twin, horizon=horizon, mode=mode, nthread=nthread,
                              chunk=chunk, divergence=divergence)
-    return engine.evaluate(steps, samples, keep_raw=keep_raw)
+    return engine.evaluate(steps, samples, keep_raw=keep_raw, first_failure=first_failure)
 
 
 # --------------------------------------------------------------------------

@@ -21,7 +21,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import types
-from typing import Mapping
+from collections.abc import Mapping
 
 import mujoco
 import numpy as np

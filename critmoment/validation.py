@@ -55,7 +55,8 @@ import enum
 import math
 import numbers
 import time
-from typing import Any, Mapping, Sequence
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import mujoco
 import mujoco.batch
@@ -65,8 +66,15 @@ from critmoment import sparse as sp
 from critmoment.analysis import AnalyzeOptions, audit_moments
 from critmoment.exceptions import ParameterError
 from critmoment.moments import Moment
-from critmoment.recording import (Recording, batched_rollouts, ends_completed, initial_state,
-                                  prepare_controls, rollout, rollouts_fail)
+from critmoment.recording import (
+    Recording,
+    batched_rollouts,
+    ends_completed,
+    initial_state,
+    prepare_controls,
+    rollout,
+    rollouts_fail,
+)
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin, carried_flags
 
@@ -246,7 +254,7 @@ class Classification:
         return {o.value: sum(1 for x in self.outcome if x is o) for o in Outcome}
 
     @staticmethod
-    def concatenate(parts: Sequence["Classification"]) -> "Classification":
+    def concatenate(parts: Sequence[Classification]) -> Classification:
         """Join classifications of successive chunks of samples."""
         if not parts:
             raise ParameterError("expected at least one classification to concatenate")
@@ -611,7 +619,7 @@ class _Frames:
 
     @classmethod
     def read(cls, twin: Twin, probe: _Probe, sensordata: np.ndarray,
-             mu: np.ndarray) -> "_Frames":
+             mu: np.ndarray) -> _Frames:
         sig = twin.signals(sensordata[..., :twin.nsensordata], mu=mu[:, None])
         c, t = sensordata.shape[:2]
         return cls(stage=sig.stage, contact_gripper=sig.contact_gripper,
@@ -620,7 +628,7 @@ class _Frames:
                    position=sensordata[..., probe.pos].reshape(c, t, -1, 3),
                    q=sensordata[..., probe.q])
 
-    def row(self, i: int) -> "_Frames":
+    def row(self, i: int) -> _Frames:
         return _Frames(**{f.name: getattr(self, f.name)[i] for f in dataclasses.fields(self)})
 
     @property
@@ -776,10 +784,11 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     every = np.concatenate([steps, extra])
     n = samples.shape[0]
     if every.size:
-        res = evaluator.evaluate(every, samples)
-        cost = np.where(res.diverged, np.inf, res.cost)
-        cost_all = cost.max(axis=0)
-        cost_moments = cost[:steps.size].max(axis=0) if steps.size else np.zeros(n)
+        # as the audit: each sample stops at its first failure (the same samples fail); the
+        # envelope study compares moments with envelope steps, so it evaluates everything
+        res = evaluator.evaluate(every, samples, first_failure=extra.size == 0)
+        cost_all = res.worst_cost()
+        cost_moments = res.worst_cost(slice(0, steps.size)) if steps.size else np.zeros(n)
         failed = res.failed_any
     else:
         cost_all = cost_moments = np.zeros(n)

@@ -120,6 +120,8 @@ def test_bad_options():
             AnalyzeOptions(verify=bad)
     with pytest.raises(ParameterError, match="max_moments"):
         AnalyzeOptions(max_moments=0)
+    with pytest.raises(ParameterError, match="search_patience"):
+        AnalyzeOptions(search_patience=0)
 
 
 @pytest.fixture(scope="module")
@@ -199,3 +201,20 @@ def test_untouched_box_has_no_critical_moment(twin):
     moments = analysis.detect_moments(rec, twin)
     assert moments
     assert all(not m.critical and m.score < twin.scenario.cost.threshold for m in moments)
+
+
+def test_first_failure_sweep_gives_the_exhaustive_verdict(twin, demo_traj, nominal_report):
+    full = analyze(demo_traj, twin=twin, options=dataclasses.replace(FAST, exhaustive=True))
+    fast = nominal_report
+    assert fast.options.exhaustive is False
+    assert fast.verdict is full.verdict and fast.p_success == full.p_success
+    assert fast.safe_region_text == full.safe_region_text
+    np.testing.assert_array_equal(fast.failed, full.failed)
+    # per moment: the first failures partition the failing samples
+    assert sum(mr.fail_fraction for mr in fast.moments) == pytest.approx(
+        fast.sweep.failed_any.mean())
+    assert all(mr.reached == 1.0 for mr in full.moments)
+    assert any(mr.reached < 1.0 for mr in fast.moments)
+    for a, b in zip(fast.moments, full.moments, strict=True):
+        assert a.critical == b.critical
+        assert a.fail_fraction <= b.fail_fraction

@@ -373,6 +373,22 @@ def test_same_seed_same_result(demo_recording, twin, moments, contact_engine):
     assert [t.parameters for t in c.history[5:]] != [t.parameters for t in a.history[5:]]
 
 
+def test_patience_stops_a_search_that_no_longer_improves(contact_engine, moments):
+    lift, _ = moments
+    full = search.search_worst_case(contact_engine, [lift], n_trials=48, seed=0)
+    short = search.search_worst_case(contact_engine, [lift], n_trials=48, seed=0, patience=1)
+    assert full.stop_reason is None and not full.stopped_early
+    assert short.stop_reason == "patience" and short.stopped_early
+    assert short.evaluations < full.evaluations and short.evaluations % 8 == 0
+    # the same trials up to the stop, and the last batch raised the best by < PATIENCE_RTOL
+    assert short.history == full.history[:short.evaluations]
+    before = max(t.cost for t in short.history[:-8])
+    assert short.worst_cost <= before + search.PATIENCE_RTOL * abs(before)
+    assert short.summary()["stop_reason"] == "patience"
+    with pytest.raises(ParameterError, match="patience"):
+        search.search_worst_case(contact_engine, [lift], patience=0)
+
+
 def test_optuna_verbosity_is_restored(contact_engine, moments):
     before = optuna.logging.get_verbosity()
     optuna.logging.set_verbosity(optuna.logging.INFO)

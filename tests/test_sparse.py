@@ -11,6 +11,7 @@ import math
 import mujoco
 import numpy as np
 import pytest
+from scenarios import one_actuator_toml
 
 from critmoment import recording as rollout
 from critmoment import sparse
@@ -28,7 +29,6 @@ from critmoment.sparse import (
 )
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin
-from scenarios import one_actuator_toml
 
 G = 9.81
 
@@ -480,3 +480,67 @@ def test_recording_of_another_scenario_is_rejected(tiny, twin):
 def test_public_names_exist():
     for name in sparse.__all__:
         assert hasattr(sparse, name), name
+
+
+# --------------------------------------------------------------------------
+# first-failure evaluation (the audit's sweep)
+# --------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("horizon", [1, 5])
+def test_first_failure_stops_each_sample_where_the_full_evaluation_first_fails(
+        scenario, twin, demo_recording, horizon):
+    lift, hand = _lift_step(demo_recording), _handover_step(demo_recording)
+    steps = [hand, lift - 200, lift]  # out of time order on purpose
+    samples = sparse.sweep_samples(scenario.box, n=64, seed=3)
+    full = sparse.evaluate(demo_recording, twin, steps, samples, horizon=horizon)
+    ff = sparse.evaluate(demo_recording, twin, steps, samples, horizon=horizon,
+                         first_failure=True)
+    assert full.evaluated is None and ff.evaluated.shape == (3, 64)
+    assert 0 < full.failed_any.sum() < 64  # the box holds passing and failing samples
+    np.testing.assert_array_equal(ff.failed_any, full.failed_any)
+    time_order = np.argsort(steps)
+    failed_before = np.cumsum(full.failed[time_order], axis=0) - full.failed[time_order]
+    reached = np.empty_like(ff.evaluated)
+    reached[time_order] = failed_before == 0
+    np.testing.assert_array_equal(ff.evaluated, reached)
+    # a pair that passes ran its whole horizon: identical to the full evaluation
+    passed = ff.evaluated & ~ff.failed
+    for name in ("cost", "fos_grasp", "fos_motor", "fos_contact", "object_acc",
+                 "actuator_norm", "stage", "worst_step", "motor_argmax"):
+        np.testing.assert_array_equal(getattr(ff, name)[passed], getattr(full, name)[passed],
+                                      err_msg=name)
+    # a pair that fails stopped at its first failing step: a cost above the threshold, at
+    # most the full horizon's
+    stopped = ff.evaluated & ff.failed
+    np.testing.assert_array_equal(stopped, ff.evaluated & full.failed)
+    assert (ff.cost[stopped] > scenario.cost.threshold).all()
+    assert (ff.cost[stopped] <= full.cost[stopped]).all()
+    # the rest was not evaluated
+    skipped = ~ff.evaluated
+    assert skipped.any()
+    assert np.isnan(ff.cost[skipped]).all() and (ff.stage[skipped] == -1).all()
+    assert not ff.failed[skipped].any() and not ff.diverged[skipped].any()
+    np.testing.assert_array_equal(ff.worst_cost()[~full.failed_any],
+                                  full.worst_cost()[~full.failed_any])
+
+
+def test_first_failure_solve_mode_equals_one_step(scenario, twin, demo_recording):
+    steps = [_lift_step(demo_recording), _handover_step(demo_recording)]
+    samples = sparse.sweep_samples(scenario.box, n=32, seed=4)
+    step = sparse.evaluate(demo_recording, twin, steps, samples, horizon=1, first_failure=True)
+    solve = sparse.evaluate(demo_recording, twin, steps, samples, horizon=1,
+                            mode=SparseMode.SOLVE, first_failure=True)
+    np.testing.assert_array_equal(step.evaluated, solve.evaluated)
+    np.testing.assert_array_equal(step.cost, solve.cost)
+
+
+def test_first_failure_skips_the_moments_after_a_divergence(tiny):
+    twin, recording = tiny
+    states = recording.states.copy()
+    states[0, 1 + twin.model.nq] = 1e12
+    bad = dataclasses.replace(recording, states=states)
+    samples = _mass_samples(twin.scenario, [0.05, 1.0])
+    res = sparse.evaluate(bad, twin, [1, 0], samples, first_failure=True)
+    assert res.diverged[1].all() and np.isinf(res.cost[1]).all()
+    assert not res.evaluated[0].any() and res.failed_any.all()
