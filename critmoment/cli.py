@@ -152,7 +152,7 @@ def cmd_analyze(args) -> int:
 
     twin, traj = _load(args)
     options = AnalyzeOptions(seed=args.seed, n_samples=args.samples, min_success=args.min_success,
-                             **_method(args))
+                             exhaustive=args.exhaustive, **_method(args))
     result = analyze(traj, twin.scenario, twin=twin, options=options,
                      progress=not args.json and sys.stderr.isatty())
     out = _out_dir(args.out)
@@ -223,6 +223,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--min-success", type=float, default=None,
                    help="exit 0 when P(success) >= this even if not SAFE")
     _add_method(p)
+    p.add_argument("--exhaustive", action="store_true",
+                   help="evaluate every sample at every moment (default: each sample stops at "
+                        "its first failure; same verdict, per-moment figures over the samples "
+                        "that reach the moment)")
     p.set_defaults(func=cmd_analyze)
 
     p = sub.add_parser("validate", help="check sparse verdicts against brute-force full rollouts")
