@@ -454,25 +454,32 @@ _SUGGEST = {
 }
 
 
-def _causes(reports: Sequence[MomentReport]) -> list[str]:
+def _causes(reports: Sequence[MomentReport], threshold: float) -> list[str]:
     """One line per failure cause (grip slip, overload of one actuator, ...), the moments where
     it limits (with their critical values) and the suggestion.
 
-    A moment counts where sweep samples fail there, or where the cost crosses the threshold
-    along a critical-value curve (with a first-failure sweep a later moment's failures are
-    hidden behind earlier ones, but its critical values still say where it would fail).
+    A moment counts where sweep samples fail there, where the cost crosses the threshold
+    along a critical-value curve, or where the worst case found fails (with a first-failure
+    sweep a later moment's failures are hidden behind earlier ones; its critical values and
+    worst case still say where it would fail).
     """
     groups: dict[str, list[str]] = {}
     for mr in reports:
         crossed = any(v is not None for v in mr.critical.values())
-        if mr.dominant is None or (mr.fail_fraction == 0 and not crossed):
+        if mr.dominant is None or (mr.fail_fraction == 0 and not crossed
+                                   and not mr.max_cost > threshold):
             continue
         name = _SUGGEST[mr.dominant][0]
         if mr.dominant == "motor":
             name = f"{name} at {mr.limiting_actuator}"
         crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
                          if v is not None)
-        where = f" (fails for {crit})" if crit else f" ({mr.fail_fraction:.0%} of the box)"
+        if crit:
+            where = f" (fails for {crit})"
+        elif mr.fail_fraction > 0:
+            where = f" ({mr.fail_fraction:.0%} of the box)"
+        else:
+            where = " (at " + ", ".join(f"{k} = {v:.3g}" for k, v in mr.worst_case.items()) + ")"
         groups.setdefault(f"{mr.dominant}|{name}", []).append(
             f"{mr.moment.label.value} at t = {mr.moment.time:.2f} s{where}")
     return [f"{key.split('|', 1)[1]}: {'; '.join(where)}; suggestion: "
@@ -629,6 +636,12 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         if dominant is None:
             dominant = next((d for c in curves[s].values()
                              if (d := _dominant(c, 0, c.failed[0])) is not None), None)
+        if dominant is None and worst_case and max_cost > threshold:
+            # only the search's worst case fails here: its own evaluation says why
+            one = evaluator.evaluate([s], [[worst_case[n] for n in box.names]])
+            dominant = _dominant(one, 0, one.failed[0])
+            if dominant is not None:
+                motor = int(one.motor_argmax[0, 0])
         if motor is None:  # no sample reached the moment: the first curve's worst point
             c = curves[s][box.names[0]]
             motor = int(c.motor_argmax[0, int(np.argmax(np.nan_to_num(c.cost[0], nan=-1.0)))])
@@ -657,7 +670,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     cost_map = None
     if opt.map_resolution and box.ndim >= 2 and steps.size:
         cost_map = _cost_map(res, box, opt.map_resolution)
-    causes = tuple(_causes(moment_reports))
+    causes = tuple(_causes(moment_reports, threshold))
     if nominal_cost > threshold:
         causes = (f"fails at the nominal parameters (max cost {nominal_cost:.3g} > "
                   f"{threshold:g})",) + causes

@@ -16,6 +16,11 @@ moment?", each checked against the next:
    ``C(m, μ) = threshold`` from the exact closed form.
 3. **Optuna** (:func:`search_worst_case`). The *simulated* cost (sparse evaluation) maximised
    by a seeded sampler with batched ask/tell.
+4. **CasADi on the simulation** (:func:`surrogate_worst_case`). The simulated cost on a grid
+   of the box (edges included), a B-spline interpolant of it as a CasADi function, IPOPT
+   from the best grid points, each optimum re-simulated. Where the analytic model cannot say
+   what happens beyond failure (the transient of a slipping grasp), this maximises the
+   simulation itself.
 
 :func:`verify` re-evaluates every worst case with sparse evaluation and reports how far the
 analytic model is from the simulation; :func:`audit_moment` chains everything into the JSON
@@ -90,6 +95,8 @@ __all__ = [
     "SearchTrial",
     "SearchResult",
     "search_worst_case",
+    "SurrogateWorstCase",
+    "surrogate_worst_case",
     "CheckedPoint",
     "Verification",
     "verify",
@@ -1152,6 +1159,134 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
         worst_cost_per_moment=worst.cost_per_moment, evaluations_to_worst=first + 1,
         stopped_early=stopped is not None, ceiling=ceiling, seed=seed, history=tuple(history),
         stop_reason=stopped)
+
+
+# --------------------------------------------------------------------------
+# CasADi on the simulated cost: grid, B-spline surrogate, IPOPT
+# --------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class SurrogateWorstCase:
+    """The worst case of the simulated cost found through a CasADi surrogate.
+
+    Attributes:
+        steps: the moments (the objective is the maximum cost over them).
+        parameters: the most severe point simulated, parameter values by name.
+        cost: its simulated cost (+inf if it diverged).
+        source: "grid" (a grid point) or "ipopt" (an optimum of the surrogate).
+        grid: grid points per parameter.
+        grid_cost: the highest simulated cost on the grid.
+        candidates: the surrogate optima, parameter values by name, in start order.
+        candidate_costs: their simulated costs.
+        solver_status: IPOPT's return status per start.
+        evaluations: simulated samples (grid + candidates).
+    """
+
+    steps: tuple[int, ...]
+    parameters: Mapping[str, float]
+    cost: float
+    source: str
+    grid: int
+    grid_cost: float
+    candidates: tuple[Mapping[str, float], ...]
+    candidate_costs: tuple[float, ...]
+    solver_status: tuple[str, ...]
+    evaluations: int
+
+    def summary(self) -> dict:
+        """JSON-able summary."""
+        return {"steps": list(self.steps), "parameters": dict(self.parameters),
+                "cost": _finite_or_none(self.cost), "source": self.source, "grid": self.grid,
+                "grid_cost": _finite_or_none(self.grid_cost), "evaluations": self.evaluations,
+                "solver_status": list(self.solver_status)}
+
+
+def surrogate_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, *,
+                         grid: int = 9, starts: int = 4, max_iter: int = 100
+                         ) -> SurrogateWorstCase:
+    """Maximise the simulated cost with IPOPT on a B-spline surrogate of it.
+
+    The box's unit cube (prior quantiles, so a log-uniform parameter is spaced evenly in its
+    logarithm) gets ``grid`` points per parameter, ends included, and one sparse evaluation
+    of all of them. The costs become a cubic B-spline interpolant (``casadi.interpolant``),
+    which IPOPT maximises within the unit cube from the ``starts`` best grid points; each
+    optimum is simulated, and the answer is the most severe point simulated, grid or optimum.
+
+    Why a grid: the simulated worst case often lies on the box's boundary (at lift-off the
+    grippiest cube is held longest and loads the arm most, so the worst case sits on the
+    friction range's upper end), where a Sobol sample never lands and a grid does.
+
+    Args:
+        evaluator: a :class:`~critmoment.sparse.SparseEvaluator` (its horizon applies).
+        steps: the moments, physics step indices (m,).
+        box: the box (the evaluator's parameters; ranges may be narrower); default the
+            evaluator's.
+        grid: points per parameter (>= 3); grid**k evaluations, at most 4096.
+        starts: IPOPT starts (>= 1), from the best grid points.
+        max_iter: IPOPT iteration limit per start.
+
+    Returns:
+        The :class:`SurrogateWorstCase`.
+
+    Raises:
+        ParameterError: bad steps, options or box, or a grid of more than 4096 points.
+    """
+    import casadi as ca
+
+    grid = _check_int("grid", grid, 3)
+    starts = _check_int("starts", starts, 1)
+    max_iter = _check_int("max_iter", max_iter, 1)
+    steps_arr = evaluator.check_steps(steps)
+    base: UncertaintyBox = evaluator.box
+    box = base if box is None else box
+    if not isinstance(box, UncertaintyBox) or box.names != base.names:
+        raise ParameterError(
+            f"box: expected an UncertaintyBox with parameters {base.names} (the evaluator's), "
+            f"got {getattr(box, 'names', box)!r}")
+    if grid ** box.ndim > 4096:
+        raise ParameterError(
+            f"grid: {grid}**{box.ndim} = {grid ** box.ndim} points, expected at most 4096; "
+            "use a coarser grid or search_worst_case (Optuna) for this many parameters")
+    axis = np.linspace(0.0, 1.0, grid)
+    mesh = np.meshgrid(*[axis] * box.ndim, indexing="ij")
+    unit = np.stack([g.reshape(-1) for g in mesh], axis=1)
+    points = np.clip(box.from_unit(unit), box.low, box.high)  # ends exact despite rounding
+    cost = evaluator.evaluate(steps_arr, points).cost.max(axis=0)
+    order = np.argsort(-np.where(np.isnan(cost), -np.inf, cost), kind="stable")
+    g_best = int(order[0])
+    names = box.names
+
+    def named(row):
+        return {n: float(v) for n, v in zip(names, row)}
+
+    cand_unit, status = [], []
+    if np.isfinite(cost[g_best]):  # a diverged grid point (+inf) is already the worst
+        # casadi wants the values with the first axis fastest (Fortran order)
+        values = cost.reshape((grid,) * box.ndim).ravel(order="F")
+        spline = ca.interpolant("cost", "bspline", [axis] * box.ndim, values)
+        x = ca.MX.sym("u", box.ndim)
+        solver = ca.nlpsol("surrogate", "ipopt", {"x": x, "f": -spline(x)},
+                           {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
+                            "ipopt.max_iter": max_iter})
+        for i in order[:starts]:
+            sol = solver(x0=unit[i], lbx=np.zeros(box.ndim), ubx=np.ones(box.ndim))
+            status.append(str(solver.stats()["return_status"]))
+            cand_unit.append(np.clip(np.asarray(sol["x"]).reshape(-1), 0.0, 1.0))
+    cand_points = (np.clip(box.from_unit(np.array(cand_unit)), box.low, box.high) if cand_unit
+                   else np.zeros((0, box.ndim)))
+    cand_cost = (evaluator.evaluate(steps_arr, cand_points).cost.max(axis=0) if cand_unit
+                 else np.zeros(0))
+    best_point, best_cost, source = points[g_best], float(cost[g_best]), "grid"
+    if cand_cost.size and float(np.max(cand_cost)) > best_cost:
+        i = int(np.argmax(cand_cost))
+        best_point, best_cost, source = cand_points[i], float(cand_cost[i]), "ipopt"
+    return SurrogateWorstCase(
+        steps=tuple(int(s) for s in steps_arr), parameters=named(best_point), cost=best_cost,
+        source=source, grid=grid, grid_cost=float(cost[g_best]),
+        candidates=tuple(named(r) for r in cand_points),
+        candidate_costs=tuple(float(c) for c in cand_cost), solver_status=tuple(status),
+        evaluations=int(points.shape[0] + cand_points.shape[0]))
 
 
 # --------------------------------------------------------------------------

@@ -59,6 +59,13 @@ def test_analyze_method_flags(traj_file, capsys):
     doc = json.loads(capsys.readouterr().out)
     assert doc["verification"] is None and len(doc["moments"]) == 3 and doc["horizon"] == 5
     assert doc["manifest"]["options"]["max_moments"] == 3
+    assert doc["manifest"]["options"]["exhaustive"] is False
+    assert main(["analyze", str(traj_file), "--samples", "16", "--json", "--no-verify",
+                 "--max-moments", "3", "--horizon", "5", "--exhaustive"]) == 1
+    full = json.loads(capsys.readouterr().out)
+    assert full["manifest"]["options"]["exhaustive"] is True
+    assert all(m["reached"] == 1.0 for m in full["moments"])
+    assert full["p_success"] == doc["p_success"] and full["verdict"] == doc["verdict"]
     assert main(["analyze", str(traj_file), "--samples", "16", "--json", "--verify", "0.5"]) == 1
     assert json.loads(capsys.readouterr().out)["verification"]["fraction"] == 0.5
     assert main(["analyze", str(traj_file), "--verify", "2"]) == 2
