@@ -156,7 +156,10 @@ def plot_curves(report, step: int) -> Figure:
     """FOS and cost against each parameter at one moment (others nominal): thesis Figs. 5–6."""
     box = report.scenario.box
     curves = report.curves[step]
-    fig = Figure(figsize=(5.2 * box.ndim, 6.4), layout="constrained")
+    # fixed margins: a constrained layout would draw each of these figures twice
+    fig = Figure(figsize=(5.2 * box.ndim, 6.4))
+    fig.subplots_adjust(left=0.09, right=0.98, top=0.95, bottom=0.08, hspace=0.25,
+                        wspace=0.26)
     axes = fig.subplots(2, box.ndim, squeeze=False)
     thr = report.scenario.cost.threshold
     for j, p in enumerate(box.parameters):
