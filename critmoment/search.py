@@ -1031,6 +1031,17 @@ def _sampler(optuna, method: SearchMethod, seed: int, batch_size: int):
                                         warn_independent_sampling=False)
 
 
+def _search_box(evaluator, box: UncertaintyBox | None) -> UncertaintyBox:
+    """The box to search: the evaluator's, or one with the same parameters."""
+    base: UncertaintyBox = evaluator.box
+    box = base if box is None else box
+    if not isinstance(box, UncertaintyBox) or box.names != base.names:
+        raise ParameterError(
+            f"box: expected an UncertaintyBox with parameters {base.names} (the evaluator's), "
+            f"got {getattr(box, 'names', box)!r}")
+    return box
+
+
 #: relative rise of the highest cost that counts as progress for ``patience``
 PATIENCE_RTOL = 0.01
 
@@ -1091,12 +1102,7 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
     batch_size = _check_int("batch_size", batch_size, 1)
     seed = _check_int("seed", seed, 0)
     steps_arr = evaluator.check_steps(steps)
-    base: UncertaintyBox = evaluator.box
-    box = base if box is None else box
-    if not isinstance(box, UncertaintyBox) or box.names != base.names:
-        raise ParameterError(
-            f"box: expected an UncertaintyBox with parameters {base.names} (the evaluator's), "
-            f"got {getattr(box, 'names', box)!r}")
+    box = _search_box(evaluator, box)
     if method is SearchMethod.CMAES and importlib.util.find_spec("cmaes") is None:
         raise ParameterError(
             "method CMAES: expected the 'cmaes' package to be importable (pip install cmaes), "
@@ -1238,12 +1244,7 @@ def surrogate_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = Non
     starts = _check_int("starts", starts, 1)
     max_iter = _check_int("max_iter", max_iter, 1)
     steps_arr = evaluator.check_steps(steps)
-    base: UncertaintyBox = evaluator.box
-    box = base if box is None else box
-    if not isinstance(box, UncertaintyBox) or box.names != base.names:
-        raise ParameterError(
-            f"box: expected an UncertaintyBox with parameters {base.names} (the evaluator's), "
-            f"got {getattr(box, 'names', box)!r}")
+    box = _search_box(evaluator, box)
     if grid ** box.ndim > 4096:
         raise ParameterError(
             f"grid: {grid}**{box.ndim} = {grid ** box.ndim} points, expected at most 4096; "
