@@ -20,7 +20,7 @@ import numpy as np
 from critmoment import sparse as sp
 from critmoment.exceptions import ParameterError
 from critmoment.moments import Moment, MomentDetector, MomentLabel
-from critmoment.recording import Recording, model_hash, rollout, rollouts_fail
+from critmoment.recording import Recording, model_hash, rollout
 from critmoment.scenario import Scenario, load_scenario
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin
@@ -81,11 +81,17 @@ class AnalyzeOptions:
             stepping wherever much of the box fails.
         verify: a fraction of the cost threshold, or None. Every Sobol sample that passes
             the sparse evaluation with a cost at or above ``verify × threshold`` at some
-            moment gets its own full rollout (:func:`critmoment.recording.rollouts_fail`) and
-            fails if that rollout's cost exceeds the threshold anywhere or the task is not
-            completed. Near the boundary sparse evaluation at a few moments can miss a
-            failure that happens between them; the default 0.8 brings the measured
-            false-safe rate to 0 (``docs/validation.md``) for a few full rollouts.
+            moment gets its own full rollout, and that rollout's real outcome decides it
+            (:func:`critmoment.validation.brute_force`: the object dropped or slipped, a joint
+            lost tracking or saturated, the task not completed). Near the boundary sparse
+            evaluation at a few moments can miss a failure that happens between them; the
+            default 0.8 brings the measured false-safe rate to 0 (``docs/validation.md``)
+            for a few full rollouts.
+        verify_unlifted: with ``verify``, a sample that fails only where the nominal run
+            squeezes the object off its support without lifting it
+            (``SparseResult.unlifted_failure``) gets its own full rollout too, which decides
+            it: the sparse evaluation cannot tell a squeeze that a heavier object survives
+            on the table from a failed lift.
     """
 
     seed: int = 0
@@ -102,6 +108,7 @@ class AnalyzeOptions:
     map_resolution: int = 40
     require_task: bool = True
     verify: float | None = 0.8
+    verify_unlifted: bool = True
     exhaustive: bool = False
 
     def __post_init__(self):
@@ -595,13 +602,22 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         with stage("verification"):
             worst = res.worst_cost()
             near = ~failed & (worst >= opt.verify * threshold)
+            unlifted = (res.failed_unlifted_only if opt.verify_unlifted
+                        else np.zeros_like(failed))
+            rerun = near | unlifted
             failed = failed.copy()
-            if near.any():
-                failed[near] = rollouts_fail(rec, twin, res.samples[near], nthread=opt.nthread)
+            if rerun.any():
+                from critmoment.validation import brute_force
+
+                failed[rerun] = brute_force(trajectory, twin=twin, samples=res.samples[rerun],
+                                            nthread=opt.nthread).failed
             verification = {"fraction": float(opt.verify),
                             "cost_from": float(opt.verify * threshold),
-                            "rollouts": int(near.sum()),
-                            "failed": int(failed[near].sum())}
+                            "rollouts": int(rerun.sum()),
+                            "failed": int(failed[rerun].sum()),
+                            "near": int(near.sum()), "near_failed": int(failed[near].sum()),
+                            "unlifted": int(unlifted.sum()),
+                            "unlifted_failed": int(failed[unlifted].sum())}
     n_fail = int(failed.sum())
     p = 1.0 - n_fail / len(samples)
     interval = sp.wilson_interval(len(samples) - n_fail, len(samples), confidence=opt.confidence)
@@ -674,8 +690,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     if nominal_cost > threshold:
         causes = (f"fails at the nominal parameters (max cost {nominal_cost:.3g} > "
                   f"{threshold:g})",) + causes
-    if verification and verification["failed"]:
-        causes += (f"{verification['failed']} of {verification['rollouts']} samples that pass "
+    if verification and verification["near_failed"]:
+        causes += (f"{verification['near_failed']} of {verification['near']} samples that pass "
                    f"at the moments with a cost ≥ {verification['cost_from']:.3g} fail in "
                    f"their own full rollout (between the moments or by not completing the "
                    f"task); suggestion: reduce the uncertainty near the safe region's edge",)

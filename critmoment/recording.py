@@ -26,7 +26,7 @@ from critmoment import trajectory as trajectory_mod
 from critmoment.exceptions import InputFileError, SimulationDivergedError, TrajectoryError
 from critmoment.scenario import Scenario, load_scenario
 from critmoment.trajectory import Trajectory
-from critmoment.twin import STATE_SPEC, Signals, Twin, carried_flags
+from critmoment.twin import STATE_SPEC, Signals, Twin
 
 __all__ = [
     "Recording",
@@ -37,7 +37,6 @@ __all__ = [
     "task_completed",
     "ends_completed",
     "batched_rollouts",
-    "rollouts_fail",
     "model_hash",
 ]
 
@@ -257,38 +256,6 @@ def batched_rollouts(twin: Twin, state0: np.ndarray, controls: np.ndarray, sampl
         mu = (np.full(rows.shape[0], twin.object_friction()) if friction is None
               else friction[:, twin.object_geom_id, 0].copy())
         yield start, out, mu
-
-
-def rollouts_fail(recording: Recording, twin: Twin, samples: np.ndarray, *, chunk: int = 16,
-                  nthread: int = 0) -> np.ndarray:
-    """Frequent evaluation at each sample's own parameters: does its full rollout fail?
-
-    The audit's *verification* of near-threshold samples. A sample fails when its rollout
-    diverges, when its cost (eq. 15, the grasp gated where the nominal ``recording`` carries
-    the object, as sparse evaluation gates it) exceeds the threshold at any step, or when it
-    does not end with the task completed (:func:`ends_completed`).
-
-    Args:
-        recording: the nominal frequent rollout (initial state, controls, carried flags).
-        twin: its twin.
-        samples: parameter values, (n, k).
-        chunk: most rollouts per batch call.
-        nthread: threads (0: all CPUs).
-
-    Returns:
-        (n,) bool.
-    """
-    samples = twin.scenario.box.check_samples(samples)
-    threshold = twin.scenario.cost.threshold
-    sig = recording.signals
-    carried = carried_flags(sig.contact_support, sig.contact_gripper)
-    out = np.zeros(samples.shape[0], dtype=bool)
-    for start, run, mu in batched_rollouts(twin, recording.states[0], recording.controls,
-                                           samples, chunk=chunk, nthread=nthread):
-        s = twin.signals(run["sensordata"], mu=mu[:, None], carried=carried[None, :])
-        out[start:start + mu.shape[0]] = (run["diverged"] | (s.cost > threshold).any(axis=1)
-                                          | ~ends_completed(s.stage))
-    return out
 
 
 @dataclasses.dataclass(frozen=True)

@@ -225,8 +225,7 @@ def summary_text(report) -> str:
                      f"(reached by {mr.reached:.0%}); critical: {crit}")
     v = report.verification
     if v is not None:
-        lines.append(f"  verification: {v['rollouts']} sample(s) with cost ≥ {v['cost_from']:.3g} "
-                     f"re-run in full, {v['failed']} of them fail")
+        lines.append(f"  verification: {_verification_text(v)}")
     for cause in report.failure_causes:
         lines.append(f"  ! {cause}")
     return "\n".join(lines)
@@ -275,8 +274,16 @@ def _verification_html(doc) -> str:
     v = doc.get("verification")
     if not v:
         return ""
-    return (f" · verification: {v['rollouts']} near-threshold sample(s) (cost ≥ "
-            f"{v['cost_from']:.3g}) re-run in full, {v['failed']} fail")
+    return " · verification: " + _verification_text(v)
+
+
+def _verification_text(v) -> str:
+    text = (f"{v['near']} sample(s) passing with cost ≥ {v['cost_from']:.3g} re-run in full, "
+            f"{v['near_failed']} of them fail")
+    if v.get("unlifted"):
+        text += (f"; {v['unlifted']} failing only where the object is squeezed off its "
+                 f"support without a lift re-run in full, {v['unlifted_failed']} of them fail")
+    return text
 
 
 def _html(report, doc, images) -> str:

@@ -232,9 +232,14 @@ class SparseResult:
         state: integration state after the horizon, (m, n, nstate), when asked for.
         evaluated: which (moment, sample) pairs were evaluated, (m, n) bool, or None when
             all were. Only ``first_failure`` evaluation skips pairs: there a sample's
-            moments after its first failure are not evaluated (NaN values, False flags,
+            moments after its first failure (other than an unlifted one) are not evaluated (NaN values, False flags,
             ``stage``, ``worst_step`` and ``motor_argmax`` −1), and the moment where it
             fails is reduced over the steps up to the failing one.
+        unlifted_failure: the pair fails, but would not if the object counted as carried
+            only in the nominal run's real lifts (:func:`critmoment.twin.lifted_flags`: it
+            rises more than 2 mm): a failure only where the grip squeezes the object off its
+            support without lifting it, (m, n) bool. The audit decides such samples by
+            their own full rollout.
     """
 
     steps: np.ndarray
@@ -262,6 +267,7 @@ class SparseResult:
     sensordata: np.ndarray | None = None
     state: np.ndarray | None = None
     evaluated: np.ndarray | None = None
+    unlifted_failure: np.ndarray | None = None
 
     @property
     def threshold(self) -> float:
@@ -289,6 +295,14 @@ class SparseResult:
             return np.full(self.n_samples, np.nan)
         top = np.max(np.where(np.isnan(cost), -np.inf, cost), axis=0)
         return np.where(np.isnan(cost).all(axis=0), np.nan, top)
+
+    @property
+    def failed_unlifted_only(self) -> np.ndarray:
+        """(n,) bool: the sample fails, and only through unlifted failures
+        (``unlifted_failure``): whether it really fails is for a full rollout to say."""
+        if self.unlifted_failure is None:
+            return np.zeros(self.n_samples, dtype=bool)
+        return self.failed_any & ~(self.failed & ~self.unlifted_failure).any(axis=0)
 
     @property
     def failed_any(self) -> np.ndarray:
@@ -451,6 +465,9 @@ class SparseEvaluator:
         self._controls = np.ascontiguousarray(controls)
         self.n_steps = int(controls.shape[0])
         self._ctrl = self._component(mujoco.mjtState.mjSTATE_CTRL)
+        # carried steps of real lifts (the object rises): a failure only at carried steps
+        # outside them (a squeeze that tips the object off its support) is marked
+        self._lifted = twin.lifted(self._carried, self._states)
         self._batches: collections.OrderedDict[int, mujoco.batch.Batch] = collections.OrderedDict()
         self._written: dict[int, np.ndarray] = {}
         self._mu: dict[int, np.ndarray | float] = {}
@@ -534,10 +551,11 @@ class SparseEvaluator:
                 the moments are evaluated in time order, one step at a time, and a sample
                 stops stepping at the first step whose cost exceeds the threshold (or that
                 diverges) and is not evaluated at the later moments (``evaluated`` says
-                which pairs were). Which samples fail, and at which moment first, is the
-                same as with full evaluation; the values of a failing pair are those of the
-                steps up to the failure. For a verdict this skips most of the stepping
-                wherever much of the box fails.
+                which pairs were). An unlifted failure (see ``unlifted_failure``) does not
+                stop it. Which samples fail, and at which moment first, is the same as with
+                full evaluation; the values of a failing pair are those of the steps up to
+                the failure. For a verdict this skips most of the stepping wherever much of
+                the box fails.
 
         Returns:
             The :class:`SparseResult`.
@@ -561,7 +579,7 @@ class SparseEvaluator:
             "contact_support": np.empty((m, n), bool),
             "contact_gripper": np.empty((m, n, ngrip), bool),
             "stage": np.empty((m, n), np.int8), "worst_step": np.empty((m, n), np.int64),
-            "diverged": np.empty((m, n), bool),
+            "diverged": np.empty((m, n), bool), "unlifted_failure": np.empty((m, n), bool),
         }
         raw = np.empty((m, n, h, nsd)) if keep_raw else None
         final = np.empty((m, n, self._states.shape[1])) if keep_raw else None
@@ -580,13 +598,13 @@ class SparseEvaluator:
                 k = int(steps[i])
                 if first_failure:
                     evaluated[i, sl] = alive
-                    raised, warned, carried, fails = self._advance_until_failure(
+                    raised, warned, at, fails = self._advance_until_failure(
                         batch, k, buf, alive, mu)
                 else:
                     raised, warned = self._advance(batch, k, buf)
-                    carried = self._carried[k:k + h][None, :]
+                    at = k + np.arange(h)[None, :]
                 diverged = raised | (warned > 0).any(axis=1) | ~np.isfinite(buf).all(axis=(1, 2))
-                self._score(buf, mu, diverged, out, i, sl, carried=carried)
+                self._score(buf, mu, diverged, out, i, sl, at=at)
                 if keep_raw:
                     raw[i, sl] = buf
                     final[i, sl] = batch.state
@@ -621,13 +639,14 @@ class SparseEvaluator:
         """As :meth:`_advance` for the ``alive`` simulations, one step at a time, each
         stopping at its first failing step (its later rows of buf repeat the failing one).
 
-        Returns raised and warned as :meth:`_advance`, the carried flags (nsim, h) to score
-        buf with, and which simulations failed (nsim,) bool.
+        Returns raised and warned as :meth:`_advance`, the recording step each row of buf
+        stands for (nsim, h) (the failing step repeated after a stop), and which simulations
+        failed (nsim,) bool.
         """
         h, nsim = self.horizon, batch.nsim
         threshold = self.twin.scenario.cost.threshold
         mu = np.broadcast_to(np.asarray(mu, dtype=np.float64), (nsim,))
-        carried = np.repeat(self._carried[k:k + h][None, :], nsim, axis=0)
+        last = np.full(nsim, h - 1)  # the last step each simulation ran
         raised = np.zeros(nsim, dtype=bool)
         fails = np.zeros(nsim, dtype=bool)
         buf[~alive] = 0.0
@@ -635,51 +654,51 @@ class SparseEvaluator:
         row[self._ctrl] = self._controls[k]
         run = np.flatnonzero(alive)
         batch.warning[...] = 0
-        if run.size == 0:
-            return raised, batch.warning[:, :, 1].copy(), carried, fails
-        batch.state[run] = row
-        if self.mode is SparseMode.SOLVE:
+        if run.size:
+            batch.state[run] = row
+        if run.size and self.mode is SparseMode.SOLVE:
             # one forward solve: the whole horizon (h = 1) in one call
             try:
                 batch.forward(ids=run)
             except mujoco.batch.SimulationError as exc:
                 raised[exc.ids] = True
-            buf[run, 0] = batch.bind("sensordata")[run]
-            h_run = 0
-        else:
-            h_run = h
-        one = np.empty((nsim, 1, buf.shape[2]))
-        for j in range(h_run):
-            if run.size == 0:
-                if j:
-                    buf[alive, j:] = buf[alive, j - 1:j]
-                    carried[alive, j:] = carried[alive, j - 1:j]
-                break
-            part = one[:run.size]
-            try:
-                batch.rollout(1, control=self._controls[k + j:k + j + 1][None],
-                              control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
-                              record=("sensordata",), ids=run, out={"sensordata": part})
-            except mujoco.batch.SimulationError as exc:
-                raised[exc.ids] = True
-            buf[run, j] = part[:, 0]
-            done = np.setdiff1d(np.flatnonzero(alive), run, assume_unique=True)
-            if j and done.size:
-                buf[done, j] = buf[done, j - 1]
-                carried[done, j] = carried[done, j - 1]
-            warned = (batch.warning[run, :, 1] > 0).any(axis=1)
-            with np.errstate(over="ignore", invalid="ignore"):
-                cost = self.twin.signals(part[:, 0], mu=mu[run], carried=carried[run, j]).cost
-            bad = raised[run] | warned | ~np.isfinite(part[:, 0]).all(axis=1) \
-                | (cost > threshold)
-            fails[run[bad]] = True
-            run = run[~bad]
-        if self.mode is SparseMode.SOLVE:
-            with np.errstate(over="ignore", invalid="ignore"):
-                cost = self.twin.signals(buf[run, 0], mu=mu[run], carried=carried[run, 0]).cost
-            fails[run] = raised[run] | ~np.isfinite(buf[run, 0]).all(axis=1) \
-                | (cost > threshold) | (batch.warning[run, :, 1] > 0).any(axis=1)
-        return raised, batch.warning[:, :, 1].copy(), carried, fails
+            part = batch.bind("sensordata")[run]
+            buf[run, 0] = part
+            fails[run] = raised[run] | ~np.isfinite(part).all(axis=1) \
+                | (self._step_cost(part, mu[run], k) > threshold) \
+                | (batch.warning[run, :, 1] > 0).any(axis=1)
+        elif run.size:
+            one = np.empty((nsim, 1, buf.shape[2]))
+            for j in range(h):
+                part = one[:run.size]
+                try:
+                    batch.rollout(1, control=self._controls[k + j:k + j + 1][None],
+                                  control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
+                                  record=("sensordata",), ids=run, out={"sensordata": part})
+                except mujoco.batch.SimulationError as exc:
+                    raised[exc.ids] = True
+                buf[run, j] = part[:, 0]
+                warned = (batch.warning[run, :, 1] > 0).any(axis=1)
+                bad = raised[run] | warned | ~np.isfinite(part[:, 0]).all(axis=1) \
+                    | (self._step_cost(part[:, 0], mu[run], k + j) > threshold)
+                fails[run[bad]] = True
+                last[run[bad]] = j
+                run = run[~bad]
+                if run.size == 0:
+                    break
+            stopped = np.flatnonzero(alive & fails)
+            for j in range(1, h):  # repeat each stopped simulation's failing row
+                later = stopped[last[stopped] < j]
+                buf[later, j] = buf[later, j - 1]
+        at = k + np.minimum(np.arange(h)[None, :], last[:, None])
+        return raised, batch.warning[:, :, 1].copy(), at, fails
+
+    def _step_cost(self, readings: np.ndarray, mu: np.ndarray, k: int) -> np.ndarray:
+        """Cost of one step's readings (n, nsd) at recording step k, with the carried flags
+        of real lifts (an unlifted failure does not stop a sample: its own rollout decides
+        it, and its later moments still count)."""
+        with np.errstate(over="ignore", invalid="ignore"):
+            return self.twin.signals(readings, mu=mu, carried=self._lifted[k]).cost
 
     def _advance(self, batch: mujoco.batch.Batch, k: int, buf: np.ndarray
                  ) -> tuple[np.ndarray, np.ndarray]:
@@ -710,17 +729,17 @@ class SparseEvaluator:
         return raised, batch.warning[:, :, 1].copy()
 
     def _score(self, buf: np.ndarray, mu: np.ndarray | float, diverged: np.ndarray,
-               out: dict[str, np.ndarray], i: int, sl: slice, *, carried: np.ndarray) -> None:
+               out: dict[str, np.ndarray], i: int, sl: slice, *, at: np.ndarray) -> None:
         """Signals of buf (nsim, h, nsd), reduced over the horizon, into out[...][i, sl].
 
-        ``carried`` (h,) or (nsim, h) says where the nominal run carries the object off its
-        support: the grip must hold it there whatever the sample does (a heavy object that sinks back onto
+        ``at`` (1, h) or (nsim, h) gives the recording step of each row of buf. Where the
+        nominal run carries the object off its support there, the grip must hold it there whatever the sample does (a heavy object that sinks back onto
         the table has failed to lift, not become safe).
         """
         twin, cp = self.twin, self.twin.scenario.cost
         mu = np.asarray(mu, dtype=np.float64)
         sig = twin.signals(buf, mu=mu[:, None] if mu.ndim == 1 else mu,
-                           carried=carried)  # leading (nsim, h)
+                           carried=self._carried[at])  # leading (nsim, h)
         nsim = buf.shape[0]
         rows = np.arange(nsim)
         if self.horizon == 1:
@@ -750,6 +769,7 @@ class SparseEvaluator:
             "contact_support": sig.contact_support[rows, worst],
             "contact_gripper": sig.contact_gripper[rows, worst],
             "stage": sig.stage[rows, worst], "worst_step": worst, "diverged": diverged,
+            "unlifted_failure": self._unlifted(buf, mu, at, sig.cost[rows, worst], diverged),
         }
         for name, value in values.items():
             out[name][i, sl] = value
@@ -757,6 +777,20 @@ class SparseEvaluator:
             for name in ("fos_contact", "fos_grasp", "fos_motor", "cost_contact", "cost_motor"):
                 out[name][i, sl][diverged] = np.nan
             out["cost"][i, sl][diverged] = np.inf
+
+    def _unlifted(self, buf: np.ndarray, mu: np.ndarray, at: np.ndarray, cost: np.ndarray,
+                  diverged: np.ndarray) -> np.ndarray:
+        """(nsim,) bool: failing, but not with the carried flags of real lifts only."""
+        out = np.zeros(buf.shape[0], dtype=bool)
+        fail = np.flatnonzero((cost > self.twin.scenario.cost.threshold) & ~diverged)
+        at_f = at if at.shape[0] == 1 else at[fail]
+        if fail.size == 0 or np.array_equal(self._carried[at_f], self._lifted[at_f]):
+            return out
+        mu_f = mu[fail, None] if mu.ndim == 1 else mu
+        with np.errstate(over="ignore", invalid="ignore"):
+            alt = self.twin.signals(buf[fail], mu=mu_f, carried=self._lifted[at_f]).cost
+        out[fail] = alt.max(axis=1) <= self.twin.scenario.cost.threshold
+        return out
 
     def _on_divergence(self, k: int, samples: np.ndarray, offset: int, diverged: np.ndarray,
                        raised: np.ndarray, warned: np.ndarray) -> None:

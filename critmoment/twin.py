@@ -30,7 +30,11 @@ from critmoment import safety
 from critmoment.exceptions import ParameterError, ScenarioError, TrajectoryError
 from critmoment.scenario import Scenario
 
-__all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "Twin", "carried_flags"]
+__all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "Twin", "carried_flags", "lifted_flags",
+           "LIFT_RISE"]
+
+#: how far [m] the object must rise in a carried run for the run to count as a lift
+LIFT_RISE = 0.002
 
 #: contact slots read per object/geom pair; MuJoCo's box-box collider makes at most 8
 CONTACT_SLOTS = 8
@@ -83,6 +87,32 @@ def carried_flags(contact_support: np.ndarray, contact_gripper: np.ndarray) -> n
         (...) bool. Sparse evaluation gates the grasp FOS with the nominal run's flags.
     """
     return ~np.asarray(contact_support, bool) & np.asarray(contact_gripper, bool).any(axis=-1)
+
+
+def lifted_flags(carried: np.ndarray, height: np.ndarray, rise: float = LIFT_RISE
+                 ) -> np.ndarray:
+    """The carried steps that belong to a real lift.
+
+    A run of consecutive carried steps counts as a lift when the object rises more than
+    ``rise`` above its height at the run's start; a squeeze that tips the object off its
+    support without raising it (a few steps, under a millimetre) does not.
+
+    Args:
+        carried: (T,) bool, from :func:`carried_flags`.
+        height: the object's height at the same steps, (T,) [m].
+        rise: the least rise of a lift [m].
+
+    Returns:
+        (T,) bool, a subset of ``carried``.
+    """
+    carried = np.asarray(carried, dtype=bool)
+    height = np.asarray(height, dtype=np.float64)
+    out = carried.copy()
+    edges = np.flatnonzero(np.diff(np.concatenate([[False], carried, [False]]).astype(np.int8)))
+    for start, stop in zip(edges[::2], edges[1::2], strict=True):
+        if height[start:stop].max() - height[start] <= rise:
+            out[start:stop] = False
+    return out
 
 
 def _sensor_name(*parts: str) -> str:
@@ -254,6 +284,15 @@ class Twin:
     def object_friction(self, model: mujoco.MjModel | None = None) -> float:
         """Sliding friction of the object's contacts (the object geom has priority)."""
         return float((model or self.model).geom_friction[self.object_geom_id, 0])
+
+    def lifted(self, carried: np.ndarray, states: np.ndarray) -> np.ndarray:
+        """:func:`lifted_flags` of ``carried`` (T,), with the object's height read from
+        integration states (at least T rows of ``STATE_SPEC``)."""
+        carried = np.asarray(carried, dtype=bool)
+        # mjSTATE_INTEGRATION starts with the time, then qpos
+        offset = mujoco.mj_stateSize(self.model, mujoco.mjtState.mjSTATE_TIME)
+        height = np.asarray(states)[:carried.size, offset + self.object_qposadr + 2]
+        return lifted_flags(carried, height)
 
     # -- actions and state ------------------------------------------------------------
     def controls(self, actions: np.ndarray) -> np.ndarray:

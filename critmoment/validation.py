@@ -73,7 +73,6 @@ from critmoment.recording import (
     initial_state,
     prepare_controls,
     rollout,
-    rollouts_fail,
 )
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin, carried_flags
@@ -723,7 +722,8 @@ def envelope_steps(recording: Recording, *, spacing: float, horizon: int = 1) ->
 def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int | None = None,
             mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int | None = None,
             envelope: float | None = None, verify: float | None = _AUDIT.verify,
-            require_task: bool = True, chunk: int = 16, nthread: int = 0) -> Prediction:
+            verify_unlifted: bool = _AUDIT.verify_unlifted, require_task: bool = True,
+            chunk: int = 16, nthread: int = 0) -> Prediction:
     """The audit's sparse prediction for parameter samples (the method under test).
 
     Runs what :func:`critmoment.analysis.analyze` runs to decide which samples fail: the
@@ -746,11 +746,13 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
             nominal run carries the object (:func:`envelope_steps`) [s].
         verify: a fraction of the cost threshold (default the audit's,
             :attr:`critmoment.analysis.AnalyzeOptions.verify`), or None: every sample predicted safe with
-            a sparse cost at or above ``verify × threshold`` gets its own frequent rollout (a
-            full rollout at its parameters) and fails when its cost exceeds the threshold at
-            any step (where the nominal run carries the object, as in sparse evaluation) or
-            it does not end with the task completed
-            (:func:`critmoment.recording.rollouts_fail`).
+            a sparse cost at or above ``verify × threshold`` gets its own full rollout, whose
+            outcome (:func:`brute_force`: dropped, slipped, motor, not completed, diverged)
+            decides it.
+        verify_unlifted: with ``verify``, samples that fail only where the object is squeezed
+            off its support without a lift (``SparseResult.failed_unlifted_only``) get their
+            own full rollout too (the audit's
+            :attr:`critmoment.analysis.AnalyzeOptions.verify_unlifted`).
         require_task: an incomplete nominal rollout makes every sample fail.
         chunk: most full rollouts per batch call in the verification.
         nthread: threads (0: all CPUs).
@@ -790,9 +792,10 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
         cost_all = res.worst_cost()
         cost_moments = res.worst_cost(slice(0, steps.size)) if steps.size else np.zeros(n)
         failed = res.failed_any
+        unlifted = res.failed_unlifted_only
     else:
         cost_all = cost_moments = np.zeros(n)
-        failed = np.zeros(n, dtype=bool)
+        failed = unlifted = np.zeros(n, dtype=bool)
     t3 = time.perf_counter()
     timings["sparse evaluation"] = t3 - t2
     failed = np.asarray(failed, dtype=bool).copy()
@@ -803,10 +806,12 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     if verify is not None:
         threshold = twin.scenario.cost.threshold
         verified = ~failed & (cost_all >= verify * threshold)
+        if verify_unlifted and nominal_completed:
+            verified |= unlifted
         if verified.any():
-            failed[verified] = rollouts_fail(rec, twin, samples[verified],
-                                             chunk=_check_int("chunk", chunk, 1),
-                                             nthread=nthread)
+            failed[verified] = brute_force(traj, twin=twin, samples=samples[verified],
+                                           chunk=_check_int("chunk", chunk, 1),
+                                           nthread=nthread).failed
         timings["verification"] = time.perf_counter() - t3
     return Prediction(samples=samples, moments=moments, steps=steps, envelope_steps=extra,
                       max_moments=max_moments, horizon=h, mode=evaluator.mode, cost=cost_all,
@@ -1087,6 +1092,7 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
              samples: np.ndarray | None = None, horizon: int | None = None,
              mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int | None = None,
              envelope: float | None = None, verify: float | None = _AUDIT.verify,
+             verify_unlifted: bool = _AUDIT.verify_unlifted,
              require_task: bool = True, criteria: OutcomeCriteria = OutcomeCriteria(),
              chunk: int = 16, nthread: int = 0) -> ValidationResult:
     """Check the audit's sparse verdicts against brute-force full rollouts.
@@ -1105,6 +1111,8 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
         verify: re-run in full the samples predicted safe with a cost at or above this
             fraction of the threshold (see :func:`predict`; default the audit's,
             :attr:`critmoment.analysis.AnalyzeOptions.verify`), or None.
+        verify_unlifted: with ``verify``, re-run in full the samples that fail only where the
+            object is squeezed off its support without a lift (see :func:`predict`).
         require_task: an incomplete nominal rollout makes every prediction a failure.
         criteria: the outcome tolerances.
         chunk: most full rollouts per batch call.
@@ -1122,7 +1130,8 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
         samples, used_seed = box.check_samples(samples), None
     prediction = predict(traj, twin=twin, samples=samples, horizon=horizon, mode=mode,
                          max_moments=max_moments, envelope=envelope, verify=verify,
-                         require_task=require_task, chunk=chunk, nthread=nthread)
+                         verify_unlifted=verify_unlifted, require_task=require_task,
+                         chunk=chunk, nthread=nthread)
     brute = brute_force(traj, twin=twin, samples=samples, criteria=criteria, chunk=chunk,
                         nthread=nthread)
     return compare(brute, prediction, trajectory=traj.source, seed=used_seed)

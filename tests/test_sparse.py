@@ -544,3 +544,25 @@ def test_first_failure_skips_the_moments_after_a_divergence(tiny):
     res = sparse.evaluate(bad, twin, [1, 0], samples, first_failure=True)
     assert res.diverged[1].all() and np.isinf(res.cost[1]).all()
     assert not res.evaluated[0].any() and res.failed_any.all()
+
+
+def test_unlifted_failures_are_marked_and_do_not_stop_a_sample(twin, scenario):
+    """`fast` squeezes the cube off the table (it barely rises) before lifting it."""
+    from critmoment import analysis, suite
+
+    rec = rollout.rollout(suite.make("fast", seed=0, twin=twin), twin=twin)
+    engine = SparseEvaluator(rec, twin)
+    squeeze = np.flatnonzero(engine._carried & ~engine._lifted)
+    assert squeeze.size and not (engine._lifted & ~engine._carried).any()
+    _, steps = analysis.audit_moments(rec, twin, engine, 8)
+    assert np.isin(steps, squeeze).any()
+    box = scenario.box.with_range("mass", 0.05, 1.5)
+    samples = sparse.sweep_samples(box, n=32, seed=0)
+    full = engine.evaluate(steps, samples)
+    ff = engine.evaluate(steps, samples, first_failure=True)
+    assert full.unlifted_failure.any() and full.failed_unlifted_only.any()
+    assert (full.cost[full.unlifted_failure] > scenario.cost.threshold).all()
+    np.testing.assert_array_equal(ff.failed_any, full.failed_any)
+    np.testing.assert_array_equal(ff.failed_unlifted_only, full.failed_unlifted_only)
+    # a sample whose only failures are unlifted ones is evaluated at every moment
+    assert ff.evaluated[:, ff.failed_unlifted_only].all()

@@ -18,7 +18,7 @@ import pytest
 
 from critmoment.exceptions import ParameterError, TrajectoryError
 from critmoment.scenario import load_scenario
-from critmoment.twin import CONTACT_SLOTS, Twin
+from critmoment.twin import CONTACT_SLOTS, Twin, lifted_flags
 from scenarios import one_actuator_toml
 
 G = 9.81
@@ -564,3 +564,14 @@ def test_carried_object_without_grip_is_falling(twin):
     assert sig.cost[0] > twin.scenario.cost.threshold >= sig.cost[1]
     # the default (no nominal flags): carried only where a gripper holds it off the support
     assert np.isposinf(twin.signals(sd).fos_grasp).all()
+
+
+def test_lifted_flags_keep_the_runs_that_rise():
+    carried = np.array([0, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 1], bool)
+    height = np.array([0, 0, .001, .002, 0, 0, 0, .001, .003, .01, 0, 0.5])
+    lifted = lifted_flags(carried, height)
+    # a squeeze (rises 2 mm at most) is not a lift; a rise of 1 cm is; the last run has no
+    # rise within it (it starts at its highest point)
+    assert lifted.astype(int).tolist() == [0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 0, 0]
+    assert not (lifted & ~carried).any()
+    assert lifted_flags(carried, height, rise=0.02).sum() == 0

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from critmoment import recording as rec_mod
-from critmoment import suite
+from critmoment import sparse, suite
 from critmoment import validation as val
 from critmoment.exceptions import ParameterError
 from critmoment.sparse import SparseMode
@@ -310,6 +310,19 @@ def test_predict_verifies_near_threshold_safes(twin, demo_traj):
     assert p.verified.tolist() == [True, False]
     with pytest.raises(ParameterError, match="verify"):
         val.predict(demo_traj, twin=twin, samples=samples, verify=1.5)
+
+
+def test_predict_reruns_the_unlifted_failures_in_full(twin, scenario):
+    traj = suite.make("fast", seed=0, twin=twin)
+    samples = sparse.sweep_samples(scenario.box.with_range("mass", 0.05, 1.5), n=16, seed=0)
+    strict = val.predict(traj, twin=twin, samples=samples, verify_unlifted=False)
+    checked = val.predict(traj, twin=twin, samples=samples)
+    unlifted = checked.verified & strict.failed
+    assert unlifted.any()
+    # those samples are decided by their own rollout; the others keep their prediction
+    real = val.brute_force(traj, twin=twin, samples=samples[unlifted]).failed
+    np.testing.assert_array_equal(checked.failed[unlifted], real)
+    np.testing.assert_array_equal(checked.failed[~unlifted], strict.failed[~unlifted])
 
 
 def test_compare_rejects_other_samples(twin, demo_traj):
