@@ -673,9 +673,14 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     if task_failed:
         # sparse evaluation perturbs a run that already failed: it cannot estimate success
         p, interval = 0.0, sp.wilson_interval(0, len(samples), confidence=opt.confidence)
-    if nominal_cost > threshold or task_failed:
+    # unlifted failures are for rollouts to decide: the nominal one is the recording itself
+    rolled = opt.verify is not None and opt.verify_unlifted and steps.size > 0
+    nominal_squeeze = (rolled and nominal_cost > threshold and rec.completed
+                       and bool(res_all.failed_unlifted_only[0]))
+    if (nominal_cost > threshold and not nominal_squeeze) or task_failed:
         verdict = Verdict.UNSAFE
-    elif n_fail == 0 and all(mr.max_cost <= threshold for mr in moment_reports):
+    elif n_fail == 0 and _worst_cases_pass(moment_reports, evaluator, trajectory, twin, opt,
+                                           verification if rolled else None):
         verdict = Verdict.SAFE
     else:
         verdict = Verdict.CONDITIONAL
@@ -687,7 +692,11 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     if opt.map_resolution and box.ndim >= 2 and steps.size:
         cost_map = _cost_map(res, box, opt.map_resolution)
     causes = tuple(_causes(moment_reports, threshold))
-    if nominal_cost > threshold:
+    if nominal_squeeze:
+        causes = (f"the nominal cost exceeds the threshold ({nominal_cost:.3g} > {threshold:g}) "
+                  f"only where the grip squeezes the object off its support without lifting "
+                  f"it; the nominal run completes the task",) + causes
+    elif nominal_cost > threshold:
         causes = (f"fails at the nominal parameters (max cost {nominal_cost:.3g} > "
                   f"{threshold:g})",) + causes
     if verification and verification["near_failed"]:
@@ -707,6 +716,32 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_cost=nominal_cost, recording=rec, sweep=res, curves=curves, cost_map=cost_map,
         scenario=sc, options=opt, timings=timings, manifest=manifest, failed=failed,
         verification=verification)
+
+
+def _worst_cases_pass(reports: Sequence[MomentReport], evaluator, trajectory, twin,
+                      opt: AnalyzeOptions, verification: dict | None) -> bool:
+    """No moment's worst case fails, or (with ``verification``, the audit's summary) the ones
+    that do fail only where the object is squeezed off its support without a lift and
+    succeed in their own full rollout. Adds ``worst_cases`` and ``worst_cases_failed`` to
+    ``verification``."""
+    threshold = twin.scenario.cost.threshold
+    failing = [mr for mr in reports if not mr.max_cost <= threshold]
+    if not failing:
+        return True
+    if verification is None or any(not mr.worst_case for mr in failing):
+        return False
+    names = twin.scenario.box.names
+    points = np.array([[mr.worst_case[n] for n in names] for mr in failing])
+    for mr, point in zip(failing, points, strict=True):
+        one = evaluator.evaluate([mr.moment.step], point[None])
+        if not one.unlifted_failure[0, 0]:
+            return False
+    from critmoment.validation import brute_force
+
+    real = brute_force(trajectory, twin=twin, samples=points, nthread=opt.nthread).failed
+    verification["worst_cases"] = int(points.shape[0])
+    verification["worst_cases_failed"] = int(real.sum())
+    return not real.any()
 
 
 def _nanmin(values: np.ndarray) -> float:

@@ -210,3 +210,23 @@ def test_first_failure_sweep_gives_the_exhaustive_verdict(twin, demo_traj, nomin
     for a, b in zip(fast.moments, full.moments, strict=True):
         assert a.critical == b.critical
         assert a.fail_fraction <= b.fail_fraction
+
+
+def test_a_squeeze_is_decided_by_rollouts_not_by_the_sparse_cost(twin, scenario):
+    """`jitter` squeezes the cube off the table before lifting it: sparse evaluation calls
+    that a failure even at the nominal parameters, the runs themselves succeed."""
+    from critmoment import suite
+
+    traj = suite.make("jitter", seed=0, twin=twin)
+    box = scenario.box.with_range("mass", 0.05, 0.2).with_range("friction", 0.5, 1.5)
+    light = Twin(scenario.replace(box=box))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        strict = analyze(traj, twin=light, options=dataclasses.replace(FAST, verify=None))
+        checked = analyze(traj, twin=light, options=FAST)
+    assert strict.verdict is Verdict.UNSAFE and strict.nominal_cost > scenario.cost.threshold
+    assert checked.nominal_cost == strict.nominal_cost
+    assert checked.verdict is Verdict.SAFE and checked.p_success == 1.0
+    v = checked.verification
+    assert v["unlifted"] > 0 and v["unlifted_failed"] == 0
+    assert any("squeezes the object" in c for c in checked.failure_causes)
