@@ -12,7 +12,7 @@ unlifted", the audit's default). Prints markdown tables: per
 configuration over the suite, per family at ``--default``, and every missed failure;
 ``--json`` writes every number.
 
-Reproduce (about 2 min on 2 CPUs)::
+Reproduce (about 3 min on 2 CPUs)::
 
     PYTHONPATH=. python benchmarks/horizon_study.py --json /tmp/horizon_study.json
 
