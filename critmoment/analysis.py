@@ -160,6 +160,9 @@ class MomentReport:
             sweep is exhaustive, the samples whose first failure is here.
         reached: fraction of the sweep's samples evaluated at this moment: all of them when
             the sweep is exhaustive, else those that pass at every earlier moment.
+        squeeze: every failure seen here (sweep and critical-value curves) is an unlifted
+            one: the grip squeezes the object off its support without lifting it, and the
+            samples' own rollouts decide them.
         analytic: analytic bounds (Pinocchio), JSON-able, or None.
         search: worst-case search summary, JSON-able, or None.
     """
@@ -177,6 +180,7 @@ class MomentReport:
     analytic: Mapping | None = None
     search: Mapping | None = None
     reached: float = 1.0
+    squeeze: bool = False
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -481,7 +485,10 @@ def _causes(reports: Sequence[MomentReport], threshold: float) -> list[str]:
             name = f"{name} at {mr.limiting_actuator}"
         crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
                          if v is not None)
-        if crit:
+        if mr.squeeze:
+            where = (f" (a squeeze without a lift: sparse evaluation fails "
+                     f"{'for ' + crit if crit else 'there'}; the samples' own rollouts decide)")
+        elif crit:
             where = f" (fails for {crit})"
         elif mr.fail_fraction > 0:
             where = f" ({mr.fail_fraction:.0%} of the box)"
@@ -661,6 +668,10 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         if motor is None:  # no sample reached the moment: the first curve's worst point
             c = curves[s][box.names[0]]
             motor = int(c.motor_argmax[0, int(np.argmax(np.nan_to_num(c.cost[0], nan=-1.0)))])
+        seen = [(res.failed[row], res.unlifted_failure[row])] + [
+            (c.failed[0], c.unlifted_failure[0]) for c in curves[s].values()]
+        squeeze = (any(f.any() for f, _ in seen)
+                   and all((u[f]).all() for f, u in seen))
         moment_reports.append(MomentReport(
             moment=m, worst_case=worst_case, max_cost=max_cost,
             min_fos_contact=_nanmin(res.fos_grasp[row]),
@@ -668,7 +679,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             critical=crit, critical_side=side, dominant=dominant,
             limiting_actuator=twin.actuator_names[motor],
             fail_fraction=float(fails_here.mean()), analytic=analytics.get(s),
-            search=searches.get(s), reached=float(here.mean())))
+            search=searches.get(s), reached=float(here.mean()), squeeze=bool(squeeze)))
     task_failed = opt.require_task and not rec.completed
     if task_failed:
         # sparse evaluation perturbs a run that already failed: it cannot estimate success

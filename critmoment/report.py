@@ -95,6 +95,7 @@ def report_json(report, *, timings: bool = True) -> dict:
             "limiting_actuator": mr.limiting_actuator,
             "fail_fraction": float(mr.fail_fraction),
             "reached": float(mr.reached),
+            "squeeze": bool(mr.squeeze),
             "analytic": _jsonable(mr.analytic),
             "search": _jsonable(mr.search),
         })

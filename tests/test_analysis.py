@@ -230,3 +230,6 @@ def test_a_squeeze_is_decided_by_rollouts_not_by_the_sparse_cost(twin, scenario)
     v = checked.verification
     assert v["unlifted"] > 0 and v["unlifted_failed"] == 0
     assert any("squeezes the object" in c for c in checked.failure_causes)
+    assert any(mr.squeeze for mr in checked.moments)
+    assert not any(mr.squeeze for mr in strict.moments if mr.fail_fraction == 0
+                   and all(v is None for v in mr.critical.values()))
