@@ -607,17 +607,14 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     verification = None
     if opt.verify is not None and steps.size:
         with stage("verification"):
-            worst = res.worst_cost()
-            near = ~failed & (worst >= opt.verify * threshold)
-            unlifted = (res.failed_unlifted_only if opt.verify_unlifted
-                        else np.zeros_like(failed))
-            rerun = near | unlifted
-            failed = failed.copy()
-            if rerun.any():
-                from critmoment.validation import brute_force
+            from critmoment.validation import rerun_in_full
 
-                failed[rerun] = brute_force(trajectory, twin=twin, samples=res.samples[rerun],
-                                            nthread=opt.nthread).failed
+            failed, near, unlifted = rerun_in_full(
+                trajectory, twin=twin, samples=res.samples, failed=failed,
+                cost=res.worst_cost(),
+                unlifted=res.failed_unlifted_only if opt.verify_unlifted else None,
+                verify=opt.verify, nthread=opt.nthread)
+            rerun = near | unlifted
             verification = {"fraction": float(opt.verify),
                             "cost_from": float(opt.verify * threshold),
                             "rollouts": int(rerun.sum()),
@@ -636,6 +633,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         with stage("analytic bounds and search"):
             analytics, searches = _search_all(rec, twin, evaluator, steps, opt)
     moment_reports = []
+    worst_unlifted: dict[int, bool] = {}  # per failing moment: its worst case is unlifted
     for row, m in enumerate(chosen):
         s = int(steps[row])
         cost = res.cost[row]
@@ -659,12 +657,14 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         if dominant is None:
             dominant = next((d for c in curves[s].values()
                              if (d := _dominant(c, 0, c.failed[0])) is not None), None)
-        if dominant is None and worst_case and max_cost > threshold:
-            # only the search's worst case fails here: its own evaluation says why
+        if worst_case and max_cost > threshold:
             one = evaluator.evaluate([s], [[worst_case[n] for n in box.names]])
-            dominant = _dominant(one, 0, one.failed[0])
-            if dominant is not None:
-                motor = int(one.motor_argmax[0, 0])
+            worst_unlifted[s] = bool(one.unlifted_failure[0, 0])
+            if dominant is None:
+                # only the search's worst case fails here: its own evaluation says why
+                dominant = _dominant(one, 0, one.failed[0])
+                if dominant is not None:
+                    motor = int(one.motor_argmax[0, 0])
         if motor is None:  # no sample reached the moment: the first curve's worst point
             c = curves[s][box.names[0]]
             motor = int(c.motor_argmax[0, int(np.argmax(np.nan_to_num(c.cost[0], nan=-1.0)))])
@@ -690,8 +690,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                        and bool(res_all.failed_unlifted_only[0]))
     if (nominal_cost > threshold and not nominal_squeeze) or task_failed:
         verdict = Verdict.UNSAFE
-    elif n_fail == 0 and _worst_cases_pass(moment_reports, evaluator, trajectory, twin, opt,
-                                           verification if rolled else None):
+    elif n_fail == 0 and _worst_cases_pass(moment_reports, worst_unlifted, trajectory, twin,
+                                           opt, verification if rolled else None):
         verdict = Verdict.SAFE
     else:
         verdict = Verdict.CONDITIONAL
@@ -729,24 +729,21 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         verification=verification)
 
 
-def _worst_cases_pass(reports: Sequence[MomentReport], evaluator, trajectory, twin,
-                      opt: AnalyzeOptions, verification: dict | None) -> bool:
+def _worst_cases_pass(reports: Sequence[MomentReport], worst_unlifted: Mapping[int, bool],
+                      trajectory, twin, opt: AnalyzeOptions, verification: dict | None) -> bool:
     """No moment's worst case fails, or (with ``verification``, the audit's summary) the ones
-    that do fail only where the object is squeezed off its support without a lift and
-    succeed in their own full rollout. Adds ``worst_cases`` and ``worst_cases_failed`` to
-    ``verification``."""
+    that do fail only where the object is squeezed off its support without a lift
+    (``worst_unlifted``, by moment step) and succeed in their own full rollout. Adds
+    ``worst_cases`` and ``worst_cases_failed`` to ``verification``."""
     threshold = twin.scenario.cost.threshold
     failing = [mr for mr in reports if not mr.max_cost <= threshold]
     if not failing:
         return True
-    if verification is None or any(not mr.worst_case for mr in failing):
+    if verification is None or not all(worst_unlifted.get(int(mr.moment.step), False)
+                                       for mr in failing):
         return False
     names = twin.scenario.box.names
     points = np.array([[mr.worst_case[n] for n in names] for mr in failing])
-    for mr, point in zip(failing, points, strict=True):
-        one = evaluator.evaluate([mr.moment.step], point[None])
-        if not one.unlifted_failure[0, 0]:
-            return False
     from critmoment.validation import brute_force
 
     real = brute_force(trajectory, twin=twin, samples=points, nthread=opt.nthread).failed

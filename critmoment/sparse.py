@@ -232,9 +232,9 @@ class SparseResult:
         state: integration state after the horizon, (m, n, nstate), when asked for.
         evaluated: which (moment, sample) pairs were evaluated, (m, n) bool, or None when
             all were. Only ``first_failure`` evaluation skips pairs: there a sample's
-            moments after its first failure (other than an unlifted one) are not evaluated (NaN values, False flags,
-            ``stage``, ``worst_step`` and ``motor_argmax`` −1), and the moment where it
-            fails is reduced over the steps up to the failing one.
+            moments after its first failure (other than an unlifted one) are not evaluated
+            (NaN values, False flags, ``stage``, ``worst_step`` and ``motor_argmax`` −1),
+            and the moment where it fails is reduced over the steps up to the failing one.
         unlifted_failure: the pair fails, but would not if the object counted as carried
             only in the nominal run's real lifts (:func:`critmoment.twin.lifted_flags`: it
             rises more than 2 mm): a failure only where the grip squeezes the object off its
@@ -650,12 +650,10 @@ class SparseEvaluator:
         raised = np.zeros(nsim, dtype=bool)
         fails = np.zeros(nsim, dtype=bool)
         buf[~alive] = 0.0
-        row = self._states[k].copy()
-        row[self._ctrl] = self._controls[k]
         run = np.flatnonzero(alive)
         batch.warning[...] = 0
         if run.size:
-            batch.state[run] = row
+            batch.state[run] = self._start_row(k)
         if run.size and self.mode is SparseMode.SOLVE:
             # one forward solve: the whole horizon (h = 1) in one call
             try:
@@ -693,6 +691,13 @@ class SparseEvaluator:
         at = k + np.minimum(np.arange(h)[None, :], last[:, None])
         return raised, batch.warning[:, :, 1].copy(), at, fails
 
+    def _start_row(self, k: int) -> np.ndarray:
+        """The state row that starts step k: the recorded state holds the previous step's
+        controls, step k applies its own."""
+        row = self._states[k].copy()
+        row[self._ctrl] = self._controls[k]
+        return row
+
     def _step_cost(self, readings: np.ndarray, mu: np.ndarray, k: int) -> np.ndarray:
         """Cost of one step's readings (n, nsd) at recording step k, with the carried flags
         of real lifts (an unlifted failure does not stop a sample: its own rollout decides
@@ -708,10 +713,7 @@ class SparseEvaluator:
         (nsim, nwarning).
         """
         h = self.horizon
-        row = self._states[k].copy()
-        # the recorded state holds the previous step's controls; step k applies its own
-        row[self._ctrl] = self._controls[k]
-        batch.state[:] = row
+        batch.state[:] = self._start_row(k)
         batch.warning[...] = 0
         raised = np.zeros(batch.nsim, dtype=bool)
         try:
@@ -733,8 +735,9 @@ class SparseEvaluator:
         """Signals of buf (nsim, h, nsd), reduced over the horizon, into out[...][i, sl].
 
         ``at`` (1, h) or (nsim, h) gives the recording step of each row of buf. Where the
-        nominal run carries the object off its support there, the grip must hold it there whatever the sample does (a heavy object that sinks back onto
-        the table has failed to lift, not become safe).
+        nominal run carries the object off its support there, the grip must hold it whatever
+        the sample does (a heavy object that sinks back onto the table has failed to lift,
+        not become safe).
         """
         twin, cp = self.twin, self.twin.scenario.cost
         mu = np.asarray(mu, dtype=np.float64)

@@ -88,6 +88,7 @@ __all__ = [
     "brute_force",
     "Prediction",
     "predict",
+    "rerun_in_full",
     "envelope_steps",
     "MissedFailure",
     "ValidationResult",
@@ -804,14 +805,11 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
         failed[:] = True
     verified = np.zeros(n, dtype=bool)
     if verify is not None:
-        threshold = twin.scenario.cost.threshold
-        verified = ~failed & (cost_all >= verify * threshold)
-        if verify_unlifted and nominal_completed:
-            verified |= unlifted
-        if verified.any():
-            failed[verified] = brute_force(traj, twin=twin, samples=samples[verified],
-                                           chunk=_check_int("chunk", chunk, 1),
-                                           nthread=nthread).failed
+        failed, near, rerun_unlifted = rerun_in_full(
+            traj, twin=twin, samples=samples, failed=failed, cost=cost_all,
+            unlifted=unlifted if verify_unlifted and nominal_completed else None,
+            verify=verify, chunk=_check_int("chunk", chunk, 1), nthread=nthread)
+        verified = near | rerun_unlifted
         timings["verification"] = time.perf_counter() - t3
     return Prediction(samples=samples, moments=moments, steps=steps, envelope_steps=extra,
                       max_moments=max_moments, horizon=h, mode=evaluator.mode, cost=cost_all,
@@ -819,6 +817,43 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
                       failed=failed, verified=verified, nominal_completed=nominal_completed,
                       require_task=bool(require_task), seconds=time.perf_counter() - t0,
                       timings=timings)
+
+
+def rerun_in_full(traj: Trajectory, *, twin: Twin, samples: np.ndarray, failed: np.ndarray,
+                  cost: np.ndarray, unlifted: np.ndarray | None, verify: float,
+                  chunk: int = 16, nthread: int = 0
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The audit's verification: the samples sparse evaluation cannot decide, decided by the
+    real outcome of their own full rollout (:func:`brute_force`).
+
+    Those are the samples that pass with a cost at or above ``verify × threshold`` (near the
+    threshold, where a failure between the moments can hide) and the ``unlifted`` ones (they
+    fail only where the object is squeezed off its support without a lift,
+    ``SparseResult.failed_unlifted_only``).
+
+    Args:
+        traj: the trajectory.
+        twin: the twin.
+        samples: parameter values, (n, k).
+        failed: the sparse prediction, (n,) bool.
+        cost: each sample's highest sparse cost, (n,) (``SparseResult.worst_cost``).
+        unlifted: the samples to re-run as unlifted, (n,) bool, or None for none.
+        verify: the fraction of the threshold from which passing samples are re-run.
+        chunk: most full rollouts per batch call.
+        nthread: threads (0: all CPUs).
+
+    Returns:
+        The prediction with the re-run samples' outcomes, and which samples were re-run as
+        near the threshold and as unlifted, each (n,) bool.
+    """
+    near = ~failed & (cost >= verify * twin.scenario.cost.threshold)
+    unlifted = np.zeros_like(near) if unlifted is None else np.asarray(unlifted, dtype=bool)
+    rerun = near | unlifted
+    failed = np.array(failed, dtype=bool)
+    if rerun.any():
+        failed[rerun] = brute_force(traj, twin=twin, samples=samples[rerun], chunk=chunk,
+                                    nthread=nthread).failed
+    return failed, near, unlifted
 
 
 # --------------------------------------------------------------------------
