@@ -107,6 +107,10 @@ def lifted_flags(carried: np.ndarray, height: np.ndarray, rise: float = LIFT_RIS
     """
     carried = np.asarray(carried, dtype=bool)
     height = np.asarray(height, dtype=np.float64)
+    if carried.ndim != 1 or height.shape != carried.shape:
+        raise ParameterError(
+            f"lifted_flags: expected carried and height of the same shape (T,), got "
+            f"{carried.shape} and {height.shape}")
     out = carried.copy()
     edges = np.flatnonzero(np.diff(np.concatenate([[False], carried, [False]]).astype(np.int8)))
     for start, stop in zip(edges[::2], edges[1::2], strict=True):

@@ -575,3 +575,5 @@ def test_lifted_flags_keep_the_runs_that_rise():
     assert lifted.astype(int).tolist() == [0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 0, 0]
     assert not (lifted & ~carried).any()
     assert lifted_flags(carried, height, rise=0.02).sum() == 0
+    with pytest.raises(ParameterError, match=r"same shape \(T,\), got \(12,\) and \(11,\)"):
+        lifted_flags(carried, height[:-1])
