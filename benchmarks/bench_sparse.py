@@ -123,7 +123,7 @@ def main(argv=None) -> None:
             raw = RawStepper(twin, recording, steps, samples, nthread=nthread, horizon=horizon)
             engine = SparseEvaluator(recording, twin, horizon=horizon, nthread=nthread)
             engine.evaluate(steps[:1], samples)  # writes the parameters once, as raw does
-            best = best_times({"raw": raw, "critmoment": lambda: engine.evaluate(steps, samples)},
+            best = best_times({"raw": raw, "critmoment": lambda engine=engine: engine.evaluate(steps, samples)},
                               args.repeats)
             ratio = best["raw"] / best["critmoment"]
             ratios[nthread, horizon] = ratio

@@ -10,14 +10,26 @@ The pipeline, one stage per module::
 """
 
 from critmoment.analysis import AnalyzeOptions, AuditReport, Verdict, analyze
-from critmoment.exceptions import (CritmomentError, InputFileError, ParameterError,
-                                   ScenarioError, SimulationDivergedError, TrajectoryError)
+from critmoment.exceptions import (
+                                   CritmomentError,
+                                   InputFileError,
+                                   ParameterError,
+                                   ScenarioError,
+                                   SimulationDivergedError,
+                                   TrajectoryError,
+)
 from critmoment.moments import Moment, MomentDetector, MomentLabel, find_moments
 from critmoment.params import UncertaintyBox
 from critmoment.recording import Recording, rollout, simulate
 from critmoment.scenario import CostParams, Scenario, load_scenario
-from critmoment.sparse import (SparseEvaluator, SparseMode, SparseResult, evaluate,
-                               probability_of_success, sweep)
+from critmoment.sparse import (
+                                   SparseEvaluator,
+                                   SparseMode,
+                                   SparseResult,
+                                   evaluate,
+                                   probability_of_success,
+                                   sweep,
+)
 from critmoment.trajectory import Trajectory, load_trajectory, save_trajectory
 from critmoment.twin import Signals, Twin
 from critmoment.validation import Outcome, ValidationResult, validate

@@ -641,7 +641,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         worst_case, max_cost, motor = {}, float("nan"), None
         if here.any():
             worst = int(np.argmax(np.where(here, np.where(np.isinf(cost), 1e9, cost), -np.inf)))
-            worst_case = dict(zip(box.names, map(float, res.samples[worst])))
+            worst_case = dict(zip(box.names, map(float, res.samples[worst]), strict=False))
             max_cost, motor = float(cost[worst]), int(res.motor_argmax[row, worst])
         sr = searches.get(s)
         if sr is not None and sr.get("worst_cost") is not None and not (

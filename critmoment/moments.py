@@ -291,7 +291,7 @@ def _array(recording: Any, name: str, shape: tuple[int | None, ...], *, dtype: A
             raise TrajectoryError(f"recording.{name} must be boolean, got dtype {arr.dtype}")
     else:
         arr = arr.astype(float, copy=False)
-    if arr.ndim != len(shape) or any(s is not None and s != a for s, a in zip(shape, arr.shape)):
+    if arr.ndim != len(shape) or any(s is not None and s != a for s, a in zip(shape, arr.shape, strict=False)):
         want = "(" + ", ".join("?" if s is None else str(s) for s in shape) + ")"
         raise TrajectoryError(f"recording.{name} must have shape {want}, got {arr.shape}")
     return arr
@@ -572,7 +572,7 @@ def detect_change_points(
 def _change_point_reasons(delta: np.ndarray, groups: Sequence[str]) -> tuple[str, ...]:
     """Phrase the channel groups carrying at least 20 % of a jump's energy."""
     energy: dict[str, float] = {}
-    for g, e in zip(groups, delta**2):
+    for g, e in zip(groups, delta**2, strict=False):
         energy[g] = energy.get(g, 0.0) + float(e)
     total = sum(energy.values())
     if total <= 0:
@@ -963,7 +963,7 @@ class MomentDetector:
         )
         del features
         cp_moments = []
-        for step, mag, delta in zip(cps.steps, cps.magnitudes, cps.deltas):
+        for step, mag, delta in zip(cps.steps, cps.magnitudes, cps.deltas, strict=False):
             reasons = _change_point_reasons(delta, groups)
             cp_moments.append(
                 Moment(int(step), float(time[step]), MomentLabel.CHANGE_POINT, "; ".join(reasons),

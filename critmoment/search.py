@@ -306,7 +306,7 @@ class AnalyticBounds:
     # -- parameters ----------------------------------------------------------------
     def parameters_at(self, mass: float, friction: float) -> dict[str, float]:
         """Every box parameter by name: the object's mass and friction set, the rest nominal."""
-        values = {n: float(v) for n, v in zip(self.parameter_names, self.parameter_nominal)}
+        values = {n: float(v) for n, v in zip(self.parameter_names, self.parameter_nominal, strict=False)}
         if self.mass_index is not None:
             values[self.parameter_names[self.mass_index]] = float(mass)
         if self.friction_index is not None:
@@ -317,7 +317,7 @@ class AnalyticBounds:
         """(mass, friction) of a parameter point (a name -> value mapping or a (k,) row)."""
         if isinstance(parameters, Mapping):
             row = [parameters.get(n, v) for n, v in zip(self.parameter_names,
-                                                        self.parameter_nominal)]
+                                                        self.parameter_nominal, strict=False)]
         else:
             row = np.asarray(parameters, dtype=np.float64).reshape(-1)
             if row.shape[0] != len(self.parameter_names):
@@ -391,8 +391,8 @@ class AnalyticBounds:
             "holding": list(self.holding),
             "on_support": self.on_support,
             "critical_mass": {j: _finite_or_none(v)
-                              for j, v in zip(self.joints, self.critical_mass)},
-            "worst_torque": {j: float(v) for j, v in zip(self.joints, self.worst_torque)},
+                              for j, v in zip(self.joints, self.critical_mass, strict=False)},
+            "worst_torque": {j: float(v) for j, v in zip(self.joints, self.worst_torque, strict=False)},
             "limiting_joint": self.limiting_joint,
             "motor_critical_mass": _finite_or_none(self.motor_critical_mass),
             "motor_critical_mass_threshold": _finite_or_none(self.motor_critical_mass_threshold),
@@ -557,7 +557,7 @@ def analytic_bounds(recording, twin: Twin, step: Any, *,
     sig = twin.signals(data.sensordata.copy())
     on_support = bool(sig.contact_support)
     touching = np.asarray(sig.contact_gripper, dtype=bool)
-    holding = tuple(g.name for g, t in zip(sc.grippers, touching) if t)
+    holding = tuple(g.name for g, t in zip(sc.grippers, touching, strict=False) if t)
     acc = np.asarray(sig.object_acc, dtype=np.float64)
     gravity = np.array(model.opt.gravity, dtype=np.float64)
 
@@ -591,7 +591,7 @@ def analytic_bounds(recording, twin: Twin, step: Any, *,
     grasps: list[GraspLoad] = []
     tau0_full = None
     obj_geom = twin.object_geom_id
-    for g, touch in zip(sc.grippers, touching):
+    for g, touch in zip(sc.grippers, touching, strict=False):
         if not touch:
             continue
         geom_ids = [model.geom(name).id for name in g.geoms]
@@ -789,7 +789,7 @@ def _smooth_cost(bounds: AnalyticBounds, kappa: float):
     rows = bounds.y[:, finite] if bounds.y.shape[0] else np.zeros((1, int(finite.sum())))
     terms = []
     for row in rows:
-        for t0, yj, tm in zip(tau0, row, tmax):
+        for t0, yj, tm in zip(tau0, row, tmax, strict=False):
             tau = t0 + m * yj
             terms.append(ca.sqrt(tau * tau + (_ABS_EPS * tm) ** 2) / tm)
     cost = 0
@@ -900,7 +900,7 @@ def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SM
     frictions = (np.linspace(f_lo, f_hi, n_boundary) if n_boundary > 1
                  else np.array([bounds.friction_nominal]))
     for f in frictions:
-        crit, everywhere = _first_crossing(lambda ms: bounds.cost(ms, f), m_lo, m_hi,
+        crit, everywhere = _first_crossing(lambda ms, f=f: bounds.cost(ms, f), m_lo, m_hi,
                                            cp.threshold)
         boundary.append(BoundaryPoint(friction=float(f), critical_mass=crit,
                                       fails_everywhere=everywhere))
@@ -1125,7 +1125,7 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
                     queued.append(row)
             queued = queued[:n_trials]
             for row in queued:
-                study.enqueue_trial({n: float(v) for n, v in zip(names, row)})
+                study.enqueue_trial({n: float(v) for n, v in zip(names, row, strict=False)})
         history: list[SearchTrial] = []
         stopped: str | None = None
         batch = 0
@@ -1143,7 +1143,7 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
                 study.tell(t, min(value, _DIVERGED_COST))
                 history.append(SearchTrial(
                     number=len(history), batch=batch,
-                    parameters={n: float(v) for n, v in zip(names, samples[i])}, cost=value,
+                    parameters={n: float(v) for n, v in zip(names, samples[i], strict=False)}, cost=value,
                     cost_per_moment=tuple(float(c) for c in per_moment[:, i]),
                     enqueued=len(history) < len(queued)))
             batch += 1
@@ -1259,7 +1259,7 @@ def surrogate_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = Non
     names = box.names
 
     def named(row):
-        return {n: float(v) for n, v in zip(names, row)}
+        return {n: float(v) for n, v in zip(names, row, strict=False)}
 
     cand_unit, status = [], []
     if np.isfinite(cost[g_best]):  # a diverged grid point (+inf) is already the worst
@@ -1451,9 +1451,9 @@ def verify(evaluator, step: Any, analytic: AnalyticWorstCase | AnalyticBounds,
                 worst.critical_mass_nominal_friction, bounds.friction_nominal)))
     if search is not None:
         points.append(("search", {n: float(search.worst_case.get(n, v))
-                                  for n, v in zip(box.names, box.nominal)}))
+                                  for n, v in zip(box.names, box.nominal, strict=False)}))
     if include_nominal:
-        points.append(("nominal", {n: float(v) for n, v in zip(box.names, box.nominal)}))
+        points.append(("nominal", {n: float(v) for n, v in zip(box.names, box.nominal, strict=False)}))
     if not points:
         raise ParameterError("verify: expected at least one point to check (an "
                              "AnalyticWorstCase, a SearchResult or include_nominal=True)")

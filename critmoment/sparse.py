@@ -799,7 +799,7 @@ class SparseEvaluator:
                        raised: np.ndarray, warned: np.ndarray) -> None:
         """Raise or log diverged samples of one chunk at moment k."""
         first = int(np.flatnonzero(diverged)[0])
-        values = ", ".join(f"{name} = {v:.6g}" for name, v in zip(self.box.names, samples[first]))
+        values = ", ".join(f"{name} = {v:.6g}" for name, v in zip(self.box.names, samples[first], strict=False))
         if raised[first]:
             why = "MuJoCo raised an error"
         elif warned[first].any():
@@ -1190,7 +1190,7 @@ def _refine(engine: SparseEvaluator, steps: np.ndarray, brackets: list[_Bracket]
             res = engine.evaluate(steps[i:i + 1], samples)
             fail = res.fails(criterion, limit=limit)[0].reshape(len(group), split)
             dominant = res.dominant[0].reshape(len(group), split)
-            for b, f, pts, terms in zip(group, fail, points, dominant):
+            for b, f, pts, terms in zip(group, fail, points, dominant, strict=False):
                 # the points with lo and hi: [lo, *pts, hi]; keep the first sign change
                 changed = np.flatnonzero(f != b.fail_lo)
                 q = int(changed[0]) if changed.size else split
@@ -1319,7 +1319,7 @@ def probability_of_success(recording, twin: Twin, steps: Any, *, n: int = 256,
     limiting = res.motor_argmax[worst, cols][fail][terms == Term.MOTOR]
     term_counts = {t: int((terms == t).sum()) for t in Term if (terms == t).any()}
     actuator_counts = {res.actuator_names[a]: int(c)
-                       for a, c in zip(*np.unique(limiting, return_counts=True))}
+                       for a, c in zip(*np.unique(limiting, return_counts=True), strict=False)}
     dominant = max(term_counts, key=term_counts.get) if term_counts else None
     dominant_actuator = (max(actuator_counts, key=actuator_counts.get)
                          if actuator_counts else None)

@@ -20,8 +20,7 @@ family                  what changes (see :class:`critmoment.demos.DemoOptions`)
 
 from __future__ import annotations
 
-from typing import Callable
-
+from collections.abc import Callable
 
 from critmoment.demos import DemoOptions, sample_box_pose, scripted_transfer
 from critmoment.exceptions import ParameterError

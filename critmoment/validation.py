@@ -456,7 +456,7 @@ class _Probe:
         self.anchors = [_gripper_anchor(base, g.geoms) for g in sc.grippers]
         spec = mujoco.MjSpec.from_file(str(sc.mjcf))
         twin.add_sensors(spec)  # the twin's sensors first, at the same addresses
-        for g, anchor in zip(sc.grippers, self.anchors):
+        for g, anchor in zip(sc.grippers, self.anchors, strict=False):
             s = spec.add_sensor()
             s.name = f"{_SENSOR_PREFIX}pos:{g.name}"
             s.type = mujoco.mjtSensor.mjSENS_FRAMEPOS
@@ -478,7 +478,7 @@ class _Probe:
         self.pos = slice(nsd, nsd + 3 * ngrip)
         self.q = slice(self.pos.stop, self.pos.stop + self.rotational.size)
         self.projectors = np.stack([_closing_projector(base, g.geoms, a)
-                                    for g, a in zip(sc.grippers, self.anchors)])
+                                    for g, a in zip(sc.grippers, self.anchors, strict=False)])
 
 
 def _gripper_anchor(model: mujoco.MjModel, geoms: Sequence[str]) -> int:
@@ -1031,7 +1031,7 @@ class ValidationResult:
             "outcomes": self.outcome_counts(),
             "missed": [m.to_json() for m in self.missed],
             "per_sample": [
-                {"values": dict(zip(self.parameter_names, map(float, self.samples[i]))),
+                {"values": dict(zip(self.parameter_names, map(float, self.samples[i]), strict=False)),
                  "outcome": self.outcome[i].value, "real_failed": bool(self.real_failed[i]),
                  "predicted_failed": bool(self.predicted_failed[i]),
                  "verified": bool(self.verified[i]),
@@ -1107,7 +1107,7 @@ def compare(brute: BruteForce, prediction: Prediction, *, trajectory: str = "",
         else:
             nearest, offset = (int(moments[0]) if moments.size and step < 0 else -1), math.nan
         missed.append(MissedFailure(
-            sample=int(i), values=dict(zip(brute.parameter_names, map(float, brute.samples[i]))),
+            sample=int(i), values=dict(zip(brute.parameter_names, map(float, brute.samples[i]), strict=False)),
             outcome=brute.outcome[i], max_cost=float(prediction.cost[i]),
             first_failure_step=step, first_failure_time=step * dt if step >= 0 else math.nan,
             nearest_moment=nearest if step >= 0 else -1, offset=offset))

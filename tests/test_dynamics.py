@@ -201,7 +201,7 @@ def test_rnea_batch_equals_loop():
     pm = dyn.from_mujoco(m)
     rng = np.random.default_rng(3)
     states = [_random_state(m, rng) for _ in range(4)]
-    qpos, qvel, qacc = (np.stack(x) for x in zip(*states))
+    qpos, qvel, qacc = (np.stack(x) for x in zip(*states, strict=False))
     batch = pm.rnea(qpos, qvel, qacc, include_armature=True)
     assert batch.shape == (4, m.nv)
     for k in range(4):
@@ -500,7 +500,7 @@ def test_payload_regressor_batch_and_options():
     pm = dyn.from_mujoco(m)
     rng = np.random.default_rng(9)
     states = [_random_state(m, rng) for _ in range(3)]
-    qpos, qvel, qacc = (np.stack(x) for x in zip(*states))
+    qpos, qvel, qacc = (np.stack(x) for x in zip(*states, strict=False))
     pose = np.array([0.1, 0.5, 0.3, 1.0, 0.0, 0.0, 0.0])
     unit = np.eye(3) * 1e-4
     held = {"attach_body": "l/hand", "payload_pose_world": pose, "unit_inertia": unit}

@@ -9,10 +9,14 @@ import numpy as np
 import pytest
 
 from critmoment.exceptions import InputFileError, ParameterError, ScenarioError
-from critmoment.params import (ComOffsetParameter, FrictionParameter, MassParameter, Prior,
-                               UncertaintyBox)
-from critmoment.scenario import (BUNDLED_SCENARIOS, Scenario, bundled_scenario_path,
-                                 load_scenario)
+from critmoment.params import (
+    ComOffsetParameter,
+    FrictionParameter,
+    MassParameter,
+    Prior,
+    UncertaintyBox,
+)
+from critmoment.scenario import BUNDLED_SCENARIOS, Scenario, bundled_scenario_path, load_scenario
 from critmoment.twin import Twin
 
 BUNDLED = bundled_scenario_path().parent

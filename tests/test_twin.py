@@ -15,11 +15,11 @@ from pathlib import Path
 import mujoco
 import numpy as np
 import pytest
+from scenarios import one_actuator_toml
 
 from critmoment.exceptions import ParameterError, TrajectoryError
 from critmoment.scenario import load_scenario
 from critmoment.twin import CONTACT_SLOTS, Twin, lifted_flags
-from scenarios import one_actuator_toml
 
 G = 9.81
 
