@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import time as _time
 import tracemalloc
 import types
 
@@ -382,15 +381,12 @@ def test_long_recording_has_bounded_memory():
     rec = make_recording(n, object_acc=acc, actuator_norm=act, support=support, grip=grip)
 
     tracemalloc.start()
-    t0 = _time.perf_counter()
     det = MomentDetector().fit(rec)
-    elapsed = _time.perf_counter() - t0
     _, peak = tracemalloc.get_traced_memory()
     tracemalloc.stop()
 
     assert det.n_samples_ == 2000 and det.decimation_ == 50  # what ruptures saw
     assert det.change_points_.n_samples <= det.max_samples
-    assert elapsed < 5.0
     assert peak < 64 * 2**20  # raw full-rate features: 100k x 19 floats = 15 MB
     steps = det.change_points_.steps
     assert np.min(np.abs(steps - 37_123)) <= 2  # refined to physics-step resolution
