@@ -17,12 +17,13 @@ from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
+from critmoment import budget
 from critmoment import sparse as sp
 from critmoment.exceptions import ParameterError
 from critmoment.moments import Moment, MomentDetector, MomentLabel
 from critmoment.recording import Recording, model_hash, rollout
 from critmoment.scenario import Scenario, load_scenario
-from critmoment.trajectory import Trajectory
+from critmoment.trajectory import Trajectory, input_identity
 from critmoment.twin import Twin
 
 __all__ = [
@@ -583,6 +584,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     if twin is None:
         twin = Twin(scenario if isinstance(scenario, Scenario) else load_scenario(scenario))
     sc = twin.scenario
+    budget.check_audit(trajectory, twin, opt)  # seed domain, rollout and sweep size
     box = sc.box
     threshold = sc.cost.threshold
     say = _progress(progress)
@@ -816,9 +818,12 @@ def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory) -> dict:
         "python": sys.version.split()[0],
         "platform": platform.platform(terse=True),
         "scenario": sc.name,
-        "scenario_file": str(sc.path) if sc.path else None,
+        # file names and content hashes, not paths: identical inputs, identical manifests
+        "scenario_file": input_identity(sc.path)["name"] if sc.path else None,
+        "scenario_sha256": input_identity(sc.path)["sha256"] if sc.path else None,
         "model_sha256": model_hash(sc),
-        "trajectory": traj.source,
+        "trajectory": input_identity(traj.source)["name"],
+        "trajectory_sha256": input_identity(traj.source)["sha256"],
         "seed": opt.seed,
         "options": dataclasses.asdict(opt),
     }

@@ -14,6 +14,7 @@ __all__ = [
     "ScenarioError",
     "ParameterError",
     "SimulationDivergedError",
+    "InfeasibleTwinError",
 ]
 
 
@@ -48,3 +49,31 @@ class SimulationDivergedError(CritmomentError, RuntimeError):
     def __init__(self, message: str, *, step: int | None = None):
         super().__init__(message)
         self.step = step
+
+
+class InfeasibleTwinError(CritmomentError, RuntimeError):
+    """The twin cannot reproduce the nominal motion (see :mod:`critmoment.feasibility`).
+
+    The message names the joint, the lag, its duration and start, and the likely cause.
+
+    Attributes:
+        report: the :class:`~critmoment.feasibility.FeasibilityReport`, or ``None``.
+    """
+
+    def __init__(self, message: str, *, report=None):
+        super().__init__(message)
+        self.report = report
+
+
+class OutputError(CritmomentError, OSError):
+    """An output path cannot be used: it is a file, lies under a file, is not writable,
+    holds files that are not a critmoment output, or the disk filled while writing."""
+
+
+class ResourceLimitError(CritmomentError, ValueError):
+    """The work or memory an input asks for exceeds a documented limit
+    (:mod:`critmoment.budget`); the message names the option that raises it."""
+
+
+class CritmomentWarning(UserWarning):
+    """Something critmoment had to assume (e.g. the model's default object pose)."""

@@ -24,12 +24,14 @@ from __future__ import annotations
 
 import copy
 import enum
+import hashlib
 import json
 import logging
 import math
 import os
 import warnings
 import zipfile
+import zlib
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
@@ -38,9 +40,13 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import CubicSpline, PchipInterpolator
 
+from critmoment import budget
 from critmoment.exceptions import (
+    CritmomentError,
+    CritmomentWarning,
     InputFileError,
     ParameterError,
+    ResourceLimitError,
     TrajectoryError,
 )
 
@@ -51,6 +57,10 @@ __all__ = [
     "RangePolicy",
     "load_trajectory",
     "save_trajectory",
+    "Episode",
+    "list_episodes",
+    "as_object_pose",
+    "input_identity",
     "check_ranges",
     "upsample",
 ]
@@ -395,6 +405,7 @@ def load_trajectory(
     *,
     fps: float | None = None,
     episode: int | None = None,
+    object_pose: Any = None,
 ) -> Trajectory:
     """Reads a trajectory from a file or a LeRobot dataset directory.
 
@@ -412,6 +423,16 @@ def load_trajectory(
         fps: control rate [Hz] to use or to check against the file.
         episode: LeRobot only: the ``episode_index`` to read. Required when the
             file or dataset holds more than one episode.
+        object_pose: (7,) initial object pose, xyz [m] + unit quaternion
+            (w, x, y, z), replacing the file's (see :func:`as_object_pose`).
+
+    Before any array is read, the sizes the file declares (npy headers, HDF5
+    dataset shapes, parquet value counts) are checked against
+    :func:`critmoment.budget.active`'s ``max_input_bytes``. When neither the
+    file (npz ``object_pose`` or ``qpos0``, ACT ``/observations/env_state``)
+    nor ``object_pose`` gives the object's start pose, a
+    :class:`~critmoment.exceptions.CritmomentWarning` says that the model's
+    default pose will be used.
 
     Returns:
         The trajectory, with ``source`` set to ``str(path)``.
@@ -423,7 +444,25 @@ def load_trajectory(
             shapes, NaN, irregular timing, unknown episode, ...).
         ParameterError: ``fps`` is not a positive finite number, or
             ``episode`` is given for a format without episodes.
+        ResourceLimitError: the file declares more data than the budget allows.
     """
+    pose = None if object_pose is None else as_object_pose(object_pose)
+    traj = _load_any(path, fps=fps, episode=episode)
+    if pose is not None:
+        return replace(traj, object_pose=pose)
+    if traj.object_pose is None and traj.qpos0 is None:
+        warnings.warn(
+            f"{traj.source!r} gives no object start pose (npz 'object_pose'/'qpos0', "
+            f"ACT /observations/env_state); the model's default object pose will be "
+            f"used; pass object_pose= (CLI: --object-pose X Y Z QW QX QY QZ) to set it",
+            CritmomentWarning,
+            stacklevel=2,
+        )
+    return traj
+
+
+def _load_any(path: str | os.PathLike, *, fps: float | None,
+              episode: int | None) -> Trajectory:
     p = Path(os.fspath(path))
     if fps is not None:
         fps = _as_rate(fps, what="fps argument", error=ParameterError)
@@ -434,12 +473,19 @@ def load_trajectory(
             f"episode: expected an int episode_index or None, got "
             f"{type(episode).__name__} {episode!r}"
         )
-    if not p.exists():
+    try:
+        exists, is_dir = p.exists(), p.is_dir()
+    except OSError as exc:  # e.g. a file name longer than the file system allows
+        raise InputFileError(
+            f"trajectory path {_short(p)!r} cannot be used: {exc.strerror or exc}; "
+            f"expected an existing file or directory: {_SUPPORTED_TEXT}"
+        ) from None
+    if not exists:
         raise InputFileError(
             f"trajectory path {str(p)!r} does not exist; expected an existing "
             f"file or directory: {_SUPPORTED_TEXT}"
         )
-    if p.is_dir():
+    if is_dir:
         if (p / "meta" / "info.json").is_file():
             return _load_lerobot_dir(p, fps=fps, episode=episode)
         raise InputFileError(
@@ -466,43 +512,178 @@ def load_trajectory(
     return _load_act_hdf5(p, fps=fps)
 
 
+def _short(path: Any, limit: int = 120) -> str:
+    """A path for a message, its middle elided when very long."""
+    text = str(path)
+    return text if len(text) <= limit else f"{text[:60]}...{text[-40:]}"
+
+
+#: Quaternion norms accepted (and normalised) by :func:`as_object_pose`.
+_POSE_NORM_TOL = 0.01
+
+
+def as_object_pose(value: Any, *, what: str = "object_pose") -> np.ndarray:
+    """Validates an object pose given by a user.
+
+    Args:
+        value: 7 numbers, position [m] then quaternion (w, x, y, z).
+        what: where it came from, for messages.
+
+    Returns:
+        (7,) float64 pose with a unit quaternion (a norm within 1 % of 1 is
+        normalised).
+
+    Raises:
+        ParameterError: not 7 finite numbers, or a quaternion whose norm is
+            not within 1 % of 1.
+    """
+    pose = _as_float_array(value, what=what, error=ParameterError)
+    if pose.shape != (7,):
+        raise ParameterError(
+            f"{what}: expected 7 numbers X Y Z QW QX QY QZ (position [m], unit "
+            f"quaternion), got shape {pose.shape}"
+        )
+    if not np.all(np.isfinite(pose)):
+        raise ParameterError(f"{what}: expected 7 finite numbers, got {pose.tolist()}")
+    norm = float(np.linalg.norm(pose[3:]))
+    if abs(norm - 1.0) > _POSE_NORM_TOL:
+        raise ParameterError(
+            f"{what}: expected a unit quaternion QW QX QY QZ (norm within "
+            f"{_POSE_NORM_TOL:g} of 1), got {pose[3:].tolist()} with norm {norm:.6g}"
+        )
+    pose[3:] /= norm
+    return pose
+
+
+def input_identity(source: Any) -> dict:
+    """A path-independent identity of an input: its file name and content hash.
+
+    Two spellings of one file (relative, absolute, through a symlink) give the
+    same identity, so a report's manifest does not depend on how a path was
+    typed.
+
+    Args:
+        source: a path (file or directory) or a description string.
+
+    Returns:
+        ``{"name": str, "sha256": str | None}``; the hash of a regular file's
+        bytes, None for a directory or something that is not a file.
+    """
+    text = "" if source is None else os.fspath(source) if isinstance(
+        source, os.PathLike) else str(source)
+    p = Path(text)
+    digest = None
+    try:
+        if text and p.is_file():
+            h = hashlib.sha256()
+            with open(p, "rb") as fh:
+                for block in iter(lambda: fh.read(1 << 20), b""):
+                    h.update(block)
+            digest = h.hexdigest()
+        name = p.resolve().name if text and p.exists() else (p.name or text)
+    except OSError:
+        name = p.name or text
+    return {"name": name, "sha256": digest}
+
+
 def _scalar(value: np.ndarray, *, what: str) -> Any:
     if value.shape != ():
         raise TrajectoryError(f"{what}: expected a scalar, got shape {value.shape}")
     return value.item()
 
 
-def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
-    # Open the file ourselves so that it is closed even when numpy fails
-    # half-way through parsing a corrupt archive.
+def _npz_declared_bytes(path: Path) -> None:
+    """Checks an npz archive's members from their headers, before numpy reads them.
+
+    Raises:
+        InputFileError: not a zip, an encrypted or unsupported member, a header
+            declaring more data than its member holds, or a pickled array.
+        ResourceLimitError: the arrays declared exceed ``max_input_bytes``.
+    """
     try:
+        is_zip = zipfile.is_zipfile(path)
+    except OSError as exc:
+        raise InputFileError(f"cannot open {_short(path)!r} for reading: {exc}") from None
+    if not is_zip:
         with open(path, "rb") as fh:
-            try:
-                archive = np.load(fh, allow_pickle=False)
-            except (ValueError, EOFError, zipfile.BadZipFile) as exc:
+            head = fh.read(6)
+        kind = ("a single .npy array" if head == b"\x93NUMPY"
+                else "not a zip archive")
+        raise InputFileError(
+            f"cannot read {_short(path)!r} as an .npz archive: the file is {kind}; "
+            f"expected a zip of .npy arrays written by numpy.savez / save_trajectory "
+            f"with at least the key 'actions'"
+        )
+    total = 0
+    with zipfile.ZipFile(path) as zf:
+        for info in zf.infolist():
+            member = f"{_short(path)!r} member {info.filename!r}"
+            if info.flag_bits & 0x1:
                 raise InputFileError(
-                    f"cannot read {str(path)!r} as an .npz archive (expected a zip "
-                    f"of .npy arrays written by numpy.savez / save_trajectory): {exc}"
-                ) from None
+                    f"{member} is encrypted; expected the plain (unencrypted) .npy "
+                    f"members numpy.savez writes"
+                )
+            if info.compress_type not in (zipfile.ZIP_STORED, zipfile.ZIP_DEFLATED):
+                raise InputFileError(
+                    f"{member} uses zip compression method {info.compress_type}; "
+                    f"expected stored (0) or deflated (8) members as numpy.savez "
+                    f"writes them"
+                )
+            if not info.filename.endswith(".npy"):
+                continue
+            budget.check_bytes(info.file_size, what=f"{member} (uncompressed size)")
+            with zf.open(info) as fh:
+                version = np.lib.format.read_magic(fh)
+                if version == (1, 0):
+                    shape, _, dtype = np.lib.format.read_array_header_1_0(fh)
+                elif version == (2, 0):
+                    shape, _, dtype = np.lib.format.read_array_header_2_0(fh)
+                else:
+                    raise InputFileError(
+                        f"{member}: .npy format version {version}; expected 1.0 or "
+                        f"2.0 as numpy.savez writes for plain arrays"
+                    )
+            if dtype.hasobject:
+                raise InputFileError(
+                    f"{member} holds Python objects (pickled); expected plain "
+                    f"numeric or string arrays"
+                )
+            declared = float(math.prod(shape)) * dtype.itemsize
+            budget.check_bytes(declared, what=f"{member} declares shape {shape} of "
+                                              f"{dtype}")
+            if declared > info.file_size:
+                raise InputFileError(
+                    f"{member}: its header declares shape {shape} of {dtype} "
+                    f"({declared:.0f} bytes), but the member holds only "
+                    f"{info.file_size} bytes; the archive is corrupt or truncated"
+                )
+            total += declared
+    budget.check_bytes(total, what=f"{_short(path)!r} (all arrays)")
+
+
+def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
+    # Check the archive from its headers first, then let numpy read it; open
+    # the file ourselves so that it is closed even when numpy fails half-way.
+    try:
+        _npz_declared_bytes(path)
+        with open(path, "rb") as fh:
+            archive = np.load(fh, allow_pickle=False)
             if not isinstance(archive, np.lib.npyio.NpzFile):
                 raise InputFileError(
-                    f"{str(path)!r} holds a single .npy array, expected an .npz "
+                    f"{_short(path)!r} holds a single .npy array, expected an .npz "
                     f"archive with at least the key 'actions'"
                 )
-            try:
-                with archive:
-                    data = {key: archive[key] for key in archive.files}
-            except (ValueError, EOFError, zipfile.BadZipFile, KeyError) as exc:
-                raise InputFileError(
-                    f"cannot read the arrays of .npz archive {str(path)!r} (corrupt "
-                    f"or pickled content; expected plain numeric arrays): {exc}"
-                ) from None
-    except InputFileError:
+            with archive:
+                data = {key: archive[key] for key in archive.files}
+    except CritmomentError:
         raise
-    except OSError as exc:  # InputFileError is an OSError too: handled above
+    except (ValueError, EOFError, KeyError, zipfile.BadZipFile, zlib.error,
+            NotImplementedError, RuntimeError, OSError, MemoryError) as exc:
         raise InputFileError(
-            f"cannot open {str(path)!r} for reading (expected a readable .npz "
-            f"file): {exc}"
+            f"cannot read the arrays of .npz archive {_short(path)!r} (corrupt, "
+            f"truncated, pickled or unsupported content; expected plain numeric "
+            f"arrays written by numpy.savez / save_trajectory): "
+            f"{type(exc).__name__}: {exc}"
         ) from None
 
     unknown = sorted(set(data) - _NPZ_KEYS)
@@ -562,7 +743,13 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
             )
         text = raw.item()
         if isinstance(text, bytes):
-            text = text.decode("utf-8")
+            try:
+                text = text.decode("utf-8")
+            except UnicodeDecodeError as exc:
+                raise TrajectoryError(
+                    f"{str(path)!r}: 'meta' expected UTF-8 encoded JSON, got bytes "
+                    f"that are not UTF-8 ({exc})"
+                ) from None
         try:
             meta = json.loads(text)
         except json.JSONDecodeError as exc:
@@ -650,6 +837,88 @@ def _json_value(value: Any) -> Any:
     return str(value)
 
 
+def _h5_dataset(fh: Any, name: str, *, path: Path) -> Any:
+    """The dataset ``name`` of an open HDF5 file, or None when absent.
+
+    Raises:
+        InputFileError: ``name`` is a dangling soft or external link, or not a
+            dataset.
+    """
+    import h5py
+
+    if name not in fh:
+        return None
+    link = fh.get(name, getlink=True)
+    try:
+        obj = fh[name]
+    except (KeyError, OSError, RuntimeError, ValueError) as exc:
+        target = ""
+        if isinstance(link, h5py.ExternalLink):
+            target = f" (external link to {link.path!r} in file {link.filename!r})"
+        elif isinstance(link, h5py.SoftLink):
+            target = f" (soft link to {link.path!r})"
+        raise InputFileError(
+            f"{_short(path)!r}: /{name} is a link that cannot be resolved{target}: "
+            f"{exc}; expected a dataset stored in the file or a link to one that exists"
+        ) from None
+    if not isinstance(obj, h5py.Dataset):
+        return None
+    return obj
+
+
+def _h5_read(dset: Any, *, path: Path) -> np.ndarray:
+    """Reads a numeric HDF5 dataset after checking its declared size."""
+    what = f"{_short(path)!r} dataset {dset.name}"
+    if dset.dtype.kind not in "iufb":
+        raise TrajectoryError(
+            f"{what}: expected a numeric dataset, got dtype {dset.dtype}"
+        )
+    budget.check_bytes(float(math.prod(dset.shape)) * dset.dtype.itemsize,
+                       what=f"{what} of shape {dset.shape}")
+    return np.asarray(dset[()])
+
+
+def _h5_object_pose(fh: Any, *, path: Path) -> np.ndarray | None:
+    """The object's start pose from an ACT episode, when it is stored.
+
+    ACT's simulated episodes give the environment state as the object's
+    pose (sim_transfer_cube: the cube's xyz + quaternion (w, x, y, z); the
+    insertion task stores two poses, the first is taken). Looked up in
+    ``/observations/env_state`` (first row), ``/env_state``, then the root
+    attributes ``object_pose`` / ``env_state``. Anything unusable is ignored
+    with a warning.
+    """
+    candidates: list[tuple[str, Any]] = []
+    for name in ("observations/env_state", "env_state"):
+        dset = _h5_dataset(fh, name, path=path)
+        if dset is not None:
+            candidates.append((f"/{name}", dset))
+    for key in ("object_pose", "env_state"):
+        if key in fh.attrs:
+            candidates.append((f"attribute {key!r}", fh.attrs[key]))
+    for where, raw in candidates:
+        try:
+            value = _h5_read(raw, path=path) if hasattr(raw, "shape") and hasattr(
+                raw, "name") else np.asarray(raw, dtype=np.float64)
+            value = np.asarray(value, dtype=np.float64)
+            row = value[0] if value.ndim == 2 else value
+            if row.ndim != 1 or row.shape[0] < 7:
+                raise ValueError(f"shape {value.shape}, expected (7,) or (T, >=7)")
+            pose = as_object_pose(row[:7], what=f"{_short(path)!r} {where}")
+        except (ValueError, TypeError, CritmomentError) as exc:
+            if isinstance(exc, ResourceLimitError):
+                raise
+            warnings.warn(
+                f"{_short(path)!r}: {where} is not an object pose xyz + quaternion "
+                f"({exc}); ignored",
+                CritmomentWarning,
+                stacklevel=4,
+            )
+            continue
+        return pose
+    return None
+
+
 def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
     import h5py  # local import: optional at module import time
 
@@ -660,22 +929,34 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
             f"cannot open {str(path)!r} as HDF5 (expected an ACT episode file with "
             f"datasets /action and /observations/qpos): {exc}"
         ) from None
-    with fh:
-        found: list[str] = []
-        fh.visititems(
-            lambda name, obj: found.append("/" + name)
-            if isinstance(obj, h5py.Dataset) else None
-        )
-        if "action" not in fh or not isinstance(fh["action"], h5py.Dataset):
-            raise TrajectoryError(
-                f"{str(path)!r}: expected dataset /action of shape (T, na) (ACT "
-                f"episode format), found datasets {sorted(found) or 'none'}"
+    try:
+        with fh:
+            found: list[str] = []
+            fh.visititems(
+                lambda name, obj: found.append("/" + name)
+                if isinstance(obj, h5py.Dataset) else None
             )
-        actions = np.asarray(fh["action"][()])
-        qpos = None
-        if "observations/qpos" in fh and isinstance(fh["observations/qpos"], h5py.Dataset):
-            qpos = np.asarray(fh["observations/qpos"][()])
-        attrs = {str(k): _json_value(v) for k, v in fh.attrs.items()}
+            action = _h5_dataset(fh, "action", path=path)
+            if action is None:
+                raise TrajectoryError(
+                    f"{str(path)!r}: expected dataset /action of shape (T, na) (ACT "
+                    f"episode format), found datasets {sorted(found) or 'none'}"
+                )
+            actions = _h5_read(action, path=path)
+            qpos = None
+            qpos_dset = _h5_dataset(fh, "observations/qpos", path=path)
+            if qpos_dset is not None:
+                qpos = _h5_read(qpos_dset, path=path)
+            object_pose = _h5_object_pose(fh, path=path)
+            attrs = {str(k): _json_value(v) for k, v in fh.attrs.items()}
+    except CritmomentError:
+        raise
+    except (OSError, KeyError, RuntimeError, ValueError, TypeError, MemoryError) as exc:
+        raise InputFileError(
+            f"cannot read {_short(path)!r} as an ACT episode (corrupt or truncated "
+            f"HDF5 data; expected readable datasets /action and /observations/qpos): "
+            f"{type(exc).__name__}: {exc}"
+        ) from None
 
     start = None
     if qpos is None:
@@ -710,6 +991,7 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
         actions=actions,
         fps=DEFAULT_FPS if fps is None else fps,
         start=start,
+        object_pose=object_pose,
         meta=meta,
         source=str(path),
     )
@@ -798,6 +1080,125 @@ def _list_column_to_array(column: Any, *, what: str) -> np.ndarray:
     )
 
 
+def _index_column(column: Any, *, what: str) -> np.ndarray:
+    """(n,) int64 from an integer-valued parquet column (episode or frame index).
+
+    Raises:
+        TrajectoryError: nulls, strings, NaN or non-integral values.
+    """
+    import pyarrow as pa
+
+    arr = column.combine_chunks() if isinstance(column, pa.ChunkedArray) else column
+    if arr.null_count:
+        first = int(np.flatnonzero(np.asarray(arr.is_null()))[0])
+        raise TrajectoryError(f"{what}: expected an integer in every row, got null at row {first}")
+    if pa.types.is_integer(arr.type):
+        return np.asarray(arr.to_numpy(zero_copy_only=False), dtype=np.int64)
+    if pa.types.is_floating(arr.type):
+        values = np.asarray(arr.to_numpy(zero_copy_only=False), dtype=np.float64)
+        bad = np.flatnonzero(~np.isfinite(values) | (values != np.round(values)))
+        if bad.size:
+            i = int(bad[0])
+            raise TrajectoryError(
+                f"{what}: expected integers, got {values[i]!r} at row {i} "
+                f"({bad.size} non-integer value(s) in total)"
+            )
+        return values.astype(np.int64)
+    raise TrajectoryError(f"{what}: expected an integer column, got type {arr.type}")
+
+
+def _check_parquet_size(path: Path) -> None:
+    """Checks the values a parquet file declares in its footer against the budget."""
+    import pyarrow.parquet as pq
+
+    meta = pq.ParquetFile(path).metadata
+    values = 0
+    for g in range(meta.num_row_groups):
+        group = meta.row_group(g)
+        for c in range(group.num_columns):
+            values += max(int(group.column(c).num_values), 0)
+    budget.check_bytes(8.0 * values, what=f"{_short(path)!r} ({meta.num_rows} rows, "
+                                          f"{values} values as float64)")
+
+
+@dataclass(frozen=True)
+class Episode:
+    """One episode of a trajectory file or LeRobot dataset.
+
+    Attributes:
+        index: the ``episode_index`` (None for a file holding one unindexed
+            episode).
+        frames: number of rows (actions).
+        file: the file holding it.
+    """
+
+    index: int | None
+    frames: int
+    file: str
+
+
+def list_episodes(path: str | os.PathLike) -> tuple[Episode, ...]:
+    """The episodes of a LeRobot dataset (directory or parquet file) or a file.
+
+    Reads only the ``episode_index`` column (or, for npz/HDF5 files, the
+    declared shape of the actions), so it is cheap on large datasets.
+
+    Args:
+        path: a LeRobot dataset directory, a parquet file, or an npz/HDF5 file
+            (one episode, index None).
+
+    Returns:
+        The episodes sorted by index.
+
+    Raises:
+        InputFileError: the path does not exist or cannot be read.
+        TrajectoryError: malformed episode indices.
+    """
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    p = Path(os.fspath(path))
+    try:
+        is_dir, exists = p.is_dir(), p.exists()
+    except OSError as exc:
+        raise InputFileError(f"path {_short(p)!r} cannot be used: {exc.strerror or exc}") from None
+    if not exists:
+        raise InputFileError(f"path {str(p)!r} does not exist; expected {_SUPPORTED_TEXT}")
+    if is_dir:
+        if not (p / "meta" / "info.json").is_file():
+            raise InputFileError(
+                f"{str(p)!r} is a directory without meta/info.json; expected a LeRobot "
+                f"dataset directory"
+            )
+        files = sorted((p / "data").rglob("*.parquet")) if (p / "data").is_dir() else []
+    elif p.suffix.lower() == ".parquet":
+        files = [p]
+    else:
+        traj = _load_any(p, fps=None, episode=None)
+        return (Episode(index=None, frames=traj.n_steps, file=str(p)),)
+    counts: dict[int | None, list] = {}
+    for f in files:
+        try:
+            schema = pq.read_schema(f)
+            if "episode_index" not in schema.names:
+                counts.setdefault(None, []).append((pq.ParquetFile(f).metadata.num_rows, f))
+                continue
+            col = pq.read_table(f, columns=["episode_index"]).column("episode_index")
+        except (OSError, pa.ArrowException, MemoryError) as exc:
+            raise InputFileError(
+                f"cannot read {_short(f)!r} as parquet: {type(exc).__name__}: {exc}"
+            ) from None
+        index, n = np.unique(_index_column(col, what=f"{_short(f)!r} column 'episode_index'"),
+                             return_counts=True)
+        for i, k in zip(index.tolist(), n.tolist(), strict=True):
+            counts.setdefault(int(i), []).append((int(k), f))
+    out = []
+    for idx in sorted(counts, key=lambda i: -1 if i is None else i):
+        for frames, f in counts[idx]:
+            out.append(Episode(index=idx, frames=frames, file=str(f)))
+    return tuple(out)
+
+
 def _load_lerobot_files(
     files: Sequence[Path],
     *,
@@ -807,7 +1208,6 @@ def _load_lerobot_files(
     source: str,
 ) -> Trajectory:
     import pyarrow as pa
-    import pyarrow.compute as pc
     import pyarrow.parquet as pq
 
     # Pass 1: which episodes live in which file (reads one column only).
@@ -818,16 +1218,18 @@ def _load_lerobot_files(
         try:
             schema = pq.read_schema(f)
             schemas[f] = schema
+            _check_parquet_size(f)
             if "episode_index" in schema.names:
                 col = pq.read_table(f, columns=["episode_index"]).column("episode_index")
-                for idx in np.unique(col.to_numpy()):
+                for idx in np.unique(_index_column(col, what=f"{_short(f)!r} column "
+                                                             f"'episode_index'")):
                     where.setdefault(int(idx), []).append(f)
             else:
                 whole_file_episode.append(f)
-        except (OSError, pa.ArrowException) as exc:
+        except (OSError, pa.ArrowException, MemoryError) as exc:
             raise InputFileError(
-                f"cannot read {str(f)!r} as parquet (expected a LeRobot episode "
-                f"file with an 'action' column): {exc}"
+                f"cannot read {_short(f)!r} as parquet (expected a LeRobot episode "
+                f"file with an 'action' column): {type(exc).__name__}: {exc}"
             ) from None
 
     if whole_file_episode:
@@ -879,12 +1281,18 @@ def _load_lerobot_files(
                           "observation.state") if c in schema.names]
     try:
         table = pq.read_table(chosen_file, columns=wanted)
-    except (OSError, pa.ArrowException) as exc:
-        raise InputFileError(f"cannot read {str(chosen_file)!r} as parquet: {exc}") from None
-    if ep is not None:
-        table = table.filter(pc.equal(table.column("episode_index"), ep))
+        if ep is not None:
+            index = _index_column(table.column("episode_index"),
+                                  what=f"{_short(chosen_file)!r} column 'episode_index'")
+            table = table.filter(pa.array(index == ep))
+    except (OSError, pa.ArrowException, MemoryError) as exc:
+        raise InputFileError(
+            f"cannot read {_short(chosen_file)!r} as parquet: {type(exc).__name__}: {exc}"
+        ) from None
     if "frame_index" in table.column_names:
-        frame = table.column("frame_index").to_numpy()
+        frame = _index_column(table.column("frame_index"),
+                              what=f"{_short(chosen_file)!r} episode {ep} column "
+                                   f"'frame_index'")
         order = np.argsort(frame, kind="stable")
         sorted_frames = frame[order]
         dup = np.flatnonzero(np.diff(sorted_frames) == 0)
