@@ -1,0 +1,659 @@
+"""Before the audit: can the twin reproduce the nominal motion, and does the trajectory fit?
+
+:func:`check_feasibility` reads the nominal frequent rollout (a
+:class:`~critmoment.recording.Recording`) and checks, for every actuator on a joint:
+
+* **tracking**: the lag |q − target| of position-like actuators, where the target is what
+  the actuator commands (``(gain·ctrl + biasprm[0]) / −biasprm[1]`` in actuator length,
+  divided by the gear; ``ctrl`` itself for a ``<position>`` servo);
+* **saturation**: how long |force| sits at its limit, the smallest of the scenario's
+  ``[limits]``, the MJCF ``forcerange`` and the joint's ``actuatorfrcrange``;
+* **static infeasibility**: joint ``frictionloss`` above what the actuator can ever exert
+  (limit × gear) on a joint whose target moves.
+
+Grippers (actuators of the action channels marked ``normalised``) legitimately lag and
+saturate when they close on the object, so their lag and saturation are reported but never
+fail the check. When the twin cannot follow, :class:`~critmoment.exceptions.InfeasibleTwinError`
+says which joint, how far behind, for how long, from when, and the likely cause.
+
+:func:`check_fit` looks for the other usual mistake, a trajectory that does not belong to the
+scenario: the wrong action width (it names the bundled scenario of that width), gripper or
+joint values in the wrong units, and a nominal run that never touches or never lifts the
+object. :func:`preflight` runs both on a recording and emits the fit warnings.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+import logging
+import warnings
+
+import mujoco
+import numpy as np
+
+from critmoment.exceptions import (
+    CritmomentError,
+    InfeasibleTwinError,
+    ParameterError,
+    TrajectoryError,
+)
+from critmoment.recording import Recording
+from critmoment.trajectory import Trajectory
+from critmoment.twin import STATE_SPEC, Twin, carried_flags
+
+__all__ = [
+    "ActuatorKind",
+    "FeasibilityOptions",
+    "JointFeasibility",
+    "FeasibilityReport",
+    "FitWarning",
+    "check_feasibility",
+    "check_fit",
+    "preflight",
+    "classify_actuator",
+]
+
+log = logging.getLogger(__name__)
+
+#: task kinds whose success needs the object lifted (every kind critmoment knows today)
+_LIFT_TASKS = ("handover", "pick_place", "pick_hold")
+
+
+class FitWarning(UserWarning):
+    """A trajectory that probably does not belong to its scenario (see :func:`check_fit`)."""
+
+
+class ActuatorKind(enum.Enum):
+    """How an actuator acts on its joint, as far as tracking is concerned."""
+
+    POSITION = "position"   #: fixed gain, affine bias with biasprm[1] < 0: a position servo
+    VELOCITY = "velocity"   #: affine bias on velocity only: tracks a velocity, not a position
+    MOTOR = "motor"         #: no bias: a force/torque motor, ctrl is a force
+    OTHER = "other"         #: another gain/bias, or a transmission other than a joint
+
+
+def classify_actuator(model: mujoco.MjModel, actuator: int) -> tuple[ActuatorKind, str]:
+    """The kind of actuator ``actuator`` and a note on why it is (not) tracked.
+
+    Args:
+        model: the compiled model.
+        actuator: actuator id.
+
+    Returns:
+        (kind, note); the note is empty for a trackable position actuator on a joint.
+    """
+    if model.actuator_trntype[actuator] != mujoco.mjtTrn.mjTRN_JOINT:
+        trn = mujoco.mjtTrn(int(model.actuator_trntype[actuator])).name
+        return ActuatorKind.OTHER, f"transmission {trn}: lag not checked (joint transmissions only)"
+    gain = int(model.actuator_gaintype[actuator])
+    bias = int(model.actuator_biastype[actuator])
+    bp = model.actuator_biasprm[actuator]
+    if bias == mujoco.mjtBias.mjBIAS_NONE:
+        return ActuatorKind.MOTOR, "motor (no bias): ctrl is a force, lag not checked"
+    if gain != mujoco.mjtGain.mjGAIN_FIXED or bias != mujoco.mjtBias.mjBIAS_AFFINE:
+        return ActuatorKind.OTHER, "gain/bias not fixed/affine: lag not checked"
+    if bp[1] < 0:
+        if model.actuator_dyntype[actuator] != mujoco.mjtDyn.mjDYN_NONE:
+            return ActuatorKind.OTHER, ("position-like with activation dynamics: the target "
+                                        "is the activation, lag not checked")
+        return ActuatorKind.POSITION, ""
+    if bp[2] < 0:
+        return ActuatorKind.VELOCITY, "velocity servo: tracks a velocity, lag not checked"
+    return ActuatorKind.OTHER, "affine bias without a position term: lag not checked"
+
+
+@dataclasses.dataclass(frozen=True)
+class FeasibilityOptions:
+    """Tolerances of :func:`check_feasibility`.
+
+    The defaults leave a wide margin over the bundled scenario's families (largest arm lag
+    about 0.02 rad, no arm actuator at its limit; ``docs/method.md``, "Feasibility and fit
+    checks").
+
+    Attributes:
+        lag_tolerance: largest tolerated lag of a hinge joint [rad].
+        lag_tolerance_slide: largest tolerated lag of a slide joint [m].
+        lag_duration: a lag above tolerance fails when it lasts longer than this [s].
+        delay: the lag is the position error left after allowing the joint to follow its
+            target this late [s] (a PD servo follows a ramp about (kv + damping)/kp late).
+        saturation_fraction: |force| ≥ this fraction of the limit counts as saturated.
+        saturation_duration: a saturation fails when it lasts longer than this [s].
+        moving: a joint must move when its target spans more than this fraction of its
+            lag tolerance; only such joints fail the friction check.
+        check_grippers: also fail on the lag and saturation of gripper actuators
+            (the normalised action channels); off by default, since a gripper closed on
+            the object is blocked by it.
+    """
+
+    lag_tolerance: float = 0.1
+    lag_tolerance_slide: float = 0.01
+    lag_duration: float = 0.1
+    delay: float = 0.1
+    saturation_fraction: float = 0.99
+    saturation_duration: float = 0.1
+    moving: float = 0.1
+    check_grippers: bool = False
+
+    def __post_init__(self):
+        if isinstance(self.delay, bool) or not (np.isfinite(self.delay) and self.delay >= 0):
+            raise ParameterError(f"FeasibilityOptions.delay: expected a finite number >= 0 s, "
+                                 f"got {self.delay!r}")
+        for name in ("lag_tolerance", "lag_tolerance_slide", "lag_duration",
+                     "saturation_duration", "moving"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not (np.isfinite(value) and value > 0):
+                raise ParameterError(f"FeasibilityOptions.{name}: expected a finite number > 0,"
+                                     f" got {value!r}")
+        if not 0 < self.saturation_fraction <= 1:
+            raise ParameterError(f"FeasibilityOptions.saturation_fraction: expected in (0, 1], "
+                                 f"got {self.saturation_fraction!r}")
+
+
+@dataclasses.dataclass(frozen=True)
+class JointFeasibility:
+    """Tracking and saturation of one actuator on its joint over the nominal run.
+
+    Attributes:
+        actuator: actuator name.
+        joint: joint name.
+        kind: the actuator's kind.
+        unit: the joint's unit, "rad" (hinge) or "m" (slide).
+        gripper: the actuator belongs to a normalised (gripper) channel.
+        max_lag: largest |q − target| [rad or m] (NaN when not tracked).
+        max_lag_time: when it occurs [s] (NaN when not tracked).
+        lag_duration: longest continuous stretch with the lag above tolerance [s].
+        lag_start: start of that stretch [s] (None when there is none).
+        lag_in_run: largest lag within that stretch [rad or m] (0 when none).
+        saturation_duration: longest continuous stretch at the force limit [s].
+        saturation_start: start of that stretch [s] (None when there is none).
+        saturation_total: total time at the force limit [s].
+        force_limit: the limit used, in actuator units [N·m or N] (inf when none).
+        limit_source: "[limits]", "forcerange" or "actuatorfrcrange".
+        frictionloss: the joint's frictionloss [N·m or N].
+        target_span: range of the joint's target over the run [rad or m] (NaN when not
+            tracked).
+        note: why the lag is not tracked, or "".
+        blocked_by: the contact (geom pair) that holds the joint back during its lag or
+            saturation stretch, or "": the robot pushes against something (itself, the
+            object, the support), which is a fact of the motion, not of the twin.
+    """
+
+    actuator: str
+    joint: str
+    kind: ActuatorKind
+    unit: str
+    gripper: bool
+    max_lag: float
+    max_lag_time: float
+    lag_duration: float
+    lag_start: float | None
+    lag_in_run: float
+    saturation_duration: float
+    saturation_start: float | None
+    saturation_total: float
+    force_limit: float
+    limit_source: str
+    frictionloss: float
+    target_span: float
+    note: str = ""
+    blocked_by: str = ""
+
+    def to_json(self) -> dict:
+        """JSON-able dict (kind as its value, non-finite numbers as None)."""
+        out = {}
+        for f in dataclasses.fields(self):
+            v = getattr(self, f.name)
+            if isinstance(v, enum.Enum):
+                v = v.value
+            elif isinstance(v, float) and not np.isfinite(v):
+                v = None
+            out[f.name] = v
+        return out
+
+
+@dataclasses.dataclass(frozen=True)
+class FeasibilityReport:
+    """What :func:`check_feasibility` (and :func:`preflight`) found.
+
+    Attributes:
+        joints: one entry per actuator on a joint, in actuator order.
+        problems: why the twin cannot reproduce the nominal motion, one line each (empty
+            when feasible).
+        notes: actuators not checked and why, one line each.
+        warnings: lags and saturations beyond tolerance where a contact holds the joint
+            back (see ``JointFeasibility.blocked_by``), one line each; not problems.
+        fit_warnings: :func:`check_fit`'s warnings (filled by :func:`preflight`).
+        options: the tolerances used.
+        duration: length of the checked run [s].
+    """
+
+    joints: tuple[JointFeasibility, ...]
+    problems: tuple[str, ...]
+    notes: tuple[str, ...]
+    options: FeasibilityOptions
+    duration: float
+    warnings: tuple[str, ...] = ()
+    fit_warnings: tuple[str, ...] = ()
+
+    @property
+    def feasible(self) -> bool:
+        return not self.problems
+
+    def joint(self, name: str) -> JointFeasibility:
+        """The entry of actuator or joint ``name``."""
+        for j in self.joints:
+            if name in (j.actuator, j.joint):
+                return j
+        raise ParameterError(f"no actuator or joint {name!r} in the feasibility report; known: "
+                             f"{', '.join(j.actuator for j in self.joints)}")
+
+    def to_json(self) -> dict:
+        """The report's ``feasibility`` section."""
+        return {"feasible": self.feasible, "problems": list(self.problems),
+                "notes": list(self.notes), "warnings": list(self.warnings),
+                "fit_warnings": list(self.fit_warnings),
+                "duration": self.duration, "options": dataclasses.asdict(self.options),
+                "joints": [j.to_json() for j in self.joints]}
+
+
+def _longest_run(flags: np.ndarray) -> tuple[int, int]:
+    """(start, length) of the longest run of True in ``flags`` (T,); (0, 0) when none."""
+    if not flags.any():
+        return 0, 0
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], flags.astype(np.int8), [0]])))
+    starts, stops = edges[::2], edges[1::2]
+    i = int(np.argmax(stops - starts))
+    return int(starts[i]), int(stops[i] - starts[i])
+
+
+def _tracking_error(q: np.ndarray, target: np.ndarray, shift: int) -> np.ndarray:
+    """|q(t) − target(t − d)| minimised over delays d of 0..``shift`` steps, (T,).
+
+    A servo follows a moving target a little late (by about (kv + damping)/kp); a delayed
+    copy of the motion is still the motion. What is left after the delay is a joint that
+    sags, sticks or is blocked.
+    """
+    err = np.abs(q - target)
+    if shift > 0 and target.size:
+        padded = np.concatenate([np.full(shift, target[0]), target])
+        for s in range(1, shift + 1):
+            np.minimum(err, np.abs(q - padded[shift - s:shift - s + q.size]), out=err)
+    return err
+
+
+def _gripper_actuators(twin: Twin) -> set[int]:
+    conv = twin.scenario.actions
+    out: set[int] = set()
+    for names, normalised in zip(conv.channels, conv.normalised, strict=True):
+        if normalised:
+            out.update(twin.model.actuator(a).id for a in names)
+    return out
+
+
+def _force_limit(twin: Twin, a: int) -> tuple[float, str]:
+    """The smallest force limit of actuator ``a`` in actuator units, and where it comes from."""
+    m = twin.model
+    candidates = [(float(twin.limits[a]), "[limits]")]
+    if m.actuator_forcelimited[a]:
+        candidates.append((float(np.abs(m.actuator_forcerange[a]).min()), "forcerange"))
+    j = int(m.actuator_trnid[a, 0])
+    gear = abs(float(m.actuator_gear[a, 0])) or 1.0
+    if m.jnt_actfrclimited[j]:
+        candidates.append((float(np.abs(m.jnt_actfrcrange[j]).min()) / gear, "actuatorfrcrange"))
+    return min(candidates, key=lambda c: c[0])
+
+
+def _unit(model: mujoco.MjModel, joint: int) -> str:
+    return "m" if model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_SLIDE else "rad"
+
+
+def check_feasibility(recording: Recording, twin: Twin, *,
+                      options: FeasibilityOptions = FeasibilityOptions(),
+                      raise_on_failure: bool = True) -> FeasibilityReport:
+    """Can the twin reproduce the nominal motion of ``recording``?
+
+    Args:
+        recording: the nominal frequent rollout of the trajectory.
+        twin: its twin.
+        options: tolerances.
+        raise_on_failure: raise :class:`InfeasibleTwinError` on the first problem (else
+            return the report with ``problems`` filled).
+
+    Returns:
+        The report, one :class:`JointFeasibility` per actuator on a joint.
+
+    Raises:
+        InfeasibleTwinError: the twin cannot follow (friction above the force limit on a
+            joint that must move, lag above tolerance or saturation for longer than allowed,
+            outside the grippers); the message names the joint, the lag [rad or m], its
+            duration [s], its start [s] and the likely cause.
+    """
+    m = twin.model
+    dt = float(recording.dt)
+    n = recording.n_steps
+    controls = np.asarray(recording.controls, dtype=np.float64)
+    if controls.shape != (n, m.nu):
+        raise ParameterError(f"recording: expected controls of shape ({n}, {m.nu}) for this "
+                             f"twin, got {controls.shape}: recorded with another scenario?")
+    offset = mujoco.mj_stateSize(m, mujoco.mjtState.mjSTATE_TIME)  # state = [time, qpos, ...]
+    states = np.asarray(recording.states)
+    force = np.asarray(recording.signals.actuator_force)
+    grippers = _gripper_actuators(twin)
+    joints, problems, notes, held = [], [], [], []
+    for a in range(m.nu):
+        name = m.actuator(a).name or f"actuator #{a}"
+        if m.actuator_trntype[a] != mujoco.mjtTrn.mjTRN_JOINT:
+            notes.append(f"{name}: {classify_actuator(m, a)[1]}")
+            continue
+        j = int(m.actuator_trnid[a, 0])
+        jname = m.joint(j).name or f"joint #{j}"
+        unit = _unit(m, j)
+        kind, note = classify_actuator(m, a)
+        if note:
+            notes.append(f"{name}: {note}")
+        gear = float(m.actuator_gear[a, 0]) or 1.0
+        limit, source = _force_limit(twin, a)
+        tol = options.lag_tolerance_slide if unit == "m" else options.lag_tolerance
+        is_gripper = a in grippers
+        max_lag = max_lag_time = span = float("nan")
+        lag_start, lag_len, lag_in_run = 0, 0, 0.0
+        if kind is ActuatorKind.POSITION and int(m.jnt_type[j]) in (
+                int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)):
+            gain = m.actuator_gainprm[a, 0]
+            b0, b1 = m.actuator_biasprm[a, :2]
+            target = (gain * controls[:, a] + b0) / (-b1) / gear
+            if m.jnt_limited[j]:
+                target = np.clip(target, *m.jnt_range[j])
+            q = states[1:n + 1, offset + int(m.jnt_qposadr[j])]
+            lag = _tracking_error(q, target, int(round(options.delay / dt)))
+            k = int(np.argmax(lag))
+            max_lag, max_lag_time = float(lag[k]), k * dt
+            span = float(np.ptp(target)) if n else 0.0
+            lag_start, lag_len = _longest_run(lag > tol)
+            lag_in_run = float(lag[lag_start:lag_start + lag_len].max()) if lag_len else 0.0
+        saturated = np.abs(force[:, a]) >= options.saturation_fraction * limit
+        sat_start, sat_len = _longest_run(saturated)
+        friction = float(m.dof_frictionloss[m.jnt_dofadr[j]])
+        entry = JointFeasibility(
+            actuator=name, joint=jname, kind=kind, unit=unit, gripper=is_gripper,
+            max_lag=max_lag, max_lag_time=max_lag_time, lag_duration=lag_len * dt,
+            lag_start=lag_start * dt if lag_len else None, lag_in_run=lag_in_run,
+            saturation_duration=sat_len * dt, saturation_start=sat_start * dt if sat_len else None,
+            saturation_total=float(saturated.sum()) * dt, force_limit=limit, limit_source=source,
+            frictionloss=friction, target_span=span, note=note)
+        stretch = _failing_stretch(entry, tol, abs(gear), options)
+        if stretch is not None:
+            blocked = _blocking_contact(m, states, *stretch, joint=j)
+            if blocked:
+                entry = dataclasses.replace(entry, blocked_by=blocked)
+        joints.append(entry)
+        found = _problems(entry, tol, abs(gear), options, m, j)
+        (held if entry.blocked_by else problems).extend(found)
+    report = FeasibilityReport(joints=tuple(joints), problems=tuple(problems),
+                               notes=tuple(notes), options=options, duration=n * dt,
+                               warnings=tuple(held))
+    if problems and raise_on_failure:
+        raise InfeasibleTwinError(problems[0], report=report)
+    return report
+
+
+def _force_unit(unit: str) -> str:
+    return "N" if unit == "m" else "N·m"
+
+
+def _stuck(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOptions) -> bool:
+    """Friction above what the actuator can ever exert, on a joint that must move."""
+    must_move = np.isnan(e.target_span) or e.target_span > opt.moving * tol
+    return e.frictionloss > e.force_limit * gear and bool(must_move)
+
+
+def _failing_stretch(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOptions
+                     ) -> tuple[float, float] | None:
+    """(start, duration) [s] of the lag or saturation stretch that fails the joint, if any."""
+    if _stuck(e, tol, gear, opt) or not (opt.check_grippers or not e.gripper):
+        return None
+    if e.lag_duration > opt.lag_duration:
+        return e.lag_start, e.lag_duration
+    if e.saturation_duration > opt.saturation_duration:
+        return e.saturation_start, e.saturation_duration
+    return None
+
+
+def _subtree(model: mujoco.MjModel, body: int) -> np.ndarray:
+    """(nbody,) bool: the bodies ``body`` carries (itself included)."""
+    inside = np.zeros(model.nbody, dtype=bool)
+    for b in range(model.nbody):
+        a = b
+        while a > 0 and a != body:
+            a = int(model.body_parentid[a])
+        inside[b] = a == body
+    return inside
+
+
+def _blocking_contact(model: mujoco.MjModel, states: np.ndarray, start: float,
+                      duration: float, *, joint: int, probes: int = 40) -> str:
+    """The contact that holds ``joint`` back over a stretch of the run, or "".
+
+    The stretch's states are replayed (positions and collisions only) at up to ``probes``
+    steps; a contact between a body the joint carries and one it does not, present at at
+    least half of them, is named as "geom1–geom2" (its most frequent pair).
+    """
+    dt = float(model.opt.timestep)
+    first, count = int(round(start / dt)), max(1, int(round(duration / dt)))
+    steps = np.unique(np.linspace(first, first + count - 1, min(count, probes)).astype(int))
+    carried = _subtree(model, int(model.jnt_bodyid[joint]))
+    data = mujoco.MjData(model)
+    pairs: dict[tuple[int, int], int] = {}
+    hits = 0
+    for k in steps:
+        mujoco.mj_setState(model, data, states[min(k + 1, states.shape[0] - 1)], STATE_SPEC)
+        mujoco.mj_fwdPosition(model, data)
+        con = data.contact
+        g1, g2 = np.asarray(con.geom1)[:data.ncon], np.asarray(con.geom2)[:data.ncon]
+        touching = np.asarray(con.dist)[:data.ncon] <= 0
+        across = touching & (carried[model.geom_bodyid[g1]] != carried[model.geom_bodyid[g2]])
+        hits += bool(across.any())
+        for a, b in zip(g1[across], g2[across], strict=True):
+            key = (int(min(a, b)), int(max(a, b)))
+            pairs[key] = pairs.get(key, 0) + 1
+    if not pairs or hits < 0.5 * steps.size:
+        return ""
+    a, b = max(pairs, key=pairs.get)
+    return f"{_geom_name(model, a)}–{_geom_name(model, b)}"
+
+
+def _geom_name(model: mujoco.MjModel, geom: int) -> str:
+    name = model.geom(geom).name
+    if name:
+        return name
+    body = model.body(int(model.geom_bodyid[geom])).name
+    return f"geom #{geom} of body {body!r}"
+
+
+def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOptions,
+              model: mujoco.MjModel, joint: int) -> list[str]:
+    """The problems of one joint, most telling first: friction, then lag, then saturation."""
+    out = []
+    fu = _force_unit(e.unit)
+    reach = e.force_limit * gear
+    if _stuck(e, tol, gear, opt):
+        out.append(f"the twin cannot reproduce the nominal motion: joint {e.joint!r} (actuator "
+                   f"{e.actuator!r}) frictionloss {e.frictionloss:g} {fu} > force limit "
+                   f"{reach:g} {fu} ({e.limit_source}{f' × gear {gear:g}' if gear != 1 else ''}"
+                   f"): the servo can never move this joint; check [limits] or the model's "
+                   f"frictionloss")
+        return out
+    if not (opt.check_grippers or not e.gripper):
+        return out
+    if e.lag_duration > opt.lag_duration:
+        if e.blocked_by:
+            cause = (f"the contact {e.blocked_by} holds it back: the motion pushes the robot "
+                     f"against itself, the object or the support")
+        elif e.saturation_total > 0 and e.saturation_start is not None:
+            cause = (f"the actuator is at its force limit {e.force_limit:g} {fu} "
+                     f"({e.limit_source}) for {e.saturation_total:.3g} s in all: too weak "
+                     f"for the load (gravity, the object); check [limits], the model's "
+                     f"forcerange and gear")
+        elif model.jnt_limited[joint]:
+            cause = ("the joint is blocked (a contact or its range) or the servo is too "
+                     "soft (kp) for the motion; check the model's kp/kv and the trajectory's "
+                     "speed")
+        else:
+            cause = ("the joint is blocked by a contact or the servo is too soft (kp) for "
+                     "the motion; check the model's kp/kv and the trajectory's speed")
+        out.append(
+            f"the twin cannot reproduce the nominal motion: joint {e.joint!r} (actuator "
+            f"{e.actuator!r}) lags its target by up to {e.lag_in_run:.3g} {e.unit} "
+            f"(tolerance {tol:g} {e.unit}) for {e.lag_duration:.3g} s from t = "
+            f"{e.lag_start:.3f} s; likely cause: {cause}")
+    elif e.saturation_duration > opt.saturation_duration:
+        cause = (f"the contact {e.blocked_by} holds it back" if e.blocked_by else
+                 "too weak for the load; check [limits], the model's forcerange and gear")
+        out.append(
+            f"the twin cannot reproduce the nominal motion: actuator {e.actuator!r} (joint "
+            f"{e.joint!r}) is at its force limit {e.force_limit:g} {fu} ({e.limit_source}) "
+            f"for {e.saturation_duration:.3g} s from t = {e.saturation_start:.3f} s (largest "
+            f"lag {e.max_lag:.3g} {e.unit}); likely cause: {cause}")
+    if e.blocked_by:
+        out = [msg.replace("the twin cannot reproduce the nominal motion: ",
+                           "the nominal motion is held back by a contact: ") for msg in out]
+    return out
+
+
+# -- trajectory <-> scenario fit ------------------------------------------------------
+def _bundled_widths(exclude: str) -> dict[str, int]:
+    """Action width of each bundled scenario other than ``exclude`` (those that load)."""
+    from critmoment.scenario import BUNDLED_SCENARIOS, load_scenario
+
+    out = {}
+    for name in BUNDLED_SCENARIOS:
+        if name == exclude:
+            continue
+        try:
+            out[name] = load_scenario(name).actions.width
+        except CritmomentError as exc:  # a broken bundled scenario must not hide the hint
+            log.debug("bundled scenario %s does not load: %s", name, exc)
+    return out
+
+
+def _check_width(trajectory: Trajectory, twin: Twin) -> None:
+    sc = twin.scenario
+    conv = sc.actions
+    got = int(trajectory.n_channels)
+    if got == conv.width:
+        return
+    fits = [name for name, w in _bundled_widths(sc.name).items() if w == got]
+    hint = (f"bundled scenario {fits[0]!r} takes {got}: wrong --scenario? (--scenario "
+            f"{fits[0]})" if fits else
+            f"no bundled scenario takes {got}: pass the --scenario this trajectory was "
+            f"recorded for")
+    raise TrajectoryError(
+        f"the trajectory has {got} action values per step, scenario {sc.name!r} expects "
+        f"{conv.width} ({conv.name}: {', '.join(conv.labels)}); {hint}")
+
+
+def _check_units(trajectory: Trajectory, twin: Twin) -> None:
+    """Hard unit mismatches: gripper channels far outside 0..1, joint values in degrees."""
+    actions = np.asarray(trajectory.actions, dtype=np.float64)
+    conv = twin.scenario.actions
+    lo, hi = twin.channel_lower, twin.channel_upper
+    for c, label in enumerate(conv.labels):
+        col = actions[:, c]
+        cmin, cmax = float(col.min()), float(col.max())
+        if conv.normalised[c]:
+            if cmax > 1.5 or cmin < -0.5:
+                raise TrajectoryError(
+                    f"channel {label!r} is a normalised gripper (0 closed .. 1 open), the "
+                    f"trajectory's values span {cmin:.4g}..{cmax:.4g}: raw gripper units "
+                    f"(metres, 0..255)? normalise them, or this trajectory is for another "
+                    f"scenario")
+            continue
+        hinge = np.isfinite(lo[c]) and np.isfinite(hi[c]) and hi[c] - lo[c] <= 2 * np.pi + 1e-6
+        if hinge and max(abs(cmin), abs(cmax)) > 2 * np.pi + 0.5:
+            raise TrajectoryError(
+                f"channel {label!r} spans {cmin:.4g}..{cmax:.4g}, its joint range is "
+                f"{lo[c]:.4g}..{hi[c]:.4g} rad: degrees instead of radians?")
+
+
+def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *,
+              strict: bool = False) -> list[str]:
+    """Does ``trajectory`` belong to the twin's scenario?
+
+    With ``recording`` None only the static checks run (call it before the rollout, which
+    would fail on a wrong width with a less telling message); with the nominal recording of
+    the trajectory the run is checked too.
+
+    Args:
+        trajectory: the trajectory.
+        recording: its nominal frequent rollout, or None.
+        twin: the twin.
+        strict: raise on the first warning as well.
+
+    Returns:
+        Warnings, one line each, each naming the likely mistake.
+
+    Raises:
+        TrajectoryError: a hard mismatch (action width not the scenario's, gripper values
+            that are not normalised, joint targets in degrees), or with ``strict`` the first
+            warning.
+    """
+    _check_width(trajectory, twin)
+    _check_units(trajectory, twin)
+    if recording is None:
+        return []
+    out: list[str] = []
+    sig = recording.signals
+    pose_hint = ("the trajectory carries no object pose, the model's default was used; give "
+                 "it with --object-pose" if trajectory.object_pose is None else
+                 "is the trajectory's object pose right (--object-pose)")
+    touched = np.asarray(sig.contact_gripper, bool).any()
+    if not touched:
+        out.append(f"the nominal run never touches the object: {pose_hint}, or is this "
+                   f"trajectory for another scenario?")
+    elif _needs_lift(twin):
+        carried = carried_flags(sig.contact_support, sig.contact_gripper)
+        if not twin.lifted(carried, recording.states).any():
+            out.append(f"the nominal run touches the object but never lifts it: does the "
+                       f"grasp close on it (gripper targets, object size), {pose_hint}?")
+    if strict and out:
+        raise TrajectoryError(out[0])
+    return out
+
+
+def _needs_lift(twin: Twin) -> bool:
+    task = getattr(twin.scenario, "task", None)
+    kind = getattr(task, "kind", None)
+    if kind is None:
+        return True  # today's handover
+    kind = getattr(kind, "value", kind)
+    return str(kind) in _LIFT_TASKS
+
+
+def preflight(trajectory: Trajectory, recording: Recording, twin: Twin, *,
+              options: FeasibilityOptions = FeasibilityOptions()) -> FeasibilityReport:
+    """The checks the audit runs on its nominal rollout: feasibility, then fit.
+
+    Feasibility comes first: a twin that cannot move its arms never touches the object
+    either, and the fit warning would point at the wrong cause. Each fit warning is issued
+    as a :class:`FitWarning` and kept in the report.
+
+    Args:
+        trajectory: the trajectory.
+        recording: its nominal frequent rollout.
+        twin: the twin.
+        options: feasibility tolerances.
+
+    Returns:
+        The feasibility report with ``fit_warnings``.
+
+    Raises:
+        InfeasibleTwinError: see :func:`check_feasibility`.
+        TrajectoryError: see :func:`check_fit`.
+    """
+    report = check_feasibility(recording, twin, options=options)
+    fit = check_fit(trajectory, recording, twin)
+    for msg in report.warnings + tuple(fit):
+        warnings.warn(msg, FitWarning, stacklevel=2)
+    return dataclasses.replace(report, fit_warnings=tuple(fit))
+
