@@ -56,6 +56,27 @@ diverging sample can never count as safe) and its factors of safety NaN; with
 :attr:`DivergencePolicy.RAISE` :class:`~critmoment.exceptions.SimulationDivergedError`
 names the moment and the sample.
 
+Deciding. A pair (moment, sample) fails (:class:`Failure`) when, within the horizon,
+the cost exceeds the threshold through the motor term (MOTOR, at once), when the cost
+exceeds it through the contact term for ``persistence`` seconds in a row (CONTACT: an
+excursion that starts within the horizon and lasts; a one-step chatter of the contact
+forces does not fail a good grasp), when the object moves in its holding gripper by more
+than ``slip_tolerance`` relative to the nominal run (SLIP, measured, see below), or when
+it diverges. An excursion still open at the horizon's end is followed, with the recorded
+controls, until it has lasted ``persistence`` or ended; one still open where no more steps
+can be taken (SOLVE mode, the recording's end) counts. With ``creep_horizon`` longer than
+the horizon, every pair that has not failed is stepped that long to measure its slip: on
+soft contact models (see :mod:`critmoment.contactmodel`) a grip creeps while its force
+ratio still looks safe, and only its motion tells. The settings come from the scenario's
+``[sparse]`` table (``scenario.sparse``), else 0.02 s, 5 mm and 0 (off).
+
+Slip. The object's position in the frame of each gripper's base body (the deepest body
+above all its geoms), with the fingers' slide axes projected out (squeezing is not slip),
+minus the same in the nominal run at the same step, at the steps where the nominal run
+holds the object with that gripper alone; ``slip`` is the largest over the steps measured.
+Both runs start from the same restored state, so this is the displacement since the
+moment, as the ground truth's ``grip_slip`` measures it since the grasp.
+
 On top of :func:`evaluate`: :func:`sweep` (Sobol or grid samples of the box),
 :func:`critical_values` (where the cost crosses the threshold along each
 parameter, refined by bisection) and :func:`probability_of_success` (Sobol
@@ -72,7 +93,7 @@ import math
 import numbers
 import warnings
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import Any, NamedTuple
 
 import mujoco
 import mujoco.batch
@@ -92,6 +113,10 @@ __all__ = [
     "SweepMethod",
     "OthersAt",
     "FailSide",
+    "Failure",
+    "SparseSettings",
+    "sparse_settings",
+    "grip_frames",
     "SparseResult",
     "SparseEvaluator",
     "evaluate",
@@ -156,6 +181,70 @@ class Criterion(enum.Enum):
     (default :data:`FOS_LIMIT`)."""
     MOTOR = "motor"
     """The motor FOS is below the limit (default :data:`FOS_LIMIT`)."""
+
+
+class Failure(enum.IntEnum):
+    """Why a pair (moment, sample) fails (an ``IntEnum``; −1 where it was not evaluated)."""
+
+    PASS = 0
+    """It does not fail."""
+    MOTOR = 1
+    """The cost exceeds the threshold through the motor term, within the horizon."""
+    CONTACT = 2
+    """The cost exceeds the threshold through the contact term for ``persistence`` [s]."""
+    SLIP = 3
+    """The object moved in its holding gripper by more than ``slip_tolerance`` [m]."""
+    DIVERGED = 4
+    """The simulation diverged."""
+
+
+#: defaults of the decision when the scenario states none: persistence [s], slip
+#: tolerance [m], creep horizon [steps] (0: off)
+DEFAULT_PERSISTENCE = 0.02
+DEFAULT_SLIP_TOLERANCE = 0.005
+DEFAULT_CREEP_HORIZON = 0
+
+
+@dataclasses.dataclass(frozen=True)
+class SparseSettings:
+    """How a sparse evaluation decides, as the evaluator applies it.
+
+    Attributes:
+        persistence: how long a contact-FOS excursion must last to count [s].
+        slip_tolerance: largest measured slip in a holding gripper that passes [m].
+        creep_horizon: physics steps over which slip is measured (0: the horizon only).
+    """
+
+    persistence: float = DEFAULT_PERSISTENCE
+    slip_tolerance: float = DEFAULT_SLIP_TOLERANCE
+    creep_horizon: int = DEFAULT_CREEP_HORIZON
+
+    def __post_init__(self):
+        if isinstance(self.persistence, bool) or not isinstance(self.persistence, numbers.Real) \
+                or not (math.isfinite(self.persistence) and self.persistence >= 0):
+            raise ParameterError(f"persistence: expected a finite time >= 0 s, got "
+                                 f"{self.persistence!r}")
+        if isinstance(self.slip_tolerance, bool) or not isinstance(
+                self.slip_tolerance, numbers.Real) or not self.slip_tolerance > 0:
+            raise ParameterError(f"slip_tolerance: expected a length > 0 m (inf: off), got "
+                                 f"{self.slip_tolerance!r}")
+        _check_int("creep_horizon", self.creep_horizon, 0)
+
+
+def sparse_settings(scenario, *, persistence: float | None = None,
+                    slip_tolerance: float | None = None,
+                    creep_horizon: int | None = None) -> SparseSettings:
+    """The decision settings: the arguments given, else the scenario's ``[sparse]`` table
+    (``scenario.sparse``, when the scenario has one), else the defaults."""
+    table = getattr(scenario, "sparse", None)
+
+    def pick(value, name, default):
+        return value if value is not None else getattr(table, name, default)
+
+    return SparseSettings(
+        persistence=pick(persistence, "persistence", DEFAULT_PERSISTENCE),
+        slip_tolerance=pick(slip_tolerance, "slip_tolerance", DEFAULT_SLIP_TOLERANCE),
+        creep_horizon=pick(creep_horizon, "creep_horizon", DEFAULT_CREEP_HORIZON))
 
 
 #: default limit of the factor-of-safety criteria: MuJoCo keeps both factors of safety
@@ -240,6 +329,14 @@ class SparseResult:
             rises more than 2 mm): a failure only where the grip squeezes the object off its
             support without lifting it, (m, n) bool. The audit decides such samples by
             their own full rollout.
+        failure: why each pair fails (:class:`Failure` values), (m, n) int8; −1 where not
+            evaluated. ``failed`` reads it.
+        slip: measured slip of the object in its holding gripper relative to the nominal
+            run, largest over the steps measured [m], (m, n); 0 in SOLVE mode.
+        excursion: longest run of steps whose cost exceeds the threshold through the contact
+            term, starting within the horizon (followed past it up to ``persistence``)
+            [s], (m, n).
+        settings: the decision settings (persistence, slip tolerance, creep horizon).
     """
 
     steps: np.ndarray
@@ -268,6 +365,10 @@ class SparseResult:
     state: np.ndarray | None = None
     evaluated: np.ndarray | None = None
     unlifted_failure: np.ndarray | None = None
+    failure: np.ndarray | None = None
+    slip: np.ndarray | None = None
+    excursion: np.ndarray | None = None
+    settings: SparseSettings | None = None
 
     @property
     def threshold(self) -> float:
@@ -284,8 +385,12 @@ class SparseResult:
 
     @property
     def failed(self) -> np.ndarray:
-        """(m, n) bool: cost above the threshold, or diverged."""
-        return (self.cost > self.cost_params.threshold) | self.diverged
+        """(m, n) bool: the pair fails (``failure``: a motor overload, a contact excursion
+        that persists, a measured slip, a divergence); without ``failure``, cost above the
+        threshold or diverged."""
+        if self.failure is None:
+            return (self.cost > self.cost_params.threshold) | self.diverged
+        return self.failure > 0
 
     def worst_cost(self, rows: Any = None) -> np.ndarray:
         """(n,) each sample's highest cost over the moments (the ``rows`` of them, if given)
@@ -314,7 +419,8 @@ class SparseResult:
         """(m, n) bool: the samples that fail under ``criterion``.
 
         Args:
-            criterion: COST (cost > limit), CONTACT (grasp FOS < limit) or MOTOR
+            criterion: COST (at the scenario's threshold, the decision of ``failed``; at
+                another limit, cost > limit), CONTACT (grasp FOS < limit) or MOTOR
                 (motor FOS < limit).
             limit: the limit; default the scenario's threshold for COST and
                 :data:`FOS_LIMIT` for the factors of safety.
@@ -323,7 +429,9 @@ class SparseResult:
         if limit is not None and not (isinstance(limit, numbers.Real) and np.isfinite(limit)):
             raise ParameterError(f"limit: expected a finite number or None, got {limit!r}")
         if criterion is Criterion.COST:
-            bad = self.cost > (self.cost_params.threshold if limit is None else limit)
+            if limit is None or limit == self.cost_params.threshold:
+                return self.failed  # the decision (persistence, slip) at the threshold
+            bad = self.cost > limit
         elif criterion is Criterion.CONTACT:
             bad = self.fos_grasp < (FOS_LIMIT if limit is None else limit)
         else:
@@ -402,6 +510,81 @@ def _as_steps(steps: Any) -> np.ndarray:
 # --------------------------------------------------------------------------
 
 
+def grip_frames(model: mujoco.MjModel, scenario) -> tuple[np.ndarray, np.ndarray]:
+    """Each gripper's base body and the projector that drops its fingers' closing axes.
+
+    The base is the deepest body above every geom of the gripper; the projector (in the
+    base's frame) removes the span of the slide joints between those geoms and the base,
+    so that squeezing the object is not counted as slip.
+
+    Args:
+        model: the compiled model.
+        scenario: the scenario (its grippers' geoms).
+
+    Returns:
+        (anchors (G,) int body ids, projectors (G, 3, 3)).
+    """
+    data = mujoco.MjData(model)
+    mujoco.mj_kinematics(model, data)
+    anchors, projectors = [], []
+    for gripper in scenario.grippers:
+        chains = []
+        for name in gripper.geoms:
+            body = int(model.geom_bodyid[model.geom(name).id])
+            chain = [body]
+            while body != 0:
+                body = int(model.body_parentid[body])
+                chain.append(body)
+            chains.append(chain)
+        anchor = next(b for b in chains[0] if all(b in c for c in chains[1:]))
+        frame = data.xmat[anchor].reshape(3, 3)
+        axes = []
+        for chain in chains:
+            for body in chain[:chain.index(anchor)]:
+                first = int(model.body_jntadr[body])
+                for j in range(first, first + int(model.body_jntnum[body])):
+                    if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE:
+                        axes.append(frame.T @ data.xaxis[j])
+        projector = np.eye(3)
+        if axes:
+            u, sv, _ = np.linalg.svd(np.array(axes).T, full_matrices=False)
+            basis = u[:, sv > 1e-9 * sv.max()]
+            projector = projector - basis @ basis.T
+        anchors.append(anchor)
+        projectors.append(projector)
+    return np.array(anchors, dtype=np.int64), np.array(projectors).reshape(-1, 3, 3)
+
+
+def _object_in_grippers(xpos: np.ndarray, xmat: np.ndarray, body: int,
+                        anchors: np.ndarray) -> np.ndarray:
+    """The object's position in each anchor's frame (c, s, G, 3) [m] from body poses
+    (c, s, nbody, 3) and (c, s, nbody, 9)."""
+    delta = xpos[:, :, None, body] - xpos[:, :, anchors]  # (c, s, G, 3)
+    rot = xmat[:, :, anchors].reshape(delta.shape[:3] + (3, 3))
+    return np.einsum("csgji,csgj->csgi", rot, delta)
+
+
+class _Decision(NamedTuple):
+    failure: np.ndarray  # (nsim,) int8 Failure, with the nominal run's carried flags
+    stop: np.ndarray  # (nsim,) bool: fails with the flags of real lifts
+    stop_step: np.ndarray  # (nsim,) step of that failure within the evaluation, −1
+    excursion: np.ndarray  # (nsim,) longest contact excursion [s]
+    follow: np.ndarray  # (nsim,) bool: needs steps past the horizon
+
+
+class _Simulated(NamedTuple):
+    buf: np.ndarray  # (nsim, L, nsd) readings, zero beyond what was stepped
+    raised: np.ndarray
+    warned: np.ndarray
+    diverged: np.ndarray
+    failure: np.ndarray
+    stop: np.ndarray
+    stop_step: np.ndarray
+    slip: np.ndarray
+    excursion: np.ndarray
+    state: np.ndarray | None
+
+
 class SparseEvaluator:
     """Reusable sparse-evaluation engine for one recording and twin.
 
@@ -419,6 +602,12 @@ class SparseEvaluator:
         nthread: threads of the batch (0: all CPUs).
         chunk: most simulations per batch; more samples run in successive chunks.
         divergence: MARK diverged samples (cost +inf) or RAISE.
+        persistence: how long a contact-FOS excursion must last to count [s] (default:
+            the scenario's, else 0.02 s; 0 counts every excursion at once).
+        slip_tolerance: largest measured slip that passes [m] (default: the scenario's,
+            else 5 mm; ``inf`` turns the slip criterion off).
+        creep_horizon: steps over which slip is measured, when longer than the horizon
+            (default: the scenario's, else 0: off).
 
     Raises:
         ParameterError: options out of range, or a recording that does not fit the twin.
@@ -427,7 +616,9 @@ class SparseEvaluator:
     def __init__(self, recording, twin: Twin, *, horizon: int | None = None,
                  mode: SparseMode = SparseMode.STEP, nthread: int = 0,
                  chunk: int = DEFAULT_CHUNK,
-                 divergence: DivergencePolicy = DivergencePolicy.MARK):
+                 divergence: DivergencePolicy = DivergencePolicy.MARK,
+                 persistence: float | None = None, slip_tolerance: float | None = None,
+                 creep_horizon: int | None = None):
         self.twin = twin
         self.recording = recording
         sig = recording.signals
@@ -468,13 +659,29 @@ class SparseEvaluator:
         # carried steps of real lifts (the object rises): a failure only at carried steps
         # outside them (a squeeze that tips the object off its support) is marked
         self._lifted = twin.lifted(self._carried, self._states)
+        self.settings = sparse_settings(twin.scenario, persistence=persistence,
+                                        slip_tolerance=slip_tolerance,
+                                        creep_horizon=creep_horizon)
+        dt = float(model.opt.timestep)
+        #: steps a contact excursion must last to count
+        self.persistence_steps = max(1, int(round(self.settings.persistence / dt)))
+        self._anchors, self._projectors = grip_frames(model, twin.scenario)
+        held = sig.contact_gripper & ~sig.contact_support[:, None]
+        # slip counts where the nominal run holds the object with one gripper alone: an
+        # object moves in a gripper that lets go (the release), which is not slip
+        self._alone = held & (held.sum(axis=1, keepdims=True) == 1)
+        self._nominal_rel = np.full((self._states.shape[0], len(self._anchors), 3), np.nan)
+        self._kin_data: mujoco.MjData | None = None
         self._batches: collections.OrderedDict[int, mujoco.batch.Batch] = collections.OrderedDict()
         self._written: dict[int, np.ndarray] = {}
         self._mu: dict[int, np.ndarray | float] = {}
 
     def __repr__(self) -> str:
         return (f"SparseEvaluator(steps={self.n_steps}, horizon={self.horizon}, "
-                f"mode={self.mode.name}, nthread={self.nthread}, chunk={self.chunk})")
+                f"mode={self.mode.name}, nthread={self.nthread}, chunk={self.chunk}, "
+                f"persistence={self.settings.persistence}, "
+                f"slip_tolerance={self.settings.slip_tolerance}, "
+                f"creep_horizon={self.settings.creep_horizon})")
 
     def _component(self, spec: mujoco.mjtState) -> slice:
         """Slice of a state component inside an mjSTATE_INTEGRATION row."""
@@ -548,10 +755,9 @@ class SparseEvaluator:
             samples: parameter values (n, k) in the box's column order (mass [kg], ...).
             keep_raw: also keep the raw sensor readings and the final states.
             first_failure: stop each sample at its first failure, as the real run would:
-                the moments are evaluated in time order, one step at a time, and a sample
-                stops stepping at the first step whose cost exceeds the threshold (or that
-                diverges) and is not evaluated at the later moments (``evaluated`` says
-                which pairs were). An unlifted failure (see ``unlifted_failure``) does not
+                the moments are evaluated in time order, and a sample that fails at one
+                (:class:`Failure`; with the flags of real lifts) is not evaluated at the
+                later moments (``evaluated`` says which pairs were). An unlifted failure (see ``unlifted_failure``) does not
                 stop it. Which samples fail, and at which moment first, is the same as with
                 full evaluation; the values of a failing pair are those of the steps up to
                 the failure. For a verdict this skips most of the stepping wherever much of
@@ -580,6 +786,8 @@ class SparseEvaluator:
             "contact_gripper": np.empty((m, n, ngrip), bool),
             "stage": np.empty((m, n), np.int8), "worst_step": np.empty((m, n), np.int64),
             "diverged": np.empty((m, n), bool), "unlifted_failure": np.empty((m, n), bool),
+            "failure": np.empty((m, n), np.int8), "slip": np.empty((m, n)),
+            "excursion": np.empty((m, n)),
         }
         raw = np.empty((m, n, h, nsd)) if keep_raw else None
         final = np.empty((m, n, self._states.shape[1])) if keep_raw else None
@@ -588,37 +796,47 @@ class SparseEvaluator:
         # for repeated steps)
         order = np.argsort(steps, kind="stable") if first_failure else range(m)
         # chunks bound the batch and the per-moment buffer of raw readings
-        chunk = max(1, min(self.chunk, _MAX_BUFFER_BYTES // (8 * h * nsd)))
+        length = h + self._extension_steps()
+        chunk = max(1, min(self.chunk, _MAX_BUFFER_BYTES // (8 * length * nsd)))
         for start in range(0, n, chunk):
             sl = slice(start, min(n, start + chunk))
             batch, mu = self._batch(samples[sl])
-            buf = np.empty((batch.nsim, h, nsd))
             alive = np.ones(batch.nsim, bool)
             for i in order:
                 k = int(steps[i])
+                run = np.flatnonzero(alive) if first_failure else np.arange(batch.nsim)
                 if first_failure:
                     evaluated[i, sl] = alive
-                    raised, warned, at, fails = self._advance_until_failure(
-                        batch, k, buf, alive, mu)
-                else:
-                    raised, warned = self._advance(batch, k, buf)
-                    at = k + np.arange(h)[None, :]
-                diverged = raised | (warned > 0).any(axis=1) | ~np.isfinite(buf).all(axis=(1, 2))
-                self._score(buf, mu, diverged, out, i, sl, at=at)
-                if keep_raw:
-                    raw[i, sl] = buf
-                    final[i, sl] = batch.state
+                sim = self._simulate(batch, k, run, mu, keep_state=keep_raw)
+                buf, at = sim.buf[:, :h], k + np.arange(h)[None, :]
                 if first_failure:
-                    diverged &= alive
+                    # a sample stops at its first failing step (with the flags of real
+                    # lifts): its later rows repeat that one
+                    stop = np.where(sim.stop & (sim.stop_step < h), sim.stop_step, h - 1)
+                    last = np.minimum(np.arange(h)[None, :], stop[:, None])
+                    buf = np.take_along_axis(buf, last[:, :, None], axis=1)
+                    at = k + last
+                self._score(buf, mu, sim.diverged, out, i, sl, at=at)
+                out["failure"][i, sl] = sim.failure
+                out["slip"][i, sl] = sim.slip
+                out["excursion"][i, sl] = sim.excursion
+                out["unlifted_failure"][i, sl] = (sim.failure > 0) & ~sim.stop
+                if keep_raw:
+                    raw[i, sl] = sim.buf[:, :h]
+                    final[i, sl] = sim.state
+                diverged = sim.diverged
+                if first_failure:
+                    diverged = diverged & alive
                     self._unevaluated(out, i, sl, ~alive)
-                    alive &= ~fails
+                    alive &= ~sim.stop
                 if diverged.any():
-                    self._on_divergence(k, samples[sl], start, diverged, raised, warned)
+                    self._on_divergence(k, samples[sl], start, diverged, sim.raised,
+                                        sim.warned)
         return SparseResult(
             steps=steps, samples=samples, parameter_names=self.box.names,
             gripper_names=twin.scenario.gripper_names, actuator_names=twin.actuator_names,
             horizon=h, mode=self.mode, cost_params=twin.scenario.cost, sensordata=raw,
-            state=final, evaluated=evaluated, **out)
+            state=final, evaluated=evaluated, settings=self.settings, **out)
 
     @staticmethod
     def _unevaluated(out: dict[str, np.ndarray], i: int, sl: slice, skip: np.ndarray) -> None:
@@ -634,63 +852,6 @@ class SparseEvaluator:
             else:
                 part[skip] = np.nan
 
-    def _advance_until_failure(self, batch: mujoco.batch.Batch, k: int, buf: np.ndarray,
-                               alive: np.ndarray, mu: np.ndarray | float):
-        """As :meth:`_advance` for the ``alive`` simulations, one step at a time, each
-        stopping at its first failing step (its later rows of buf repeat the failing one).
-
-        Returns raised and warned as :meth:`_advance`, the recording step each row of buf
-        stands for (nsim, h) (the failing step repeated after a stop), and which simulations
-        failed (nsim,) bool.
-        """
-        h, nsim = self.horizon, batch.nsim
-        threshold = self.twin.scenario.cost.threshold
-        mu = np.broadcast_to(np.asarray(mu, dtype=np.float64), (nsim,))
-        last = np.full(nsim, h - 1)  # the last step each simulation ran
-        raised = np.zeros(nsim, dtype=bool)
-        fails = np.zeros(nsim, dtype=bool)
-        buf[~alive] = 0.0
-        run = np.flatnonzero(alive)
-        batch.warning[...] = 0
-        if run.size:
-            batch.state[run] = self._start_row(k)
-        if run.size and self.mode is SparseMode.SOLVE:
-            # one forward solve: the whole horizon (h = 1) in one call
-            try:
-                batch.forward(ids=run)
-            except mujoco.batch.SimulationError as exc:
-                raised[exc.ids] = True
-            part = batch.bind("sensordata")[run]
-            buf[run, 0] = part
-            fails[run] = raised[run] | ~np.isfinite(part).all(axis=1) \
-                | (self._step_cost(part, mu[run], k) > threshold) \
-                | (batch.warning[run, :, 1] > 0).any(axis=1)
-        elif run.size:
-            one = np.empty((nsim, 1, buf.shape[2]))
-            for j in range(h):
-                part = one[:run.size]
-                try:
-                    batch.rollout(1, control=self._controls[k + j:k + j + 1][None],
-                                  control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
-                                  record=("sensordata",), ids=run, out={"sensordata": part})
-                except mujoco.batch.SimulationError as exc:
-                    raised[exc.ids] = True
-                buf[run, j] = part[:, 0]
-                warned = (batch.warning[run, :, 1] > 0).any(axis=1)
-                bad = raised[run] | warned | ~np.isfinite(part[:, 0]).all(axis=1) \
-                    | (self._step_cost(part[:, 0], mu[run], k + j) > threshold)
-                fails[run[bad]] = True
-                last[run[bad]] = j
-                run = run[~bad]
-                if run.size == 0:
-                    break
-            stopped = np.flatnonzero(alive & fails)
-            for j in range(1, h):  # repeat each stopped simulation's failing row
-                later = stopped[last[stopped] < j]
-                buf[later, j] = buf[later, j - 1]
-        at = k + np.minimum(np.arange(h)[None, :], last[:, None])
-        return raised, batch.warning[:, :, 1].copy(), at, fails
-
     def _start_row(self, k: int) -> np.ndarray:
         """The state row that starts step k: the recorded state holds the previous step's
         controls, step k applies its own."""
@@ -698,37 +859,161 @@ class SparseEvaluator:
         row[self._ctrl] = self._controls[k]
         return row
 
-    def _step_cost(self, readings: np.ndarray, mu: np.ndarray, k: int) -> np.ndarray:
-        """Cost of one step's readings (n, nsd) at recording step k, with the carried flags
-        of real lifts (an unlifted failure does not stop a sample: its own rollout decides
-        it, and its later moments still count)."""
-        with np.errstate(over="ignore", invalid="ignore"):
-            return self.twin.signals(readings, mu=mu, carried=self._lifted[k]).cost
+    def _extension_steps(self) -> int:
+        """Most steps past the horizon one evaluation may take: to follow a contact
+        excursion until it has lasted ``persistence``, and to measure slip over the creep
+        horizon."""
+        if self.mode is SparseMode.SOLVE:
+            return 0
+        return max(self.persistence_steps - 1, self.settings.creep_horizon - self.horizon, 0)
 
-    def _advance(self, batch: mujoco.batch.Batch, k: int, buf: np.ndarray
-                 ) -> tuple[np.ndarray, np.ndarray]:
-        """Restore step k's state in every simulation, advance, fill buf (nsim, h, nsd).
-
-        Returns the simulations MuJoCo raised in (nsim,) bool and the warning counts
-        (nsim, nwarning).
-        """
-        h = self.horizon
-        batch.state[:] = self._start_row(k)
-        batch.warning[...] = 0
-        raised = np.zeros(batch.nsim, dtype=bool)
+    def _roll(self, batch: mujoco.batch.Batch, k: int, nstep: int, ids: np.ndarray,
+              raised: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Step the simulations ``ids`` ``nstep`` steps from recording step k with the
+        recorded controls; (sensordata (c, nstep, nsd), slip (c, nstep) [m])."""
+        c, model = ids.size, self.twin.model
+        out = {"sensordata": np.zeros((c, nstep, model.nsensordata)),
+               "xpos": np.zeros((c, nstep, model.nbody, 3)),
+               "xmat": np.zeros((c, nstep, model.nbody, 9))}
         try:
-            if self.mode is SparseMode.SOLVE:
-                batch.forward()
-                buf[:, 0] = batch.bind("sensordata")
-            elif h == 1:
-                batch.rollout(1, record=("sensordata",), out={"sensordata": buf})
-            else:
-                batch.rollout(h, control=self._controls[k:k + h][None],
-                              control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
-                              record=("sensordata",), out={"sensordata": buf})
+            batch.rollout(nstep, control=self._controls[k:k + nstep][None],
+                          control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
+                          record=("sensordata", "xpos", "xmat"), ids=ids, out=out)
         except mujoco.batch.SimulationError as exc:
             raised[exc.ids] = True
-        return raised, batch.warning[:, :, 1].copy()
+        return out["sensordata"], self._slip(out["xpos"], out["xmat"], k)
+
+    def _simulate(self, batch: mujoco.batch.Batch, k: int, run: np.ndarray,
+                  mu: np.ndarray | float, *, keep_state: bool) -> _Simulated:
+        """Restore step k in the simulations ``run``, step the horizon, follow the ones an
+        open contact excursion or the creep horizon asks for, and decide each."""
+        h, nsim = self.horizon, batch.nsim
+        extra = min(self._extension_steps(), self.n_steps - k - h)
+        nsd = self.twin.nsensordata
+        buf = np.zeros((nsim, h + extra, nsd))
+        slip = np.zeros((nsim, h + extra))
+        length = np.zeros(nsim, np.int64)
+        raised = np.zeros(nsim, dtype=bool)
+        batch.warning[...] = 0
+        state = None
+        mu = np.broadcast_to(np.asarray(mu, dtype=np.float64), (nsim,))
+        if run.size:
+            batch.state[run] = self._start_row(k)
+            length[run] = h
+            if self.mode is SparseMode.SOLVE:
+                try:
+                    batch.forward(ids=run)
+                except mujoco.batch.SimulationError as exc:
+                    raised[exc.ids] = True
+                buf[run, 0] = batch.bind("sensordata")[run]
+            else:
+                buf[run, :h], slip[run, :h] = self._roll(batch, k, h, run, raised)
+            if keep_state:
+                state = batch.state.copy()
+        warned = batch.warning[:, :, 1].copy()
+        decided = self._decide(buf, slip, length, mu, k, final=extra == 0)
+        follow = run[decided.follow[run] & ~raised[run] & ~(warned[run] > 0).any(axis=1)]
+        if follow.size and extra:
+            buf[follow, h:], slip[follow, h:] = self._roll(batch, k + h, extra, follow, raised)
+            length[follow] = h + extra
+            warned = batch.warning[:, :, 1].copy()
+            decided = self._decide(buf, slip, length, mu, k, final=True)
+        finite = np.array([np.isfinite(buf[i, :max(1, length[i])]).all() for i in range(nsim)])
+        diverged = raised | (warned > 0).any(axis=1) | ~finite
+        diverged[length == 0] = False
+        failure = np.where(diverged, Failure.DIVERGED, decided.failure).astype(np.int8)
+        stop = decided.stop | diverged
+        stop_step = np.where(diverged, 0, decided.stop_step)
+        valid = np.arange(h + extra)[None, :] < length[:, None]
+        return _Simulated(buf=buf, raised=raised, warned=warned, diverged=diverged,
+                          failure=failure, stop=stop, stop_step=stop_step,
+                          slip=np.where(valid, slip, 0.0).max(axis=1, initial=0.0),
+                          excursion=decided.excursion, state=state)
+
+    def _decide(self, buf: np.ndarray, slip: np.ndarray, length: np.ndarray, mu: np.ndarray,
+                k: int, *, final: bool) -> _Decision:
+        """Decide every simulation from its readings (nsim, L, nsd) of steps k .. k+L−1, of
+        which the first ``length`` were taken; ``final``: no more steps can be taken."""
+        nsim, total, _ = buf.shape
+        h, p = self.horizon, self.persistence_steps
+        at = k + np.arange(total)
+        with np.errstate(over="ignore", invalid="ignore"):
+            sig = self.twin.signals(buf, mu=mu[:, None], carried=self._carried[at][None])
+            cp = self.twin.scenario.cost
+            term_m = cp.B * np.exp(-cp.beta * (sig.fos_motor - 1.0))
+            term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
+            # the flags of real lifts only: lifted steps are a subset of the carried ones
+            lifted_c = np.where(self._lifted[at][None], term_c, 0.0)
+        valid = np.arange(total)[None, :] < length[:, None]
+        in_horizon = np.arange(total)[None, :] < h
+        slipped = valid & (slip > self.settings.slip_tolerance)
+        out = [self._first_failure(term_c, term_m, slipped, valid, in_horizon, length, p,
+                                   final) for term_c in (term_c, lifted_c)]
+        (failure, _, excursion, follow_c), (stop_kind, stop_step, _, follow_l) = out
+        follow = follow_c | follow_l
+        if self.settings.creep_horizon > h:
+            follow |= (failure == Failure.PASS) & (length > 0)
+        return _Decision(failure=failure, stop=stop_kind > 0, stop_step=stop_step,
+                         excursion=excursion * self.twin.model.opt.timestep, follow=follow)
+
+    def _first_failure(self, term_c: np.ndarray, term_m: np.ndarray, slipped: np.ndarray,
+                       valid: np.ndarray, in_horizon: np.ndarray, length: np.ndarray, p: int,
+                       final: bool):
+        """(failure kind, its step, longest excursion [steps], open excursion) (nsim,) of
+        per-step cost terms (nsim, L)."""
+        nsim, total = term_c.shape
+        threshold = self.twin.scenario.cost.threshold
+        over = valid & (term_c + term_m > threshold)
+        motor = over & (term_m > term_c) & in_horizon
+        excursion = over & ~(term_m > term_c)
+        run = np.zeros((nsim, total), np.int64)
+        for j in range(total):
+            run[:, j] = (run[:, j - 1] + 1 if j else 1) * excursion[:, j]
+        starts_in = (np.arange(total)[None, :] - run + 1) < self.horizon
+        counted = excursion & starts_in
+        contact = counted & (run >= p)
+        rows = np.arange(nsim)
+        last = np.maximum(length - 1, 0)
+        open_end = counted[rows, last] & (run[rows, last] < p) & (length > 0)
+        if final:
+            # no more steps to follow it: an excursion still open counts
+            contact[rows[open_end], last[open_end]] = True
+        kinds = np.select([motor, contact, slipped],
+                          [Failure.MOTOR, Failure.CONTACT, Failure.SLIP], Failure.PASS)
+        failing = kinds > 0
+        step = np.where(failing.any(axis=1), np.argmax(failing, axis=1), -1)
+        kind = np.where(step >= 0, kinds[rows, np.maximum(step, 0)], Failure.PASS)
+        longest = np.where(counted, run, 0).max(axis=1, initial=0)
+        follow = open_end & (step < 0) & (not final)
+        return kind.astype(np.int8), step, longest, follow
+
+    def _slip(self, xpos: np.ndarray, xmat: np.ndarray, k: int) -> np.ndarray:
+        """Slip (c, s) [m] of recorded poses (c, s, nbody, 3 | 9) of steps k .. k+s−1."""
+        c, s = xpos.shape[:2]
+        if not self._anchors.size:
+            return np.zeros((c, s))
+        rel = _object_in_grippers(xpos, xmat, self.twin.object_body_id, self._anchors)
+        nominal = self._nominal_positions(k, s)  # (s, G, 3)
+        diff = np.einsum("gij,csgj->csgi", self._projectors, rel - nominal[None])
+        disp = np.linalg.norm(diff, axis=-1)
+        return np.where(self._alone[k:k + s][None], disp, 0.0).max(axis=-1)
+
+    def _nominal_positions(self, k: int, s: int) -> np.ndarray:
+        """The nominal run's object position in each gripper's frame (s, G, 3) [m] at the
+        start of steps k .. k+s−1 (kinematics of the recorded states, cached)."""
+        part = self._nominal_rel[k:k + s]
+        missing = np.flatnonzero(np.isnan(part[:, 0, 0]))
+        if missing.size:
+            model = self.twin.model
+            if self._kin_data is None:
+                self._kin_data = mujoco.MjData(model)
+            data = self._kin_data
+            for j in missing:
+                mujoco.mj_setState(model, data, self._states[k + j], STATE_SPEC)
+                mujoco.mj_kinematics(model, data)
+                part[j] = _object_in_grippers(data.xpos[None, None], data.xmat[None, None],
+                                              self.twin.object_body_id, self._anchors)[0, 0]
+        return part
 
     def _score(self, buf: np.ndarray, mu: np.ndarray | float, diverged: np.ndarray,
                out: dict[str, np.ndarray], i: int, sl: slice, *, at: np.ndarray) -> None:
@@ -741,8 +1026,9 @@ class SparseEvaluator:
         """
         twin, cp = self.twin, self.twin.scenario.cost
         mu = np.asarray(mu, dtype=np.float64)
-        sig = twin.signals(buf, mu=mu[:, None] if mu.ndim == 1 else mu,
-                           carried=self._carried[at])  # leading (nsim, h)
+        with np.errstate(over="ignore", invalid="ignore"):
+            sig = twin.signals(buf, mu=mu[:, None] if mu.ndim == 1 else mu,
+                               carried=self._carried[at])  # leading (nsim, h)
         nsim = buf.shape[0]
         rows = np.arange(nsim)
         if self.horizon == 1:
@@ -772,7 +1058,6 @@ class SparseEvaluator:
             "contact_support": sig.contact_support[rows, worst],
             "contact_gripper": sig.contact_gripper[rows, worst],
             "stage": sig.stage[rows, worst], "worst_step": worst, "diverged": diverged,
-            "unlifted_failure": self._unlifted(buf, mu, at, sig.cost[rows, worst], diverged),
         }
         for name, value in values.items():
             out[name][i, sl] = value
@@ -780,20 +1065,6 @@ class SparseEvaluator:
             for name in ("fos_contact", "fos_grasp", "fos_motor", "cost_contact", "cost_motor"):
                 out[name][i, sl][diverged] = np.nan
             out["cost"][i, sl][diverged] = np.inf
-
-    def _unlifted(self, buf: np.ndarray, mu: np.ndarray, at: np.ndarray, cost: np.ndarray,
-                  diverged: np.ndarray) -> np.ndarray:
-        """(nsim,) bool: failing, but not with the carried flags of real lifts only."""
-        out = np.zeros(buf.shape[0], dtype=bool)
-        fail = np.flatnonzero((cost > self.twin.scenario.cost.threshold) & ~diverged)
-        at_f = at if at.shape[0] == 1 else at[fail]
-        if fail.size == 0 or np.array_equal(self._carried[at_f], self._lifted[at_f]):
-            return out
-        mu_f = mu[fail, None] if mu.ndim == 1 else mu
-        with np.errstate(over="ignore", invalid="ignore"):
-            alt = self.twin.signals(buf[fail], mu=mu_f, carried=self._lifted[at_f]).cost
-        out[fail] = alt.max(axis=1) <= self.twin.scenario.cost.threshold
-        return out
 
     def _on_divergence(self, k: int, samples: np.ndarray, offset: int, diverged: np.ndarray,
                        raised: np.ndarray, warned: np.ndarray) -> None:

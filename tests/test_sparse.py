@@ -514,7 +514,10 @@ def test_first_failure_stops_each_sample_where_the_full_evaluation_first_fails(
     # most the full horizon's
     stopped = ff.evaluated & ff.failed
     np.testing.assert_array_equal(stopped, ff.evaluated & full.failed)
-    assert (ff.cost[stopped] > scenario.cost.threshold).all()
+    np.testing.assert_array_equal(ff.failure[stopped], full.failure[stopped])
+    by_cost = stopped & np.isin(ff.failure, [sparse.Failure.MOTOR, sparse.Failure.CONTACT])
+    assert by_cost.any()
+    assert (ff.cost[by_cost] > scenario.cost.threshold).all()
     assert (ff.cost[stopped] <= full.cost[stopped]).all()
     # the rest was not evaluated
     skipped = ~ff.evaluated
@@ -551,7 +554,8 @@ def test_unlifted_failures_are_marked_and_do_not_stop_a_sample(twin, scenario):
     from critmoment import analysis, suite
 
     rec = rollout.rollout(suite.make("fast", seed=0, twin=twin), twin=twin)
-    engine = SparseEvaluator(rec, twin)
+    # every excursion counts at once: the squeeze's short excursions fail too
+    engine = SparseEvaluator(rec, twin, persistence=0.0)
     squeeze = np.flatnonzero(engine._carried & ~engine._lifted)
     assert squeeze.size and not (engine._lifted & ~engine._carried).any()
     _, steps = analysis.audit_moments(rec, twin, engine, 8)
