@@ -1,24 +1,87 @@
-"""Figures, JSON, HTML and terminal summaries.
+"""Figures, JSON, HTML and terminal summaries, and the output folders they go to.
 
 Figures use matplotlib's object-oriented API (no pyplot state), so they render
-under any backend and in threads.
+under any backend and in threads. Text that comes from the user (file names,
+parameter names) is escaped for matplotlib's mathtext, so a ``$`` in a file
+name is drawn as a dollar sign.
+
+Outputs are written whole or not at all (:class:`StagedOutput`): everything goes
+into a temporary folder beside the destination, which is then swapped into place
+under a lock on the parent folder, so a failed or interrupted run leaves the
+previous output intact, a folder holds the files of one run, and concurrent runs
+cannot interleave.
 """
 
 from __future__ import annotations
 
 import base64
+import contextlib
+import enum
+import errno
 import html
 import io
 import json
-from collections.abc import Sequence
+import os
+import shutil
+import tempfile
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 
 import numpy as np
 from matplotlib.figure import Figure
 
+from critmoment.exceptions import OutputError, ParameterError
 from critmoment.moments import Moment, plot_moments
 
-__all__ = ["plot_recording", "moment_json", "figure_png"]
+__all__ = ["plot_recording", "moment_json", "figure_png", "Figures", "write_report",
+           "StagedOutput", "check_output_path", "MARKER"]
+
+#: Name of the file that marks a folder as one critmoment output.
+MARKER = ".critmoment-output.json"
+
+# Files earlier critmoment versions wrote without a marker.
+_KNOWN_OUTPUTS = frozenset({"report.json", "report.html", "recording.npz", "rollout.json",
+                            "moments.json", "validation.json"})
+
+#: Resolution of the report's PNG figures [dots per inch].
+DPI = 90
+
+
+def _lighten(fig: Figure) -> Figure:
+    """Fewer ticks: most of a figure's drawing time is spent making tick objects."""
+    from matplotlib.ticker import FixedLocator, MaxNLocator
+
+    for ax in fig.axes:
+        for axis, bins in ((ax.xaxis, 5), (ax.yaxis, 4)):
+            if not isinstance(axis.get_major_locator(), FixedLocator):
+                axis.set_major_locator(MaxNLocator(nbins=bins))
+    return fig
+
+
+def _tex_safe(text) -> str:
+    """``text`` with ``$`` escaped, so matplotlib never parses it as mathtext."""
+    return str(text).replace("$", r"\$")
+
+
+class Figures(enum.Enum):
+    """Which figures :func:`write_report` draws."""
+
+    NONE = "none"
+    """No figures: report.json and report.html only (fastest)."""
+    SUMMARY = "summary"
+    """The signals, one overview of every moment's curves, and the cost map (default)."""
+    ALL = "all"
+    """The summary figures plus one figure of FOS and cost curves per moment."""
+
+    @classmethod
+    def parse(cls, value) -> Figures:
+        if isinstance(value, cls):
+            return value
+        for member in cls:
+            if str(value).lower() in (member.value, member.name.lower()):
+                return member
+        raise ParameterError(f"figures: expected one of {[m.value for m in cls]}, "
+                             f"got {value!r}")
 
 
 def moment_json(m: Moment) -> dict:
@@ -40,7 +103,9 @@ def plot_recording(recording, *, moments: Sequence[Moment] = (), path: str | Pat
         moments: moments to mark as labelled vertical lines.
         path: save the figure there when given (format from the extension).
     """
-    fig = Figure(figsize=(10, 9), layout="constrained")
+    # fixed margins: a constrained layout draws the figure twice
+    fig = Figure(figsize=(10, 9))
+    fig.subplots_adjust(left=0.08, right=0.98, top=0.96, bottom=0.06, hspace=0.12)
     axes = fig.subplots(4, 1, sharex=True, height_ratios=[1, 1, 1, 0.6])
     plot_moments(recording, list(moments), ax=list(axes[:3]))
     t = recording.time
@@ -52,9 +117,10 @@ def plot_recording(recording, *, moments: Sequence[Moment] = (), path: str | Pat
     for k in changes:
         for ax in axes:
             ax.axvline(t[k], color="tab:purple", lw=0.5, alpha=0.4, ls=":")
-    axes[0].set_title(f"Frequent rollout: {recording.source or recording.scenario_name}")
+    axes[0].set_title(_tex_safe(
+        f"Frequent rollout: {recording.source or recording.scenario_name}"))
     if path is not None:
-        fig.savefig(path, dpi=110)
+        fig.savefig(path, dpi=DPI)
     return fig
 
 
@@ -171,7 +237,7 @@ def plot_curves(report, step: int) -> Figure:
         ax.plot(x, np.clip(res.fos_motor[0], 0, 10), label="FOS motor")
         ax.axhline(1.0, color="k", lw=0.6, ls=":")
         ax.set_ylabel("factor of safety (clipped at 10)")
-        ax.set_title(f"step {step}: FOS vs {p.name}")
+        ax.set_title(_tex_safe(f"step {step}: FOS vs {p.name}"))
         ax.legend(fontsize="small")
         ax = axes[1, j]
         ax.plot(x, res.cost[0], color="k", label="cost")
@@ -179,9 +245,41 @@ def plot_curves(report, step: int) -> Figure:
         ax.plot(x, res.cost_motor[0], ls="--", label="motor term")
         ax.axhline(thr, color="tab:red", lw=0.8, label=f"threshold {thr:g}")
         ax.axvline(p.nominal, color="tab:green", lw=0.8, ls=":", label="nominal")
-        ax.set_xlabel(f"{p.name} [{p.unit}]" if p.unit else p.name)
+        ax.set_xlabel(_tex_safe(f"{p.name} [{p.unit}]" if p.unit else p.name))
         ax.set_ylabel("cost")
         ax.legend(fontsize="small")
+    return fig
+
+
+def plot_moment_overview(report) -> Figure | None:
+    """Every audited moment's curves in one figure: the lower of the two FOS (top) and
+    the cost (bottom) against each parameter, others nominal, one colour per moment."""
+    if not report.moments:
+        return None
+    box = report.scenario.box
+    fig = Figure(figsize=(5.2 * box.ndim, 6.4))
+    fig.subplots_adjust(left=0.09, right=0.98, top=0.95, bottom=0.08, hspace=0.25,
+                        wspace=0.26)
+    axes = fig.subplots(2, box.ndim, squeeze=False)
+    thr = report.scenario.cost.threshold
+    colours = [f"C{i % 10}" for i in range(len(report.moments))]
+    for j, p in enumerate(box.parameters):
+        top, bottom = axes[0, j], axes[1, j]
+        for mr, colour in zip(report.moments, colours, strict=True):
+            step = int(mr.moment.step)
+            res = report.curves[step][p.name]
+            x = res.samples[:, j]
+            fos = np.minimum(res.fos_grasp[0], res.fos_motor[0])
+            label = _tex_safe(f"step {step} {mr.moment.label.value}")
+            top.plot(x, np.clip(fos, 0, 10), color=colour, lw=1.0, label=label)
+            bottom.plot(x, res.cost[0], color=colour, lw=1.0)
+        top.axhline(1.0, color="k", lw=0.6, ls=":")
+        top.set_title(_tex_safe(f"lower FOS vs {p.name} (clipped at 10)"))
+        bottom.axhline(thr, color="tab:red", lw=0.8)
+        bottom.axvline(p.nominal, color="tab:green", lw=0.8, ls=":")
+        bottom.set_title(_tex_safe(f"cost vs {p.name} (red: threshold {thr:g})"))
+        bottom.set_xlabel(_tex_safe(f"{p.name} [{p.unit}]" if p.unit else p.name))
+    axes[0, 0].legend(fontsize="x-small", ncol=2)
     return fig
 
 
@@ -190,7 +288,8 @@ def plot_cost_map(report) -> Figure | None:
     if report.cost_map is None:
         return None
     n0, a0, n1, a1, grid = report.cost_map
-    fig = Figure(figsize=(6.4, 5.0), layout="constrained")
+    fig = Figure(figsize=(6.4, 5.0))
+    fig.subplots_adjust(left=0.12, right=0.98, top=0.93, bottom=0.1)
     ax = fig.subplots()
     mesh = ax.pcolormesh(a0, a1, grid.T, shading="nearest", cmap="RdYlGn_r",
                          vmin=0, vmax=max(1.5, float(np.nanmax(grid))))
@@ -200,8 +299,8 @@ def plot_cost_map(report) -> Figure | None:
     fig.colorbar(mesh, ax=ax, label="max cost over the moments (nearest Sobol sample)")
     box = report.scenario.box
     ax.plot(box.nominal[0], box.nominal[1], "w*", ms=12, mec="k", label="nominal")
-    ax.set_xlabel(n0)
-    ax.set_ylabel(n1)
+    ax.set_xlabel(_tex_safe(n0))
+    ax.set_ylabel(_tex_safe(n1))
     ax.set_title(f"cost map (black line: cost = {thr:g})")
     ax.legend(loc="upper right", fontsize="small")
     return fig
@@ -232,30 +331,283 @@ def summary_text(report) -> str:
     return "\n".join(lines)
 
 
-def write_report(report, out: str | Path) -> dict[str, Path]:
-    """Write report.json, the figures and a self-contained report.html into ``out``."""
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    paths: dict[str, Path] = {}
-    doc = report.to_json()
-    paths["json"] = out / "report.json"
-    paths["json"].write_text(json.dumps(doc, indent=2, allow_nan=False))
-    figs = {"signals": plot_recording(report.recording,
-                                      moments=[mr.moment for mr in report.moments])}
-    for mr in report.moments:
-        figs[f"moment_{mr.moment.step}"] = plot_curves(report, int(mr.moment.step))
+def report_figures(report, figures: Figures | str = Figures.SUMMARY) -> dict[str, Figure]:
+    """The report's figures by name (``signals``, ``moments``, ``cost_map``,
+    ``moment_<step>``), as :class:`Figures` selects them."""
+    which = Figures.parse(figures)
+    figs: dict[str, Figure] = {}
+    if which is Figures.NONE:
+        return figs
+    figs["signals"] = plot_recording(report.recording,
+                                     moments=[mr.moment for mr in report.moments])
+    overview = plot_moment_overview(report)
+    if overview is not None:
+        figs["moments"] = overview
     cmap = plot_cost_map(report)
     if cmap is not None:
         figs["cost_map"] = cmap
+    if which is Figures.ALL:
+        for mr in report.moments:
+            figs[f"moment_{mr.moment.step}"] = plot_curves(report, int(mr.moment.step))
+    return figs
+
+
+def write_report(report, out: str | Path, *, figures: Figures | str = Figures.SUMMARY
+                 ) -> dict[str, Path]:
+    """Writes report.json, the figures and a self-contained report.html into ``out``.
+
+    The folder is written whole or not at all (:class:`StagedOutput`): a failure leaves
+    a previous report in ``out`` untouched, and ``out`` ends up holding this report's
+    files only.
+
+    Args:
+        report: an :class:`~critmoment.analysis.AuditReport`.
+        out: the folder; created, or replaced if it holds an earlier critmoment output.
+        figures: which figures to draw (:class:`Figures`; default ``SUMMARY``).
+
+    Returns:
+        The written paths by name (``json``, ``html`` and one per figure).
+
+    Raises:
+        OutputError: ``out`` is a file, lies under a file, is not writable, holds files
+            that are not a critmoment output, or the disk fills.
+    """
+    which = Figures.parse(figures)
+    with StagedOutput(out, command="analyze") as stage:
+        names = write_report_files(report, stage.path, figures=which)
+    return {k: stage.destination / v.name for k, v in names.items()}
+
+
+def write_report_files(report, folder: Path, *, figures: Figures = Figures.SUMMARY
+                       ) -> dict[str, Path]:
+    """Writes the report's files into an existing ``folder`` (no staging)."""
+    folder = Path(folder)
+    paths: dict[str, Path] = {}
+    doc = report.to_json()
+    paths["json"] = folder / "report.json"
+    paths["json"].write_text(json.dumps(doc, indent=2, allow_nan=False))
     images = {}
-    for name, fig in figs.items():
-        path = out / f"{name}.png"
-        fig.savefig(path, dpi=100)
+    for name, fig in report_figures(report, figures).items():
+        _lighten(fig)
+        buf = io.BytesIO()
+        fig.savefig(buf, format="png", dpi=DPI)
+        data = buf.getvalue()
+        path = folder / f"{name}.png"
+        path.write_bytes(data)
         paths[name] = path
-        images[name] = base64.b64encode(path.read_bytes()).decode("ascii")
-    paths["html"] = out / "report.html"
-    paths["html"].write_text(_html(report, doc, images))
+        images[name] = base64.b64encode(data).decode("ascii")
+    paths["html"] = folder / "report.html"
+    paths["html"].write_text(_html(report, doc, images), encoding="utf-8")
     return paths
+
+
+# -- output folders ----------------------------------------------------------------
+def _nearest_existing(path: Path) -> Path:
+    """The deepest existing ancestor of ``path`` (``path`` itself excluded)."""
+    for parent in path.parents:
+        try:
+            if parent.exists() or parent.is_symlink():
+                return parent
+        except OSError:
+            continue
+    return Path(path.anchor or ".")
+
+
+def _foreign_entries(folder: Path) -> list[str]:
+    """Entries of ``folder`` that no critmoment command writes."""
+    names = [e.name for e in os.scandir(folder)]
+    if MARKER in names:
+        return []
+    return sorted(n for n in names if n not in _KNOWN_OUTPUTS and not n.endswith(".png"))
+
+
+def check_output_path(path: str | os.PathLike, *, kind: str = "folder",
+                      option: str = "--out") -> Path:
+    """Validates an output path before any work starts.
+
+    Args:
+        path: the destination folder (``kind="folder"``) or file (``kind="file"``).
+        kind: ``"folder"`` or ``"file"``.
+        option: how the path was given, for messages.
+
+    Returns:
+        The destination as an absolute path (symlinks resolved).
+
+    Raises:
+        OutputError: the destination is of the other kind, lies under a file, cannot be
+            created for lack of permission or because the file system is read-only, or
+            (a folder) holds files that are not a critmoment output.
+    """
+    raw = os.fspath(path)
+    if not raw:
+        raise OutputError(f"{option}: expected a {kind} path, got an empty string")
+    try:
+        dest = Path(os.path.realpath(raw))
+        exists = dest.exists()
+        is_dir = dest.is_dir()
+    except OSError as exc:
+        raise OutputError(f"{option} {_short(raw)!r}: cannot be used as a {kind}: "
+                          f"{exc.strerror or exc}") from None
+    if exists and kind == "folder" and not is_dir:
+        raise OutputError(f"{option} {_short(raw)!r}: expected a folder (or a path to create "
+                          f"one), got an existing file")
+    if exists and kind == "file" and is_dir:
+        raise OutputError(f"{option} {_short(raw)!r}: expected a file path, got an existing "
+                          f"folder")
+    anchor = _nearest_existing(dest)
+    if not anchor.is_dir():
+        raise OutputError(f"{option} {_short(raw)!r}: expected a path under a folder, but "
+                          f"{_short(anchor)!r} is a file")
+    if exists and kind == "folder":
+        try:
+            foreign = _foreign_entries(dest)
+        except OSError as exc:
+            raise OutputError(f"{option} {_short(raw)!r}: cannot list the folder: "
+                              f"{exc.strerror or exc}") from None
+        if foreign:
+            shown = ", ".join(foreign[:5]) + (" ..." if len(foreign) > 5 else "")
+            raise OutputError(
+                f"{option} {_short(raw)!r}: expected an empty folder or one holding an "
+                f"earlier critmoment output (it is replaced whole), got a folder with other "
+                f"files ({shown}); choose a new folder")
+    return dest
+
+
+def _short(path, limit: int = 120) -> str:
+    text = str(path)
+    return text if len(text) <= limit else f"{text[:60]}...{text[-40:]}"
+
+
+@contextlib.contextmanager
+def _locked(folder: Path) -> Iterator[None]:
+    """An exclusive advisory lock on ``folder`` (POSIX flock; a no-op elsewhere)."""
+    try:
+        import fcntl
+    except ImportError:  # pragma: no cover - Windows
+        yield
+        return
+    fd = os.open(folder, os.O_RDONLY)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        yield
+    finally:
+        os.close(fd)  # closing releases the lock
+
+
+def _exchange(a: Path, b: Path) -> bool:
+    """Atomically swaps two paths (Linux renameat2 RENAME_EXCHANGE); False if unsupported."""
+    import ctypes
+    import ctypes.util
+    import sys
+
+    if not sys.platform.startswith("linux"):
+        return False
+    try:
+        libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6", use_errno=True)
+        renameat2 = libc.renameat2
+    except (OSError, AttributeError):
+        return False
+    at_fdcwd, rename_exchange = -100, 2
+    rc = renameat2(at_fdcwd, os.fsencode(a), at_fdcwd, os.fsencode(b), rename_exchange)
+    if rc == 0:
+        return True
+    err = ctypes.get_errno()
+    if err in (errno.ENOSYS, errno.EINVAL, errno.ENOTSUP, errno.EOPNOTSUPP):
+        return False
+    raise OSError(err, os.strerror(err), str(b))
+
+
+class StagedOutput:
+    """Builds an output folder (or file) in a temporary place and moves it into position.
+
+    Usage::
+
+        with StagedOutput("out", command="analyze") as stage:
+            (stage.path / "report.json").write_text(...)
+
+    Entering validates the destination (:func:`check_output_path`) and creates the
+    temporary folder beside it, so an unusable destination fails before any work. On a
+    normal exit the temporary folder replaces the destination: atomically where the OS
+    can swap two paths (Linux), else by two renames, under an exclusive lock on the
+    parent folder either way. On an exception it is removed and the destination is left
+    as it was.
+
+    Attributes:
+        destination: the final path (absolute).
+        path: the temporary folder (or, for ``kind="file"``, the temporary file) to
+            write into.
+    """
+
+    def __init__(self, destination: str | os.PathLike, *, command: str, kind: str = "folder",
+                 option: str = "--out"):
+        if kind not in ("folder", "file"):
+            raise ParameterError(f"kind: expected 'folder' or 'file', got {kind!r}")
+        self.option, self.kind, self.command = option, kind, command
+        self.destination = check_output_path(destination, kind=kind, option=option)
+        self._raw = os.fspath(destination)
+        self._tmpdir: Path | None = None
+        self.path: Path = self.destination
+
+    def __enter__(self) -> StagedOutput:
+        anchor = _nearest_existing(self.destination)
+        if self.destination.parent.is_dir():
+            anchor = self.destination.parent
+        try:
+            self._tmpdir = Path(tempfile.mkdtemp(
+                prefix=f".{self.destination.name[:80]}.critmoment-tmp-", dir=anchor))
+        except OSError as exc:
+            raise OutputError(f"{self.option} {_short(self._raw)!r}: cannot write in "
+                              f"{_short(anchor)!r}: {exc.strerror or exc}") from None
+        self.path = (self._tmpdir if self.kind == "folder"
+                     else self._tmpdir / self.destination.name)
+        return self
+
+    def __exit__(self, exc_type, exc, tb) -> bool:
+        try:
+            if exc_type is None:
+                self._commit()
+            elif isinstance(exc, OSError) and not isinstance(exc, OutputError) and (
+                    str(self._tmpdir) in str(getattr(exc, "filename", "") or "")
+                    or exc.errno in (errno.ENOSPC, errno.EDQUOT, errno.EROFS)):
+                raise OutputError(f"{self.option} {_short(self._raw)!r}: writing failed, "
+                                  f"nothing was changed: {exc.strerror or exc}") from None
+        finally:
+            if self._tmpdir is not None and self._tmpdir.exists():
+                shutil.rmtree(self._tmpdir, ignore_errors=True)
+        return False
+
+    def _commit(self) -> None:
+        dest = self.destination
+        try:
+            if self.kind == "folder":
+                files = sorted(e.name for e in os.scandir(self.path))
+                (self.path / MARKER).write_text(json.dumps(
+                    {"command": self.command, "files": files}) + "\n")
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            with _locked(dest.parent):
+                if self.kind == "file":
+                    os.replace(self.path, dest)
+                    return
+                check_output_path(dest, kind="folder", option=self.option)
+                if not dest.exists():
+                    os.rename(self.path, dest)
+                elif not _exchange(self.path, dest):
+                    aside = Path(tempfile.mkdtemp(prefix=f".{dest.name[:80]}.critmoment-old-",
+                                                  dir=dest.parent))
+                    os.rename(dest, aside / dest.name)
+                    try:
+                        os.rename(self.path, dest)
+                    except OSError:
+                        os.rename(aside / dest.name, dest)  # put the old output back
+                        raise
+                    finally:
+                        shutil.rmtree(aside, ignore_errors=True)
+        except OutputError:
+            raise
+        except OSError as exc:
+            raise OutputError(f"{self.option} {_short(self._raw)!r}: cannot move the output "
+                              f"into place, nothing was changed: {exc.strerror or exc}"
+                              ) from None
 
 
 _CSS = """
