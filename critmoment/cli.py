@@ -1,25 +1,63 @@
-"""Command-line interface: ``critmoment demo|rollout|moments|analyze|validate``.
+"""Command-line interface: ``critmoment demo|rollout|moments|analyze|validate|episodes``.
 
-Exit codes: 0 success (for ``analyze``: SAFE, or P(success) ≥ ``--min-success``),
-1 not safe, 2 bad input or error. Errors are printed as one line, never a traceback.
+Exit codes (docs/cli.md): 0 success (for ``analyze``: SAFE, or P(success) ≥
+``--min-success``; for ``validate``: no false safe), 1 not safe, 2 bad input or
+error. A closed output pipe (``critmoment analyze ... --json | head -1``) keeps
+the verdict's code. Every error ends as one line on stderr,
+``critmoment COMMAND: error: ...``, never a traceback (``-v`` adds one), and
+outputs are written whole or not at all (:class:`critmoment.report.StagedOutput`).
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import logging
+import math
+import os
 import sys
+import traceback
 import warnings
+import zipfile
+import zlib
+from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
 
+from critmoment import budget
 from critmoment.exceptions import CritmomentError
 
-__all__ = ["main", "build_parser"]
+__all__ = ["main", "build_parser", "EXIT_OK", "EXIT_UNSAFE", "EXIT_ERROR"]
 
 EXIT_OK, EXIT_UNSAFE, EXIT_ERROR = 0, 1, 2
+
+
+# -- output ------------------------------------------------------------------------
+class _Stdout:
+    """Prints to stdout; once the reader has gone (a closed pipe), prints nothing."""
+
+    closed = False
+
+    @classmethod
+    def emit(cls, text: str) -> None:
+        if cls.closed:
+            return
+        try:
+            print(text, flush=True)  # flush here, so a closed pipe is seen here
+        except BrokenPipeError:
+            cls.silence()
+
+    @classmethod
+    def silence(cls) -> None:
+        cls.closed = True
+        # Point the file descriptor at /dev/null so that Python's flush at exit
+        # does not report the broken pipe a second time.
+        with contextlib.suppress(OSError, ValueError, AttributeError):
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, sys.stdout.fileno())
+            os.close(devnull)
 
 
 def _json_default(obj):
@@ -36,37 +74,46 @@ def _dump(obj) -> str:
     return json.dumps(obj, indent=2, default=_json_default, allow_nan=False)
 
 
+@contextlib.contextmanager
+def _staged(args, command: str, *, kind: str = "folder") -> Iterator[Path | None]:
+    """The folder to write ``--out`` into: validated and staged before any work."""
+    if getattr(args, "out", None) is None:
+        yield None
+        return
+    from critmoment.report import StagedOutput
+
+    with StagedOutput(args.out, command=command, kind=kind) as stage:
+        yield stage.path
+    args.out_written = stage.destination
+
+
+# -- inputs ------------------------------------------------------------------------
 def _load(args):
     from critmoment.scenario import load_scenario
     from critmoment.trajectory import load_trajectory
     from critmoment.twin import Twin
 
     scenario = load_scenario(args.scenario)
-    traj = load_trajectory(args.trajectory)
-    return Twin(scenario), traj
+    traj = load_trajectory(args.trajectory, episode=args.episode, object_pose=args.object_pose)
+    twin = Twin(scenario)
+    budget.check_rollout(traj, twin)
+    return twin, traj
 
 
-def _out_dir(path: str | None) -> Path | None:
-    if path is None:
-        return None
-    out = Path(path)
-    out.mkdir(parents=True, exist_ok=True)
-    return out
-
-
+# -- commands ----------------------------------------------------------------------
 def cmd_demo(args) -> int:
     from critmoment import suite
     from critmoment.trajectory import save_trajectory
 
-    traj = suite.make(args.family, seed=args.seed)
-    out = Path(args.out)
-    if out.suffix != ".npz":
-        raise CritmomentError(f"--out: expected a path ending in .npz, got {out}")
-    out.parent.mkdir(parents=True, exist_ok=True)
-    save_trajectory(traj, out)
+    if Path(args.out).suffix != ".npz":
+        raise CritmomentError(f"--out: expected a path ending in .npz, got {args.out}")
+    with _staged(args, "demo", kind="file") as path:
+        traj = suite.make(args.family, seed=args.seed)
+        save_trajectory(traj, path)
     box = traj.object_pose
-    print(f"wrote {out}: {traj.n_steps} actions at {traj.fps:g} Hz ({traj.duration:g} s), "
-          f"family {args.family!r}, seed {args.seed}, cube at x={box[0]:.3f} y={box[1]:.3f} m")
+    _Stdout.emit(f"wrote {args.out}: {traj.n_steps} actions at {traj.fps:g} Hz "
+                 f"({traj.duration:g} s), family {args.family!r}, seed {args.seed}, cube at "
+                 f"x={box[0]:.3f} y={box[1]:.3f} m")
     return EXIT_OK
 
 
@@ -74,28 +121,32 @@ def cmd_rollout(args) -> int:
     from critmoment import report
     from critmoment.recording import rollout
 
-    twin, traj = _load(args)
-    rec = rollout(traj, twin=twin)
-    summary = rec.summary()
-    out = _out_dir(args.out)
-    if out is not None:
-        rec.save(out / "recording.npz")
-        report.plot_recording(rec, path=out / "signals.png")
-        (out / "rollout.json").write_text(_dump(summary))
-    if args.json:
-        print(_dump(summary))
-    else:
-        firsts = ", ".join(f"{k}: {v if v is not None else '-'}"
-                           for k, v in summary["stage_first_step"].items())
-        print(f"{summary['steps']} steps of {summary['dt'] * 1e3:g} ms; max stage "
-              f"{summary['max_stage']}, final stage {summary['final_stage']} "
-              f"({'completed' if summary['completed'] else 'NOT completed'}); first step per "
-              f"stage {{{firsts}}}")
-        print(f"min FOS contact {summary['min_fos_contact']}, min FOS motor "
-              f"{summary['min_fos_motor']:.3f} ({summary['limiting_actuator']}), max cost "
-              f"{summary['max_cost']:.3f}")
+    with _staged(args, "rollout") as out:
+        twin, traj = _load(args)
+        rec = rollout(traj, twin=twin)
+        summary = rec.summary()
         if out is not None:
-            print(f"wrote {out / 'recording.npz'}, {out / 'signals.png'}, {out / 'rollout.json'}")
+            rec.save(out / "recording.npz")
+            fig = report.plot_recording(rec)
+            fig.savefig(out / "signals.png", dpi=report.DPI)
+            (out / "rollout.json").write_text(_dump(summary))
+    if args.json:
+        _Stdout.emit(_dump(summary))
+        return EXIT_OK
+    firsts = ", ".join(f"{k}: {v if v is not None else '-'}"
+                       for k, v in summary["stage_first_step"].items())
+    _Stdout.emit(f"{summary['steps']} steps of {summary['dt'] * 1e3:g} ms; max stage "
+                 f"{summary['max_stage']}, final stage {summary['final_stage']} "
+                 f"({'completed' if summary['completed'] else 'NOT completed'}); first step "
+                 f"per stage {{{firsts}}}")
+    fos_c = summary["min_fos_contact"]
+    _Stdout.emit(f"min FOS contact {fos_c if fos_c is None else f'{fos_c:.3f}'}, min FOS "
+                 f"motor {summary['min_fos_motor']:.3f} ({summary['limiting_actuator']}), "
+                 f"max cost {summary['max_cost']:.3f}")
+    if args.out is not None:
+        out = args.out_written
+        _Stdout.emit(f"wrote {out / 'recording.npz'}, {out / 'signals.png'}, "
+                     f"{out / 'rollout.json'}")
     return EXIT_OK
 
 
@@ -104,20 +155,21 @@ def cmd_moments(args) -> int:
     from critmoment.analysis import detect_moments
     from critmoment.recording import rollout
 
-    twin, traj = _load(args)
-    rec = rollout(traj, twin=twin)
-    moments = detect_moments(rec, twin, max_moments=args.max_moments)
-    payload = {"moments": [report.moment_json(m) for m in moments]}
-    out = _out_dir(args.out)
-    if out is not None:
-        report.plot_recording(rec, moments=moments, path=out / "moments.png")
-        (out / "moments.json").write_text(_dump(payload))
+    with _staged(args, "moments") as out:
+        twin, traj = _load(args)
+        rec = rollout(traj, twin=twin)
+        moments = detect_moments(rec, twin, max_moments=args.max_moments)
+        payload = {"moments": [report.moment_json(m) for m in moments]}
+        if out is not None:
+            report.plot_recording(rec, moments=moments).savefig(out / "moments.png",
+                                                                dpi=report.DPI)
+            (out / "moments.json").write_text(_dump(payload))
     if args.json:
-        print(_dump(payload))
+        _Stdout.emit(_dump(payload))
     else:
         for rank, m in enumerate(moments, 1):
-            print(f"{rank}. step {m.step} (t = {m.time:.3f} s) {m.label.value}: score "
-                  f"{m.score:.3f} — {m.reason}")
+            _Stdout.emit(f"{rank}. step {m.step} (t = {m.time:.3f} s) {m.label.value}: score "
+                         f"{m.score:.3f} — {m.reason}")
     return EXIT_OK
 
 
@@ -132,129 +184,311 @@ def _method(args) -> dict:
                 default.verify if args.verify is None else args.verify)}
 
 
-def _add_method(p) -> None:
-    from critmoment.analysis import AnalyzeOptions
-
-    default = AnalyzeOptions()
-    p.add_argument("--horizon", type=int, default=None,
-                   help="physics steps per sparse evaluation (default: the scenario's)")
-    p.add_argument("--max-moments", type=int, default=None,
-                   help=f"critical moments audited (default {default.max_moments})")
-    p.add_argument("--verify", type=float, default=None, metavar="FRACTION",
-                   help="re-run in full the samples that pass with a cost >= FRACTION x "
-                        f"threshold (default {default.verify})")
-    p.add_argument("--no-verify", action="store_true", help="skip the verification rollouts")
-
-
 def cmd_analyze(args) -> int:
     from critmoment import report
     from critmoment.analysis import AnalyzeOptions, analyze
 
-    twin, traj = _load(args)
     options = AnalyzeOptions(seed=args.seed, n_samples=args.samples, min_success=args.min_success,
                              exhaustive=args.exhaustive, **_method(args))
-    result = analyze(traj, twin.scenario, twin=twin, options=options,
-                     progress=not args.json and sys.stderr.isatty())
-    out = _out_dir(args.out)
-    if out is not None:
-        report.write_report(result, out)
-    if args.json:
-        print(_dump(result.to_json()))
-    else:
-        print(report.summary_text(result))
+    with _staged(args, "analyze") as out:
+        twin, traj = _load(args)
+        budget.check_audit(traj, twin, options)
+        result = analyze(traj, twin.scenario, twin=twin, options=options,
+                         progress=not args.json and sys.stderr.isatty())
         if out is not None:
-            print(f"report: {out / 'report.html'} and {out / 'report.json'}")
-    return EXIT_OK if result.passes(args.min_success) else EXIT_UNSAFE
+            report.write_report_files(result, out, figures=report.Figures.parse(args.figures))
+    code = EXIT_OK if result.passes(args.min_success) else EXIT_UNSAFE
+    if args.json:
+        _Stdout.emit(_dump(result.to_json()))
+    else:
+        _Stdout.emit(report.summary_text(result))
+        if args.out is not None:
+            _Stdout.emit(f"report: {args.out_written / 'report.html'} and "
+                         f"{args.out_written / 'report.json'}")
+    return code
 
 
 def cmd_validate(args) -> int:
+    from critmoment.analysis import AnalyzeOptions
     from critmoment.validation import validate
 
-    twin, traj = _load(args)
-    result = validate(traj, twin=twin, n_samples=args.samples, seed=args.seed, **_method(args))
-    out = _out_dir(args.out)
-    payload = result.to_json()
-    if out is not None:
-        (out / "validation.json").write_text(_dump(payload))
+    method = _method(args)
+    with _staged(args, "validate") as out:
+        twin, traj = _load(args)
+        budget.check_audit(traj, twin, AnalyzeOptions(seed=args.seed, n_samples=max(
+            args.samples, 8), **method))
+        budget.check_validation(traj, twin, n_samples=args.samples)
+        result = validate(traj, twin=twin, n_samples=args.samples, seed=args.seed, **method)
+        payload = result.to_json()
+        if out is not None:
+            (out / "validation.json").write_text(_dump(payload))
+    code = EXIT_OK if result.confusion["false_safe"] == 0 else EXIT_UNSAFE
+    _Stdout.emit(_dump(payload) if args.json else result.summary_text())
+    return code
+
+
+def cmd_episodes(args) -> int:
+    from critmoment.trajectory import list_episodes
+
+    episodes = list_episodes(args.dataset)
     if args.json:
-        print(_dump(payload))
-    else:
-        print(result.summary_text())
-    return EXIT_OK if result.confusion["false_safe"] == 0 else EXIT_UNSAFE
+        _Stdout.emit(_dump({"episodes": [{"index": e.index, "frames": e.frames, "file": e.file}
+                                         for e in episodes]}))
+        return EXIT_OK
+    _Stdout.emit(f"{len(episodes)} episode(s) in {args.dataset}")
+    for e in episodes:
+        name = "-" if e.index is None else str(e.index)
+        _Stdout.emit(f"  episode {name}: {e.frames} frames in {e.file}")
+    return EXIT_OK
+
+
+# -- argument types ----------------------------------------------------------------
+def _integer(text: str) -> int:
+    """An integer, also written as an integral float (``1e3``)."""
+    try:
+        value = int(text, 10)
+    except ValueError:
+        try:
+            number = float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected an integer, got {text!r}") from None
+        if not math.isfinite(number) or number != int(number):
+            raise argparse.ArgumentTypeError(f"expected an integer, got {text!r}") from None
+        value = int(number)
+    return value
+
+
+def _int_at_least(low: int):
+    def parse(text: str) -> int:
+        value = _integer(text)
+        if value < low:
+            raise argparse.ArgumentTypeError(f"expected an integer >= {low}, got {value}")
+        return value
+
+    parse.__name__ = f"integer >= {low}"
+    return parse
+
+
+def _seed(text: str) -> int:
+    value = _integer(text)
+    if not 0 <= value <= budget.SEED_MAX:
+        raise argparse.ArgumentTypeError(
+            f"expected an integer in [0, 2**32 - 1 = {budget.SEED_MAX}], got {value}")
+    return value
+
+
+def _real(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"expected a finite number, got {text!r}")
+    return value
+
+
+def _fraction(*, open_low: bool):
+    def parse(text: str) -> float:
+        value = _real(text)
+        ok = (0 < value <= 1) if open_low else (0 <= value <= 1)
+        if not ok:
+            interval = "(0, 1]" if open_low else "[0, 1]"
+            raise argparse.ArgumentTypeError(f"expected a number in {interval}, got {value:g}")
+        return value
+
+    return parse
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with errors as one line, ``PROG: error: message (see PROG --help)``."""
+
+    def error(self, message):  # noqa: D401 - argparse's interface
+        text = " ".join(str(message).split())
+        self.exit(EXIT_ERROR, f"{self.prog}: error: {text} (see {self.prog} --help)\n")
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    from critmoment.report import Figures
+    from critmoment.suite import FAMILIES
+
+    parser = _Parser(
         prog="critmoment",
         description="Audit a robot trajectory for physical safety in a MuJoCo digital twin.")
-    parser.add_argument("-v", "--verbose", action="store_true", help="log progress details")
-    sub = parser.add_subparsers(dest="command", required=True)
+    parser.add_argument("-v", "--verbose", action="store_true",
+                        help="log progress details; on an error, also print the traceback")
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
+    limits = budget.Budget()
 
     def add_traj(p):
-        p.add_argument("trajectory", help="trajectory: .npz, ACT .hdf5, LeRobot .parquet or dataset folder")
+        p.add_argument("trajectory", help="trajectory: .npz, ACT .hdf5, LeRobot .parquet or "
+                                          "dataset folder")
         p.add_argument("--scenario", default=None,
                        help="scenario.toml, a folder with one, or a bundled name "
                             "(default: aloha_transfer_cube)")
-        p.add_argument("--out", default=None, help="folder for outputs")
+        p.add_argument("--episode", type=_int_at_least(0), default=None, metavar="N",
+                       help="LeRobot data: the episode_index to read (list them with "
+                            "`critmoment episodes DATASET`)")
+        p.add_argument("--object-pose", type=_real, nargs=7, default=None,
+                       metavar=("X", "Y", "Z", "QW", "QX", "QY", "QZ"),
+                       help="the object's start pose, position [m] and unit quaternion; "
+                            "replaces the trajectory's")
+        p.add_argument("--out", default=None, help="folder for outputs (created, or replaced "
+                                                   "whole if it holds an earlier output)")
         p.add_argument("--json", action="store_true", help="print JSON to stdout")
+        p.add_argument("--max-steps", type=_int_at_least(1), default=None, metavar="N",
+                       help=f"most physics steps of one rollout (default {limits.max_steps:,}"
+                            f"; env CRITMOMENT_MAX_STEPS)")
+        p.add_argument("--max-batch-steps", type=_int_at_least(1), default=None, metavar="N",
+                       help=f"most physics steps of the batched simulations (default "
+                            f"{limits.max_batch_steps:,}; env CRITMOMENT_MAX_BATCH_STEPS)")
+        p.add_argument("--max-input-bytes", type=_int_at_least(1), default=None, metavar="N",
+                       help=f"most bytes of arrays an input file may declare (default "
+                            f"{limits.max_input_bytes:,}; env CRITMOMENT_MAX_INPUT_BYTES)")
 
-    from critmoment.suite import FAMILIES
+    def add_method(p):
+        from critmoment.analysis import AnalyzeOptions
+
+        default = AnalyzeOptions()
+        p.add_argument("--horizon", type=_int_at_least(1), default=None,
+                       help="physics steps per sparse evaluation (default: the scenario's)")
+        p.add_argument("--max-moments", type=_int_at_least(1), default=None,
+                       help=f"critical moments audited (default {default.max_moments})")
+        p.add_argument("--verify", type=_fraction(open_low=True), default=None,
+                       metavar="FRACTION",
+                       help="re-run in full the samples that pass with a cost >= FRACTION x "
+                            f"threshold (default {default.verify})")
+        p.add_argument("--no-verify", action="store_true", help="skip the verification rollouts")
 
     p = sub.add_parser("demo", help="write a scripted pick-and-transfer trajectory")
-    p.add_argument("--seed", type=int, default=0, help="seeds the cube's spawn pose")
+    p.add_argument("--seed", type=_seed, default=0, help="seeds the cube's spawn pose")
     p.add_argument("--out", default="traj.npz", help="output .npz (default traj.npz)")
     p.add_argument("--family", default="nominal", choices=sorted(FAMILIES),
                    help="trajectory family (default nominal)")
     p.set_defaults(func=cmd_demo)
 
-    p = sub.add_parser("rollout", help="frequent rollout: replay at nominal parameters, record signals")
+    p = sub.add_parser("rollout", help="frequent rollout: replay at nominal parameters, "
+                                       "record signals")
     add_traj(p)
     p.set_defaults(func=cmd_rollout)
 
     p = sub.add_parser("moments", help="find the critical moments of a trajectory")
     add_traj(p)
-    p.add_argument("--max-moments", type=int, default=8)
+    p.add_argument("--max-moments", type=_int_at_least(1), default=8)
     p.set_defaults(func=cmd_moments)
 
     p = sub.add_parser("analyze", help="full audit: verdict, P(success), report")
     add_traj(p)
-    p.add_argument("--seed", type=int, default=0)
-    p.add_argument("--samples", type=int, default=256, help="Sobol samples of the box")
-    p.add_argument("--min-success", type=float, default=None,
+    p.add_argument("--seed", type=_seed, default=0)
+    p.add_argument("--samples", type=_int_at_least(8), default=256,
+                   help="Sobol samples of the box")
+    p.add_argument("--min-success", type=_fraction(open_low=False), default=None,
                    help="exit 0 when P(success) >= this even if not SAFE")
-    _add_method(p)
+    add_method(p)
     p.add_argument("--exhaustive", action="store_true",
                    help="evaluate every sample at every moment (default: each sample stops at "
                         "its first failure; same verdict, per-moment figures over the samples "
                         "that reach the moment)")
+    p.add_argument("--figures", choices=[f.value for f in Figures], default="summary",
+                   help="figures in the report: none, summary (signals, every moment's curves "
+                        "in one figure, cost map; default) or all (plus one figure per moment)")
     p.set_defaults(func=cmd_analyze)
 
-    p = sub.add_parser("validate", help="check sparse verdicts against brute-force full rollouts")
+    p = sub.add_parser("validate", help="check sparse verdicts against brute-force full "
+                                        "rollouts")
     add_traj(p)
-    p.add_argument("--samples", type=int, default=64, help="Sobol samples of the box")
-    p.add_argument("--seed", type=int, default=0, help="Sobol seed")
-    _add_method(p)
+    p.add_argument("--samples", type=_int_at_least(1), default=64, help="Sobol samples of the box")
+    p.add_argument("--seed", type=_seed, default=0, help="Sobol seed")
+    add_method(p)
     p.set_defaults(func=cmd_validate)
+
+    p = sub.add_parser("episodes", help="list the episodes of a LeRobot dataset")
+    p.add_argument("dataset", help="LeRobot dataset folder or parquet file (an npz/HDF5 file "
+                                   "is one episode)")
+    p.add_argument("--json", action="store_true", help="print JSON to stdout")
+    p.set_defaults(func=cmd_episodes)
     return parser
 
 
+# -- errors ------------------------------------------------------------------------
+def _one_line(text: str) -> str:
+    return " ".join(str(text).split())
+
+
+def _describe(exc: BaseException) -> str:
+    """An exception that escaped the readers, as one message naming what and where."""
+    from critmoment.trajectory import _short
+
+    if isinstance(exc, CritmomentError):
+        return str(exc)
+    if isinstance(exc, MemoryError):
+        return ("out of memory; lower --samples / --max-moments / --horizon, or the "
+                "limits --max-steps / --max-batch-steps / --max-input-bytes")
+    if isinstance(exc, OSError):
+        where = exc.filename if exc.filename is not None else ""
+        what = exc.strerror or str(exc)
+        return f"{_short(where)!r}: {what}" if where else what
+    if isinstance(exc, UnicodeDecodeError):
+        return f"expected UTF-8 text, got bytes that are not: {exc}"
+    if isinstance(exc, (zipfile.BadZipFile, zlib.error)):
+        return f"corrupt compressed data: {exc}"
+    return (f"unexpected {type(exc).__name__}: {exc} (a bug in critmoment; rerun with -v "
+            f"for the traceback and report it)")
+
+
+def _warning_lines(caught, command: str) -> list[str]:
+    seen, lines = set(), []
+    for w in caught:
+        text = _one_line(str(w.message))
+        if text not in seen:
+            seen.add(text)
+            lines.append(f"critmoment {command}: warning: {text}")
+    return lines
+
+
 def main(argv: list[str] | None = None) -> int:
+    """Runs the command line; returns the exit code (0 ok, 1 not safe, 2 error)."""
     parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # argparse: --help (0) or a usage error (2, one line)
+        return exc.code if isinstance(exc.code, int) else EXIT_ERROR
     logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
                         format="%(levelname)s %(name)s: %(message)s")
-    if not args.verbose:
-        warnings.simplefilter("default")
+    _Stdout.closed = False
+    command = args.command
+    code = EXIT_ERROR
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        warnings.filterwarnings("ignore", category=DeprecationWarning)
+        try:
+            with budget.limits(max_steps=getattr(args, "max_steps", None),
+                               max_batch_steps=getattr(args, "max_batch_steps", None),
+                               max_input_bytes=getattr(args, "max_input_bytes", None)):
+                code = args.func(args)
+            sys.stdout.flush()
+        except BrokenPipeError:  # the reader went away: keep the verdict's code
+            _Stdout.silence()
+        except KeyboardInterrupt:
+            _error(command, "interrupted; no output was written", args)
+            return EXIT_ERROR
+        except Exception as exc:  # noqa: BLE001 - the last resort: one line, exit 2
+            _error(command, _describe(exc), args)
+            return EXIT_ERROR
     try:
-        return args.func(args)
-    except CritmomentError as exc:
-        print(f"critmoment {args.command}: error: {exc}", file=sys.stderr)
-        return EXIT_ERROR
-    except KeyboardInterrupt:
-        return EXIT_ERROR
-    except BrokenPipeError:  # e.g. `critmoment ... --json | head`
-        sys.stderr.close()
-        return EXIT_OK
+        for line in _warning_lines(caught, command):
+            print(line, file=sys.stderr)
+    except (BrokenPipeError, OSError, ValueError):
+        pass
+    return code
+
+
+def _error(command: str, message: str, args) -> None:
+    if getattr(args, "verbose", False):
+        traceback.print_exc()
+    try:
+        print(f"critmoment {command}: error: {_one_line(message)}", file=sys.stderr)
+    except (BrokenPipeError, OSError, ValueError):
+        pass
 
 
 if __name__ == "__main__":  # pragma: no cover
