@@ -20,6 +20,7 @@ import numpy as np
 from critmoment import budget
 from critmoment import sparse as sp
 from critmoment.exceptions import ParameterError
+from critmoment.feasibility import FeasibilityReport, check_fit, preflight
 from critmoment.moments import Moment, MomentDetector, MomentLabel
 from critmoment.recording import Recording, model_hash, rollout
 from critmoment.scenario import Scenario, load_scenario
@@ -111,6 +112,7 @@ class AnalyzeOptions:
     verify: float | None = 0.8
     verify_unlifted: bool = True
     exhaustive: bool = False
+    check_feasibility: bool = True  # critmoment.feasibility.preflight on the nominal rollout
 
     def __post_init__(self):
         if self.n_samples < 8:
@@ -211,6 +213,8 @@ class AuditReport:
             moments, then the verification rollouts), (n,) bool.
         verification: the verification stage's summary (``fraction``, ``cost_from``,
             ``rollouts``, ``failed``), or None when it did not run.
+        feasibility: the twin's feasibility and the trajectory's fit on the nominal rollout
+            (:func:`critmoment.feasibility.preflight`), or None when not checked.
     """
 
     verdict: Verdict
@@ -232,6 +236,7 @@ class AuditReport:
     manifest: Mapping
     failed: np.ndarray | None = None
     verification: Mapping | None = None
+    feasibility: FeasibilityReport | None = None
 
     def passes(self, min_success: float | None = None) -> bool:
         """SAFE, or CONDITIONAL with P(success) ≥ ``min_success`` (the CLI's exit code 0)."""
@@ -594,7 +599,9 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         return _Timer(timings, name, say)
 
     with stage("rollout"):
+        check_fit(trajectory, None, twin)  # width and units, naming the likely mistake
         rec = rollout(trajectory, twin=twin)
+        feasibility = preflight(trajectory, rec, twin) if opt.check_feasibility else None
     with stage("moments"):
         evaluator = sp.SparseEvaluator(rec, twin, horizon=opt.horizon, nthread=opt.nthread)
         candidates, steps = audit_moments(rec, twin, evaluator, opt.max_moments)
@@ -728,7 +735,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         safe_region_text=_region_text(region, box, verdict), failure_causes=causes,
         nominal_cost=nominal_cost, recording=rec, sweep=res, curves=curves, cost_map=cost_map,
         scenario=sc, options=opt, timings=timings, manifest=manifest, failed=failed,
-        verification=verification)
+        verification=verification, feasibility=feasibility)
 
 
 def _worst_cases_pass(reports: Sequence[MomentReport], worst_unlifted: Mapping[int, bool],

@@ -68,6 +68,8 @@ __all__ = [
     "critical_mass",
     "motor_fos",
     "analytic_contact_fos",
+    "LoadBound",
+    "trajectory_load_bound",
 ]
 
 _KIND = {
@@ -1071,3 +1073,173 @@ def analytic_contact_fos(
     fos = np.full(demand.shape, np.inf)
     np.divide(supply, demand, out=fos, where=demand > 0)
     return float(fos) if fos.ndim == 0 else fos
+
+
+# --------------------------------------------------------------------------
+# loads over the whole motion
+# --------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, eq=False)
+class LoadBound:
+    """Analytic motor loads over a whole recorded motion, for several payload masses.
+
+    ``τ(m, t) = τ0(t) + m·y(t)`` on each rotational actuator, where ``y`` is non-zero only
+    at the steps where a gripper carries the object (:func:`trajectory_load_bound`).
+
+    Attributes:
+        masses: payload masses [kg], (k,).
+        fos: motor FOS ``min_a limit_a / |τ_a(m, t)|`` per mass and step, (k, T); inf
+            where nothing is loaded.
+        limiting: index (into ``actuator_names``) of the limiting actuator, (k, T) int64.
+        carried: a gripper carries the object at the step, (T,) bool.
+        critical_mass: smallest payload that brings a joint to ``saturation`` × its limit
+            at each step [kg], (T,); 0 where the arm alone does, inf where no mass does.
+        actuator_names: names of all actuators (``limiting`` indexes them).
+        dt: physics step [s].
+        saturation: fraction of a limit at which an actuator counts as saturated.
+        min_duration: how long a saturation must last to count [s].
+    """
+
+    masses: np.ndarray
+    fos: np.ndarray
+    limiting: np.ndarray
+    carried: np.ndarray
+    critical_mass: np.ndarray
+    actuator_names: tuple[str, ...]
+    dt: float
+    saturation: float
+    min_duration: float
+
+    @property
+    def overloaded(self) -> np.ndarray:
+        """(k, T) bool: an actuator needs at least ``saturation`` × its limit."""
+        return self.fos * self.saturation <= 1.0
+
+    @property
+    def first_failing_step(self) -> np.ndarray:
+        """(k,) int64: first step of the first overload lasting longer than
+        ``min_duration`` (as the ground truth's ``motor_step`` counts a saturation), −1
+        where none."""
+        need = int(round(self.min_duration / self.dt)) + 1 if self.min_duration > 0 else 1
+        out = np.full(self.masses.shape[0], -1, dtype=np.int64)
+        for i, row in enumerate(self.overloaded):
+            edges = np.flatnonzero(np.diff(np.concatenate([[0], row.astype(np.int8), [0]])))
+            for start, stop in zip(edges[::2], edges[1::2], strict=True):
+                if stop - start >= need:
+                    out[i] = start
+                    break
+        return out
+
+    @property
+    def first_failing_time(self) -> np.ndarray:
+        """(k,) [s]: time of ``first_failing_step``, NaN where none."""
+        step = self.first_failing_step
+        return np.where(step >= 0, step * self.dt, np.nan)
+
+    def limiting_at(self, row: int, step: int) -> str:
+        """Name of the limiting actuator for mass row ``row`` at ``step``."""
+        return self.actuator_names[int(self.limiting[row, step])]
+
+
+def trajectory_load_bound(recording, twin, *, masses: Sequence[float] | np.ndarray | None = None,
+                          pin_model: PinocchioModel | None = None, saturation: float = 0.999,
+                          min_duration: float = 0.05) -> LoadBound:
+    """The analytic motor bound over every step of a recorded motion.
+
+    For each step the recorded motion (positions and velocities of the recorded states,
+    accelerations by finite differences of the velocities, so the accelerations the
+    integrator realised) gives ``τ0`` by inverse dynamics with the arm's armature and joint
+    damping; where a gripper carries the object in the recording (it touches it off its
+    support) the object's inertia, at its recorded pose and scaled per kg, rides on the
+    gripper's base body and gives ``y``. A hand-over lets either gripper carry the whole
+    payload (the worse one counts). Contact forces other than the carried payload's are not
+    modelled (a squeeze against the table, a collision).
+
+    Args:
+        recording: the frequent rollout (``states`` (T + 1, nstate), ``signals``, ``dt``).
+        twin: its twin.
+        masses: payload masses [kg] (k,); default the box's nominal and largest mass (or
+            the model's object mass without a mass parameter).
+        pin_model: Pinocchio model of ``twin.model`` (built when None).
+        saturation: fraction of a limit that counts as saturated (the ground truth's 0.999).
+        min_duration: how long an overload must last to count for ``first_failing_step``
+            [s] (the ground truth's ``motor_time``, 0.05 s).
+
+    Returns:
+        The :class:`LoadBound`.
+
+    Raises:
+        ParameterError: negative masses, or a saturation outside (0, 1].
+    """
+    from critmoment.sparse import grip_frames
+    from critmoment.twin import STATE_SPEC
+
+    model = twin.model
+    sc = twin.scenario
+    if masses is None:
+        names = sc.box.names
+        if "mass" in names:
+            j = names.index("mass")
+            masses = [sc.box.nominal[j], sc.box.high[j]]
+        else:
+            masses = [float(model.body_mass[twin.object_body_id])]
+    masses = np.atleast_1d(np.asarray(masses, dtype=float))
+    if masses.ndim != 1 or np.isnan(masses).any() or (masses < 0).any():
+        raise ParameterError(f"masses: expected payload masses >= 0 [kg], got {masses}")
+    if not 0 < saturation <= 1:
+        raise ParameterError(f"saturation: expected a fraction in (0, 1], got {saturation!r}")
+    if not (np.isfinite(min_duration) and min_duration >= 0):
+        raise ParameterError(f"min_duration: expected a time >= 0 s, got {min_duration!r}")
+    pm = pin_model if pin_model is not None else from_mujoco(model)
+    dt = float(recording.dt)
+    states = np.asarray(recording.states, dtype=float)
+    n_steps = states.shape[0] - 1
+    offset = mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_TIME)
+    qpos = states[:n_steps, offset:offset + model.nq]
+    qvel_all = states[:, offset + model.nq:offset + model.nq + model.nv]
+    qvel = qvel_all[:n_steps]
+    qacc = (qvel_all[1:] - qvel_all[:-1]) / dt
+    rot = np.flatnonzero(twin.rotational)
+    dofs = model.jnt_dofadr[model.actuator_trnid[rot, 0]]
+    gear = model.actuator_gear[rot, 0]
+    limits = np.asarray(twin.limits, dtype=float)[rot]
+    tau0 = pm.rnea(qpos, qvel, qacc, include_armature=True)
+    tau0 = (tau0[:, dofs] + model.dof_damping[dofs] * qvel[:, dofs]) / gear  # (T, J)
+
+    sig = recording.signals
+    held = np.asarray(sig.contact_gripper, bool) & ~np.asarray(sig.contact_support, bool)[:, None]
+    carried = held.any(axis=1)
+    anchors, _ = grip_frames(model, sc)
+    ob = twin.object_body_id
+    unit_inertia = np.diag(model.body_inertia[ob] / model.body_mass[ob])
+    y = np.zeros((len(anchors),) + tau0.shape)  # (G, T, J)
+    data = mujoco.MjData(model)
+    for g, body in enumerate(anchors):
+        rows = np.flatnonzero(held[:, g])
+        if not rows.size:
+            continue
+        poses = np.empty((rows.size, 7))
+        for r, t in enumerate(rows):
+            mujoco.mj_setState(model, data, states[t], STATE_SPEC)
+            mujoco.mj_kinematics(model, data)
+            poses[r, :3] = data.xipos[ob]
+            mujoco.mju_mat2Quat(poses[r, 3:], data.ximat[ob])
+        _, y_g = payload_regressor(pm, qpos[rows], qvel[rows], qacc[rows],
+                                   attach_body=int(body), payload_pose_world=poses,
+                                   unit_inertia=unit_inertia)
+        y[g, rows] = y_g[:, dofs] / gear
+    # (k, G, T, J): every holder carries the whole payload; the worse one counts
+    tau = np.abs(tau0[None, None] + masses[:, None, None, None] * y[None])
+    with np.errstate(divide="ignore"):
+        ratio = np.where(tau > 0, limits / tau, np.inf)
+    per_holder = ratio.min(axis=-1)  # (k, G, T)
+    worst_g = np.argmin(per_holder, axis=1)  # (k, T)
+    k_idx, t_idx = np.indices(worst_g.shape)
+    fos = per_holder[k_idx, worst_g, t_idx]
+    limiting = rot[np.argmin(ratio[k_idx, worst_g, t_idx], axis=-1)]
+    crit = critical_mass(tau0[None], y, saturation * limits[None, None]).min(axis=(0, 2))
+    return LoadBound(masses=masses, fos=fos, limiting=limiting.astype(np.int64),
+                     carried=carried, critical_mass=crit,
+                     actuator_names=tuple(twin.actuator_names), dt=dt,
+                     saturation=float(saturation), min_duration=float(min_duration))

@@ -43,7 +43,6 @@ from critmoment.trajectory import Trajectory
 from critmoment.twin import STATE_SPEC, Twin, carried_flags
 
 __all__ = [
-    "ActuatorKind",
     "FeasibilityOptions",
     "JointFeasibility",
     "FeasibilityReport",
@@ -51,7 +50,6 @@ __all__ = [
     "check_feasibility",
     "check_fit",
     "preflight",
-    "classify_actuator",
 ]
 
 log = logging.getLogger(__name__)
@@ -64,8 +62,9 @@ class FitWarning(UserWarning):
     """A trajectory that probably does not belong to its scenario (see :func:`check_fit`)."""
 
 
-class ActuatorKind(enum.Enum):
-    """How an actuator acts on its joint, as far as tracking is concerned."""
+class _Kind(enum.Enum):
+    """How an actuator acts on its joint, as far as tracking is concerned (the values are
+    those of :class:`critmoment.actuators.ActuatorKind` where both know the shape)."""
 
     POSITION = "position"   #: fixed gain, affine bias with biasprm[1] < 0: a position servo
     VELOCITY = "velocity"   #: affine bias on velocity only: tracks a velocity, not a position
@@ -73,7 +72,7 @@ class ActuatorKind(enum.Enum):
     OTHER = "other"         #: another gain/bias, or a transmission other than a joint
 
 
-def classify_actuator(model: mujoco.MjModel, actuator: int) -> tuple[ActuatorKind, str]:
+def _classify(model: mujoco.MjModel, actuator: int) -> tuple[_Kind, str]:
     """The kind of actuator ``actuator`` and a note on why it is (not) tracked.
 
     Args:
@@ -85,22 +84,22 @@ def classify_actuator(model: mujoco.MjModel, actuator: int) -> tuple[ActuatorKin
     """
     if model.actuator_trntype[actuator] != mujoco.mjtTrn.mjTRN_JOINT:
         trn = mujoco.mjtTrn(int(model.actuator_trntype[actuator])).name
-        return ActuatorKind.OTHER, f"transmission {trn}: lag not checked (joint transmissions only)"
+        return _Kind.OTHER, f"transmission {trn}: lag not checked (joint transmissions only)"
     gain = int(model.actuator_gaintype[actuator])
     bias = int(model.actuator_biastype[actuator])
     bp = model.actuator_biasprm[actuator]
     if bias == mujoco.mjtBias.mjBIAS_NONE:
-        return ActuatorKind.MOTOR, "motor (no bias): ctrl is a force, lag not checked"
+        return _Kind.MOTOR, "motor (no bias): ctrl is a force, lag not checked"
     if gain != mujoco.mjtGain.mjGAIN_FIXED or bias != mujoco.mjtBias.mjBIAS_AFFINE:
-        return ActuatorKind.OTHER, "gain/bias not fixed/affine: lag not checked"
+        return _Kind.OTHER, "gain/bias not fixed/affine: lag not checked"
     if bp[1] < 0:
         if model.actuator_dyntype[actuator] != mujoco.mjtDyn.mjDYN_NONE:
-            return ActuatorKind.OTHER, ("position-like with activation dynamics: the target "
+            return _Kind.OTHER, ("position-like with activation dynamics: the target "
                                         "is the activation, lag not checked")
-        return ActuatorKind.POSITION, ""
+        return _Kind.POSITION, ""
     if bp[2] < 0:
-        return ActuatorKind.VELOCITY, "velocity servo: tracks a velocity, lag not checked"
-    return ActuatorKind.OTHER, "affine bias without a position term: lag not checked"
+        return _Kind.VELOCITY, "velocity servo: tracks a velocity, lag not checked"
+    return _Kind.OTHER, "affine bias without a position term: lag not checked"
 
 
 @dataclasses.dataclass(frozen=True)
@@ -157,7 +156,9 @@ class JointFeasibility:
     Attributes:
         actuator: actuator name.
         joint: joint name.
-        kind: the actuator's kind.
+        kind: the actuator's force law as far as tracking goes: "position" (fixed gain,
+            affine bias with biasprm[1] < 0; lag tracked), "velocity", "motor" or "other"
+            (lag not tracked, see ``note``).
         unit: the joint's unit, "rad" (hinge) or "m" (slide).
         gripper: the actuator belongs to a normalised (gripper) channel.
         max_lag: largest |q − target| [rad or m] (NaN when not tracked).
@@ -181,7 +182,7 @@ class JointFeasibility:
 
     actuator: str
     joint: str
-    kind: ActuatorKind
+    kind: str
     unit: str
     gripper: bool
     max_lag: float
@@ -344,12 +345,12 @@ def check_feasibility(recording: Recording, twin: Twin, *,
     for a in range(m.nu):
         name = m.actuator(a).name or f"actuator #{a}"
         if m.actuator_trntype[a] != mujoco.mjtTrn.mjTRN_JOINT:
-            notes.append(f"{name}: {classify_actuator(m, a)[1]}")
+            notes.append(f"{name}: {_classify(m, a)[1]}")
             continue
         j = int(m.actuator_trnid[a, 0])
         jname = m.joint(j).name or f"joint #{j}"
         unit = _unit(m, j)
-        kind, note = classify_actuator(m, a)
+        kind, note = _classify(m, a)
         if note:
             notes.append(f"{name}: {note}")
         gear = float(m.actuator_gear[a, 0]) or 1.0
@@ -358,7 +359,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         is_gripper = a in grippers
         max_lag = max_lag_time = span = float("nan")
         lag_start, lag_len, lag_in_run = 0, 0, 0.0
-        if kind is ActuatorKind.POSITION and int(m.jnt_type[j]) in (
+        if kind is _Kind.POSITION and int(m.jnt_type[j]) in (
                 int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)):
             gain = m.actuator_gainprm[a, 0]
             b0, b1 = m.actuator_biasprm[a, :2]
@@ -376,7 +377,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         sat_start, sat_len = _longest_run(saturated)
         friction = float(m.dof_frictionloss[m.jnt_dofadr[j]])
         entry = JointFeasibility(
-            actuator=name, joint=jname, kind=kind, unit=unit, gripper=is_gripper,
+            actuator=name, joint=jname, kind=kind.value, unit=unit, gripper=is_gripper,
             max_lag=max_lag, max_lag_time=max_lag_time, lag_duration=lag_len * dt,
             lag_start=lag_start * dt if lag_len else None, lag_in_run=lag_in_run,
             saturation_duration=sat_len * dt, saturation_start=sat_start * dt if sat_len else None,

@@ -99,6 +99,7 @@ __all__ = [
     "safety_features",
     "detect_change_points",
     "detect_contact_events",
+    "detect_peak_loads",
     "merge_moments",
     "rank_moments",
     "find_moments",
@@ -128,6 +129,10 @@ class MomentLabel(enum.Enum):
     """A gripper starts touching the object."""
     RELEASE = "release"
     """A gripper stops touching the object and no other gripper holds it."""
+    PEAK_LOAD = "peak-load"
+    """The motor load peaks over the whole motion (a low of the motor FOS, with or
+    without a contact event nearby): where the arm alone, or a heavier payload, may
+    overload a joint."""
     CHANGE_POINT = "change-point"
     """Abrupt change of the safety signals without a contact event."""
 
@@ -711,6 +716,96 @@ def detect_contact_events(recording: Any, *, debounce_time: float = 0.01) -> lis
     return events
 
 
+def detect_peak_loads(
+    fos: np.ndarray,
+    *,
+    dt: float,
+    level: float = 1.5,
+    max_peaks: int = 2,
+    separation: float = 0.1,
+    limiting: Sequence[str] | None = None,
+    source: str = "nominal run",
+    saturation: float = 0.999,
+    min_duration: float = 0.05,
+) -> list[Moment]:
+    """Peak-load moments: the lows of a motor factor of safety over the whole motion.
+
+    Returns, as :attr:`MomentLabel.PEAK_LOAD` moments: the first step at which ``fos``
+    reaches ``1 / saturation`` for longer than ``min_duration`` (a joint at or over its
+    limit: the first failing time), and the
+    lowest local minima below ``level`` (each the lowest value within ``separation`` of
+    it), lowest first, at least ``separation`` apart, ``max_peaks`` of them. Motor
+    overloads need no contact event: the arm alone can overload a joint while it moves
+    freely, or a heavier payload where the nominal one does not.
+
+    Args:
+        fos: (T,) motor FOS per step: the frequent rollout's ``fos_motor``, or an analytic
+            bound such as :func:`critmoment.dynamics.trajectory_load_bound` at the
+            heaviest payload. ``inf`` where nothing is loaded.
+        dt: physics step [s].
+        level: FOS below which a low counts (1.5: the cost's motor term is 0.37 there
+            with β = 2).
+        max_peaks: most local minima returned (besides the first overload).
+        separation: shortest time between two returned lows [s].
+        limiting: (T,) name of the limiting actuator per step, for the reasons.
+        source: what ``fos`` describes, for the reasons.
+        saturation: fraction of a limit that counts as an overload (the ground truth's
+            0.999: an actuator held at its force range reads FOS 1).
+        min_duration: how long an overload must last to be the first one [s] (the ground
+            truth's ``motor_time``, 0.05 s, so that the first failing time agrees with it).
+
+    Returns:
+        The moments, sorted by step.
+
+    Raises:
+        ParameterError: bad options.
+        TrajectoryError: ``fos`` not (T,) or NaN.
+    """
+    dt = _check_nonneg_seconds("dt", dt, strict=True)
+    separation = _check_nonneg_seconds("separation", separation)
+    min_duration = _check_nonneg_seconds("min_duration", min_duration)
+    if not 0 < saturation <= 1:
+        raise ParameterError(f"saturation: expected a fraction in (0, 1], got {saturation!r}")
+    max_peaks = _check_int("max_peaks", max_peaks, 0)
+    level = _check_positive("level", level)
+    f = np.asarray(fos, dtype=float)
+    if f.ndim != 1 or np.isnan(f).any():
+        raise TrajectoryError(f"fos: expected a (T,) motor FOS without NaN, got shape {f.shape}")
+    if limiting is not None and len(limiting) != f.size:
+        raise TrajectoryError(f"limiting: expected {f.size} names, got {len(limiting)}")
+    from scipy.ndimage import minimum_filter1d
+
+    w = max(1, int(round(separation / dt)))
+
+    def moment(step: int, what: str) -> Moment:
+        at = f" at {limiting[step]}" if limiting is not None else ""
+        reason = f"{what}: motor FOS {f[step]:.3g}{at} ({source}, t = {step * dt:.3f} s)"
+        return Moment(step, step * dt, MomentLabel.PEAK_LOAD, reason, reasons=(reason,))
+
+    out: list[Moment] = []
+    # an actuator at its force range reads FOS 1 exactly: saturation is overload
+    need = int(round(min_duration / dt)) + 1 if min_duration > 0 else 1
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], (f * saturation <= 1.0).astype(np.int8),
+                                                   [0]])))
+    lasting = [int(a) for a, b in zip(edges[::2], edges[1::2], strict=True) if b - a >= need]
+    if lasting:
+        out.append(moment(lasting[0], "first overload"))
+    if f.size and max_peaks:
+        lows = np.flatnonzero((f == minimum_filter1d(f, 2 * w + 1, mode="nearest"))
+                              & (f < level))
+        taken = [m.step for m in out]
+        peaks = 0
+        for step in lows[np.lexsort((lows, f[lows]))]:
+            if peaks >= max_peaks:
+                break
+            if any(abs(int(step) - t) < w for t in taken):
+                continue
+            out.append(moment(int(step), "peak load"))
+            taken.append(int(step))
+            peaks += 1
+    return sorted(out, key=lambda m: m.step)
+
+
 # --------------------------------------------------------------------------
 # merging and ranking
 # --------------------------------------------------------------------------
@@ -888,6 +983,13 @@ class MomentDetector:
             a sensitivity callable; ``None`` keeps all.
         acc_components: use the 3 components of the object acceleration
             instead of its norm.
+        peak_level: motor FOS below which a low of the recording's motor FOS
+            (or of ``load_fos`` given to :meth:`fit`) is a
+            :attr:`MomentLabel.PEAK_LOAD` candidate (see
+            :func:`detect_peak_loads`); ``None`` finds none.
+        max_peaks: most peak-load lows per FOS series (besides its first
+            overload).
+        peak_separation: shortest time between two peak-load lows [s].
 
     Attributes:
         change_points_: (:class:`ChangePoints`) result of the change-point
@@ -912,6 +1014,9 @@ class MomentDetector:
         max_moments: int = 8,
         max_candidates: int | None = 32,
         acc_components: bool = False,
+        peak_level: float | None = 1.5,
+        max_peaks: int = 2,
+        peak_separation: float = 0.1,
     ) -> None:
         self.window = _check_nonneg_seconds("window", window)
         self.debounce = _check_nonneg_seconds("debounce", debounce)
@@ -924,21 +1029,30 @@ class MomentDetector:
         if not isinstance(acc_components, (bool, np.bool_)):
             raise ParameterError(f"acc_components must be True or False, got {acc_components!r}")
         self.acc_components = bool(acc_components)
+        self.peak_level = None if peak_level is None else _check_positive("peak_level", peak_level)
+        self.max_peaks = _check_int("max_peaks", max_peaks, 0)
+        self.peak_separation = _check_nonneg_seconds("peak_separation", peak_separation)
 
     def __repr__(self) -> str:
         opts = ", ".join(
             f"{k}={getattr(self, k)!r}"
             for k in ("window", "debounce", "min_separation", "penalty_scale", "noise_floor", "max_samples",
-                      "max_moments", "max_candidates", "acc_components")
+                      "max_moments", "max_candidates", "acc_components", "peak_level", "max_peaks",
+                      "peak_separation")
         )
         return f"MomentDetector({opts})"
 
-    def fit(self, recording: Any) -> MomentDetector:
-        """Compute features, change points and contact events, and merge them.
+    def fit(self, recording: Any, *, load_fos: np.ndarray | None = None,
+            load_source: str = "analytic bound") -> MomentDetector:
+        """Compute features, change points, contact events and peak loads, and merge them.
 
         Args:
             recording: a Recording (see :func:`safety_features` and
                 :func:`detect_contact_events` for the attributes used).
+            load_fos: (T,) another motor FOS over the whole motion whose lows are
+                peak-load candidates too, e.g. the analytic bound at the heaviest
+                payload (:func:`critmoment.dynamics.trajectory_load_bound`).
+            load_source: what ``load_fos`` describes, for the reasons.
 
         Returns:
             self
@@ -970,6 +1084,7 @@ class MomentDetector:
                        magnitude=float(mag), reasons=reasons)
             )
         events = detect_contact_events(recording, debounce_time=self.debounce)
+        events += self._peak_loads(recording, dt, time.size, load_fos, load_source)
         candidates = merge_moments(events + cp_moments, window=self.window, dt=dt)
         if self.max_candidates is not None and len(candidates) > self.max_candidates:
             candidates = sorted(sorted(candidates, key=_heuristic_key)[: self.max_candidates], key=lambda m: m.step)
@@ -982,6 +1097,31 @@ class MomentDetector:
         self.decimation_ = cps.decimation
         self.dt_ = dt
         return self
+
+    def _peak_loads(self, recording: Any, dt: float, n_steps: int, load_fos: Any,
+                    load_source: str) -> list[Moment]:
+        """Peak-load moments of the recording's motor FOS and of ``load_fos``."""
+        if self.peak_level is None:
+            return []
+        names = getattr(recording, "actuator_names", None)
+        argmax = getattr(getattr(recording, "signals", None), "motor_argmax", None)
+        limiting = None
+        if names is not None and argmax is not None and np.shape(argmax) == (n_steps,):
+            limiting = [str(names[int(a)]) for a in np.asarray(argmax)]
+        series = [(np.asarray(_attr(recording, "fos_motor"), dtype=float), limiting,
+                   "nominal run")]
+        if load_fos is not None:
+            series.append((np.asarray(load_fos, dtype=float), None, load_source))
+        out: list[Moment] = []
+        for fos, lim, source in series:
+            if fos.shape != (n_steps,):
+                raise TrajectoryError(f"{source}: expected a motor FOS of shape ({n_steps},), "
+                                      f"got {fos.shape}")
+            out += detect_peak_loads(np.nan_to_num(fos, nan=np.inf), dt=dt,
+                                     level=self.peak_level, max_peaks=self.max_peaks,
+                                     separation=self.peak_separation, limiting=lim,
+                                     source=source)
+        return out
 
     def predict(
         self,
@@ -1028,7 +1168,8 @@ class MomentDetector:
 
 _DETECTOR_OPTIONS = (
     "window", "debounce", "min_separation", "penalty_scale", "noise_floor", "max_samples",
-    "max_moments", "max_candidates", "acc_components",
+    "max_moments", "max_candidates", "acc_components", "peak_level", "max_peaks",
+    "peak_separation",
 )
 
 
@@ -1074,6 +1215,7 @@ _LABEL_COLORS = {
     MomentLabel.PLACE: "tab:green",
     MomentLabel.GRASP: "tab:blue",
     MomentLabel.RELEASE: "tab:cyan",
+    MomentLabel.PEAK_LOAD: "tab:orange",
     MomentLabel.CHANGE_POINT: "tab:gray",
 }
 

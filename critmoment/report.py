@@ -187,6 +187,8 @@ def report_json(report, *, timings: bool = True) -> dict:
         "cost": dataclasses_asdict(report.scenario.cost),
         "horizon": int(report.sweep.horizon) if report.sweep is not None else None,
         "verification": _jsonable(report.verification),
+        "feasibility": (report.feasibility.to_json()
+                        if getattr(report, "feasibility", None) is not None else None),
         "rollout": report.recording.summary(),
         "manifest": _jsonable(report.manifest),
     }

@@ -918,8 +918,8 @@ class SparseEvaluator:
             length[follow] = h + extra
             warned = batch.warning[:, :, 1].copy()
             decided = self._decide(buf, slip, length, mu, k, final=True)
-        finite = np.array([np.isfinite(buf[i, :max(1, length[i])]).all() for i in range(nsim)])
-        diverged = raised | (warned > 0).any(axis=1) | ~finite
+        # rows never stepped are zero, hence finite
+        diverged = raised | (warned > 0).any(axis=1) | ~np.isfinite(buf).all(axis=(1, 2))
         diverged[length == 0] = False
         failure = np.where(diverged, Failure.DIVERGED, decided.failure).astype(np.int8)
         stop = decided.stop | diverged

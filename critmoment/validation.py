@@ -65,6 +65,7 @@ import numpy as np
 from critmoment import sparse as sp
 from critmoment.analysis import AnalyzeOptions, audit_moments
 from critmoment.exceptions import ParameterError
+from critmoment.feasibility import check_fit, preflight
 from critmoment.moments import Moment
 from critmoment.recording import (
     Recording,
@@ -771,9 +772,11 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     samples = twin.scenario.box.check_samples(samples)
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
+    check_fit(traj, None, twin)  # width and units, naming the likely mistake
     rec = rollout(traj, twin=twin)
     t1 = time.perf_counter()
     timings["rollout"] = t1 - t0
+    preflight(traj, rec, twin)  # the twin can follow the nominal motion, or exit 2
     evaluator = sp.SparseEvaluator(rec, twin, horizon=horizon, mode=mode, nthread=nthread)
     h = evaluator.horizon
     # the audit's own selection (critmoment.analysis.audit_moments)

@@ -646,3 +646,98 @@ def test_scene_payload_regressor_loads_only_the_holding_arm():
     lever = tcp.translation - shoulder.translation
     expected = -np.dot(axis, np.cross(lever, pm.gravity))
     assert y[arm[1]] == pytest.approx(expected, abs=1e-12)
+
+
+# --------------------------------------------------------------------------
+# loads over the whole motion
+# --------------------------------------------------------------------------
+
+#: a 0.3 m, 1 kg hinge arm about y with a stiff, force-limited position servo (±5 N·m), a
+#: pad at its tip, and a box resting on the table far from it: the arm never touches it
+SWING_MJCF = """
+<mujoco model="swing">
+  <option timestep="0.002" gravity="0 0 -9.81"/>
+  <worldbody>
+    <geom name="table" type="plane" size="2 2 0.1"/>
+    <body name="arm" pos="0 0 0.8">
+      <joint name="hinge" type="hinge" axis="0 1 0"/>
+      <geom name="link" type="capsule" fromto="0 0 0 0.3 0 0" size="0.02" mass="1"/>
+      <geom name="pad" type="box" pos="0.3 0 0" size="0.01 0.02 0.02" mass="0.05"/>
+    </body>
+    <body name="box" pos="1.2 0 0.02">
+      <freejoint/>
+      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.05" priority="1"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="hinge" joint="hinge" kp="300" forcerange="-5 5"/>
+  </actuator>
+</mujoco>
+"""
+
+
+@pytest.fixture(scope="module")
+def swing(tmp_path_factory):
+    """(twin, recording): the arm rests, then swings 1.2 rad from t = 0.14 s on."""
+    from scenarios import one_actuator_toml
+
+    from critmoment import recording as rollout
+    from critmoment.scenario import load_scenario
+    from critmoment.trajectory import Trajectory
+    from critmoment.twin import Twin
+
+    folder = tmp_path_factory.mktemp("swing")
+    (folder / "scene.xml").write_text(SWING_MJCF)
+    (folder / "scenario.toml").write_text(one_actuator_toml(
+        "swing", mjcf="scene.xml", gripper="hand", gripper_geom="pad", support="table",
+        actuator="hinge", limit=5.0, task=True, uncertainty="""[uncertainty.mass]
+body = "box"
+range = [0.05, 2.0]
+nominal = 0.05
+"""))
+    twin = Twin(load_scenario(folder))
+    fps = 50.0
+    t = np.arange(30) / fps
+    actions = np.where(t < 0.15, 0.0, -1.2)[:, None]
+    return twin, rollout.rollout(Trajectory(actions=actions, fps=fps, start=np.zeros(1)),
+                                 twin=twin)
+
+
+def test_load_bound_finds_the_free_arms_overload_where_the_full_rollout_saturates(swing):
+    from critmoment.moments import MomentDetector, MomentLabel
+
+    twin, rec = swing
+    # ground truth from the rollout itself: the first saturation that lasts over 50 ms
+    saturated = np.abs(rec.actuator_norm[:, 0]) >= 0.999
+    need = int(round(0.05 / rec.dt)) + 1
+    runs = np.flatnonzero(np.diff(np.concatenate([[0], saturated.astype(np.int8), [0]])))
+    truth = next(int(a) for a, b in zip(runs[::2], runs[1::2], strict=True) if b - a >= need)
+    # the swing (the upsampling spline starts the target moving a sample early), before
+    # any contact with the object
+    assert 0.1 <= truth * rec.dt <= 0.2
+    assert not rec.signals.contact_gripper.any()
+    bound = dyn.trajectory_load_bound(rec, twin, masses=[0.05, 2.0])
+    assert not bound.carried.any()
+    # the arm alone: the payload never rides on it, so every mass fails at the same time
+    first = bound.first_failing_step
+    assert abs(int(first[0]) - truth) <= 3, (first, truth)
+    np.testing.assert_array_equal(first[0], first[1])
+    np.testing.assert_allclose(bound.first_failing_time, first * rec.dt)
+    assert bound.critical_mass[truth + 5] == 0.0  # overloaded without any payload
+    assert bound.limiting_at(0, truth + 5) == "hinge"
+    # the bound agrees with the recorded servo force where the arm is not saturated
+    calm = np.arange(10, int(0.1 / rec.dt))
+    np.testing.assert_allclose(bound.fos[0, calm], rec.fos_motor[calm], rtol=0.02)
+    # the peak-load candidates include the overload, though no contact event is near it
+    detector = MomentDetector().fit(rec)
+    peaks = [m for m in detector.candidates_ if m.label is MomentLabel.PEAK_LOAD]
+    assert peaks and min(abs(m.step - truth) for m in peaks) <= 3, [m.step for m in peaks]
+    assert not [m for m in detector.events_ if m.label is MomentLabel.GRASP]
+
+
+def test_load_bound_rejects_bad_options(swing):
+    twin, rec = swing
+    with pytest.raises(ParameterError, match="masses"):
+        dyn.trajectory_load_bound(rec, twin, masses=[-1.0])
+    with pytest.raises(ParameterError, match="saturation"):
+        dyn.trajectory_load_bound(rec, twin, saturation=1.5)

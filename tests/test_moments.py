@@ -476,3 +476,63 @@ def test_moment_is_frozen_and_plot_is_agg_safe(tmp_path):
     assert plot_moments(rec, moments[:2], ax=ax) is ax.figure
     with pytest.raises(ParameterError, match="sequence of 3 Axes"):
         plot_moments(rec, moments, ax=[ax, ax])
+
+
+# --------------------------------------------------------------------------
+# peak loads
+# --------------------------------------------------------------------------
+
+
+def test_peak_loads_first_overload_and_separated_lows():
+    from critmoment.moments import detect_peak_loads
+
+    dt = 0.002
+    t = np.arange(2000) * dt
+    # two smooth dips (1.3 at 0.5 s, 1.2 at 3.0 s), a brief touch of the limit at 1.0 s
+    # (10 ms), and a saturation held for 0.1 s from 2.0 s
+    fos = 3.0 - 1.7 * np.exp(-((t - 0.5) / 0.05) ** 2) - 1.8 * np.exp(-((t - 3.0) / 0.05) ** 2)
+    fos[500:505] = 1.0
+    fos[1000:1050] = 1.0
+    out = detect_peak_loads(fos, dt=dt, level=1.5, max_peaks=2, separation=0.1)
+    assert all(m.label is MomentLabel.PEAK_LOAD for m in out)
+    first = [m for m in out if m.reason.startswith("first overload")]
+    assert [m.step for m in first] == [1000]  # the short touch at 1.0 s does not last 50 ms
+    lows = sorted(m.step for m in out if m.reason.startswith("peak load"))
+    # the lowest lows at least 0.1 s from the first overload: the brief touch, then 3.0 s
+    assert lows == [500, 1500]
+    assert [m.step for m in out] == sorted(m.step for m in out)
+    assert detect_peak_loads(np.full(100, 3.0), dt=dt) == []
+    assert len(detect_peak_loads(fos, dt=dt, max_peaks=0)) == 1
+    with pytest.raises(TrajectoryError, match="fos"):
+        detect_peak_loads(np.full((3, 2), 1.0), dt=dt)
+    with pytest.raises(ParameterError, match="saturation"):
+        detect_peak_loads(fos, dt=dt, saturation=0.0)
+
+
+def test_detector_adds_peak_loads_of_the_recording_and_of_an_extra_bound():
+    rec = _peak_recording()
+    plain = MomentDetector(peak_level=None).fit(rec)
+    assert not any(m.label is MomentLabel.PEAK_LOAD for m in plain.candidates_)
+    det = MomentDetector().fit(rec)
+    peaks = [m for m in det.candidates_ if m.label is MomentLabel.PEAK_LOAD]
+    assert [m.step for m in peaks] == [300]
+    assert "nominal run" in peaks[0].reason
+    bound = np.full(rec.time.size, 4.0)
+    bound[700] = 0.5
+    extra = MomentDetector().fit(rec, load_fos=bound, load_source="bound at 2 kg")
+    found = {m.step: m.reason for m in extra.candidates_ if m.label is MomentLabel.PEAK_LOAD}
+    assert 300 in found and 700 in found and "bound at 2 kg" in found[700]
+    with pytest.raises(TrajectoryError, match="shape"):
+        MomentDetector().fit(rec, load_fos=bound[:10])
+
+
+def _peak_recording():
+    """A quiet synthetic recording whose motor FOS dips to 1.2 at step 300, no contacts."""
+    n = 1000
+    fos = np.full(n, 3.0)
+    fos[290:311] = 1.2 + np.abs(np.arange(-10, 11)) * 0.01
+    return types.SimpleNamespace(
+        dt=0.002, time=np.arange(n) * 0.002, object_acc=np.zeros((n, 3)),
+        actuator_norm=np.zeros((n, 1)), fos_contact=np.full((n, 1), np.inf), fos_motor=fos,
+        contact_support=np.ones(n, bool), contact_gripper=np.zeros((n, 1), bool),
+        gripper_names=("hand",))

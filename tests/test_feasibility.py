@@ -1,0 +1,257 @@
+"""Tests for critmoment.feasibility: the twin's own feasibility and the trajectory's fit.
+
+Small scenes are written inline (MJCF + scenario.toml in tmp folders):
+
+* a hinge arm turning about the vertical (no gravity load) whose joint frictionloss is
+  above the servo's force limit: it can never move;
+* a hinge arm held horizontal against gravity: a static hold needs m·g·L/2 = 2.45 N·m,
+  so a servo limited to 0.5 N·m sags (lag error) and one limited to 10 N·m holds it with
+  the steady-state error m·g·L/2 / kp.
+"""
+
+from __future__ import annotations
+
+import json
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scenarios import one_actuator_toml
+
+from critmoment import feasibility, suite
+from critmoment.exceptions import CritmomentError, InfeasibleTwinError, TrajectoryError
+from critmoment.feasibility import FeasibilityOptions, check_feasibility, check_fit
+from critmoment.recording import rollout
+from critmoment.scenario import load_scenario
+from critmoment.trajectory import Trajectory, save_trajectory
+from critmoment.twin import Twin
+
+G = 9.81
+LINK_MASS = 1.0
+LINK_L = 0.25                              # uniform link: gravity moment m·g·L/2
+HOLD_TORQUE = LINK_MASS * G * LINK_L / 2   # 1.226 N·m
+KP = 2000.0
+
+
+def _arm_xml(*, axis: str, forcerange: float, frictionloss: float) -> str:
+    return f"""<mujoco model="arm">
+  <compiler angle="radian" inertiafromgeom="true"/>
+  <option timestep="0.002" integrator="implicitfast"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="2 2 0.1"/>
+    <body name="arm" pos="0 0 0.5">
+      <joint name="hinge" type="hinge" axis="{axis}" range="-2 2" damping="1"
+             frictionloss="{frictionloss}"/>
+      <geom name="link" type="box" size="{LINK_L / 2} 0.02 0.02" pos="{LINK_L / 2} 0 0"
+            mass="{LINK_MASS}" contype="0" conaffinity="0"/>
+      <geom name="pad" type="box" size="0.01 0.02 0.02" pos="{LINK_L} 0 0" mass="0"
+            contype="0" conaffinity="0"/>
+    </body>
+    <body name="box" pos="1 1 0.02">
+      <freejoint/>
+      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.1"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="servo" joint="hinge" kp="{KP}" kv="40" forcerange="-{forcerange} {forcerange}"/>
+  </actuator>
+</mujoco>
+"""
+
+
+def _scene(folder: Path, *, axis: str, limit: float, frictionloss: float = 0.0) -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "arm.xml").write_text(_arm_xml(axis=axis, forcerange=limit,
+                                             frictionloss=frictionloss))
+    toml = one_actuator_toml("arm", mjcf="arm.xml", gripper="hand", gripper_geom="pad",
+                             support="floor", actuator="servo", limit=limit, label="hinge",
+                             uncertainty="""[uncertainty.mass]
+body = "box"
+range = [0.05, 1.0]
+nominal = 0.1
+""")
+    (folder / "scenario.toml").write_text(toml)
+    return folder / "scenario.toml"
+
+
+def _ramp(target: float, *, seconds: float = 2.0, fps: float = 50.0) -> Trajectory:
+    """Hold 0, ramp to ``target`` over the middle half, hold: (T, 1) actions."""
+    t = np.arange(int(seconds * fps)) / fps
+    q = np.interp(t, [0.0, seconds / 4, 3 * seconds / 4, seconds], [0.0, 0.0, target, target])
+    return Trajectory(actions=q[:, None], fps=fps, start=np.zeros(1), source="ramp")
+
+
+def _record(twin: Twin, traj: Trajectory):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return rollout(traj, twin=twin)
+
+
+# -- (a) friction above the force limit --------------------------------------------------
+@pytest.fixture(scope="module")
+def sticky(tmp_path_factory):
+    path = _scene(tmp_path_factory.mktemp("sticky"), axis="0 0 1", limit=20.0,
+                  frictionloss=45.0)
+    return Twin(load_scenario(path))
+
+
+def test_frictionloss_above_the_force_limit_is_infeasible(sticky):
+    rec = _record(sticky, _ramp(1.0))
+    with pytest.raises(InfeasibleTwinError, match=r"joint 'hinge'.*frictionloss 45 N·m > "
+                       r"force limit 20 N·m.*can never move this joint.*\[limits\]") as exc:
+        check_feasibility(rec, sticky)
+    report = exc.value.report
+    assert not report.feasible and len(report.problems) == 1
+    # a static check: MuJoCo's frictionloss is a soft constraint, and this light link creeps
+    # after its target anyway; a real joint would not move
+    entry = report.joint("hinge")
+    assert entry.frictionloss == 45.0 and entry.force_limit == 20.0
+    assert "\n" not in str(exc.value)
+
+
+def test_frictionloss_on_a_joint_that_need_not_move_is_fine(sticky):
+    rec = _record(sticky, _ramp(0.0))
+    report = check_feasibility(rec, sticky)
+    assert report.feasible and report.joint("servo").max_lag < 1e-6
+
+
+# -- (b) a servo too weak for gravity ------------------------------------------------------
+@pytest.fixture(scope="module")
+def weak(tmp_path_factory):
+    return Twin(load_scenario(_scene(tmp_path_factory.mktemp("weak"), axis="0 1 0", limit=0.5)))
+
+
+@pytest.fixture(scope="module")
+def strong(tmp_path_factory):
+    return Twin(load_scenario(_scene(tmp_path_factory.mktemp("strong"), axis="0 1 0",
+                                     limit=10.0)))
+
+
+def test_servo_too_weak_for_gravity_lags(weak):
+    rec = _record(weak, _ramp(0.0, seconds=4.0))
+    report = check_feasibility(rec, weak, raise_on_failure=False)
+    entry = report.joint("hinge")
+    # 0.5 N·m against the gravity moment m·g·L/2·cos θ: the arm sags to cos θ = 0.5 / 1.226
+    sag = np.arccos(0.5 / HOLD_TORQUE)
+    assert entry.max_lag == pytest.approx(sag, abs=0.03)
+    assert entry.lag_start < 0.2
+    assert entry.lag_duration == pytest.approx(rec.n_steps * rec.dt - entry.lag_start, abs=0.01)
+    assert entry.saturation_total > 1.5
+    with pytest.raises(InfeasibleTwinError) as exc:
+        check_feasibility(rec, weak)
+    msg = str(exc.value)
+    assert "joint 'hinge'" in msg
+    assert f"lags its target by up to {entry.lag_in_run:.3g} rad" in msg
+    assert f"for {entry.lag_duration:.3g} s from t = {entry.lag_start:.3f} s" in msg
+    assert "force limit 0.5 N·m" in msg
+
+
+def test_strong_servo_holds_with_the_static_error(strong):
+    rec = _record(strong, _ramp(0.0))
+    report = check_feasibility(rec, strong)
+    entry = report.joint("hinge")
+    # at rest the servo carries the gravity moment: lag = m·g·L/2 / kp
+    assert abs(rec.signals.actuator_force[-1, 0]) == pytest.approx(HOLD_TORQUE, rel=0.02)
+    assert entry.max_lag == pytest.approx(HOLD_TORQUE / KP, rel=0.05)
+    assert entry.saturation_duration == 0.0 and entry.lag_duration == 0.0
+
+
+def test_lag_tolerance_and_delay_decide(strong):
+    rec = _record(strong, _ramp(1.0))
+    # a servo follows a ramp late: without a delay allowance the lag is larger
+    late = check_feasibility(rec, strong, options=FeasibilityOptions(delay=0.0)).joint("hinge")
+    allowed = check_feasibility(rec, strong).joint("hinge")
+    assert late.max_lag > 2 * allowed.max_lag
+    tight = FeasibilityOptions(lag_tolerance=late.max_lag / 2, delay=0.0, lag_duration=0.01)
+    with pytest.raises(InfeasibleTwinError, match="joint 'hinge'"):
+        check_feasibility(rec, strong, options=tight)
+
+
+def test_options_validate():
+    with pytest.raises(CritmomentError, match="lag_tolerance"):
+        FeasibilityOptions(lag_tolerance=0.0)
+    with pytest.raises(CritmomentError, match="saturation_fraction"):
+        FeasibilityOptions(saturation_fraction=1.5)
+    with pytest.raises(CritmomentError, match="delay"):
+        FeasibilityOptions(delay=-1.0)
+
+
+# -- (c) the bundled demo ---------------------------------------------------------------------
+def test_bundled_demo_is_feasible(twin, demo_recording, demo_traj):
+    report = check_feasibility(demo_recording, twin)
+    assert report.feasible and not report.warnings
+    arms = [j for j in report.joints if not j.gripper]
+    grippers = [j for j in report.joints if j.gripper]
+    assert len(arms) == 12 and len(grippers) == 4
+    assert max(j.max_lag for j in arms) < 0.05  # measured 0.020 rad (docs/method.md)
+    assert all(j.saturation_duration == 0.0 for j in arms)
+    # the fingers closed on the cube are blocked by it and sit at their force limit
+    assert max(j.saturation_duration for j in grippers) > 1.0
+    # checked like the arms, their stretches at the limit are held back by the cube
+    strict = check_feasibility(demo_recording, twin,
+                               options=FeasibilityOptions(check_grippers=True))
+    assert strict.feasible and strict.warnings
+    assert all("finger" in w and "box" in w for w in strict.warnings)
+    assert check_fit(demo_traj, demo_recording, twin) == []
+    doc = json.loads(json.dumps(report.to_json(), allow_nan=False))
+    assert doc["feasible"] is True and len(doc["joints"]) == 16
+    assert {"max_lag", "lag_duration", "saturation_duration"} <= set(doc["joints"][0])
+
+
+# -- (d) a nominal run that never touches the object --------------------------------------------
+def test_untouched_object_gives_the_fit_hint(twin):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        traj = suite.make("no_grasp", seed=0, twin=twin)
+    rec = _record(twin, traj)
+    hints = check_fit(traj, rec, twin)
+    assert len(hints) == 1
+    assert "the nominal run never touches the object" in hints[0]
+    assert "--object-pose" in hints[0] and "another scenario" in hints[0]
+    with pytest.raises(TrajectoryError, match="never touches the object"):
+        check_fit(traj, rec, twin, strict=True)
+    # the arms still follow their targets: the one joint held back is held by a contact
+    # (the left gripper closes on the right one's fingers), a warning, not an error
+    with pytest.warns(feasibility.FitWarning) as caught:
+        report = feasibility.preflight(traj, rec, twin)
+    assert report.feasible and report.fit_warnings == tuple(hints)
+    assert any("held back by a contact" in w for w in report.warnings)
+    assert len(caught) == len(report.warnings) + 1
+
+
+# -- (e) the wrong scenario --------------------------------------------------------------------
+def test_width_mismatch_names_the_bundled_scenario(sticky, twin):
+    aloha = Trajectory(actions=np.zeros((10, 14)), fps=50.0)
+    with pytest.raises(TrajectoryError, match=r"14 action values per step, scenario 'arm' "
+                       r"expects 1 .*bundled scenario 'aloha_transfer_cube' takes 14"):
+        check_fit(aloha, None, sticky)
+    odd = Trajectory(actions=np.zeros((10, 13)), fps=50.0)
+    with pytest.raises(TrajectoryError, match="no bundled scenario takes 13"):
+        check_fit(odd, None, twin)
+
+
+def test_gripper_values_in_raw_units_are_named(twin, demo_traj):
+    raw = np.array(demo_traj.actions)
+    raw[:, 6] *= 255.0
+    with pytest.raises(TrajectoryError, match=r"'left/gripper' is a normalised gripper.*raw"):
+        check_fit(Trajectory(actions=raw, fps=demo_traj.fps), None, twin)
+    degrees = np.array(demo_traj.actions)
+    degrees[:, 1] = np.degrees(degrees[:, 1]) + 60.0
+    with pytest.raises(TrajectoryError, match="degrees instead of radians"):
+        check_fit(Trajectory(actions=degrees, fps=demo_traj.fps), None, twin)
+
+
+# -- the CLI ---------------------------------------------------------------------------------
+def test_cli_exits_2_with_one_line_for_an_infeasible_twin(tmp_path, capsys):
+    from critmoment.cli import main
+
+    scenario = _scene(tmp_path / "sticky", axis="0 0 1", limit=20.0, frictionloss=45.0)
+    traj = tmp_path / "ramp.npz"
+    save_trajectory(_ramp(1.0), traj)
+    code = main(["analyze", str(traj), "--scenario", str(scenario), "--samples", "8"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 2
+    errors = [line for line in err if "error" in line]
+    assert len(errors) == 1 and "frictionloss 45 N·m > force limit 20 N·m" in errors[0]
+    assert "joint 'hinge'" in errors[0]
