@@ -19,7 +19,7 @@ from critmoment import analysis, demos
 
 def ground_truth(rec, scenario):
     names = scenario.gripper_names
-    pick, recv = names.index(scenario.picker), names.index(scenario.receiver)
+    pick, recv = names.index(scenario.task.picker), names.index(scenario.task.receiver)
     sup = rec.contact_support
     grip = rec.contact_gripper
     carried = ~sup & grip[:, pick]

@@ -23,8 +23,14 @@ import mujoco.batch
 import numpy as np
 
 from critmoment import trajectory as trajectory_mod
-from critmoment.exceptions import InputFileError, SimulationDivergedError, TrajectoryError
+from critmoment.exceptions import (
+    InputFileError,
+    ParameterError,
+    SimulationDivergedError,
+    TrajectoryError,
+)
 from critmoment.scenario import Scenario, load_scenario
+from critmoment.task import Task, TaskEvidence
 from critmoment.trajectory import Trajectory
 from critmoment.twin import STATE_SPEC, Signals, Twin
 
@@ -278,6 +284,7 @@ class Recording:
         scenario_name: the scenario's name.
         model_sha256: hash of the MJCF files.
         source: the trajectory's source.
+        task: the scenario's task (decides :attr:`completed`).
     """
 
     dt: float
@@ -292,6 +299,7 @@ class Recording:
     scenario_name: str
     model_sha256: str
     source: str = ""
+    task: Task | None = None
 
     # signal shortcuts, as read by moments.py
     @property
@@ -336,8 +344,14 @@ class Recording:
 
     @property
     def completed(self) -> bool:
-        """Stage 4 reached and kept to the end (see :func:`task_completed`)."""
-        return bool(task_completed(self.stage, dt=self.dt))
+        """The scenario's task succeeded in this run (:meth:`critmoment.task.Task.success`)."""
+        if self.task is None:
+            raise ParameterError("this recording carries no task; expected one from rollout() "
+                                 "or Recording.load(path, twin)")
+        return bool(self.task.success(TaskEvidence(
+            contact_gripper=self.signals.contact_gripper,
+            contact_support=self.signals.contact_support, object_pos=self.signals.object_pos,
+            object_vel=self.signals.object_vel, dt=self.dt)))
 
     def stage_first_step(self) -> dict[int, int | None]:
         """First step at which each stage 1..4 is reached (None if never)."""
@@ -404,7 +418,7 @@ class Recording:
                    gripper_names=tuple(meta["gripper_names"]),
                    actuator_names=tuple(meta["actuator_names"]),
                    scenario_name=meta["scenario_name"], model_sha256=meta["model_sha256"],
-                   source=meta["source"])
+                   source=meta["source"], task=twin.task)
 
 
 def _friction_of(twin: Twin, values: np.ndarray) -> float:
@@ -450,4 +464,4 @@ def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
         signals=twin.signals(sd), nominal=twin.scenario.box.nominal,
         parameter_names=twin.scenario.box.names, gripper_names=twin.scenario.gripper_names,
         actuator_names=twin.actuator_names, scenario_name=twin.scenario.name,
-        model_sha256=model_hash(twin.scenario), source=traj.source)
+        model_sha256=model_hash(twin.scenario), source=traj.source, task=twin.task)

@@ -1,23 +1,48 @@
-"""Scenario: which model, object, grippers, limits, uncertainty box and cost.
+"""Scenario: which model, object, grippers, task, limits, uncertainty box and cost.
 
-A scenario is a TOML file beside an MJCF model (see ``docs/formats.md``). Every
-field is validated on load, and every name (body, geom, actuator) is checked
-against the compiled model, with the valid names listed when one is unknown.
+A scenario is a TOML file beside an MJCF model (see ``docs/formats.md``). The schema is
+strict: every table and key is checked (an unknown key is an error that lists the valid
+keys, with a "did you mean"), every value's type, and every name (body, geom, actuator,
+joint, tendon, keyframe) against the compiled model, with the valid names listed when one
+is unknown.
+
+Models load as they ship. critmoment compiles its own copy through ``mujoco.MjSpec``
+(:func:`prepare_spec`) and, in that copy only:
+
+* names unnamed geoms ``critmoment:geom:<i>`` (``i`` = the geom's id) and unnamed
+  actuators after the joint or tendon they drive, so grippers given by body and actuators
+  addressed by their joint work on models whose elements carry no names;
+* raises the ``priority`` of the object's geoms above every other geom when the box varies
+  the object's friction, so that the object's friction governs its contacts (MuJoCo mixes
+  two geoms' friction with ``max`` unless one has the higher priority). The pads' own
+  friction then no longer acts on the object's contacts; it still acts on every other
+  contact of the pads.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import difflib
+import math
 import sys
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
 import mujoco
 import numpy as np
 
+from critmoment import actuators as act_info
 from critmoment.exceptions import InputFileError, ParameterError, ScenarioError
-from critmoment.params import PARAMETER_KINDS, Parameter, Prior, UncertaintyBox
+from critmoment.params import (
+    PARAMETER_KINDS,
+    ForceLimitParameter,
+    FrictionParameter,
+    Parameter,
+    Prior,
+    UncertaintyBox,
+)
+from critmoment.task import Task, task_from_table
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -28,14 +53,21 @@ __all__ = [
     "CostParams",
     "Gripper",
     "ActionConvention",
+    "SparseSettings",
     "Scenario",
     "load_scenario",
+    "scenario_from_dict",
+    "prepare_spec",
     "bundled_scenario_path",
     "BUNDLED_SCENARIOS",
+    "unknown_keys_error",
 ]
 
 #: scenarios shipped with critmoment, by name
-BUNDLED_SCENARIOS = ("aloha_transfer_cube",)
+BUNDLED_SCENARIOS = ("aloha_transfer_cube", "panda_pick_place")
+
+#: prefix of the names critmoment gives unnamed model elements in its own copy
+GENERATED = "critmoment:"
 
 
 def _models_dir() -> Path:
@@ -59,6 +91,75 @@ def bundled_scenario_path(name: str = "aloha_transfer_cube") -> Path:
     return _models_dir() / name / "scenario.toml"
 
 
+# ---------------------------------------------------------------------------
+# strict schema helpers
+# ---------------------------------------------------------------------------
+
+
+def unknown_keys_error(where: str, extra: Iterable[str], valid: Sequence[str]) -> ScenarioError:
+    """A ScenarioError for keys ``extra`` of table ``where``, with the valid keys and a
+    "did you mean" for each key close to a valid one."""
+    parts = []
+    for key in sorted(extra):
+        close = difflib.get_close_matches(key, list(valid), n=1, cutoff=0.6)
+        parts.append(f"{key!r}" + (f" (did you mean {close[0]!r}?)" if close else ""))
+    return ScenarioError(f"{where}: unknown key{'s' if len(parts) > 1 else ''} "
+                         f"{', '.join(parts)}; valid keys: {', '.join(valid)}")
+
+
+def _keys(table: Mapping[str, Any], where: str, valid: Sequence[str]) -> None:
+    extra = set(table) - set(valid)
+    if extra:
+        raise unknown_keys_error(where, extra, valid)
+
+
+def _type_name(kind) -> str:
+    if isinstance(kind, tuple):
+        return " or ".join(_type_name(k) for k in kind)
+    return {dict: "a table", list: "a list", str: "a string", int: "an integer",
+            float: "a number", bool: "true or false"}.get(kind, getattr(kind, "__name__", kind))
+
+
+def _get(table: Mapping[str, Any], key: str, kind, where: str, default=...):
+    if key not in table:
+        if default is ...:
+            raise ScenarioError(f"{where}: missing required key {key!r}")
+        return default
+    value = table[key]
+    bad_bool = isinstance(value, bool) and kind is not bool and not (
+        isinstance(kind, tuple) and bool in kind)
+    if not isinstance(value, kind) or bad_bool:
+        raise ScenarioError(f"{where} {key}: expected {_type_name(kind)}, got {value!r}")
+    return value
+
+
+def _number(table, key, where, default=..., *, positive: bool = False) -> float:
+    value = _get(table, key, (int, float), where, default)
+    if value is None:
+        return value
+    value = float(value)
+    if not math.isfinite(value) or (positive and not value > 0):
+        raise ScenarioError(f"{where} {key}: expected a finite number{' > 0' if positive else ''}"
+                            f", got {value!r}")
+    return value
+
+
+def _names(table, key, where, default=...) -> tuple[str, ...] | None:
+    value = _get(table, key, list, where, default)
+    if value is None:
+        return None
+    if not value or not all(isinstance(v, str) for v in value):
+        raise ScenarioError(f"{where} {key}: expected a non-empty list of names, got {value!r}")
+    if len(set(value)) != len(value):
+        raise ScenarioError(f"{where} {key}: expected each name once, got {value!r}")
+    return tuple(value)
+
+
+# ---------------------------------------------------------------------------
+# the scenario's parts
+# ---------------------------------------------------------------------------
+
+
 @dataclasses.dataclass(frozen=True)
 class CostParams:
     """Constants of the cost C = A·exp(−α(FOS_c − 1)) + B·exp(−β(FOS_m − 1)) (thesis eq. 15)."""
@@ -76,12 +177,21 @@ class CostParams:
                 raise ScenarioError(f"[cost] {key}: expected a finite number > 0, got {value!r}")
 
 
+
 @dataclasses.dataclass(frozen=True)
 class Gripper:
-    """A gripper: a name and the geoms that touch the object."""
+    """A gripper: a name and the geoms that may touch the object.
+
+    Attributes:
+        name: the gripper's name in the scenario.
+        geoms: its collision geoms (generated names for geoms the MJCF leaves unnamed).
+        body: the body whose subtree's collision geoms make up the gripper, when given by
+            body; else None.
+    """
 
     name: str
     geoms: tuple[str, ...]
+    body: str | None = None
 
 
 @dataclasses.dataclass(frozen=True)
@@ -89,8 +199,8 @@ class ActionConvention:
     """How one action vector maps to actuator controls.
 
     Each channel drives one or more actuators: ``ctrl[a] = offset[a] + scale[a]·action[c]``.
-    Channels marked ``normalised`` are bounded to [0, 1] (grippers); the others are joint
-    targets bounded by their joint's range.
+    Channels marked ``normalised`` are bounded to [0, 1] (grippers: 0 closed, 1 open);
+    the others are joint targets bounded by their joint's range.
 
     Attributes:
         name: the convention's name (``"aloha14"`` or ``"explicit"``).
@@ -113,14 +223,49 @@ class ActionConvention:
         return len(self.channels)
 
 
+@dataclasses.dataclass(frozen=True)
+class SparseSettings:
+    """The ``[sparse]`` table: how sparse evaluation measures a moment.
+
+    Attributes:
+        horizon: physics steps per sparse evaluation.
+        persistence: how long a contact-FOS excursion must last to count as a failure [s]
+            (shorter excursions are contact chatter).
+        slip_tolerance: largest motion of the object in the holding gripper over the
+            horizon that is not slip [m].
+        creep_horizon: physics steps over which creep (slow slip) is measured, 0 for off.
+    """
+
+    horizon: int = 1
+    persistence: float = 0.02
+    slip_tolerance: float = 0.005
+    creep_horizon: int = 0
+
+    def __post_init__(self):
+        if isinstance(self.horizon, bool) or not isinstance(self.horizon, int) or self.horizon < 1:
+            raise ScenarioError(f"[sparse] horizon: expected an integer >= 1, got {self.horizon!r}")
+        if (isinstance(self.creep_horizon, bool) or not isinstance(self.creep_horizon, int)
+                or self.creep_horizon < 0):
+            raise ScenarioError(
+                f"[sparse] creep_horizon: expected an integer >= 0, got {self.creep_horizon!r}")
+        if not (math.isfinite(self.persistence) and self.persistence >= 0):
+            raise ScenarioError(
+                f"[sparse] persistence: expected a time >= 0 s, got {self.persistence!r}")
+        if not (math.isfinite(self.slip_tolerance) and self.slip_tolerance > 0):
+            raise ScenarioError(
+                f"[sparse] slip_tolerance: expected a distance > 0 m, got {self.slip_tolerance!r}")
+
+
 _ARM_JOINTS = ("waist", "shoulder", "elbow", "forearm_roll", "wrist_angle", "wrist_rotate")
 
 
-def _aloha14(table: Mapping[str, Any]) -> ActionConvention:
-    arms = table.get("arms", ["left", "right"])
-    close = float(table.get("gripper_close", 0.01844))
-    open_ = float(table.get("gripper_open", 0.05800))
-    if not (isinstance(arms, list) and len(arms) == 2 and all(isinstance(a, str) for a in arms)):
+def _aloha14(table: Mapping[str, Any], resolve) -> ActionConvention:
+    _keys(table, "[actions]", ("convention", "fps", "range_policy", "arms", "gripper_close",
+                                "gripper_open"))
+    arms = _get(table, "arms", list, "[actions]", ["left", "right"])
+    close = _number(table, "gripper_close", "[actions]", 0.01844)
+    open_ = _number(table, "gripper_open", "[actions]", 0.05800)
+    if not (len(arms) == 2 and all(isinstance(a, str) for a in arms)):
         raise ScenarioError(f"[actions] arms: expected two arm prefixes, got {arms!r}")
     if not open_ > close:
         raise ScenarioError(
@@ -129,12 +274,13 @@ def _aloha14(table: Mapping[str, Any]) -> ActionConvention:
     span = open_ - close
     for arm in arms:
         for joint in _ARM_JOINTS:
-            channels.append((f"{arm}/{joint}",))
+            channels.append((resolve(f"{arm}/{joint}", "[actions]"),))
             scales.append((1.0,))
             offsets.append((0.0,))
             normalised.append(False)
             labels.append(f"{arm}/{joint}")
-        channels.append((f"{arm}/left_finger", f"{arm}/right_finger"))
+        channels.append((resolve(f"{arm}/left_finger", "[actions]"),
+                         resolve(f"{arm}/right_finger", "[actions]")))
         scales.append((span, -span))
         offsets.append((close, -close))
         normalised.append(True)
@@ -143,30 +289,118 @@ def _aloha14(table: Mapping[str, Any]) -> ActionConvention:
                             tuple(normalised), tuple(labels))
 
 
-def _explicit(table: Mapping[str, Any]) -> ActionConvention:
+_CHANNEL_KEYS = ("actuators", "scales", "offsets", "normalised", "closed", "open", "label")
+
+
+def _explicit(table: Mapping[str, Any], resolve, model=None, grippers=(), keyframe=None
+              ) -> ActionConvention:
+    _keys(table, "[actions]", ("convention", "fps", "range_policy", "channel"))
     entries = table.get("channel")
-    if not isinstance(entries, list) or not entries:
+    if not isinstance(entries, list) or not entries or not all(
+            isinstance(e, Mapping) for e in entries):
         raise ScenarioError(
             "[actions] convention = 'explicit' expects [[actions.channel]] tables with "
-            "'actuators' (list), optional 'scales', 'offsets', 'normalised'")
+            "'actuators' (list), optional 'scales', 'offsets', 'normalised', 'closed', 'open', "
+            f"'label'; got {entries!r}")
     channels, scales, offsets, normalised, labels = [], [], [], [], []
     for i, entry in enumerate(entries):
-        acts = entry.get("actuators")
-        if not isinstance(acts, list) or not acts:
-            raise ScenarioError(f"[[actions.channel]] #{i}: expected a list 'actuators', got {acts!r}")
+        where = f"[[actions.channel]] #{i}"
+        _keys(entry, where, _CHANNEL_KEYS)
+        names = _names(entry, "actuators", where)
+        acts = tuple(resolve(a, where) for a in names)
         n = len(acts)
-        sc = entry.get("scales", [1.0] * n)
-        of = entry.get("offsets", [0.0] * n)
-        if len(sc) != n or len(of) != n:
-            raise ScenarioError(
-                f"[[actions.channel]] #{i}: expected {n} scales and offsets, got {len(sc)}, {len(of)}")
-        channels.append(tuple(acts))
+        norm = _get(entry, "normalised", bool, where, False)
+        has_affine = "scales" in entry or "offsets" in entry
+        has_ends = "closed" in entry or "open" in entry
+        if has_affine and has_ends:
+            raise ScenarioError(f"{where}: expected scales/offsets or closed/open, not both")
+        if has_ends and not norm:
+            raise ScenarioError(f"{where}: closed/open are for normalised gripper channels; "
+                                "set normalised = true")
+        if norm and not has_affine:
+            sc, of = _gripper_ends(entry, acts, where, model, grippers, keyframe)
+        else:
+            sc = _get(entry, "scales", list, where, [1.0] * n)
+            of = _get(entry, "offsets", list, where, [0.0] * n)
+            if len(sc) != n or len(of) != n:
+                raise ScenarioError(
+                    f"{where}: expected {n} scales and offsets, got {len(sc)}, {len(of)}")
+            for key, values in (("scales", sc), ("offsets", of)):
+                if not all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                           and math.isfinite(v) for v in values):
+                    raise ScenarioError(f"{where} {key}: expected finite numbers, got {values!r}")
+            if any(v == 0 for v in sc):
+                raise ScenarioError(f"{where} scales: expected non-zero scales, got {sc!r}")
+        channels.append(acts)
         scales.append(tuple(float(s) for s in sc))
         offsets.append(tuple(float(o) for o in of))
-        normalised.append(bool(entry.get("normalised", False)))
-        labels.append(str(entry.get("label", acts[0])))
+        normalised.append(norm)
+        labels.append(str(_get(entry, "label", str, where, names[0])))
     return ActionConvention("explicit", tuple(channels), tuple(scales), tuple(offsets),
                             tuple(normalised), tuple(labels))
+
+
+def _gripper_ends(entry, acts, where, model, grippers, keyframe):
+    """Scales and offsets of a normalised gripper channel from its closed/open controls.
+
+    ``closed``/``open`` are control values (one number for every actuator, or a list).
+    When neither is given, the channel spans its actuators' ``ctrlrange`` and the end that
+    brings the gripper's geoms closer together is "closed" (measured by
+    :func:`critmoment.actuators.gripper_gap` on the compiled model).
+    """
+    n = len(acts)
+    ids = [model.actuator(a).id for a in acts]
+
+    def ends(key):
+        value = entry[key]
+        values = value if isinstance(value, list) else [value] * n
+        if len(values) != n or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                                       and math.isfinite(v) for v in values):
+            raise ScenarioError(f"{where} {key}: expected a finite control value (or {n}), got "
+                                f"{value!r}")
+        return [float(v) for v in values]
+
+    if "closed" in entry or "open" in entry:
+        if not ("closed" in entry and "open" in entry):
+            raise ScenarioError(f"{where}: expected both closed and open control values")
+        closed, open_ = ends("closed"), ends("open")
+    else:
+        if not all(model.actuator_ctrllimited[i] for i in ids):
+            raise ScenarioError(
+                f"{where}: a normalised channel on actuators without a ctrlrange needs "
+                "closed = ... and open = ... control values (or scales/offsets)")
+        lo = [float(model.actuator_ctrlrange[i, 0]) for i in ids]
+        hi = [float(model.actuator_ctrlrange[i, 1]) for i in ids]
+        geoms = _channel_gripper_geoms(model, ids, grippers)
+        if geoms is None:
+            raise ScenarioError(
+                f"{where}: cannot tell which end of the control range closes the gripper "
+                "(no gripper's geoms move with it); give closed = ... and open = ...")
+        gap_lo = act_info.gripper_gap(model, ids, lo, geoms, keyframe=keyframe)
+        gap_hi = act_info.gripper_gap(model, ids, hi, geoms, keyframe=keyframe)
+        if abs(gap_hi - gap_lo) < 1e-4:
+            raise ScenarioError(
+                f"{where}: the gripper's geoms move {abs(gap_hi - gap_lo) * 1e3:.2f} mm over the "
+                f"control range {lo}..{hi}; cannot tell closed from open: give closed = ... "
+                "and open = ...")
+        closed, open_ = (lo, hi) if gap_lo < gap_hi else (hi, lo)
+    if any(c == o for c, o in zip(closed, open_, strict=True)):
+        raise ScenarioError(f"{where}: expected closed != open, got {closed} and {open_}")
+    return [o - c for c, o in zip(closed, open_, strict=True)], closed
+
+
+def _channel_gripper_geoms(model, act_ids, grippers):
+    """Geom ids of the gripper whose geoms move with actuators ``act_ids``, or None."""
+    for g in grippers:
+        ids = [model.geom(name).id for name in g.geoms]
+        if len(ids) < 2:
+            continue
+        lo = [float(model.actuator_ctrlrange[i, 0]) for i in act_ids]
+        hi = [float(model.actuator_ctrlrange[i, 1]) for i in act_ids]
+        if abs(act_info.gripper_gap(model, act_ids, lo, ids)
+               - act_info.gripper_gap(model, act_ids, hi, ids)) > 1e-4:
+            return ids
+    return None
 
 
 _CONVENTIONS = {"aloha14": _aloha14, "explicit": _explicit}
@@ -180,27 +414,32 @@ class Scenario:
         name: short name.
         path: the scenario file, or None when built in code.
         mjcf: the MJCF scene file.
-        keyframe: keyframe name for the initial arm pose, or None for qpos0.
+        keyframe: keyframe name (or index, for an unnamed one) of the initial pose, or None
+            for the model's qpos0.
         object_body: the body whose safety is audited.
         object_geom: its collision geom.
         grippers: the grippers, in signal order.
-        support_geoms: geoms of the support (table).
+        support_geoms: geoms of the supports (table, bin, floor).
         actions: the action convention.
         fps: action rate [Hz] when the trajectory does not say.
         range_policy: "error", "clip" or "warn" for targets outside joint ranges.
-        picker: gripper that lifts the object first (task stages 1–2).
-        receiver: gripper that takes it over (stages 3–4).
-        limits: force limit per actuator name [N·m or N].
+        task: what the trajectory must achieve (:mod:`critmoment.task`).
+        limits: force limit per actuator name [N·m or N]; ``inf`` for an actuator with no
+            limit in the scenario or the MJCF (listed in ``unlimited``).
         box: the uncertainty box.
         cost: cost constants.
-        horizon: physics steps per sparse evaluation.
+        sparse: sparse-evaluation settings.
+        limit_sources: per actuator, where its limit comes from ("scenario", "mjcf" or
+            "none").
         description: free text.
+        settle: an object that starts touching nothing falls onto its support before the
+            audit's clock starts (``[object] settle``, default true).
     """
 
     name: str
     path: Path | None
     mjcf: Path
-    keyframe: str | None
+    keyframe: str | int | None
     object_body: str
     object_geom: str
     grippers: tuple[Gripper, ...]
@@ -208,28 +447,52 @@ class Scenario:
     actions: ActionConvention
     fps: float
     range_policy: str
-    picker: str
-    receiver: str
+    task: Task
     limits: Mapping[str, float]
     box: UncertaintyBox
     cost: CostParams
-    horizon: int = 1
+    sparse: SparseSettings = SparseSettings()
+    limit_sources: Mapping[str, str] = dataclasses.field(default_factory=dict)
     description: str = ""
+    settle: bool = True
 
     @property
     def gripper_names(self) -> tuple[str, ...]:
         return tuple(g.name for g in self.grippers)
 
+    @property
+    def horizon(self) -> int:
+        """Physics steps per sparse evaluation (``sparse.horizon``)."""
+        return self.sparse.horizon
+
+    @property
+    def unlimited(self) -> tuple[str, ...]:
+        """Actuators without a force limit (neither the scenario nor the MJCF gives one)."""
+        return tuple(a for a, v in self.limits.items() if not math.isfinite(v))
+
     def replace(self, **changes) -> Scenario:
         """A copy with fields replaced (e.g. ``box=scenario.box.with_range(...)``)."""
+        if "horizon" in changes:
+            changes["sparse"] = dataclasses.replace(
+                changes.get("sparse", self.sparse), horizon=changes.pop("horizon"))
         return dataclasses.replace(self, **changes)
+
+    def load_spec(self) -> mujoco.MjSpec:
+        """The scenario's MJCF as critmoment's own MjSpec (see :func:`prepare_spec`)."""
+        return prepare_spec(self.mjcf, object_body=self.object_body,
+                            friction_geoms=_friction_targets(self.box))
 
     def load_model(self) -> mujoco.MjModel:
         """Compile the scenario's MJCF (without critmoment's sensors)."""
-        try:
-            return mujoco.MjModel.from_xml_path(str(self.mjcf))
-        except ValueError as exc:
-            raise ScenarioError(f"could not compile MJCF {self.mjcf}: {exc}") from exc
+        return _compile(self.load_spec(), self.mjcf)
+
+    def keyframe_id(self, model: mujoco.MjModel) -> int | None:
+        """Id of the keyframe, or None."""
+        if self.keyframe is None:
+            return None
+        if isinstance(self.keyframe, int):
+            return self.keyframe
+        return model.key(self.keyframe).id
 
     def validate_names(self, model: mujoco.MjModel) -> None:
         """Check every name against ``model``; raise ScenarioError listing valid names."""
@@ -242,17 +505,18 @@ class Scenario:
 
         def need(name, pool, what, where):
             if name not in pool:
-                raise ScenarioError(
-                    f"{where}: unknown {what} {name!r}; valid names: "
-                    + ", ".join(n for n in pool if n))
+                raise ScenarioError(f"{where}: unknown {what} {name!r}; valid names: "
+                                    + _listing(pool))
 
         need(self.object_body, bodies, "body", "[object] body")
         need(self.object_geom, geoms, "geom", "[object] geom")
         body = model.body(self.object_body)
         if body.jntnum[0] != 1 or model.jnt_type[body.jntadr[0]] != mujoco.mjtJoint.mjJNT_FREE:
+            free = [model.body(model.jnt_bodyid[j]).name for j in range(model.njnt)
+                    if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE]
             raise ScenarioError(
                 f"[object] body: expected a body with one free joint, got {self.object_body!r} "
-                f"with {body.jntnum[0]} joint(s)")
+                f"with {body.jntnum[0]} joint(s); free bodies: {_listing(free)}")
         owner = model.geom_bodyid[model.geom(self.object_geom).id]
         if owner != body.id:
             raise ScenarioError(
@@ -264,59 +528,141 @@ class Scenario:
         for geom in self.support_geoms:
             need(geom, geoms, "geom", "[support] geoms")
         for channel in self.actions.channels:
-            for act in channel:
-                need(act, actuators, "actuator", "[actions]")
-        for act in self.limits:
-            need(act, actuators, "actuator", "[limits]")
-        if self.keyframe is not None and mujoco.mj_name2id(
-                model, mujoco.mjtObj.mjOBJ_KEY, self.keyframe) < 0:
-            keys = names(mujoco.mjtObj.mjOBJ_KEY, model.nkey)
-            raise ScenarioError(
-                f"[model] keyframe: unknown keyframe {self.keyframe!r}; valid: {keys}")
+            for a in channel:
+                need(a, actuators, "actuator", "[actions]")
+        for a in self.limits:
+            need(a, actuators, "actuator", "[limits]")
+        if self.keyframe is not None:
+            if isinstance(self.keyframe, int):
+                if not 0 <= self.keyframe < model.nkey:
+                    raise ScenarioError(f"[model] keyframe: expected an index in [0, {model.nkey})"
+                                        f", got {self.keyframe}")
+            elif mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY, self.keyframe) < 0:
+                keys = names(mujoco.mjtObj.mjOBJ_KEY, model.nkey)
+                raise ScenarioError(
+                    f"[model] keyframe: unknown keyframe {self.keyframe!r}; valid: "
+                    f"{_listing(keys)} or an index 0..{model.nkey - 1}")
         for p in self.box.parameters:
-            p.resolve(model)
-        if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, self.object_geom) >= 0:
-            obj = model.geom(self.object_geom)
-            for p in self.box.parameters:
-                if p.target == self.object_geom and p.fields == ("geom_friction",):
-                    others = [i for i in range(model.ngeom)
-                              if model.geom_bodyid[i] != obj.bodyid[0]
-                              and model.geom_priority[i] >= obj.priority[0]
-                              and model.geom_contype[i] | model.geom_conaffinity[i]]
-                    if others:
-                        raise ScenarioError(
-                            f"friction parameter on geom {self.object_geom!r} needs that geom's "
-                            f"priority above every geom it touches (MuJoCo mixes friction with "
-                            f"max); expected priority > {model.geom_priority[others].max()}, "
-                            f"got {obj.priority[0]}")
+            _check_effect(p, p.resolve(model), model)
 
 
-def _get(table: Mapping[str, Any], key: str, kind, where: str, default=...):
-    if key not in table:
-        if default is ...:
-            raise ScenarioError(f"{where}: missing required key {key!r}")
-        return default
-    value = table[key]
-    if not isinstance(value, kind) or isinstance(value, bool) and kind is not bool:
-        raise ScenarioError(f"{where} {key}: expected {getattr(kind, '__name__', kind)}, "
-                            f"got {value!r}")
-    return value
+def _listing(pool: Sequence[str], limit: int = 40) -> str:
+    shown = [n for n in pool if n and not n.startswith(GENERATED)]
+    more = len(shown) - limit
+    return (", ".join(shown[:limit]) + (f", ... ({more} more)" if more > 0 else "")) or "(none)"
 
 
-def _number(table, key, where, default=...):
-    return float(_get(table, key, (int, float), where, default))
+def _friction_targets(box: UncertaintyBox) -> tuple[str, ...]:
+    return tuple(p.target for p in box.parameters if isinstance(p, FrictionParameter))
 
 
-def _parameter(name: str, spec: Mapping[str, Any]) -> Parameter:
+def _collides(model: mujoco.MjModel, a: int, b: int) -> bool:
+    return bool((model.geom_contype[a] & model.geom_conaffinity[b])
+                or (model.geom_contype[b] & model.geom_conaffinity[a]))
+
+
+def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
+    """A parameter must change what it claims to change on the compiled model."""
+    if isinstance(p, FrictionParameter):
+        body = model.geom_bodyid[index]
+        rivals = [i for i in range(model.ngeom)
+                  if model.geom_bodyid[i] != body and _collides(model, index, i)
+                  and model.geom_priority[i] >= model.geom_priority[index]]
+        if not (model.geom_contype[index] or model.geom_conaffinity[index]):
+            raise ScenarioError(
+                f"[uncertainty.{p.name}]: geom {p.target!r} takes part in no contact "
+                "(contype = conaffinity = 0): its friction changes nothing")
+        if rivals:
+            raise ScenarioError(
+                f"[uncertainty.{p.name}]: the friction of geom {p.target!r} never governs its "
+                f"contacts: {len(rivals)} geom(s) it can touch have priority >= its "
+                f"{model.geom_priority[index]} (MuJoCo mixes friction with max), so its costs "
+                "would not change over the range; vary the object's friction (critmoment gives "
+                "the object's geoms priority) or raise this geom's priority in the MJCF")
+    elif isinstance(p, ForceLimitParameter) and not model.actuator_forcelimited[index]:
+        raise ScenarioError(
+            f"[uncertainty.{p.name}]: actuator {p.target!r} has no forcerange in the MJCF "
+            "(forcelimited false), so a force limit parameter would change nothing; add "
+            "forcerange/forcelimited to the actuator")
+
+
+# ---------------------------------------------------------------------------
+# critmoment's own copy of the model
+# ---------------------------------------------------------------------------
+
+
+def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
+                 friction_geoms: Sequence[str] = ()) -> mujoco.MjSpec:
+    """The MJCF as an MjSpec, made ready for critmoment (see the module docstring).
+
+    Args:
+        mjcf: the MJCF file.
+        object_body: the object's body; when ``friction_geoms`` names any of its geoms,
+            the object's geoms get a priority above every other geom.
+        friction_geoms: geoms whose friction the uncertainty box varies.
+
+    Raises:
+        InputFileError: the file is missing or unreadable.
+        ScenarioError: the MJCF does not parse or compile.
+    """
+    mjcf = Path(mjcf)
+    if not mjcf.is_file():
+        raise InputFileError(f"[model] mjcf: file not found: {mjcf}")
+    try:
+        spec = mujoco.MjSpec.from_file(str(mjcf))
+    except Exception as exc:  # MuJoCo raises ValueError, OSError or its own errors
+        raise ScenarioError(f"could not read MJCF {mjcf}: {exc}") from exc
+    geoms = list(spec.geoms)
+    taken = {g.name for g in geoms}
+    for i, g in enumerate(geoms):
+        if not g.name:
+            name = f"{GENERATED}geom:{i}"
+            while name in taken:
+                name += "_"
+            g.name = name
+            taken.add(name)
+    used = {a.name for a in spec.actuators if a.name}
+    for i, a in enumerate(spec.actuators):
+        if not a.name:
+            name = a.target or f"{GENERATED}actuator:{i}"
+            if name in used:
+                name = f"{GENERATED}actuator:{i}"
+            a.name = name
+            used.add(name)
+    if object_body is not None and friction_geoms:
+        body = spec.body(object_body)
+        if body is not None:
+            own = [g for g in body.geoms]
+            if any(g.name in friction_geoms for g in own):
+                top = max((g.priority for g in geoms), default=0)
+                for g in own:
+                    g.priority = top + 1
+    return spec
+
+
+def _compile(spec: mujoco.MjSpec, mjcf: Path) -> mujoco.MjModel:
+    try:
+        return spec.compile()
+    except Exception as exc:
+        raise ScenarioError(f"could not compile MJCF {mjcf}: {exc}") from exc
+
+
+# ---------------------------------------------------------------------------
+# loading
+# ---------------------------------------------------------------------------
+
+
+def _parameter(name: str, spec: Any) -> Parameter:
     where = f"[uncertainty.{name}]"
     if not isinstance(spec, Mapping):
         raise ScenarioError(f"{where}: expected a table, got {spec!r}")
     kind = spec.get("kind", name)
-    if kind not in PARAMETER_KINDS:
+    if not isinstance(kind, str) or kind not in PARAMETER_KINDS:
         raise ScenarioError(
             f"{where}: unknown parameter kind {kind!r}; known kinds: {', '.join(PARAMETER_KINDS)} "
             "(set kind = ... when the name is not a kind)")
     cls, target_key = PARAMETER_KINDS[kind]
+    _keys(spec, where, ("kind", target_key, "object", "range", "nominal", "prior"))
     target = spec.get(target_key, spec.get("object"))
     if not isinstance(target, str):
         raise ScenarioError(f"{where}: expected {target_key} = \"<name>\", got {target!r}")
@@ -328,7 +674,7 @@ def _parameter(name: str, spec: Mapping[str, Any]) -> Parameter:
     prior_name = spec.get("prior", "uniform")
     try:
         prior = Prior(prior_name)
-    except ValueError:
+    except (ValueError, TypeError):
         raise ScenarioError(
             f"{where} prior: expected one of {[p.value for p in Prior]}, got {prior_name!r}") from None
     try:
@@ -338,22 +684,122 @@ def _parameter(name: str, spec: Mapping[str, Any]) -> Parameter:
         raise ScenarioError(f"{where}: {exc}") from exc
 
 
-def _resolve_limits(raw: Mapping[str, Any], model: mujoco.MjModel) -> dict[str, float]:
-    actuators = [model.actuator(i).name for i in range(model.nu)]
+class _ActuatorResolver:
+    """Finds an actuator by name, by the part of its name after "/", or by the joint or
+    tendon it drives (for models whose actuators carry no names)."""
+
+    def __init__(self, model: mujoco.MjModel):
+        self.model = model
+        self.infos = act_info.describe_all(model)
+        self.names = [i.name for i in self.infos]
+
+    def matches(self, key: str) -> list[int]:
+        exact = [i.index for i in self.infos if i.name == key]
+        if exact:
+            return exact
+        return [i.index for i in self.infos
+                if i.name.rsplit("/", 1)[-1] == key or i.target == key
+                or (i.target and i.target.rsplit("/", 1)[-1] == key)]
+
+    def one(self, key: str, where: str) -> str:
+        found = self.matches(key)
+        if len(found) == 1:
+            return self.names[found[0]]
+        if not found:
+            raise ScenarioError(
+                f"{where}: {key!r} matches no actuator (by name, or by the joint/tendon it "
+                f"drives); actuators: {self.listing()}")
+        raise ScenarioError(f"{where}: {key!r} matches {len(found)} actuators "
+                            f"{[self.names[i] for i in found]}; use the full name")
+
+    def listing(self) -> str:
+        return ", ".join(f"{i.name} ({i.kind.value} on {i.transmission} {i.target})"
+                         for i in self.infos) or "(none)"
+
+
+def _resolve_limits(raw: Mapping[str, Any], resolver: _ActuatorResolver
+                    ) -> tuple[dict[str, float], dict[str, str]]:
+    model = resolver.model
     limits: dict[str, float] = {}
+    sources: dict[str, str] = {}
+    for i in range(model.nu):
+        value = act_info.force_limit(model, i)
+        limits[resolver.names[i]] = math.inf if value is None else value
+        sources[resolver.names[i]] = "none" if value is None else "mjcf"
     for key, value in raw.items():
-        if not isinstance(value, (int, float)) or isinstance(value, bool) or not value > 0:
-            raise ScenarioError(f"[limits] {key}: expected a force limit > 0, got {value!r}")
-        matches = [a for a in actuators if a == key or a.rsplit("/", 1)[-1] == key]
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not (
+                math.isfinite(value) and value > 0):
+            raise ScenarioError(f"[limits] {key}: expected a finite force limit > 0 [N·m or N], "
+                                f"got {value!r}")
+        matches = resolver.matches(key)
         if not matches:
             raise ScenarioError(
-                f"[limits] {key!r} matches no actuator; actuators: {', '.join(actuators)}")
-        for a in matches:
-            limits[a] = float(value)
-    missing = [a for a in actuators if a not in limits]
-    if missing:
-        raise ScenarioError(f"[limits]: expected a force limit for every actuator, missing {missing}")
-    return limits
+                f"[limits] {key!r} matches no actuator (by name, or by the joint/tendon it "
+                f"drives); actuators: {resolver.listing()}")
+        for i in matches:
+            limits[resolver.names[i]] = float(value)
+            sources[resolver.names[i]] = "scenario"
+    return limits, sources
+
+
+def _check_channel_kinds(actions: ActionConvention, resolver: _ActuatorResolver) -> None:
+    """A joint-position channel must drive position-like actuators."""
+    for c, acts in enumerate(actions.channels):
+        for a in acts:
+            info = resolver.infos[resolver.names.index(a)]
+            if not info.kind.tracks_position and not actions.normalised[c]:
+                raise ScenarioError(
+                    f"[actions] channel {actions.labels[c]!r}: actuator {a!r} is a "
+                    f"{info.kind.value} actuator (ctrl is a {'torque' if info.kind.value == 'motor' else 'velocity or other'} "
+                    "command), but the action convention gives joint-position targets; "
+                    "audit a position-controlled model, or convert the actions to this "
+                    "actuator's controls")
+
+
+def _gripper_from_table(gname: str, gt: Any, model: mujoco.MjModel) -> Gripper:
+    where = f"[grippers.{gname}]"
+    if not isinstance(gt, Mapping):
+        raise ScenarioError(f"{where}: expected a table with geoms = [...] or body = \"...\", "
+                            f"got {gt!r}")
+    _keys(gt, where, ("geoms", "body"))
+    if ("geoms" in gt) == ("body" in gt):
+        raise ScenarioError(f"{where}: expected exactly one of geoms = [names] or body = "
+                            f"\"<body>\" (every collision geom of its subtree)")
+    if "geoms" in gt:
+        return Gripper(gname, _names(gt, "geoms", where))
+    body = _get(gt, "body", str, where)
+    return Gripper(gname, _subtree_geoms(model, body, where), body=body)
+
+
+def _subtree_geoms(model: mujoco.MjModel, body: str, where: str) -> tuple[str, ...]:
+    bid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, body)
+    if bid < 0:
+        names = [model.body(i).name for i in range(model.nbody)]
+        raise ScenarioError(f"{where} body: unknown body {body!r}; valid names: {_listing(names)}")
+    inside = []
+    for g in range(model.ngeom):
+        b = int(model.geom_bodyid[g])
+        while b not in (0, bid):
+            b = int(model.body_parentid[b])
+        if b == bid and (model.geom_contype[g] or model.geom_conaffinity[g]):
+            inside.append(model.geom(g).name)
+    if not inside:
+        raise ScenarioError(f"{where} body: {body!r} has no collision geom in its subtree")
+    return tuple(inside)
+
+
+def _object_geom(object_t: Mapping[str, Any], model: mujoco.MjModel, body: str) -> str:
+    if "geom" in object_t:
+        return _get(object_t, "geom", str, "[object]")
+    bid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, body)
+    if bid < 0:
+        return ""  # validate_names reports the unknown body
+    own = [model.geom(g).name for g in range(model.ngeom)
+           if model.geom_bodyid[g] == bid and (model.geom_contype[g] or model.geom_conaffinity[g])]
+    if len(own) != 1:
+        raise ScenarioError(f"[object] geom: body {body!r} has {len(own)} collision geoms "
+                            f"{own}; say which with geom = \"...\"")
+    return own[0]
 
 
 def load_scenario(path: str | Path | None = None) -> Scenario:
@@ -371,87 +817,128 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
     elif isinstance(path, str) and path in BUNDLED_SCENARIOS:
         path = bundled_scenario_path(path)
     path = Path(path)
-    if path.is_dir():
-        path = path / "scenario.toml"
-    if not path.is_file():
-        raise InputFileError(
-            f"scenario file not found: {path} (expected a scenario.toml, a folder with one, or "
-            f"a bundled name: {', '.join(BUNDLED_SCENARIOS)})")
     try:
-        raw = tomllib.loads(path.read_text())
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        if path.is_dir():
+            path = path / "scenario.toml"
+        if not path.is_file():
+            raise InputFileError(
+                f"scenario file not found: {path} (expected a scenario.toml, a folder with one, "
+                f"or a bundled name: {', '.join(BUNDLED_SCENARIOS)})")
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InputFileError(f"{path}: cannot read the scenario file ({exc.strerror or exc})"
+                             ) from exc
+    except UnicodeDecodeError as exc:
+        raise ScenarioError(f"{path}: expected a UTF-8 TOML file, got bytes that are not UTF-8 "
+                            f"({exc.reason} at byte {exc.start})") from exc
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
         raise ScenarioError(f"{path}: not valid TOML: {exc}") from exc
     return scenario_from_dict(raw, base=path.parent, path=path)
 
 
+_TOP = ("name", "description", "model", "object", "grippers", "support", "actions", "task",
+        "limits", "uncertainty", "cost", "sparse")
+
+
 def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None = None) -> Scenario:
     """Build a Scenario from the parsed TOML tables (paths relative to ``base``)."""
-    known = {"name", "description", "model", "object", "grippers", "support", "actions", "task",
-             "limits", "uncertainty", "cost", "sparse"}
-    unknown = set(raw) - known
-    if unknown:
-        raise ScenarioError(f"unknown top-level keys {sorted(unknown)}; expected {sorted(known)}")
+    _keys(raw, "scenario", _TOP)
     model_t = _get(raw, "model", dict, "scenario")
+    _keys(model_t, "[model]", ("mjcf", "keyframe"))
     mjcf = base / _get(model_t, "mjcf", str, "[model]")
-    if not mjcf.is_file():
-        raise InputFileError(f"[model] mjcf: file not found: {mjcf}")
+    keyframe = _get(model_t, "keyframe", (str, int), "[model]", None)
     object_t = _get(raw, "object", dict, "scenario")
-    grippers_t = _get(raw, "grippers", dict, "scenario")
-    if not grippers_t:
-        raise ScenarioError("[grippers]: expected at least one [grippers.<name>] table")
-    grippers = []
-    for gname, gt in grippers_t.items():
-        geoms = _get(gt, "geoms", list, f"[grippers.{gname}]")
-        if not geoms or not all(isinstance(g, str) for g in geoms):
-            raise ScenarioError(f"[grippers.{gname}] geoms: expected a list of geom names, got {geoms!r}")
-        if len(set(geoms)) != len(geoms):
-            raise ScenarioError(f"[grippers.{gname}] geoms: expected each geom once, got {geoms!r}")
-        grippers.append(Gripper(gname, tuple(geoms)))
-    support = _get(_get(raw, "support", dict, "scenario"), "geoms", list, "[support]")
-    if not support or not all(isinstance(g, str) for g in support):
-        raise ScenarioError(f"[support] geoms: expected a non-empty list of geom names, got {support!r}")
-    actions_t = _get(raw, "actions", dict, "scenario")
-    convention = actions_t.get("convention", "aloha14")
-    if convention not in _CONVENTIONS:
-        raise ScenarioError(
-            f"[actions] convention: expected one of {sorted(_CONVENTIONS)}, got {convention!r}")
-    actions = _CONVENTIONS[convention](actions_t)
-    fps = _number(actions_t, "fps", "[actions]", 50.0)
-    if not fps > 0:
-        raise ScenarioError(f"[actions] fps: expected > 0, got {fps}")
-    policy = actions_t.get("range_policy", "error")
-    if policy not in ("error", "clip", "warn"):
-        raise ScenarioError(f"[actions] range_policy: expected error, clip or warn, got {policy!r}")
-    names = [g.name for g in grippers]
-    task_t = raw.get("task", {})
-    picker = task_t.get("picker", names[-1])
-    receiver = task_t.get("receiver", names[0])
-    for role, value in (("picker", picker), ("receiver", receiver)):
-        if value not in names:
-            raise ScenarioError(f"[task] {role}: expected one of the grippers {names}, got {value!r}")
+    _keys(object_t, "[object]", ("body", "geom", "settle"))
+    object_body = _get(object_t, "body", str, "[object]")
+
     unc = _get(raw, "uncertainty", dict, "scenario")
     if not unc:
         raise ScenarioError("[uncertainty]: expected at least one parameter table")
     box = UncertaintyBox(tuple(_parameter(n, s) for n, s in unc.items()))
+
+    spec = prepare_spec(mjcf, object_body=object_body, friction_geoms=_friction_targets(box))
+    model = _compile(spec, mjcf)
+    object_geom = _object_geom(object_t, model, object_body)
+    key_id = None
+    if isinstance(keyframe, int) and 0 <= keyframe < model.nkey:
+        key_id = keyframe
+    elif isinstance(keyframe, str) and mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_KEY,
+                                                         keyframe) >= 0:
+        key_id = model.key(keyframe).id
+
+    grippers_t = _get(raw, "grippers", dict, "scenario")
+    if not grippers_t:
+        raise ScenarioError("[grippers]: expected at least one [grippers.<name>] table")
+    grippers = tuple(_gripper_from_table(n, t, model) for n, t in grippers_t.items())
+    support_t = _get(raw, "support", dict, "scenario")
+    _keys(support_t, "[support]", ("geoms", "bodies"))
+    support = list(_names(support_t, "geoms", "[support]", None) or ())
+    for body in _names(support_t, "bodies", "[support]", None) or ():
+        support.extend(g for g in _subtree_geoms(model, body, "[support] bodies")
+                       if g not in support)
+    if not support:
+        raise ScenarioError("[support]: expected geoms = [names] and/or bodies = [names] of the "
+                            "supports (table, bin, floor)")
+    # check geom names before the actuator probes use them
+    geom_names = {model.geom(i).name for i in range(model.ngeom)}
+    for g in grippers:
+        for geom in g.geoms:
+            if geom not in geom_names:
+                raise ScenarioError(f"[grippers.{g.name}] geoms: unknown geom {geom!r}; valid "
+                                    f"names: {_listing(sorted(geom_names))}")
+
+    resolver = _ActuatorResolver(model)
+    actions_t = _get(raw, "actions", dict, "scenario")
+    convention = actions_t.get("convention", "aloha14")
+    if not isinstance(convention, str) or convention not in _CONVENTIONS:
+        raise ScenarioError(
+            f"[actions] convention: expected one of {sorted(_CONVENTIONS)}, got {convention!r}")
+    if convention == "explicit":
+        actions = _explicit(actions_t, resolver.one, model, grippers, key_id)
+    else:
+        actions = _aloha14(actions_t, resolver.one)
+    _check_channel_kinds(actions, resolver)
+    fps = _number(actions_t, "fps", "[actions]", 50.0, positive=True)
+    policy = _get(actions_t, "range_policy", str, "[actions]", "error")
+    if policy not in ("error", "clip", "warn"):
+        raise ScenarioError(f"[actions] range_policy: expected error, clip or warn, got {policy!r}")
+
+    def site_position(name):
+        sid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_SITE, name)
+        if sid < 0:
+            sites = [model.site(i).name for i in range(model.nsite)]
+            raise ScenarioError(f"[task] goal_site: unknown site {name!r}; valid: {_listing(sites)}")
+        data = mujoco.MjData(model)
+        if key_id is not None:
+            mujoco.mj_resetDataKeyframe(model, data, key_id)
+        mujoco.mj_kinematics(model, data)
+        return data.site_xpos[sid].copy()
+
+    if "task" not in raw:
+        raise ScenarioError("scenario: missing [task] table; expected kind = one of handover, "
+                            "pick_place, pick_hold (critmoment never guesses the task)")
+    task = task_from_table(raw["task"], [g.name for g in grippers], resolve_site=site_position)
+
+    limits_t = _get(raw, "limits", dict, "scenario", {})
+    limits, sources = _resolve_limits(limits_t, resolver)
     cost_t = _get(raw, "cost", dict, "scenario", {})
-    unknown_cost = set(cost_t) - {"A", "B", "alpha", "beta", "threshold"}
-    if unknown_cost:
-        raise ScenarioError(f"[cost]: unknown keys {sorted(unknown_cost)}")
+    _keys(cost_t, "[cost]", ("A", "B", "alpha", "beta", "threshold"))
     cost = CostParams(**{k: _number(cost_t, k, "[cost]") for k in cost_t})
-    horizon = _get(_get(raw, "sparse", dict, "scenario", {}), "horizon", int, "[sparse]", 1)
-    if horizon < 1:
-        raise ScenarioError(f"[sparse] horizon: expected an integer >= 1, got {horizon}")
-    try:
-        model = mujoco.MjModel.from_xml_path(str(mjcf))
-    except ValueError as exc:
-        raise ScenarioError(f"could not compile MJCF {mjcf}: {exc}") from exc
-    limits = _resolve_limits(_get(raw, "limits", dict, "scenario"), model)
+    sparse_t = _get(raw, "sparse", dict, "scenario", {})
+    _keys(sparse_t, "[sparse]", ("horizon", "persistence", "slip_tolerance", "creep_horizon"))
+    sparse = SparseSettings(
+        horizon=_get(sparse_t, "horizon", int, "[sparse]", 1),
+        persistence=_number(sparse_t, "persistence", "[sparse]", 0.02),
+        slip_tolerance=_number(sparse_t, "slip_tolerance", "[sparse]", 0.005),
+        creep_horizon=_get(sparse_t, "creep_horizon", int, "[sparse]", 0))
     scenario = Scenario(
-        name=str(raw.get("name", base.name)), path=path, mjcf=mjcf,
-        keyframe=_get(model_t, "keyframe", str, "[model]", None), object_body=_get(object_t, "body", str, "[object]"),
-        object_geom=_get(object_t, "geom", str, "[object]"), grippers=tuple(grippers),
-        support_geoms=tuple(support), actions=actions, fps=fps, range_policy=policy,
-        picker=picker, receiver=receiver, limits=limits, box=box, cost=cost, horizon=horizon,
-        description=str(raw.get("description", "")))
+        name=str(_get(raw, "name", str, "scenario", base.name)), path=path, mjcf=mjcf,
+        keyframe=keyframe, object_body=object_body, object_geom=object_geom,
+        grippers=grippers, support_geoms=tuple(support), actions=actions, fps=fps,
+        range_policy=policy, task=task, limits=limits, box=box, cost=cost, sparse=sparse,
+        limit_sources=sources, description=str(_get(raw, "description", str, "scenario", "")),
+        settle=_get(object_t, "settle", bool, "[object]", True))
     scenario.validate_names(model)
     return scenario

@@ -29,6 +29,7 @@ import numpy as np
 from critmoment import safety
 from critmoment.exceptions import ParameterError, ScenarioError, TrajectoryError
 from critmoment.scenario import Scenario
+from critmoment.task import TaskEvidence
 
 __all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "Twin", "carried_flags", "lifted_flags",
            "LIFT_RISE"]
@@ -60,7 +61,9 @@ class Signals:
         cost: cost (eq. 15) of fos_grasp and fos_motor, (...).
         contact_support: object touches the support, (...) bool.
         contact_gripper: object touches gripper g, (..., G) bool.
-        stage: task stage 0..4, (...) int8.
+        stage: the task's stage (:meth:`critmoment.task.Task.stage`), (...) int8.
+        object_pos: the object's position in the world [m], (..., 3).
+        object_vel: the object's linear velocity in the world [m/s], (..., 3).
     """
 
     object_acc: np.ndarray
@@ -74,6 +77,8 @@ class Signals:
     contact_support: np.ndarray
     contact_gripper: np.ndarray
     stage: np.ndarray
+    object_pos: np.ndarray
+    object_vel: np.ndarray
 
 
 def carried_flags(contact_support: np.ndarray, contact_gripper: np.ndarray) -> np.ndarray:
@@ -137,7 +142,7 @@ class Twin:
 
     def __init__(self, scenario: Scenario):
         self.scenario = scenario
-        spec = mujoco.MjSpec.from_file(str(scenario.mjcf))
+        spec = scenario.load_spec()
         self.add_sensors(spec)
         try:
             model = spec.compile()
@@ -182,11 +187,14 @@ class Twin:
                 contact(_sensor_name("grip", g.name, geom), geom, CONTACT_SLOTS, found_force)
         for geom in sc.support_geoms:
             contact(_sensor_name("support", geom), geom, 1, found)
-        s = spec.add_sensor()
-        s.name = _sensor_name("object_acc")
-        s.type = mujoco.mjtSensor.mjSENS_FRAMELINACC
-        s.objtype = mujoco.mjtObj.mjOBJ_BODY
-        s.objname = sc.object_body
+        for key, kind in (("object_acc", mujoco.mjtSensor.mjSENS_FRAMELINACC),
+                          ("object_pos", mujoco.mjtSensor.mjSENS_FRAMEPOS),
+                          ("object_vel", mujoco.mjtSensor.mjSENS_FRAMELINVEL)):
+            s = spec.add_sensor()
+            s.name = _sensor_name(key)
+            s.type = kind
+            s.objtype = mujoco.mjtObj.mjOBJ_BODY
+            s.objname = sc.object_body
         for act in spec.actuators:
             s = spec.add_sensor()
             s.name = _sensor_name("force", act.name)
@@ -212,6 +220,10 @@ class Twin:
                                       for geom in sc.support_geoms])
         a, _ = adr(_sensor_name("object_acc"))
         self._acc_adr = np.arange(a, a + 3)
+        a, _ = adr(_sensor_name("object_pos"))
+        self._pos_adr = np.arange(a, a + 3)
+        a, _ = adr(_sensor_name("object_vel"))
+        self._vel_adr = np.arange(a, a + 3)
         self._force_adr = np.array([adr(_sensor_name("force", model.actuator(i).name))[0]
                                     for i in range(model.nu)])
         self.object_body_id = model.body(sc.object_body).id
@@ -227,9 +239,7 @@ class Twin:
         if not self.rotational.any():
             raise ScenarioError("expected at least one actuator on a hinge joint, found none")
         self.actuator_names = tuple(model.actuator(i).name for i in range(model.nu))
-        names = sc.gripper_names
-        self._picker = names.index(sc.picker)
-        self._receiver = names.index(sc.receiver)
+        self.task = sc.task
         # action channels -> actuators
         conv = sc.actions
         self._chan_act = [np.array([model.actuator(a).id for a in ch]) for ch in conv.channels]
@@ -317,8 +327,8 @@ class Twin:
         return ctrl
 
     def initial_data(self, *, start: np.ndarray | None = None, qpos0: np.ndarray | None = None,
-                     object_pose: np.ndarray | None = None, model: mujoco.MjModel | None = None
-                     ) -> mujoco.MjData:
+                     object_pose: np.ndarray | None = None, model: mujoco.MjModel | None = None,
+                     settle: bool | None = None) -> mujoco.MjData:
         """An MjData at the trajectory's initial state, forward-computed.
 
         Args:
@@ -327,12 +337,14 @@ class Twin:
             qpos0: full initial qpos, (nq,); overrides ``start``.
             object_pose: object position and quaternion (w, x, y, z), (7,).
             model: the model to make data for (default: the nominal model).
+            settle: let an object that touches nothing at the start fall onto its support
+                first (:meth:`settle_object`); default: the scenario's ``settle``.
         """
         model = model or self.model
         data = mujoco.MjData(model)
-        key = self.scenario.keyframe
+        key = self.scenario.keyframe_id(model)
         if key is not None:
-            mujoco.mj_resetDataKeyframe(model, data, model.key(key).id)
+            mujoco.mj_resetDataKeyframe(model, data, key)
         if qpos0 is not None:
             qpos0 = np.asarray(qpos0, dtype=np.float64)
             if qpos0.shape != (model.nq,):
@@ -356,6 +368,8 @@ class Twin:
         if start is not None:
             data.ctrl[:] = self.controls(np.asarray(start)[None])[0]
         mujoco.mj_forward(model, data)
+        if self.scenario.settle if settle is None else settle:
+            self.settle_object(model, data)
         return data
 
     @staticmethod
@@ -367,6 +381,72 @@ class Twin:
     @staticmethod
     def set_state(model: mujoco.MjModel, data: mujoco.MjData, state: np.ndarray) -> None:
         mujoco.mj_setState(model, data, np.asarray(state, dtype=np.float64), STATE_SPEC)
+
+    def evidence(self, signals: Signals) -> TaskEvidence:
+        """The task's evidence of signals with leading shape (..., T)."""
+        return TaskEvidence(contact_gripper=signals.contact_gripper,
+                            contact_support=signals.contact_support,
+                            object_pos=signals.object_pos, object_vel=signals.object_vel,
+                            dt=float(self.model.opt.timestep))
+
+    def success(self, signals: Signals) -> np.ndarray:
+        """The task's success rule over signals (..., T): (...) bool."""
+        return self.task.success(self.evidence(signals))
+
+    def settle_object(self, model: mujoco.MjModel, data: mujoco.MjData, *,
+                      seconds: float = 2.0, speed: float = 1e-3) -> int:
+        """Let an object that starts touching nothing fall and settle, robot held still.
+
+        Only the object's free joint moves; every other joint keeps its position and a
+        zero velocity. Stops once the object touches something and moves slower than
+        ``speed`` [m/s] for 50 ms, or after ``seconds`` [s] of simulated time, which is
+        not added to the audit's clock. An object that lands on nothing within that time
+        keeps its start pose (it is meant to start in the air).
+
+        Returns:
+            The physics steps taken (0 when the object already touched something).
+        """
+        adr = self.object_qposadr
+        dof = int(model.jnt_dofadr[model.body_jntadr[self.object_body_id]])
+        if self._touching(model, data):
+            return 0
+        keep_q = np.ones(model.nq, bool)
+        keep_q[adr:adr + 7] = False
+        keep_v = np.ones(model.nv, bool)
+        keep_v[dof:dof + 6] = False
+        q, ctrl, t0 = data.qpos.copy(), data.ctrl.copy(), data.time
+        still, need = 0, max(1, int(round(0.05 / model.opt.timestep)))
+        taken = 0
+        for _ in range(int(seconds / model.opt.timestep)):
+            mujoco.mj_step(model, data)
+            taken += 1
+            data.qpos[keep_q] = q[keep_q]
+            data.qvel[keep_v] = 0
+            data.ctrl[:] = ctrl
+            if not np.isfinite(data.qpos[adr:adr + 3]).all():
+                raise TrajectoryError("the object diverged while settling at its start pose: "
+                                      "expected a start pose above a support")
+            moving = np.linalg.norm(data.qvel[dof:dof + 3]) > speed
+            still = 0 if moving or not self._touching(model, data) else still + 1
+            if still >= need:
+                break
+        if not self._touching(model, data):
+            # nothing below it: the object is meant to start in the air (a throw, a
+            # free-fall test); keep the start pose as given
+            data.qpos[:] = q
+            taken = 0
+        data.qvel[:] = 0
+        data.time = t0
+        mujoco.mj_forward(model, data)
+        return taken
+
+    def _touching(self, model: mujoco.MjModel, data: mujoco.MjData) -> bool:
+        body = self.object_body_id
+        geom_body = model.geom_bodyid
+        for c in data.contact[:data.ncon]:
+            if geom_body[c.geom1] == body or geom_body[c.geom2] == body:
+                return True
+        return False
 
     # -- signals ------------------------------------------------------------------
     @property
@@ -409,7 +489,7 @@ class Twin:
         fos_grasp = safety.contact_fos(np.concatenate(normals, axis=-1),
                                        np.concatenate(tangentials, axis=-1), mu)
         if carried is None:
-            carried = carried_flags(contact_support, contact_gripper)
+            carried = self.task.must_carry(contact_gripper, contact_support)
         # carried but touched by no gripper: the object is falling (FOS 0, a failure)
         held = np.where(contact_gripper.any(axis=-1), fos_grasp, 0.0)
         fos_grasp = np.where(np.broadcast_to(carried, fos_grasp.shape), held, np.inf)
@@ -418,9 +498,9 @@ class Twin:
         fos_m, arg = safety.motor_fos(force[..., self.rotational], self.limits[self.rotational])
         rot_ids = np.flatnonzero(self.rotational)
         cost = safety.cost(fos_grasp, fos_m, self.scenario.cost)
-        stage = safety.task_stage(contact_gripper[..., self._picker],
-                                  contact_gripper[..., self._receiver], contact_support)
-        return Signals(object_acc=acc, actuator_force=force, actuator_norm=force / self.limits,
+        pos = sd[..., self._pos_adr]
+        stage = self.task.stage(contact_gripper, contact_support, pos)
+        return Signals(object_pos=pos, object_vel=sd[..., self._vel_adr],object_acc=acc, actuator_force=force, actuator_norm=force / self.limits,
                        fos_contact=fos_contact, fos_grasp=fos_grasp, fos_motor=fos_m, motor_argmax=rot_ids[arg],
                        cost=cost, contact_support=contact_support,
                        contact_gripper=contact_gripper, stage=stage)

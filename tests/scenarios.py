@@ -3,12 +3,13 @@
 
 def one_actuator_toml(name: str, *, mjcf: str, gripper: str, gripper_geom: str, support: str,
                       actuator: str, limit: float, label: str | None = None, task: bool = False,
-                      uncertainty: str) -> str:
+                      uncertainty: str, settle: bool = True) -> str:
     """A scenario.toml with the object ``box``/``box``, an explicit one-channel action
     convention and the given ``[uncertainty.*]`` tables (TOML text)."""
     label_line = f'label = "{label}"\n' if label else ""
-    task_table = f'[task]\npicker = "{gripper}"\nreceiver = "{gripper}"\n' if task else ""
+    task_table = f'[task]\nkind = "pick_hold"\ngripper = "{gripper}"\n'
     return (f'name = "{name}"\n[model]\nmjcf = "{mjcf}"\n[object]\nbody = "box"\ngeom = "box"\n'
+            f'settle = {str(settle).lower()}\n'
             f'[grippers.{gripper}]\ngeoms = ["{gripper_geom}"]\n[support]\ngeoms = ["{support}"]\n'
             f'[actions]\nconvention = "explicit"\n[[actions.channel]]\nactuators = ["{actuator}"]\n'
             f'{label_line}{task_table}[limits]\n{actuator} = {limit}\n{uncertainty}')

@@ -197,10 +197,28 @@ def test_recording_load_errors(tmp_path, twin, demo_recording):
 # ---------------------------------------------------------------------------
 
 
-def test_simulate_batched_masses_fall_at_g(twin):
+def test_object_spawned_in_the_air_settles_before_the_clock_starts(twin):
     traj = Trajectory(np.tile(START, (2, 1)), fps=50, start=START,
                       object_pose=[0.1, 0.5, 0.3, 1, 0, 0, 0])
     state0 = rollout_mod.initial_state(twin, traj)
+    data = twin.initial_data(start=START, object_pose=traj.object_pose, settle=False)
+    twin.set_state(twin.model, data, state0)
+    mujoco.mj_forward(twin.model, data)
+    assert data.time == 0.0
+    # the 4 cm cube rests on the table (top at z = 0), at rest, where it was dropped in x, y
+    z = data.qpos[twin.object_qposadr + 2]
+    assert z == pytest.approx(0.02, abs=2e-3)
+    np.testing.assert_allclose(data.qpos[twin.object_qposadr:twin.object_qposadr + 2],
+                               [0.1, 0.5], atol=5e-3)
+    assert np.abs(data.qvel).max() == 0.0
+
+
+def test_simulate_batched_masses_fall_at_g(twin):
+    traj = Trajectory(np.tile(START, (2, 1)), fps=50, start=START,
+                      object_pose=[0.1, 0.5, 0.3, 1, 0, 0, 0])
+    # settle=False: keep the cube in the air (initial_state would let it settle first)
+    data = twin.initial_data(start=START, object_pose=traj.object_pose, settle=False)
+    state0 = twin.get_state(twin.model, data)
     controls = rollout_mod.prepare_controls(twin, traj)[:3]
     samples = np.array([[0.05, 1.0], [10.0, 1.0], [2.0, 0.3]])
     out = simulate(twin, state0, controls, samples=samples, record_state=True, nthread=1)

@@ -58,7 +58,8 @@ def test_bundled_scenario_fields(scenario):
     assert scenario.gripper_names == ("left", "right")
     assert scenario.grippers[1].geoms == ("right/left_pad", "right/right_pad")
     assert scenario.support_geoms == ("table",)
-    assert (scenario.picker, scenario.receiver) == ("right", "left")
+    assert (scenario.task.kind, scenario.task.picker, scenario.task.receiver) == (
+        "handover", "right", "left")
     assert scenario.actions.name == "aloha14" and scenario.actions.width == 14
     assert scenario.actions.labels[6] == "left/gripper"
     assert scenario.actions.labels[13] == "right/gripper"
@@ -84,7 +85,7 @@ def test_load_scenario_accepts_name_folder_and_file():
 
 
 def test_bundled_scenario_path_unknown_name():
-    assert BUNDLED_SCENARIOS == ("aloha_transfer_cube",)
+    assert BUNDLED_SCENARIOS == ("aloha_transfer_cube", "panda_pick_place")
     with pytest.raises(ScenarioError, match="unknown bundled scenario 'nope'.*aloha_transfer_cube"):
         bundled_scenario_path("nope")
 
@@ -123,7 +124,7 @@ def test_bad_toml(tmp_path):
 def test_mjcf_that_does_not_compile(tmp_path):
     folder = _copy(tmp_path, {"scene.xml": [('type="box" size="0.02 0.02 0.02"',
                                              'type="box" size="oops"')]})
-    with pytest.raises(ScenarioError, match="could not compile MJCF"):
+    with pytest.raises(ScenarioError, match="could not (compile|read) MJCF"):
         load_scenario(folder)
 
 
@@ -134,23 +135,50 @@ def test_mjcf_that_does_not_compile(tmp_path):
 
 @pytest.mark.parametrize("old, new, message", [
     ('[object]\nbody = "box"\ngeom = "box"\n', "", "missing required key 'object'"),
-    ('[model]\nmjcf = "scene.xml"', '[model]\nfile = "scene.xml"', r"\[model\]: missing required key 'mjcf'"),
-    ('name = "aloha_transfer_cube"', 'colour = "red"\nname = "x"', r"unknown top-level keys \['colour'\]"),
-    ("threshold = 0.9", "threshold = 0.9\ngamma = 3.0", r"\[cost\]: unknown keys \['gamma'\]"),
+    ('[model]\nmjcf = "scene.xml"', '[model]\nfile = "scene.xml"', r"\[model\]: unknown key 'file'; valid keys: mjcf, keyframe"),
+    ('name = "aloha_transfer_cube"', 'colour = "red"\nname = "x"', r"scenario: unknown key 'colour'; valid keys: name"),
+    ("threshold = 0.9", "threshold = 0.9\ngamma = 3.0", r"\[cost\]: unknown key 'gamma'; valid keys: A, B"),
     ('convention = "aloha14"', 'convention = "aloha16"', r"\[actions\] convention: expected one of"),
     ('range_policy = "error"', 'range_policy = "ignore"', r"\[actions\] range_policy"),
-    ("fps = 50.0", "fps = 0.0", r"\[actions\] fps: expected > 0"),
+    ("fps = 50.0", "fps = 0.0", r"\[actions\] fps: expected a finite number > 0"),
     ("fps = 50.0", "fps = true", r"\[actions\] fps"),
     ('arms = ["left", "right"]', 'arms = ["left"]', "expected two arm prefixes"),
     ("gripper_close = 0.01844", "gripper_close = 0.07", "expected gripper_open > gripper_close"),
     ('picker = "right"', 'picker = "middle"', r"\[task\] picker: expected one of the grippers"),
-    ("waist = 10.0", "waist = -1.0", r"\[limits\] waist: expected a force limit > 0"),
+    ("waist = 10.0", "waist = -1.0", r"\[limits\] waist: expected a finite force limit > 0"),
+    ("waist = 10.0", "waist = inf", r"\[limits\] waist: expected a finite force limit > 0"),
+    ("waist = 10.0", 'waist = "ten"', r"\[limits\] waist: expected a finite force limit > 0"),
+    ('kind = "handover"', 'kind = "juggle"', r"\[task\] kind: expected one of handover, pick_place"),
+    ('kind = "handover"', 'kind = ["handover"]', r"\[task\] kind: expected one of"),
+    ('receiver = "left"', 'receiver = "right"', r"two different grippers for picker and receiver"),
+    ('receiver = "left"', 'receiver = "left"\nreciever = "left"', r"\[task\]: unknown key 'reciever' \(did you mean 'receiver'\?\)"),
+    ("horizon = 10", "horizn = 10", r"\[sparse\]: unknown key 'horizn' \(did you mean 'horizon'\?\)"),
+    ('nominal = 0.05\nprior = "uniform"', 'nominal = 0.05\npriors = "loguniform"', r"\[uncertainty.mass\]: unknown key 'priors' \(did you mean 'prior'\?\)"),
+    ('[model]\nmjcf = "scene.xml"', '[model]\nmjcf = "scene.xml"\nkeyfame = "home"', r"\[model\]: unknown key 'keyfame' \(did you mean 'keyframe'\?\)"),
+    ('geoms = ["table"]', 'geoms = ["table"]\ngeom = "table"', r"\[support\]: unknown key 'geom'"),
+    ('mjcf = "scene.xml"', "mjcf = 3", r"\[model\] mjcf: expected a string, got 3"),
+    ("[object]\nbody", "object = \"box\"\n[objectx]\nbody", r"scenario: unknown key 'objectx'"),
+    ("horizon = 10", 'horizon = "10"', r"\[sparse\] horizon: expected an integer"),
+    ("horizon = 10", "horizon = 10\npersistence = -1.0", r"\[sparse\] persistence: expected a time >= 0"),
     ("threshold = 0.9", "threshold = 0.0", r"\[cost\] threshold: expected a finite number > 0"),
     ("horizon = 10", "horizon = 0", r"\[sparse\] horizon: expected an integer >= 1"),
 ])
 def test_malformed_scenario(tmp_path, old, new, message):
     folder = _toml(tmp_path, (old, new))
     with pytest.raises(ScenarioError, match=message):
+        load_scenario(folder)
+
+
+def test_missing_task_is_an_error(tmp_path):
+    text = (BUNDLED / "scenario.toml").read_text()
+    start, end = text.index("[task]"), text.index("# Force limits")
+    folder = _toml(tmp_path, (text[start:end], ""))
+    with pytest.raises(ScenarioError, match=r"missing \[task\] table; expected kind = one of "
+                                            r"handover, pick_place, pick_hold"):
+        load_scenario(folder)
+    folder = _toml(tmp_path / "b", ('kind = "handover"     # handover | pick_place | pick_hold '
+                                    '(critmoment.task)\n', ""))
+    with pytest.raises(ScenarioError, match=r"\[task\]: missing kind"):
         load_scenario(folder)
 
 
@@ -183,12 +211,12 @@ def test_unknown_gripper_geom_lists_valid_names(tmp_path):
      r"\[object\] body: unknown body 'cube'; valid names: .*box"),
     (('geoms = ["table"]', 'geoms = ["floor"]'), r"\[support\] geoms: unknown geom 'floor'.*table"),
     (("waist = 10.0", "waist = 10.0\nhip = 3.0"),
-     r"\[limits\] 'hip' matches no actuator; actuators: .*left/waist"),
-    (("waist = 10.0\n", ""), r"missing \['left/waist', 'right/waist'\]"),
-    (('keyframe = "home"', 'keyframe = "away"'), r"unknown keyframe 'away'; valid: \['home'\]"),
+     r"\[limits\] 'hip' matches no actuator \(by name, or by the joint/tendon it drives\); "
+     r"actuators: left/waist \(position on joint left/waist\)"),
+    (('keyframe = "home"', 'keyframe = "away"'), r"unknown keyframe 'away'; valid: home or an index"),
     (('[uncertainty.mass]\nbody = "box"', '[uncertainty.mass]\nbody = "brick"'),
      r"unknown body 'brick'; the model has: .*box"),
-], ids=["object body", "support geom", "limit actuator", "missing limit", "keyframe",
+], ids=["object body", "support geom", "limit actuator", "keyframe",
         "parameter target"])
 def test_unknown_names_say_what_is_valid(tmp_path, edit, message):
     folder = _toml(tmp_path, edit)
@@ -227,11 +255,23 @@ def test_named_parameter_with_kind(tmp_path):
     assert isinstance(s.box.parameters[0], MassParameter)
 
 
-def test_friction_parameter_needs_priority(tmp_path):
-    # without priority MuJoCo mixes friction with max(): the parameter could not lower it
+def test_friction_parameter_works_on_the_model_as_shipped(tmp_path):
+    # the shipped MJCF gives the cube no priority: MuJoCo would mix friction with max() and
+    # the parameter could not lower it; critmoment's own copy raises the cube's priority
     folder = _copy(tmp_path, {"scene.xml": [('priority="1"', 'priority="0"')]})
-    with pytest.raises(ScenarioError, match=r"friction parameter on geom 'box' needs that geom's "
-                                            r"priority.*expected priority > 0, got 0"):
+    s = load_scenario(folder)
+    model = s.load_model()
+    box = model.geom("box").id
+    others = [i for i in range(model.ngeom) if i != box]
+    assert model.geom_priority[box] > model.geom_priority[others].max()
+
+
+def test_friction_parameter_on_a_geom_that_never_wins_is_rejected(tmp_path):
+    # a pad's friction loses to the cube's priority: its costs could not change
+    folder = _toml(tmp_path, ('[uncertainty.friction]\ngeom = "box"',
+                              '[uncertainty.friction]\ngeom = "left/left_pad"'))
+    with pytest.raises(ScenarioError, match=r"friction of geom 'left/left_pad' never governs its "
+                                            r"contacts"):
         load_scenario(folder)
 
 

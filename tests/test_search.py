@@ -49,7 +49,7 @@ def _lift_step(recording) -> int:
 def _handover_step(recording, scenario, settle: int = 60) -> int:
     """First step from which the receiver alone holds the cube off the table, + settle."""
     names = scenario.gripper_names
-    rec, pick = names.index(scenario.receiver), names.index(scenario.picker)
+    rec, pick = names.index(scenario.task.receiver), names.index(scenario.task.picker)
     alone = (recording.contact_gripper[:, rec] & ~recording.contact_gripper[:, pick]
              & ~recording.contact_support)
     runs = np.lib.stride_tricks.sliding_window_view(alone, settle).all(axis=1)
@@ -121,7 +121,7 @@ def test_handover_motor_critical_mass_static_and_step_load(scenario, twin, demo_
     """
     _, hand = moments
     bounds = search.analytic_bounds(demo_recording, twin, hand, pin_model=pin_model)
-    receiver = scenario.receiver
+    receiver = scenario.task.receiver
     assert bounds.holding == (receiver,) and not bounds.on_support and bounds.assumptions_hold
     assert bounds.limiting_joint == f"{receiver}/wrist_angle"
     static = bounds.motor_critical_mass
@@ -167,9 +167,9 @@ def test_liftoff_contact_critical_mass(scenario, twin, demo_recording, moments, 
     lift, _ = moments
     bounds = search.analytic_bounds(demo_recording, twin, lift, pin_model=pin_model)
     worst = search.analytic_worst_case(bounds)
-    assert bounds.holding == (scenario.picker,) and bounds.assumptions_hold
+    assert bounds.holding == (scenario.task.picker,) and bounds.assumptions_hold
     (grasp,) = bounds.grasps
-    assert grasp.attach_body == f"{scenario.picker}/gripper_link"
+    assert grasp.attach_body == f"{scenario.task.picker}/gripper_link"
     assert grasp.normal_force == pytest.approx(10.0)  # 2 pads × 5 N finger limit
     assert grasp.measured_normal_force == pytest.approx(10.0, rel=0.02)
     mu = scenario.box.nominal[scenario.box.index("friction")]
@@ -220,7 +220,7 @@ def test_payload_affine_torques_match_settled_actuator_forces(scenario, twin, de
     masses, friction = np.array([1.0, 2.0]), 1.0
     samples = _samples(scenario, masses, friction)
     arm = [i for i, n in enumerate(twin.actuator_names)
-           if n.startswith(f"{scenario.receiver}/") and twin.rotational[i]]
+           if n.startswith(f"{scenario.task.receiver}/") and twin.rotational[i]]
 
     one = sparse.evaluate(demo_recording, twin, [hand], samples, horizon=1)
     np.testing.assert_array_equal(one.actuator_norm[0, 0], one.actuator_norm[0, 1])
@@ -228,7 +228,7 @@ def test_payload_affine_torques_match_settled_actuator_forces(scenario, twin, de
     hold = SparseEvaluator(_hold(demo_recording, twin, hand, SETTLE), twin, horizon=SETTLE)
     res = hold.evaluate([0], samples, keep_raw=True)
     settled = twin.signals(res.sensordata[0, :, -1])
-    assert settled.contact_gripper[:, scenario.gripper_names.index(scenario.receiver)].all()
+    assert settled.contact_gripper[:, scenario.gripper_names.index(scenario.task.receiver)].all()
     force = settled.actuator_force[:, arm]
     assert (np.abs(force) < 0.99 * twin.limits[arm]).all()  # not saturated once settled
 
@@ -274,7 +274,7 @@ def test_flags_two_grippers_and_resting_object(scenario, twin, demo_recording, p
     assert both.fos_contact(5.0, 0.5) == pytest.approx(max(s.fos_contact(5.0, 0.5)
                                                            for s in single))
     # the receiver's grasp axis is vertical: its pads carry the weight, friction little
-    receiver = both.grasps[both.holding.index(scenario.receiver)]
+    receiver = both.grasps[both.holding.index(scenario.task.receiver)]
     assert abs(receiver.grasp_axis[2]) > 0.99 and receiver.demand_per_kg < 0.5
 
     rest = search.analytic_bounds(demo_recording, twin, 10, pin_model=pin_model)

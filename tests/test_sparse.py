@@ -60,7 +60,7 @@ TINY_MJCF = """
 
 TINY_TOML = one_actuator_toml("tiny", mjcf="scene.xml", gripper="hand", gripper_geom="pad",
                               support="table", actuator="hinge", limit=5.0, task=True,
-                              uncertainty="""[uncertainty.mass]
+                              settle=False, uncertainty="""[uncertainty.mass]
 body = "box"
 range = [0.05, 10.0]
 nominal = 0.05
@@ -142,7 +142,7 @@ def test_free_fall_acceleration_is_g_for_every_mass(tiny):
 def test_held_box_heavier_mass_lowers_grip_fos_and_raises_arm_torque(scenario, twin,
                                                                       demo_recording):
     step = _lift_step(demo_recording)
-    picker = scenario.gripper_names.index(scenario.picker)
+    picker = scenario.gripper_names.index(scenario.task.picker)
     masses = np.array([0.05, 0.1, 0.2, 0.3, 0.5, 0.8, 1.0])
     samples = _mass_samples(scenario, masses)
     one = sparse.evaluate(demo_recording, twin, [step], samples, horizon=1)
@@ -154,7 +154,7 @@ def test_held_box_heavier_mass_lowers_grip_fos_and_raises_arm_torque(scenario, t
     # over a few steps the arm sags and the servos answer the load
     ten = sparse.evaluate(demo_recording, twin, [step], samples, horizon=10)
     for joint in ("shoulder", "elbow"):
-        a = twin.actuator_names.index(f"{scenario.picker}/{joint}")
+        a = twin.actuator_names.index(f"{scenario.task.picker}/{joint}")
         load = np.abs(ten.actuator_norm[0, :, a])
         assert (np.diff(load) > 0).all(), (joint, load)
     assert (np.diff(ten.fos_motor[0]) < 0).all()
@@ -277,7 +277,7 @@ def test_divergence_is_marked_or_raised(tiny):
 
 def test_liftoff_mass_sweep_and_critical_mass(scenario, twin, demo_recording):
     lift = _lift_step(demo_recording)
-    picker = scenario.gripper_names.index(scenario.picker)
+    picker = scenario.gripper_names.index(scenario.task.picker)
     masses = np.linspace(0.05, 10.0, 41)
     res = sparse.evaluate(demo_recording, twin, [lift], _mass_samples(scenario, masses),
                           horizon=1)
@@ -310,7 +310,7 @@ def test_liftoff_mass_sweep_and_critical_mass(scenario, twin, demo_recording):
 def test_handover_motor_fos_falls_with_mass_and_critical_values(scenario, twin,
                                                                   demo_recording):
     hand = _handover_step(demo_recording)
-    receiver = scenario.gripper_names.index(scenario.receiver)
+    receiver = scenario.gripper_names.index(scenario.task.receiver)
     masses = np.array([0.05, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0])
     samples = _mass_samples(scenario, masses)
     one = sparse.evaluate(demo_recording, twin, [hand], samples, horizon=1)

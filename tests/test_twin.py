@@ -269,7 +269,8 @@ def test_free_fall_object_acc_is_gravity(tmp_path_factory, mass):
     twin = _slope_twin(tmp_path_factory, 15.0)
     model = twin.copy_model()
     twin.write_parameters(model, [[mass, SLOPE_MU]])
-    data = twin.initial_data(object_pose=[0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0], model=model)
+    data = twin.initial_data(object_pose=[0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0], model=model,
+                             settle=False)
     for _ in range(5):
         mujoco.mj_step(model, data)
         sig = twin.signals(data.sensordata)
@@ -284,7 +285,8 @@ def test_free_fall_detects_missing_set_const(tmp_path_factory):
     box = twin.object_body_id
     model.body_mass[box] *= 10.0
     model.body_inertia[box] *= 10.0
-    data = twin.initial_data(object_pose=[0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0], model=model)
+    data = twin.initial_data(object_pose=[0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0], model=model,
+                             settle=False)
     mujoco.mj_step(model, data)
     acc = twin.signals(data.sensordata).object_acc
     assert abs(acc[2] + G) > 1.0  # wrong physics: the test above would catch it
@@ -294,7 +296,8 @@ def test_bundled_box_free_fall_heavy_and_resting(twin):
     start = np.array([0.0, -0.96, 1.16, 0.0, -0.3, 0.0, 0.0] * 2)
     model = twin.copy_model()
     twin.write_parameters(model, [[10.0, 1.0]])  # 200 × the nominal mass
-    data = twin.initial_data(start=start, object_pose=[0.1, 0.5, 0.3, 1, 0, 0, 0], model=model)
+    data = twin.initial_data(start=start, object_pose=[0.1, 0.5, 0.3, 1, 0, 0, 0], model=model,
+                             settle=False)
     mujoco.mj_step(model, data)
     sig = twin.signals(data.sensordata)
     np.testing.assert_allclose(sig.object_acc, [0.0, 0.0, -G], rtol=0, atol=1e-9)

@@ -1,0 +1,229 @@
+"""What a model's actuators are: type, target, control and force ranges.
+
+MuJoCo's actuators are all ``general`` underneath: force = gain·ctrl + bias with
+gain and bias affine in the actuator length and velocity. critmoment needs to know
+which of the common shapes each one is, because a joint-position action channel only
+makes sense on a position-like actuator (a position servo, or a ``general`` one with an
+affine bias that pulls towards ctrl), never on a torque motor.
+
+:func:`describe` reads that off the compiled model; :func:`force_limit` gives the
+default force limit from the MJCF (``forcerange`` of the actuator, else
+``actuatorfrcrange`` of its joint), or None when the model states none;
+:func:`gripper_gap` measures how far apart a gripper's geoms are at a control value, so
+that a normalised gripper channel knows which end of the control range closes it.
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+import enum
+from collections.abc import Sequence
+
+import mujoco
+import numpy as np
+
+__all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
+           "gripper_gap"]
+
+
+class ActuatorKind(enum.Enum):
+    """The shape of an actuator's force law."""
+
+    POSITION = "position"      # gain kp·ctrl, bias −kp·length (−kv·velocity): a servo on ctrl
+    AFFINE = "general-affine"  # general with an affine bias: a servo on −bias0/bias1 ... of ctrl
+    VELOCITY = "velocity"      # gain kv·ctrl, bias −kv·velocity
+    MOTOR = "motor"            # force = gear·ctrl: a torque (or force) command
+    OTHER = "other"            # muscles, dampers, user dynamics
+
+    @property
+    def tracks_position(self) -> bool:
+        """Whether ctrl is a position target (the action convention's joint channels)."""
+        return self in (ActuatorKind.POSITION, ActuatorKind.AFFINE)
+
+
+_TRN = {
+    mujoco.mjtTrn.mjTRN_JOINT: "joint", mujoco.mjtTrn.mjTRN_JOINTINPARENT: "joint",
+    mujoco.mjtTrn.mjTRN_TENDON: "tendon", mujoco.mjtTrn.mjTRN_SITE: "site",
+    mujoco.mjtTrn.mjTRN_SLIDERCRANK: "slider-crank", mujoco.mjtTrn.mjTRN_BODY: "body",
+}
+
+
+@dataclasses.dataclass(frozen=True)
+class ActuatorInfo:
+    """One actuator, as :func:`describe` reads it.
+
+    Attributes:
+        index: actuator id.
+        name: its name ("" when unnamed).
+        kind: the force law's shape.
+        transmission: "joint", "tendon", "site", ...
+        target: name of the joint or tendon it drives ("" when unnamed).
+        joint_type: "hinge", "slide", ... for a joint transmission, else "".
+        ctrlrange: (low, high), or None when the control is unlimited.
+        forcerange: the model's force limit (low, high) [N·m or N], or None.
+        gain: kp (position) / kv (velocity) / gear (motor), for reports.
+    """
+
+    index: int
+    name: str
+    kind: ActuatorKind
+    transmission: str
+    target: str
+    joint_type: str
+    ctrlrange: tuple[float, float] | None
+    forcerange: tuple[float, float] | None
+    gain: float
+
+    @property
+    def label(self) -> str:
+        """Its name, or ``<transmission> <target>`` when unnamed."""
+        return self.name or f"{self.transmission} {self.target or '#' + str(self.index)}"
+
+    def to_json(self) -> dict:
+        return {"index": self.index, "name": self.name, "kind": self.kind.value,
+                "transmission": self.transmission, "target": self.target,
+                "joint_type": self.joint_type,
+                "ctrlrange": list(self.ctrlrange) if self.ctrlrange else None,
+                "forcerange": list(self.forcerange) if self.forcerange else None,
+                "gain": self.gain}
+
+
+def _kind(model: mujoco.MjModel, i: int) -> ActuatorKind:
+    gain_t, bias_t = model.actuator_gaintype[i], model.actuator_biastype[i]
+    g, b = model.actuator_gainprm[i], model.actuator_biasprm[i]
+    fixed, affine = mujoco.mjtGain.mjGAIN_FIXED, mujoco.mjtBias.mjBIAS_AFFINE
+    if gain_t == fixed and bias_t == mujoco.mjtBias.mjBIAS_NONE:
+        return ActuatorKind.MOTOR
+    if gain_t == fixed and bias_t == affine:
+        if b[1] != 0 and np.isclose(b[1], -g[0]) and b[0] == 0:
+            return ActuatorKind.POSITION
+        if b[1] < 0:
+            return ActuatorKind.AFFINE
+        if b[1] == 0 and b[2] != 0 and np.isclose(b[2], -g[0]):
+            return ActuatorKind.VELOCITY
+    return ActuatorKind.OTHER
+
+
+def force_limit(model: mujoco.MjModel, i: int) -> float | None:
+    """Default force limit of actuator ``i`` from the MJCF [N·m or N], or None.
+
+    The actuator's own ``forcerange`` when ``forcelimited``; else the ``actuatorfrcrange``
+    of the joint it drives (scaled by the gear); the limit is the smaller magnitude of the
+    two ends (a one-sided range gives its one side).
+    """
+    if model.actuator_forcelimited[i]:
+        lo, hi = model.actuator_forcerange[i]
+        ends = [abs(v) for v in (lo, hi) if v != 0]
+        if ends:
+            return float(min(ends))
+    if int(model.actuator_trntype[i]) in (int(mujoco.mjtTrn.mjTRN_JOINT),
+                                          int(mujoco.mjtTrn.mjTRN_JOINTINPARENT)):
+        j = model.actuator_trnid[i, 0]
+        if model.jnt_actfrclimited[j]:
+            lo, hi = model.jnt_actfrcrange[j]
+            ends = [abs(v) for v in (lo, hi) if v != 0]
+            gear = abs(model.actuator_gear[i, 0]) or 1.0
+            if ends:
+                return float(min(ends) / gear)
+    return None
+
+
+def describe(model: mujoco.MjModel, i: int) -> ActuatorInfo:
+    """Read actuator ``i`` of ``model``."""
+    transmission = _TRN.get(mujoco.mjtTrn(int(model.actuator_trntype[i])), "other")
+    target, joint_type = "", ""
+    tid = model.actuator_trnid[i, 0]
+    if transmission == "joint":
+        target = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT, tid) or ""
+        joint_type = mujoco.mjtJoint(model.jnt_type[tid]).name.removeprefix("mjJNT_").lower()
+    elif transmission == "tendon":
+        target = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_TENDON, tid) or ""
+    elif transmission == "site":
+        target = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_SITE, tid) or ""
+    kind = _kind(model, i)
+    gain = float(model.actuator_gainprm[i, 0])
+    if kind is ActuatorKind.MOTOR:
+        gain = float(model.actuator_gear[i, 0])
+    ctrl = (tuple(float(v) for v in model.actuator_ctrlrange[i])
+            if model.actuator_ctrllimited[i] else None)
+    frc = (tuple(float(v) for v in model.actuator_forcerange[i])
+           if model.actuator_forcelimited[i] else None)
+    return ActuatorInfo(index=i, name=model.actuator(i).name, kind=kind,
+                        transmission=transmission, target=target, joint_type=joint_type,
+                        ctrlrange=ctrl, forcerange=frc, gain=gain)
+
+
+def describe_all(model: mujoco.MjModel) -> tuple[ActuatorInfo, ...]:
+    """:func:`describe` of every actuator."""
+    return tuple(describe(model, i) for i in range(model.nu))
+
+
+def _subtree_root(model: mujoco.MjModel, geom_ids: Sequence[int]) -> int:
+    """Deepest body that is an ancestor of every geom's body."""
+    def chain(b):
+        out = [b]
+        while b != 0:
+            b = int(model.body_parentid[b])
+            out.append(b)
+        return out[::-1]
+
+    chains = [chain(int(model.geom_bodyid[g])) for g in geom_ids]
+    root = 0
+    for level in zip(*chains, strict=False):
+        if all(b == level[0] for b in level):
+            root = level[0]
+        else:
+            break
+    return root
+
+
+def gripper_gap(model: mujoco.MjModel, actuators: Sequence[int], ctrl: Sequence[float],
+                geom_ids: Sequence[int], *, keyframe: int | None = None,
+                seconds: float = 0.6) -> float:
+    """Largest distance between a gripper's geoms after driving it to ``ctrl`` [m].
+
+    The gripper's own joints move under their actuators for ``seconds`` of simulated
+    time; every other joint is held where the keyframe (or qpos0) puts it, gravity and
+    contacts are off, so only the gripper's mechanism (slides, hinges, tendons,
+    linkages) decides the result.
+
+    Args:
+        model: the compiled model (not modified).
+        actuators: ids of the gripper channel's actuators.
+        ctrl: control of each of them.
+        geom_ids: the gripper's geoms (two or more).
+        keyframe: keyframe id for the rest of the robot, or None.
+        seconds: simulated settling time [s].
+    """
+    m = copy.copy(model)
+    m.opt.gravity[:] = 0
+    m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONTACT)
+    d = mujoco.MjData(m)
+    if keyframe is not None:
+        mujoco.mj_resetDataKeyframe(m, d, keyframe)
+    root = _subtree_root(m, geom_ids)
+    inside = np.zeros(m.nbody, bool)
+    for b in range(m.nbody):
+        a = b
+        while a != 0 and a != root:
+            a = int(m.body_parentid[a])
+        inside[b] = a == root and root != 0
+    hold_q, hold_v = [], []
+    for j in range(m.njnt):
+        if not inside[m.jnt_bodyid[j]]:
+            n = {0: 7, 1: 4}.get(int(m.jnt_type[j]), 1)
+            hold_q.extend(range(m.jnt_qposadr[j], m.jnt_qposadr[j] + n))
+            nv = {0: 6, 1: 3}.get(int(m.jnt_type[j]), 1)
+            hold_v.extend(range(m.jnt_dofadr[j], m.jnt_dofadr[j] + nv))
+    q0 = d.qpos[hold_q].copy()
+    d.ctrl[:] = 0
+    d.ctrl[list(actuators)] = ctrl
+    for _ in range(max(1, int(seconds / m.opt.timestep))):
+        mujoco.mj_step(m, d)
+        d.qpos[hold_q] = q0
+        d.qvel[hold_v] = 0
+    mujoco.mj_kinematics(m, d)
+    pts = d.geom_xpos[list(geom_ids)]
+    diff = pts[:, None, :] - pts[None, :, :]
+    return float(np.sqrt((diff ** 2).sum(-1)).max())

@@ -1,0 +1,428 @@
+"""Task definitions: what a trajectory must achieve with the object.
+
+A :class:`Task` gives, in one place, everything that depends on *what the robot is
+doing* rather than on the physics:
+
+* the **stage** signal of each physics step (for the report and the moments),
+* where the object **must be carried** (the grip's factor of safety counts there),
+* the physical **success rule** of a whole run, from plain kinematics and contacts
+  (object height, its distance to a goal, which gripper touches it, its speed),
+* the words the report uses.
+
+The audit, the verification rollouts, ``validate``'s ground truth and the report all
+ask the scenario's task; nothing else hard-codes a task. New kinds are added by
+subclassing :class:`Task` and registering the class in :data:`TASK_KINDS`, as
+:data:`critmoment.params.PARAMETER_KINDS` does for parameters.
+
+Kinds:
+
+``handover``
+    ACT's transfer-cube reward: 1 the picker touches the object, 2 and it is off the
+    support, 3 the receiver touches it, 4 and it is off the support. Success: the
+    receiver holds the object off every support at the end.
+``pick_place``
+    1 touched, 2 carried (touched, off the support), 3 placed (on a support within
+    ``tolerance`` of the goal, still touched), 4 released (within ``tolerance`` of the
+    goal, untouched). Success: the object was lifted at least ``lift_height`` above its
+    start, and at the end lies within ``tolerance`` of the goal, released and at rest
+    (speed below ``rest_speed``). A release onto a support at the goal is not a drop.
+``pick_hold``
+    1 touched, 2 held off the support. Success: lifted at least ``lift_height`` and still
+    held off every support by the gripper at the end.
+
+"Off the support" and "touched" are read over a final window of ``settle_time`` so that
+contact chatter of a firm grasp (a contact flag that flickers for a step) does not
+decide a run.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping, Sequence
+from typing import Any, ClassVar
+
+import numpy as np
+
+from critmoment.exceptions import ScenarioError
+
+__all__ = [
+    "TaskEvidence",
+    "Task",
+    "HandoverTask",
+    "PickPlaceTask",
+    "PickHoldTask",
+    "TASK_KINDS",
+    "task_from_table",
+]
+
+
+@dataclasses.dataclass(frozen=True)
+class TaskEvidence:
+    """What a run shows of the object, step by step, with leading shape (..., T).
+
+    Attributes:
+        contact_gripper: the object touches gripper g, (..., T, G) bool.
+        contact_support: the object touches a support geom, (..., T) bool.
+        object_pos: the object's position in the world [m], (..., T, 3).
+        object_vel: the object's linear velocity in the world [m/s], (..., T, 3).
+        dt: physics step [s].
+    """
+
+    contact_gripper: np.ndarray
+    contact_support: np.ndarray
+    object_pos: np.ndarray
+    object_vel: np.ndarray
+    dt: float
+
+    def __post_init__(self):
+        cg = np.asarray(self.contact_gripper, dtype=bool)
+        cs = np.asarray(self.contact_support, dtype=bool)
+        pos = np.asarray(self.object_pos, dtype=np.float64)
+        vel = np.asarray(self.object_vel, dtype=np.float64)
+        lead = cs.shape
+        if cg.shape[:-1] != lead or pos.shape != lead + (3,) or vel.shape != lead + (3,):
+            raise ScenarioError(
+                f"task evidence: expected contact_gripper (..., T, G), contact_support (..., T), "
+                f"object_pos and object_vel (..., T, 3) with one leading shape, got "
+                f"{cg.shape}, {cs.shape}, {pos.shape}, {vel.shape}")
+        if not (np.isfinite(self.dt) and self.dt > 0):
+            raise ScenarioError(f"task evidence: expected a physics step dt > 0 s, got {self.dt}")
+        object.__setattr__(self, "contact_gripper", cg)
+        object.__setattr__(self, "contact_support", cs)
+        object.__setattr__(self, "object_pos", pos)
+        object.__setattr__(self, "object_vel", vel)
+
+    @property
+    def n_steps(self) -> int:
+        return int(self.contact_support.shape[-1])
+
+    def window(self, seconds: float) -> int:
+        """Steps in a final window of ``seconds`` (at least 1, at most T)."""
+        return int(min(max(1, round(seconds / self.dt)), max(1, self.n_steps)))
+
+
+@dataclasses.dataclass(frozen=True)
+class Task:
+    """Base class of task kinds (see the module docstring).
+
+    Attributes:
+        grippers: names of the scenario's grippers, in signal order.
+        lift_height: least rise of the object above its start that counts as a lift [m].
+        settle_time: final window over which contacts are read for the success rule [s].
+    """
+
+    grippers: tuple[str, ...]
+    lift_height: float = 0.02
+    settle_time: float = 0.05
+
+    kind: ClassVar[str] = ""
+    stage_names: ClassVar[tuple[str, ...]] = ()
+    #: keys the scenario's [task] table may hold for this kind (besides ``kind``)
+    keys: ClassVar[tuple[str, ...]] = ("lift_height", "settle_time")
+
+    def __post_init__(self):
+        for key in ("lift_height", "settle_time"):
+            value = getattr(self, key)
+            if not (np.isfinite(value) and value >= 0):
+                raise ScenarioError(f"[task] {key}: expected a finite number >= 0, got {value!r}")
+
+    # -- per step ------------------------------------------------------------------
+    def stage(self, contact_gripper: np.ndarray, contact_support: np.ndarray,
+              object_pos: np.ndarray) -> np.ndarray:
+        """The task stage of each step, (...) int8, from (..., G), (...), (..., 3)."""
+        raise NotImplementedError
+
+    def must_carry(self, contact_gripper: np.ndarray, contact_support: np.ndarray) -> np.ndarray:
+        """Where a gripper carries the object (off every support, touched), (...) bool.
+
+        The grip's factor of safety counts only there.
+        """
+        return ~np.asarray(contact_support, bool) & np.asarray(contact_gripper, bool).any(axis=-1)
+
+    @property
+    def final_stage(self) -> int:
+        """The stage a successful run ends in."""
+        return len(self.stage_names) - 1
+
+    # -- whole runs ---------------------------------------------------------------
+    def success(self, ev: TaskEvidence) -> np.ndarray:
+        """Whether each run achieved the task, (...) bool."""
+        raise NotImplementedError
+
+    def lifted(self, ev: TaskEvidence) -> np.ndarray:
+        """The object rose at least ``lift_height`` above its start at some step, (...) bool."""
+        z = ev.object_pos[..., 2]
+        if z.shape[-1] == 0:
+            return np.zeros(z.shape[:-1], dtype=bool)
+        return (z.max(axis=-1) - z[..., 0]) >= self.lift_height
+
+    def _final(self, flags: np.ndarray, ev: TaskEvidence, how: str) -> np.ndarray:
+        w = ev.window(self.settle_time)
+        tail = np.asarray(flags)[..., -w:]
+        return tail.any(axis=-1) if how == "any" else tail.all(axis=-1)
+
+    def describe(self) -> str:
+        """One sentence for the report."""
+        raise NotImplementedError
+
+    def to_json(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"kind": self.kind, "stages": list(self.stage_names),
+                               "description": self.describe()}
+        for f in dataclasses.fields(self):
+            value = getattr(self, f.name)
+            out[f.name] = list(value) if isinstance(value, tuple) else value
+        return out
+
+    # -- construction ------------------------------------------------------------
+    @classmethod
+    def from_table(cls, table: Mapping[str, Any], grippers: Sequence[str],
+                   resolve_site=None) -> Task:
+        """Build from the scenario's ``[task]`` table (``kind`` already checked)."""
+        raise NotImplementedError
+
+
+def _number(table: Mapping[str, Any], key: str, default: float) -> float:
+    value = table.get(key, default)
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not np.isfinite(value):
+        raise ScenarioError(f"[task] {key}: expected a finite number, got {value!r}")
+    return float(value)
+
+
+def _gripper(table: Mapping[str, Any], key: str, grippers: Sequence[str], kind: str) -> str:
+    if key not in table:
+        if len(grippers) == 1:
+            return grippers[0]
+        raise ScenarioError(
+            f"[task] {key}: kind {kind!r} with several grippers needs {key} = one of "
+            f"{list(grippers)}, got none")
+    value = table[key]
+    if value not in grippers:
+        raise ScenarioError(f"[task] {key}: expected one of the grippers {list(grippers)}, "
+                            f"got {value!r}")
+    return value
+
+
+@dataclasses.dataclass(frozen=True)
+class HandoverTask(Task):
+    """ACT's transfer-cube task: the picker lifts the object, the receiver takes it over.
+
+    Attributes:
+        picker: the gripper that lifts the object first (stages 1–2).
+        receiver: the gripper that holds it at the end (stages 3–4).
+    """
+
+    picker: str = ""
+    receiver: str = ""
+
+    kind: ClassVar[str] = "handover"
+    stage_names: ClassVar[tuple[str, ...]] = (
+        "untouched", "picker touches", "picker lifts", "receiver touches", "receiver holds")
+    keys: ClassVar[tuple[str, ...]] = ("picker", "receiver", "lift_height", "settle_time")
+
+    def __post_init__(self):
+        super().__post_init__()
+        for role in ("picker", "receiver"):
+            if getattr(self, role) not in self.grippers:
+                raise ScenarioError(f"[task] {role}: expected one of the grippers "
+                                    f"{list(self.grippers)}, got {getattr(self, role)!r}")
+        if self.picker == self.receiver:
+            raise ScenarioError(
+                f"[task] handover: expected two different grippers for picker and receiver, "
+                f"got {self.picker!r} for both (a single-arm task is kind = \"pick_place\" or "
+                f"\"pick_hold\")")
+
+    def stage(self, contact_gripper, contact_support, object_pos):
+        cg = np.asarray(contact_gripper, bool)
+        off = ~np.asarray(contact_support, bool)
+        pick = cg[..., self.grippers.index(self.picker)]
+        recv = cg[..., self.grippers.index(self.receiver)]
+        stage = np.zeros(off.shape, dtype=np.int8)
+        stage[pick] = 1
+        stage[pick & off] = 2
+        stage[recv] = 3
+        stage[recv & off] = 4
+        return stage
+
+    def success(self, ev):
+        recv = ev.contact_gripper[..., self.grippers.index(self.receiver)]
+        return self._final(recv, ev, "any") & self._final(~ev.contact_support, ev, "all")
+
+    def describe(self):
+        return (f"hand-over: {self.picker} lifts the object off its support, {self.receiver} "
+                f"takes it over and holds it off the support to the end")
+
+    @classmethod
+    def from_table(cls, table, grippers, resolve_site=None):
+        return cls(grippers=tuple(grippers), picker=_gripper(table, "picker", grippers, cls.kind),
+                   receiver=_gripper(table, "receiver", grippers, cls.kind),
+                   lift_height=_number(table, "lift_height", 0.02),
+                   settle_time=_number(table, "settle_time", 0.05))
+
+
+@dataclasses.dataclass(frozen=True)
+class PickPlaceTask(Task):
+    """Pick the object up, carry it, place it at a goal and release it there.
+
+    Attributes:
+        gripper: the gripper that carries the object.
+        goal: where the object's centre must end [m], (3,).
+        tolerance: largest distance of the object's centre from the goal [m].
+        rest_speed: largest speed of the object at the end [m/s].
+    """
+
+    gripper: str = ""
+    goal: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    tolerance: float = 0.03
+    rest_speed: float = 0.05
+
+    kind: ClassVar[str] = "pick_place"
+    stage_names: ClassVar[tuple[str, ...]] = ("untouched", "touched", "carried", "placed",
+                                              "released")
+    keys: ClassVar[tuple[str, ...]] = ("gripper", "goal", "goal_site", "tolerance",
+                                       "rest_speed", "lift_height", "settle_time")
+
+    def __post_init__(self):
+        super().__post_init__()
+        if self.gripper not in self.grippers:
+            raise ScenarioError(f"[task] gripper: expected one of {list(self.grippers)}, got "
+                                f"{self.gripper!r}")
+        for key in ("tolerance", "rest_speed"):
+            value = getattr(self, key)
+            if not (np.isfinite(value) and value > 0):
+                raise ScenarioError(f"[task] {key}: expected a finite number > 0, got {value!r}")
+
+    def _at_goal(self, object_pos):
+        return np.linalg.norm(np.asarray(object_pos) - np.asarray(self.goal), axis=-1) \
+            <= self.tolerance
+
+    def stage(self, contact_gripper, contact_support, object_pos):
+        cg = np.asarray(contact_gripper, bool)
+        on = np.asarray(contact_support, bool)
+        touch = cg[..., self.grippers.index(self.gripper)]
+        at_goal = self._at_goal(object_pos)
+        stage = np.zeros(on.shape, dtype=np.int8)
+        stage[touch] = 1
+        stage[touch & ~on] = 2
+        stage[touch & on & at_goal] = 3
+        stage[~cg.any(axis=-1) & at_goal] = 4
+        return stage
+
+    def success(self, ev):
+        touch = ev.contact_gripper.any(axis=-1)
+        released = ~self._final(touch, ev, "any")
+        at_goal = self._final(self._at_goal(ev.object_pos), ev, "all")
+        speed = np.linalg.norm(ev.object_vel[..., -1, :], axis=-1) if ev.n_steps else 0.0
+        return self.lifted(ev) & at_goal & released & (speed <= self.rest_speed)
+
+    def describe(self):
+        g = ", ".join(f"{v:.3f}" for v in self.goal)
+        return (f"pick and place: {self.gripper} lifts the object at least "
+                f"{self.lift_height * 1e3:.0f} mm, places it within {self.tolerance * 1e3:.0f} mm "
+                f"of ({g}) m and releases it at rest")
+
+    @classmethod
+    def from_table(cls, table, grippers, resolve_site=None):
+        if ("goal" in table) == ("goal_site" in table):
+            raise ScenarioError(
+                "[task] pick_place: expected exactly one of goal = [x, y, z] (world [m]) or "
+                f"goal_site = \"<site name>\", got {sorted(k for k in table if 'goal' in k)}")
+        if "goal" in table:
+            goal = table["goal"]
+            if not (isinstance(goal, list) and len(goal) == 3 and all(
+                    isinstance(v, (int, float)) and not isinstance(v, bool) and np.isfinite(v)
+                    for v in goal)):
+                raise ScenarioError(f"[task] goal: expected [x, y, z] in metres, got {goal!r}")
+            goal = tuple(float(v) for v in goal)
+        else:
+            site = table["goal_site"]
+            if not isinstance(site, str) or resolve_site is None:
+                raise ScenarioError(f"[task] goal_site: expected a site name, got {site!r}")
+            goal = tuple(float(v) for v in resolve_site(site))
+        return cls(grippers=tuple(grippers), gripper=_gripper(table, "gripper", grippers, cls.kind),
+                   goal=goal, tolerance=_number(table, "tolerance", 0.03),
+                   rest_speed=_number(table, "rest_speed", 0.05),
+                   lift_height=_number(table, "lift_height", 0.02),
+                   settle_time=_number(table, "settle_time", 0.05))
+
+
+@dataclasses.dataclass(frozen=True)
+class PickHoldTask(Task):
+    """Pick the object up and still hold it off its support at the end.
+
+    Attributes:
+        gripper: the gripper that holds the object.
+    """
+
+    gripper: str = ""
+
+    kind: ClassVar[str] = "pick_hold"
+    stage_names: ClassVar[tuple[str, ...]] = ("untouched", "touched", "held")
+    keys: ClassVar[tuple[str, ...]] = ("gripper", "lift_height", "settle_time")
+
+    def __post_init__(self):
+        super().__post_init__()
+        if self.gripper not in self.grippers:
+            raise ScenarioError(f"[task] gripper: expected one of {list(self.grippers)}, got "
+                                f"{self.gripper!r}")
+
+    def stage(self, contact_gripper, contact_support, object_pos):
+        touch = np.asarray(contact_gripper, bool)[..., self.grippers.index(self.gripper)]
+        off = ~np.asarray(contact_support, bool)
+        stage = np.zeros(off.shape, dtype=np.int8)
+        stage[touch] = 1
+        stage[touch & off] = 2
+        return stage
+
+    def success(self, ev):
+        touch = ev.contact_gripper[..., self.grippers.index(self.gripper)]
+        return (self.lifted(ev) & self._final(touch, ev, "any")
+                & self._final(~ev.contact_support, ev, "all"))
+
+    def describe(self):
+        return (f"pick and hold: {self.gripper} lifts the object at least "
+                f"{self.lift_height * 1e3:.0f} mm and holds it off its support to the end")
+
+    @classmethod
+    def from_table(cls, table, grippers, resolve_site=None):
+        return cls(grippers=tuple(grippers), gripper=_gripper(table, "gripper", grippers, cls.kind),
+                   lift_height=_number(table, "lift_height", 0.02),
+                   settle_time=_number(table, "settle_time", 0.05))
+
+
+#: task kinds by name
+TASK_KINDS: dict[str, type[Task]] = {
+    HandoverTask.kind: HandoverTask,
+    PickPlaceTask.kind: PickPlaceTask,
+    PickHoldTask.kind: PickHoldTask,
+}
+
+
+def task_from_table(table: Any, grippers: Sequence[str], *, resolve_site=None) -> Task:
+    """The task of a scenario's ``[task]`` table.
+
+    Args:
+        table: the parsed table (must hold ``kind``).
+        grippers: the scenario's gripper names, in signal order.
+        resolve_site: callable giving a site's world position [m] (3,) by name, for
+            ``goal_site``.
+
+    Raises:
+        ScenarioError: no table, no or unknown kind, unknown keys, bad values.
+    """
+    from critmoment.scenario import unknown_keys_error
+
+    kinds = ", ".join(TASK_KINDS)
+    if not isinstance(table, Mapping):
+        raise ScenarioError(f"[task]: expected a table with kind = one of {kinds}, got "
+                            f"{table!r}")
+    if "kind" not in table:
+        raise ScenarioError(f"[task]: missing kind; expected kind = one of {kinds} (critmoment "
+                            "never guesses the task)")
+    kind = table["kind"]
+    if not isinstance(kind, str) or kind not in TASK_KINDS:
+        raise ScenarioError(f"[task] kind: expected one of {kinds}, got {kind!r}")
+    cls = TASK_KINDS[kind]
+    extra = set(table) - set(cls.keys) - {"kind"}
+    if extra:
+        raise unknown_keys_error("[task]", extra, ("kind",) + cls.keys)
+    return cls.from_table(table, grippers, resolve_site)
