@@ -53,6 +53,7 @@ __all__ = [
     "CUBE_HALF",
     "CUBE_X",
     "CUBE_Y",
+    "FINGER_OPEN",
     "GOAL",
     "READY_POSE",
     "PickPlaceOptions",
@@ -143,7 +144,7 @@ def sample_cube_pose(seed: int | np.random.Generator) -> np.ndarray:
 def ik_tcp(model: mujoco.MjModel, data: mujoco.MjData, site: int, qadr: np.ndarray,
            dofs: np.ndarray, pos: np.ndarray, rot: np.ndarray, *, rest: np.ndarray,
            iters: int = 200, damping: float = 1e-4, nullspace_gain: float = 0.1,
-           tol: float = 1e-8) -> float:
+           tol: float = 1e-8, posture_tol: float = 1e-6) -> float:
     """Damped-least-squares IK of a 7-DoF arm's site to a pose; updates ``data.qpos``.
 
     The step is ``Jᵀ (J Jᵀ + λ² I)⁻¹ e`` plus a null-space pull ``(I − J⁺J) k (rest − q)``
@@ -161,7 +162,8 @@ def ik_tcp(model: mujoco.MjModel, data: mujoco.MjData, site: int, qadr: np.ndarr
         iters: maximum iterations.
         damping: λ² [m², rad²].
         nullspace_gain: k, fraction of the posture error removed per iteration.
-        tol: stop when the pose error is below this [m or rad].
+        tol: stop when the pose error is below this [m or rad] ...
+        posture_tol: ... and the null-space step below this [rad].
 
     Returns:
         The final pose error norm [m or rad].
@@ -186,11 +188,12 @@ def ik_tcp(model: mujoco.MjModel, data: mujoco.MjData, site: int, qadr: np.ndarr
         err_norm = float(np.linalg.norm(err))
         mujoco.mj_jacSite(model, data, jacp, jacr, site)
         jac = np.vstack([jacp[:, dofs], jacr[:, dofs]])
-        pinv = jac.T @ np.linalg.inv(jac @ jac.T + damping * np.eye(6))
-        # the exact projector, so that the posture pull does not disturb the pose
-        null = np.eye(n) - np.linalg.pinv(jac) @ jac
+        jjt = jac @ jac.T
+        pinv = jac.T @ np.linalg.inv(jjt + damping * np.eye(6))
+        # the (nearly) exact projector, so that the posture pull does not disturb the pose
+        null = np.eye(n) - jac.T @ np.linalg.solve(jjt + 1e-12 * np.eye(6), jac)
         posture = null @ (nullspace_gain * (rest - data.qpos[qadr]))
-        if err_norm < tol and np.linalg.norm(posture) < tol:
+        if err_norm < tol and np.linalg.norm(posture) < posture_tol:
             break
         data.qpos[qadr] = np.clip(data.qpos[qadr] + pinv @ err + posture, lo, hi)
     return err_norm
