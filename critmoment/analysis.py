@@ -3,12 +3,17 @@
 :func:`analyze` chains the stages and returns an :class:`AuditReport`, the object
 ``critmoment analyze`` renders as ``report.json``, figures, ``report.html`` and a terminal
 summary (see :mod:`critmoment.report`). Each stage is also callable alone.
+
+The audit computes the evidence (sparse evaluations, the full rollouts of the samples they
+cannot decide, :func:`critmoment.groundtruth.brute_force`, the critical values of
+:func:`critmoment.sparse.critical_values`, the check of the safe region,
+:func:`check_region`); the decision itself is :func:`critmoment.verdict.decide`, pure, the
+same path :func:`critmoment.validation.predict` measures.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import enum
 import logging
 import platform
 import sys
@@ -19,13 +24,16 @@ import numpy as np
 
 from critmoment import budget
 from critmoment import sparse as sp
+from critmoment import verdict as vd
 from critmoment.exceptions import ParameterError
 from critmoment.feasibility import FeasibilityReport, check_fit, preflight
+from critmoment.groundtruth import brute_force
 from critmoment.moments import Moment, MomentDetector, MomentLabel
 from critmoment.recording import Recording, model_hash, rollout
 from critmoment.scenario import Scenario, load_scenario
 from critmoment.trajectory import Trajectory, input_identity
 from critmoment.twin import Twin
+from critmoment.verdict import MomentReport, Verdict, safe_subbox
 
 __all__ = [
     "Verdict",
@@ -36,6 +44,8 @@ __all__ = [
     "audit_moments",
     "sensitivity_function",
     "safe_subbox",
+    "decision_options",
+    "check_region",
     "analyze",
     "REPORT_SCHEMA",
 ]
@@ -43,14 +53,6 @@ __all__ = [
 log = logging.getLogger(__name__)
 
 REPORT_SCHEMA = "critmoment.report/1"
-
-
-class Verdict(enum.Enum):
-    """Outcome of an audit."""
-
-    SAFE = "SAFE"                #: cost ≤ threshold over the whole box at every moment
-    CONDITIONAL = "CONDITIONAL"  #: fails somewhere in the box; safe in a stated sub-box
-    UNSAFE = "UNSAFE"            #: fails at the nominal parameters
 
 
 @dataclasses.dataclass(frozen=True)
@@ -84,7 +86,7 @@ class AnalyzeOptions:
         verify: a fraction of the cost threshold, or None. Every Sobol sample that passes
             the sparse evaluation with a cost at or above ``verify × threshold`` at some
             moment gets its own full rollout, and that rollout's real outcome decides it
-            (:func:`critmoment.validation.brute_force`: the object dropped or slipped, a joint
+            (:func:`critmoment.groundtruth.brute_force`: the object dropped or slipped, a joint
             lost tracking or saturated, the task not completed). Near the boundary sparse
             evaluation at a few moments can miss a failure that happens between them; the
             default 0.8 brings the measured false-safe rate to 0 (``docs/validation.md``)
@@ -140,52 +142,6 @@ class AnalyzeOptions:
                                  f"None, got {self.verify!r}")
 
 
-@dataclasses.dataclass(frozen=True)
-class MomentReport:
-    """What the audit found at one critical moment.
-
-    Attributes:
-        moment: the moment (step, time, label, reason, sensitivity score).
-        worst_case: parameter values of the highest cost found (sweep and search; empty
-            when no sample reached the moment and the search did not run).
-        max_cost: that cost (NaN when none was found).
-        min_fos_contact: lowest grasp FOS over the sweep's samples that reach the moment
-            (inf when never loaded, NaN when none reaches it).
-        min_fos_motor: lowest motor FOS over the same samples.
-        critical: per parameter, the value where the cost crosses the threshold with the
-            others at nominal (None where it never crosses).
-        critical_side: per parameter, "above"/"below" (which side fails) or None.
-        dominant: the cost term dominating the failures here ("contact" / "motor" / None):
-            over the sweep's samples failing here, or else over the failing points of the
-            critical-value curves.
-        limiting_actuator: the actuator limiting the motor FOS at the worst case.
-        fail_fraction: fraction of the sweep's samples failing at this moment; unless the
-            sweep is exhaustive, the samples whose first failure is here.
-        reached: fraction of the sweep's samples evaluated at this moment: all of them when
-            the sweep is exhaustive, else those that pass at every earlier moment.
-        squeeze: every failure seen here (sweep and critical-value curves) is an unlifted
-            one: the grip squeezes the object off its support without lifting it, and the
-            samples' own rollouts decide them.
-        analytic: analytic bounds (Pinocchio), JSON-able, or None.
-        search: worst-case search summary, JSON-able, or None.
-    """
-
-    moment: Moment
-    worst_case: Mapping[str, float]
-    max_cost: float
-    min_fos_contact: float
-    min_fos_motor: float
-    critical: Mapping[str, float | None]
-    critical_side: Mapping[str, str | None]
-    dominant: str | None
-    limiting_actuator: str
-    fail_fraction: float
-    analytic: Mapping | None = None
-    search: Mapping | None = None
-    reached: float = 1.0
-    squeeze: bool = False
-
-
 @dataclasses.dataclass(frozen=True, eq=False)
 class AuditReport:
     """The result of :func:`analyze`.
@@ -212,7 +168,10 @@ class AuditReport:
         failed: per Sobol sample of ``sweep``, whether it fails (sparse evaluation at the
             moments, then the verification rollouts), (n,) bool.
         verification: the verification stage's summary (``fraction``, ``cost_from``,
-            ``rollouts``, ``failed``), or None when it did not run.
+            ``rollouts``, ``failed``, ``near``, ``unlifted``, ... and ``region``, the safe
+            region's check), or None when it did not run.
+        region_check: the check of the stated safe region on its corners and edges
+            (:func:`check_region`), or None when no region was claimed.
         feasibility: the twin's feasibility and the trajectory's fit on the nominal rollout
             (:func:`critmoment.feasibility.preflight`), or None when not checked.
     """
@@ -236,6 +195,7 @@ class AuditReport:
     manifest: Mapping
     failed: np.ndarray | None = None
     verification: Mapping | None = None
+    region_check: vd.RegionCheck | None = None
     feasibility: FeasibilityReport | None = None
 
     def passes(self, min_success: float | None = None) -> bool:
@@ -367,145 +327,6 @@ def _dedupe(reason: str) -> str:
     return "; ".join(parts)
 
 
-# -- stage: safe region --------------------------------------------------------------
-def _fail_sides(samples: np.ndarray, cost: np.ndarray, box) -> list[str]:
-    """Per parameter, the side where cost grows (rank correlation sign): "above"/"below"."""
-    sides = []
-    rank_c = np.argsort(np.argsort(cost))
-    for j in range(box.ndim):
-        rank_x = np.argsort(np.argsort(samples[:, j]))
-        corr = np.corrcoef(rank_x, rank_c)[0, 1] if np.std(rank_c) > 0 else 0.0
-        sides.append("below" if corr < 0 else "above")
-    return sides
-
-
-def safe_subbox(samples: np.ndarray, failed: np.ndarray, box, sides: Sequence[str]
-                ) -> dict[str, tuple[float, float]] | None:
-    """The largest (prior volume) sub-box anchored at the box's safe corner with no failure.
-
-    Each parameter keeps its safe end (the one opposite its failing side) and gets a cut
-    chosen among the sample coordinates; with k ≤ 2 every pair of cuts is tried, above that
-    the cuts shrink one coordinate at a time.
-
-    Args:
-        samples: parameter samples, (n, k).
-        failed: which samples fail, (n,).
-        box: the uncertainty box.
-        sides: per parameter, "above" (large values fail) or "below".
-
-    Returns:
-        {name: (low, high)}, or None when even the safe corner's neighbourhood fails.
-    """
-    unit = box.to_unit(samples)
-    # orient every axis so that failure lies at large u
-    u = np.where(np.array(sides) == "below", 1.0 - unit, unit)
-    bad = u[failed]
-    if bad.shape[0] == 0:
-        return {p.name: (p.low, p.high) for p in box.parameters}
-    k = box.ndim
-    # cut candidates: the failing samples' coordinates (at most 64 per axis, by quantile)
-    cands = []
-    for j in range(k):
-        c = np.unique(np.concatenate([[1.0], bad[:, j]]))
-        if c.size > 64:
-            c = np.unique(np.concatenate([[1.0], np.quantile(bad[:, j], np.linspace(0, 1, 63),
-                                                               method="lower")]))
-        cands.append(c)
-    best, best_vol = None, 0.0
-    if k <= 2:
-        grids = np.meshgrid(*cands, indexing="ij")
-        cuts = np.stack([g.reshape(-1) for g in grids], axis=1)  # (c, k) upper cuts in u
-        # a cut is clean when no failing sample lies strictly inside [0, cut)
-        inside = (bad[None, :, :] < cuts[:, None, :]).all(axis=2).any(axis=1)
-        vol = np.prod(cuts, axis=1)
-        vol[inside] = -1.0
-        i = int(np.argmax(vol))
-        if vol[i] > 0:
-            best, best_vol = cuts[i], vol[i]
-    else:
-        cut = np.ones(k)
-        while ((bad < cut).all(axis=1)).any():
-            inside = bad[(bad < cut).all(axis=1)]
-            j = int(np.argmax(cut - inside.min(axis=0)))
-            cut[j] = inside[:, j].min()
-        best, best_vol = cut, float(np.prod(cut))
-    if best is None or best_vol <= 0:
-        return None
-    region = {}
-    for j, p in enumerate(box.parameters):
-        lo_u, hi_u = (0.0, best[j]) if sides[j] == "above" else (1.0 - best[j], 1.0)
-        pts = box.from_unit(np.array([[lo_u if i == j else 0.5 for i in range(k)],
-                                      [hi_u if i == j else 0.5 for i in range(k)]]))
-        region[p.name] = (float(pts[0, j]), float(pts[1, j]))
-    return region
-
-
-def _region_text(region, box, verdict: Verdict) -> str:
-    if verdict is Verdict.SAFE:
-        return "safe over the whole box"
-    if region is None:
-        return "no safe sub-box found around the nominal parameters"
-    parts = []
-    for p in box.parameters:
-        lo, hi = region[p.name]
-        unit = f" {p.unit}" if p.unit else ""
-        if np.isclose(lo, p.low) and np.isclose(hi, p.high):
-            continue
-        if np.isclose(lo, p.low):
-            parts.append(f"{p.name} ≤ {hi:.3g}{unit}")
-        elif np.isclose(hi, p.high):
-            parts.append(f"{p.name} ≥ {lo:.3g}{unit}")
-        else:
-            parts.append(f"{lo:.3g} ≤ {p.name} ≤ {hi:.3g}{unit}")
-    if not parts:
-        return "safe over the whole box"
-    return "safe for " + " at ".join(parts)
-
-
-_SUGGEST = {
-    "contact": ("grip slip", "reduce the uncertainty of the object's mass and friction, grip "
-                "differently (more pad contact, more grip force), or lift more slowly"),
-    "motor": ("motor overload", "slow down, carry the object closer to the arm's base, reduce "
-              "the mass uncertainty, or push the object instead of lifting it"),
-    "diverged": ("simulation diverged", "check the model and the trajectory near this moment"),
-}
-
-
-def _causes(reports: Sequence[MomentReport], threshold: float) -> list[str]:
-    """One line per failure cause (grip slip, overload of one actuator, ...), the moments where
-    it limits (with their critical values) and the suggestion.
-
-    A moment counts where sweep samples fail there, where the cost crosses the threshold
-    along a critical-value curve, or where the worst case found fails (with a first-failure
-    sweep a later moment's failures are hidden behind earlier ones; its critical values and
-    worst case still say where it would fail).
-    """
-    groups: dict[str, list[str]] = {}
-    for mr in reports:
-        crossed = any(v is not None for v in mr.critical.values())
-        if mr.dominant is None or (mr.fail_fraction == 0 and not crossed
-                                   and not mr.max_cost > threshold):
-            continue
-        name = _SUGGEST[mr.dominant][0]
-        if mr.dominant == "motor":
-            name = f"{name} at {mr.limiting_actuator}"
-        crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
-                         if v is not None)
-        if mr.squeeze:
-            where = (f" (a squeeze without a lift: sparse evaluation fails "
-                     f"{'for ' + crit if crit else 'there'}; the samples' own rollouts decide)")
-        elif crit:
-            where = f" (fails for {crit})"
-        elif mr.fail_fraction > 0:
-            where = f" ({mr.fail_fraction:.0%} of the box)"
-        else:
-            where = " (at " + ", ".join(f"{k} = {v:.3g}" for k, v in mr.worst_case.items()) + ")"
-        groups.setdefault(f"{mr.dominant}|{name}", []).append(
-            f"{mr.moment.label.value} at t = {mr.moment.time:.2f} s{where}")
-    return [f"{key.split('|', 1)[1]}: {'; '.join(where)}; suggestion: "
-            f"{_SUGGEST[key.split('|', 1)[0]][1]}" for key, where in groups.items()]
-
-
 # -- the pipeline --------------------------------------------------------------------
 _TERM_NAME = {sp.Term.CONTACT: "contact", sp.Term.MOTOR: "motor", sp.Term.DIVERGED: "diverged"}
 
@@ -545,25 +366,6 @@ def _select(res: sp.SparseResult, row: int) -> sp.SparseResult:
             v = v[row:row + 1]
         fields[f.name] = v
     return sp.SparseResult(**fields)
-
-
-def _crossing(samples_j: np.ndarray, cost: np.ndarray, threshold: float, nominal: float):
-    """Crossing of cost = threshold along one sampled curve nearest nominal (linear interp)."""
-    fail = cost > threshold
-    flips = np.flatnonzero(fail[1:] != fail[:-1])
-    if flips.size == 0:
-        return None, None
-    xs = []
-    for i in flips:
-        c0, c1 = cost[i], cost[i + 1]
-        if np.isfinite(c0) and np.isfinite(c1) and c1 != c0:
-            t = (threshold - c0) / (c1 - c0)
-        else:
-            t = 0.5
-        xs.append(samples_j[i] + t * (samples_j[i + 1] - samples_j[i]))
-    i = int(np.argmin(np.abs(np.array(xs) - nominal)))
-    side = "above" if fail[flips[i] + 1] else "below"
-    return float(xs[i]), side
 
 
 def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
@@ -612,30 +414,32 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         res_all = evaluator.evaluate(steps, probe, first_failure=not opt.exhaustive)
         nominal_cost = float(res_all.worst_cost()[0]) if steps.size else 0.0
         res = _select_samples(res_all, slice(1, None))
-        failed = res.failed_any if steps.size else np.zeros(len(samples), bool)
+    dopt = decision_options(opt, threshold)
+    near, unlifted = vd.samples_to_rerun(res if steps.size else None, dopt,
+                                         nominal_completed=rec.completed)
+    rerun = near | unlifted
+    rerun_failed = np.zeros(len(samples), bool)
     verification = None
     if opt.verify is not None and steps.size:
         with stage("verification"):
-            from critmoment.validation import rerun_in_full
-
-            failed, near, unlifted = rerun_in_full(
-                trajectory, twin=twin, samples=res.samples, failed=failed,
-                cost=res.worst_cost(),
-                unlifted=res.failed_unlifted_only if opt.verify_unlifted else None,
-                verify=opt.verify, nthread=opt.nthread)
-            rerun = near | unlifted
-            verification = {"fraction": float(opt.verify),
-                            "cost_from": float(opt.verify * threshold),
-                            "rollouts": int(rerun.sum()),
-                            "failed": int(failed[rerun].sum()),
-                            "near": int(near.sum()), "near_failed": int(failed[near].sum()),
-                            "unlifted": int(unlifted.sum()),
-                            "unlifted_failed": int(failed[unlifted].sum())}
-    n_fail = int(failed.sum())
-    p = 1.0 - n_fail / len(samples)
-    interval = sp.wilson_interval(len(samples) - n_fail, len(samples), confidence=opt.confidence)
+            if rerun.any():
+                rerun_failed[rerun] = brute_force(trajectory, twin=twin, samples=samples[rerun],
+                                                  nthread=opt.nthread).failed
+    sample_evidence = vd.SampleEvidence(sweep=res if steps.size else None,
+                                        nominal_completed=rec.completed, rerun=rerun,
+                                        rerun_failed=rerun_failed)
+    failed = vd.failing_samples(sample_evidence, dopt)
+    if opt.verify is not None and steps.size:
+        verification = {"fraction": float(opt.verify),
+                        "cost_from": float(opt.verify * threshold),
+                        "rollouts": int(rerun.sum()),
+                        "failed": int(failed[rerun].sum()),
+                        "near": int(near.sum()), "near_failed": int(failed[near].sum()),
+                        "unlifted": int(unlifted.sum()),
+                        "unlifted_failed": int(failed[unlifted].sum())}
     with stage("critical values"):
         curves = _curves(evaluator, steps, box, opt.critical_grid) if steps.size else {}
+        critical = _critical_values(rec, twin, evaluator, steps, opt.critical_grid)
     searches: dict[int, dict] = {}
     analytics: dict[int, dict] = {}
     if opt.search and steps.size:
@@ -656,11 +460,9 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         if sr is not None and sr.get("worst_cost") is not None and not (
                 sr["worst_cost"] <= max_cost):
             worst_case, max_cost = dict(sr["worst_case"]), float(sr["worst_cost"])
-        crit, side = {}, {}
-        for j, pname in enumerate(box.names):
-            c = curves[s][pname]
-            crit[pname], side[pname] = _crossing(c.samples[:, j], c.cost[0], threshold,
-                                                 box.nominal[j])
+        crit = {name: critical[s][name].value for name in box.names}
+        side = {name: (None if critical[s][name].direction is None
+                       else critical[s][name].direction.value) for name in box.names}
         fails_here = res.failed[row]
         dominant = _dominant(res, row, fails_here)
         if dominant is None:
@@ -689,76 +491,162 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             limiting_actuator=twin.actuator_names[motor],
             fail_fraction=float(fails_here.mean()), analytic=analytics.get(s),
             search=searches.get(s), reached=float(here.mean()), squeeze=bool(squeeze)))
-    task_failed = opt.require_task and not rec.completed
-    if task_failed:
-        # sparse evaluation perturbs a run that already failed: it cannot estimate success
-        p, interval = 0.0, sp.wilson_interval(0, len(samples), confidence=opt.confidence)
-    # unlifted failures are for rollouts to decide: the nominal one is the recording itself
-    rolled = opt.verify is not None and opt.verify_unlifted and steps.size > 0
-    nominal_squeeze = (rolled and nominal_cost > threshold and rec.completed
-                       and bool(res_all.failed_unlifted_only[0]))
-    if (nominal_cost > threshold and not nominal_squeeze) or task_failed:
-        verdict = Verdict.UNSAFE
-    elif n_fail == 0 and _worst_cases_pass(moment_reports, worst_unlifted, trajectory, twin,
-                                           opt, verification if rolled else None):
-        verdict = Verdict.SAFE
-    else:
-        verdict = Verdict.CONDITIONAL
-    region = None
-    if verdict is not Verdict.UNSAFE and steps.size:
-        worst_cost = res.worst_cost()
-        region = safe_subbox(res.samples, failed, box, _fail_sides(res.samples, worst_cost, box))
+    # the failing worst cases that only a rollout can decide (squeezes)
+    worst_failed: dict[int, bool] = {}
+    rerun_steps = vd.worst_cases_to_rerun(moment_reports, worst_unlifted, dopt,
+                                          n_failed=int(failed.sum()))
+    if rerun_steps:
+        by_step = {int(mr.moment.step): mr for mr in moment_reports}
+        points = np.array([[by_step[s].worst_case[n] for n in box.names] for s in rerun_steps])
+        real = brute_force(trajectory, twin=twin, samples=points, nthread=opt.nthread).failed
+        worst_failed = dict(zip(rerun_steps, map(bool, real), strict=True))
+        if verification is not None:
+            verification["worst_cases"] = len(rerun_steps)
+            verification["worst_cases_failed"] = int(real.sum())
+    evidence = vd.Evidence(
+        box=box, samples=sample_evidence, nominal_cost=nominal_cost,
+        nominal_unlifted=bool(res_all.failed_unlifted_only[0]) if steps.size else False,
+        nominal_stage=(int(rec.stage.max()), int(rec.stage[-1])),
+        moments=tuple(moment_reports), worst_unlifted=worst_unlifted,
+        worst_rollouts_failed=worst_failed, trend=_trend(curves, box))
+    decision = vd.decide(evidence, dopt)
+    region_check = None
+    if decision.region_to_check is not None:
+        with stage("safe region check"):
+            sides = evidence.sides(decision.failed)
+            region_check = check_region(decision.region_to_check, trajectory=trajectory,
+                                        twin=twin, evaluator=evaluator, steps=steps,
+                                        sides=sides, options=dopt,
+                                        nominal_completed=rec.completed,
+                                        exhaustive=opt.exhaustive, nthread=opt.nthread)
+        decision = vd.decide(dataclasses.replace(evidence, region=region_check), dopt)
+        if verification is not None:
+            verification["region"] = region_check.to_json()
     cost_map = None
     if opt.map_resolution and box.ndim >= 2 and steps.size:
         cost_map = _cost_map(res, box, opt.map_resolution)
-    causes = tuple(_causes(moment_reports, threshold))
-    if nominal_squeeze:
-        causes = (f"the nominal cost exceeds the threshold ({nominal_cost:.3g} > {threshold:g}) "
-                  f"only where the grip squeezes the object off its support without lifting "
-                  f"it; the nominal run completes the task",) + causes
-    elif nominal_cost > threshold:
-        causes = (f"fails at the nominal parameters (max cost {nominal_cost:.3g} > "
-                  f"{threshold:g})",) + causes
-    if verification and verification["near_failed"]:
-        causes += (f"{verification['near_failed']} of {verification['near']} samples that pass "
-                   f"at the moments with a cost ≥ {verification['cost_from']:.3g} fail in "
-                   f"their own full rollout (between the moments or by not completing the "
-                   f"task); suggestion: reduce the uncertainty near the safe region's edge",)
-    if task_failed:
-        causes = (f"the task is not completed at the nominal parameters (stage "
-                  f"{int(rec.stage.max())} reached, final stage {int(rec.stage[-1])}, 4 needed "
-                  f"and kept to the end)",) + causes
     manifest = _manifest(sc, opt, trajectory)
     return AuditReport(
-        verdict=verdict, p_success=p, p_success_interval=interval,
-        moments=tuple(moment_reports), candidates=tuple(candidates), safe_region=region,
-        safe_region_text=_region_text(region, box, verdict), failure_causes=causes,
+        verdict=decision.verdict, p_success=decision.p_success,
+        p_success_interval=decision.p_success_interval,
+        moments=tuple(moment_reports), candidates=tuple(candidates),
+        safe_region=decision.safe_region, safe_region_text=decision.safe_region_text,
+        failure_causes=decision.causes,
         nominal_cost=nominal_cost, recording=rec, sweep=res, curves=curves, cost_map=cost_map,
-        scenario=sc, options=opt, timings=timings, manifest=manifest, failed=failed,
-        verification=verification, feasibility=feasibility)
+        scenario=sc, options=opt, timings=timings, manifest=manifest, failed=decision.failed,
+        verification=verification, region_check=region_check, feasibility=feasibility)
 
 
-def _worst_cases_pass(reports: Sequence[MomentReport], worst_unlifted: Mapping[int, bool],
-                      trajectory, twin, opt: AnalyzeOptions, verification: dict | None) -> bool:
-    """No moment's worst case fails, or (with ``verification``, the audit's summary) the ones
-    that do fail only where the object is squeezed off its support without a lift
-    (``worst_unlifted``, by moment step) and succeed in their own full rollout. Adds
-    ``worst_cases`` and ``worst_cases_failed`` to ``verification``."""
-    threshold = twin.scenario.cost.threshold
-    failing = [mr for mr in reports if not mr.max_cost <= threshold]
-    if not failing:
-        return True
-    if verification is None or not all(worst_unlifted.get(int(mr.moment.step), False)
-                                       for mr in failing):
-        return False
-    names = twin.scenario.box.names
-    points = np.array([[mr.worst_case[n] for n in names] for mr in failing])
-    from critmoment.validation import brute_force
+def decision_options(opt: AnalyzeOptions, threshold: float) -> vd.DecisionOptions:
+    """The decision's options from the audit's (``verify``, ``verify_unlifted``,
+    ``require_task``, ``confidence``) and the scenario's cost threshold."""
+    return vd.DecisionOptions(threshold=float(threshold), verify=opt.verify,
+                              verify_unlifted=opt.verify_unlifted,
+                              require_task=opt.require_task, confidence=opt.confidence)
 
-    real = brute_force(trajectory, twin=twin, samples=points, nthread=opt.nthread).failed
-    verification["worst_cases"] = int(points.shape[0])
-    verification["worst_cases_failed"] = int(real.sum())
-    return not real.any()
+
+def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Trajectory,
+                 twin: Twin, evaluator: sp.SparseEvaluator, steps: np.ndarray,
+                 sides: Sequence[str], options: vd.DecisionOptions, nominal_completed: bool,
+                 exhaustive: bool = False, nthread: int = 0, per_edge: int = 5,
+                 worst: int = 4, margin: float = 0.01, max_rounds: int = 4) -> vd.RegionCheck:
+    """Check a claimed safe region on its corners and edges, and shrink it until it holds.
+
+    Each round evaluates the region's corners and edges (:func:`critmoment.verdict.
+    region_points`, ``per_edge`` points per edge, 4× denser on edges where the cost comes
+    within ``verify × threshold``) by sparse evaluation at the audit's moments, and decides
+    the ``worst`` highest-cost points that pass (and those that fail only unlifted) by their
+    own full rollout (:func:`critmoment.groundtruth.brute_force`). When a point fails, the
+    region's failing-side faces move in (:func:`critmoment.verdict.shrink_region`: its new
+    worst corner is a checked point that passed, ``margin`` prior-quantile units from every
+    failing one) and the next round checks the new region.
+
+    Args:
+        region: the claimed region, {name: (low, high)}.
+        trajectory: the trajectory.
+        twin: its twin.
+        evaluator: the audit's sparse evaluator.
+        steps: the audited moments' steps, (m,).
+        sides: per parameter, the failing side ("above"/"below").
+        options: the decision options.
+        nominal_completed: the nominal run completes the task.
+        exhaustive: evaluate every moment over its whole horizon (else first failure).
+        nthread: threads (0: all CPUs).
+        per_edge: points per edge, corners included.
+        worst: extra full rollouts of the highest-cost passing points per round.
+        margin: distance a shrunk face keeps from a failing point (prior quantiles).
+        max_rounds: rounds before giving up (no region then).
+
+    Returns:
+        The :class:`~critmoment.verdict.RegionCheck`.
+    """
+    box = twin.scenario.box
+    near_cost = (options.verify if options.verify is not None else 0.8) * options.threshold
+    first = dict(region)
+    n_sparse = n_rollouts = 0
+    current: dict | None = vd.round_inward(first, box)
+    pts = np.zeros((0, box.ndim))
+    fails = rolled = np.zeros(0, bool)
+    for rnd in range(1, max_rounds + 1):
+        if current is None:
+            break
+        pts, edges = vd.region_points(current, box, per_edge=per_edge)
+        res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
+        hot = vd.hot_edges(edges, res.worst_cost(), near=near_cost)
+        if hot:
+            pts, edges = vd.region_points(current, box, per_edge=per_edge, dense=hot)
+            res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
+        n_sparse += pts.shape[0]
+        cost = res.worst_cost()
+        # sparse evaluation decides every point; the worst points that pass (and those that
+        # fail only unlifted) are decided by their own full rollout
+        unlifted = res.failed_unlifted_only if options.rolls_unlifted else np.zeros(
+            pts.shape[0], bool)
+        rolled = unlifted | vd.points_to_roll_out(cost, res.failed_any, unlifted, worst=worst)
+        outcome = np.zeros(pts.shape[0], bool)
+        if rolled.any():
+            outcome[rolled] = brute_force(trajectory, twin=twin, samples=pts[rolled],
+                                          nthread=nthread).failed
+            n_rollouts += int(rolled.sum())
+        fails = np.array(res.failed_any, dtype=bool)
+        if options.require_task and not nominal_completed:
+            fails[:] = True
+        fails[rolled] = outcome[rolled]
+        if not fails.any():
+            return vd.RegionCheck(region=current, points=pts, failed=fails, rolled_out=rolled,
+                                  rounds=rnd, n_sparse=n_sparse, n_rollouts=n_rollouts,
+                                  first_claim=first)
+        current = vd.round_inward(vd.shrink_region(current, pts[fails], box, sides,
+                                                   margin=margin, passing=pts[~fails]), box)
+    return vd.RegionCheck(region=None, points=pts, failed=fails, rolled_out=rolled,
+                          rounds=max_rounds, n_sparse=n_sparse, n_rollouts=n_rollouts,
+                          first_claim=first)
+
+
+def _trend(curves: Mapping[int, Mapping[str, sp.SparseResult]], box) -> dict[str, float]:
+    """Per parameter, the cost at the high end minus the low end of its 1-D curves (others
+    nominal), summed over the moments (costs clipped at 10; infinite: diverged)."""
+    out = {}
+    for p in box.parameters:
+        total = 0.0
+        for by_name in curves.values():
+            c = np.clip(np.nan_to_num(by_name[p.name].cost[0], nan=0.0, posinf=10.0), 0, 10)
+            total += float(c[-1] - c[0])
+        out[p.name] = total
+    return out
+
+
+def _critical_values(rec, twin, evaluator, steps: np.ndarray, n_grid: int
+                     ) -> dict[int, dict[str, sp.CriticalValue]]:
+    """Per moment and parameter, the critical value with the others at nominal: the one
+    routine, :func:`critmoment.sparse.critical_values` (grid, then bisection)."""
+    out: dict[int, dict[str, sp.CriticalValue]] = {int(s): {} for s in steps}
+    if not steps.size:
+        return out
+    for cv in sp.critical_values(rec, twin, steps, evaluator=evaluator, n_grid=n_grid,
+                                 others=(sp.OthersAt.NOMINAL,)):
+        out[int(cv.step)][cv.parameter] = cv
+    return out
 
 
 def _nanmin(values: np.ndarray) -> float:

@@ -1,0 +1,922 @@
+"""The audit's decision: which samples fail, the verdict, P(success), the safe region, causes.
+
+Everything here is pure: no simulation. The audit (:func:`critmoment.analysis.analyze`)
+computes the evidence first (the sparse sweep, the full rollouts of the samples sparse
+evaluation cannot decide, the nominal run, the per-moment findings, the check of the
+safe region) and passes it in; :func:`failing_samples` and :func:`decide` turn it into the
+decision. The validation study (:func:`critmoment.validation.predict`) calls the same
+:func:`samples_to_rerun` and :func:`failing_samples`, so it measures the method itself.
+
+The decision path, in order:
+
+1. :func:`samples_to_rerun`: which samples get their own full rollout (those that pass the
+   sparse evaluation with a cost at or above ``verify × threshold``, and those whose only
+   failures are unlifted ones, ``SparseResult.failed_unlifted_only``); none when the
+   nominal run itself fails the task (every sample fails then).
+2. :func:`failing_samples`: a sample fails when its cost exceeds the threshold (or diverges)
+   at an audited moment, unless its own rollout decided it; the rollout's real outcome
+   decides the re-run samples; every sample fails when the nominal run does not complete
+   the task (``require_task``).
+3. :func:`candidate_region`: the largest sub-box, anchored at the box's safe corner, with
+   no failing sample, cut where a critical value (others at nominal) says it fails; none
+   when no sample passes. The audit checks it (:func:`region_points` on its corners and
+   edges, densified where the cost is near the threshold, by sparse evaluation, the same
+   decision path, and full rollouts of its worst points) and shrinks it
+   (:func:`shrink_region`) until it holds: a :class:`RegionCheck`.
+4. :func:`decide`: UNSAFE when the nominal parameters fail; SAFE when no sample and no
+   worst case fails and the whole box passes its check; else CONDITIONAL with the checked
+   region, stated with its evidence.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+import math
+import numbers
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+
+from critmoment.exceptions import ParameterError
+from critmoment.moments import Moment
+from critmoment.params import UncertaintyBox
+from critmoment.sparse import SparseResult, wilson_interval
+
+__all__ = [
+    "Verdict",
+    "DecisionOptions",
+    "MomentReport",
+    "SampleEvidence",
+    "RegionCheck",
+    "Evidence",
+    "Decision",
+    "samples_to_rerun",
+    "failing_samples",
+    "worst_cases_to_rerun",
+    "fail_sides",
+    "safe_subbox",
+    "candidate_region",
+    "region_points",
+    "hot_edges",
+    "points_to_roll_out",
+    "shrink_region",
+    "round_inward",
+    "region_text",
+    "decide",
+]
+
+
+class Verdict(enum.Enum):
+    """Outcome of an audit."""
+
+    SAFE = "SAFE"                #: cost ≤ threshold over the whole box at every moment
+    CONDITIONAL = "CONDITIONAL"  #: fails somewhere in the box; safe in a stated sub-box
+    UNSAFE = "UNSAFE"            #: fails at the nominal parameters
+
+
+@dataclasses.dataclass(frozen=True)
+class DecisionOptions:
+    """What the decision takes from the audit's options.
+
+    Attributes:
+        threshold: cost above which a sample fails at a moment.
+        verify: a fraction of the threshold, or None: samples that pass with a cost at or
+            above ``verify × threshold`` are decided by their own full rollout.
+        verify_unlifted: with ``verify``, samples whose only failures are unlifted ones are
+            decided by their own full rollout too.
+        require_task: a nominal run that does not complete the task fails every sample.
+        confidence: confidence level of the P(success) interval.
+    """
+
+    threshold: float
+    verify: float | None = 0.8
+    verify_unlifted: bool = True
+    require_task: bool = True
+    confidence: float = 0.95
+
+    def __post_init__(self):
+        if isinstance(self.threshold, bool) or not isinstance(self.threshold, numbers.Real) \
+                or not math.isfinite(self.threshold):
+            raise ParameterError(f"threshold: expected a finite number, got {self.threshold!r}")
+        if self.verify is not None and (isinstance(self.verify, bool)
+                                        or not isinstance(self.verify, numbers.Real)
+                                        or not 0 < self.verify <= 1):
+            raise ParameterError(f"verify: expected a fraction of the threshold in (0, 1] or "
+                                 f"None, got {self.verify!r}")
+        if not 0 < self.confidence < 1:
+            raise ParameterError(f"confidence: expected in (0, 1), got {self.confidence}")
+
+    @property
+    def rolls_unlifted(self) -> bool:
+        """Unlifted failures are decided by rollouts."""
+        return self.verify is not None and self.verify_unlifted
+
+
+@dataclasses.dataclass(frozen=True)
+class MomentReport:
+    """What the audit found at one critical moment.
+
+    Attributes:
+        moment: the moment (step, time, label, reason, sensitivity score).
+        worst_case: parameter values of the highest cost found (sweep and search; empty
+            when no sample reached the moment and the search did not run).
+        max_cost: that cost (NaN when none was found).
+        min_fos_contact: lowest grasp FOS over the sweep's samples that reach the moment
+            (inf when never loaded, NaN when none reaches it).
+        min_fos_motor: lowest motor FOS over the same samples.
+        critical: per parameter, the value where the cost crosses the threshold with the
+            others at nominal (None where it never crosses), from
+            :func:`critmoment.sparse.critical_values`.
+        critical_side: per parameter, "above"/"below" (which side fails) or None.
+        dominant: the cost term dominating the failures here ("contact" / "motor" / None):
+            over the sweep's samples failing here, or else over the failing points of the
+            critical-value curves.
+        limiting_actuator: the actuator limiting the motor FOS at the worst case.
+        fail_fraction: fraction of the sweep's samples failing at this moment; unless the
+            sweep is exhaustive, the samples whose first failure is here.
+        reached: fraction of the sweep's samples evaluated at this moment: all of them when
+            the sweep is exhaustive, else those that pass at every earlier moment.
+        squeeze: every failure seen here (sweep and critical-value curves) is an unlifted
+            one: the grip squeezes the object off its support without lifting it, and the
+            samples' own rollouts decide them.
+        analytic: analytic bounds (Pinocchio), JSON-able, or None.
+        search: worst-case search summary, JSON-able, or None.
+    """
+
+    moment: Moment
+    worst_case: Mapping[str, float]
+    max_cost: float
+    min_fos_contact: float
+    min_fos_motor: float
+    critical: Mapping[str, float | None]
+    critical_side: Mapping[str, str | None]
+    dominant: str | None
+    limiting_actuator: str
+    fail_fraction: float
+    analytic: Mapping | None = None
+    search: Mapping | None = None
+    reached: float = 1.0
+    squeeze: bool = False
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class SampleEvidence:
+    """What decides whether each of n samples fails.
+
+    Attributes:
+        sweep: sparse evaluations of the samples at the audited moments (m, n), or None
+            when there is no moment (nothing fails then).
+        nominal_completed: the nominal run completes the task.
+        rerun: which samples have their own full rollout's outcome, (n,) bool, or None.
+        rerun_failed: that outcome (the rollout failed), (n,) bool; read where ``rerun``.
+    """
+
+    sweep: SparseResult | None
+    nominal_completed: bool
+    rerun: np.ndarray | None = None
+    rerun_failed: np.ndarray | None = None
+
+    @property
+    def n_samples(self) -> int:
+        return 0 if self.sweep is None else self.sweep.n_samples
+
+
+def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
+                     nominal_completed: bool) -> tuple[np.ndarray, np.ndarray]:
+    """The samples that sparse evaluation cannot decide, to be decided by their own rollout.
+
+    Args:
+        sweep: the sparse evaluations (m moments × n samples), or None.
+        options: the decision options.
+        nominal_completed: the nominal run completes the task.
+
+    Returns:
+        (near, unlifted), each (n,) bool: samples that pass with a cost ≥ ``verify ×
+        threshold``, and samples whose only failures are unlifted ones. Both empty when
+        ``verify`` is None, or when the nominal run fails the task and ``require_task``
+        makes every sample fail.
+    """
+    if sweep is None or sweep.n_moments == 0:
+        n = 0 if sweep is None else sweep.n_samples
+        return np.zeros(n, bool), np.zeros(n, bool)
+    n = sweep.n_samples
+    if options.verify is None or (options.require_task and not nominal_completed):
+        return np.zeros(n, bool), np.zeros(n, bool)
+    cost = sweep.worst_cost()
+    near = ~sweep.failed_any & (cost >= options.verify * options.threshold)
+    unlifted = (sweep.failed_unlifted_only.copy() if options.verify_unlifted
+                else np.zeros(n, bool))
+    return near, unlifted
+
+
+def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.ndarray:
+    """Which samples fail: the one decision path of ``analyze`` and ``validate``.
+
+    A sample fails when its cost exceeds the threshold (or diverges) at an audited moment;
+    a sample with its own full rollout (every sample :func:`samples_to_rerun` names must
+    have one) is decided by that rollout's real outcome instead; with ``require_task`` every sample fails when the nominal run does not
+    complete the task.
+
+    Args:
+        evidence: the sweep, the nominal completion and the rollouts' outcomes.
+        options: the decision options.
+
+    Returns:
+        (n,) bool.
+
+    Raises:
+        ParameterError: a sample that needs its own rollout has none in ``evidence``.
+    """
+    sweep = evidence.sweep
+    n = evidence.n_samples
+    if sweep is None or sweep.n_moments == 0:
+        failed = np.zeros(n, bool)
+    else:
+        failed = np.array(sweep.failed_any, dtype=bool)
+    if options.require_task and not evidence.nominal_completed:
+        return np.ones(n, bool)
+    near, unlifted = samples_to_rerun(sweep, options,
+                                      nominal_completed=evidence.nominal_completed)
+    need = near | unlifted
+    if evidence.rerun is None:
+        rerun = np.zeros(n, bool)
+    else:
+        rerun = np.asarray(evidence.rerun, dtype=bool)
+        if rerun.shape != (n,) or evidence.rerun_failed is None \
+                or np.shape(evidence.rerun_failed) != (n,):
+            raise ParameterError(f"rerun, rerun_failed: expected ({n},) bool arrays, got "
+                                 f"{np.shape(evidence.rerun)} and "
+                                 f"{np.shape(evidence.rerun_failed)}")
+    missing = need & ~rerun
+    if missing.any():
+        raise ParameterError(
+            f"expected the own rollout's outcome of every sample to re-run, got none for "
+            f"samples {np.flatnonzero(missing)[:10].tolist()}")
+    if rerun.any():
+        failed[rerun] = np.asarray(evidence.rerun_failed, dtype=bool)[rerun]
+    return failed
+
+
+def worst_cases_to_rerun(moments: Sequence[MomentReport], worst_unlifted: Mapping[int, bool],
+                         options: DecisionOptions, *, n_failed: int) -> list[int]:
+    """Steps of the moments whose failing worst case must be decided by its own rollout.
+
+    Only when that can change the verdict to SAFE: no sample fails, unlifted failures are
+    decided by rollouts, and every moment whose worst case fails fails only at a squeeze
+    (``worst_unlifted``, by moment step). Empty otherwise.
+    """
+    failing = [mr for mr in moments if not mr.max_cost <= options.threshold]
+    if n_failed or not failing or not options.rolls_unlifted:
+        return []
+    if not all(worst_unlifted.get(int(mr.moment.step), False) for mr in failing):
+        return []
+    return [int(mr.moment.step) for mr in failing]
+
+
+# -- the safe region -----------------------------------------------------------------
+def fail_sides(samples: np.ndarray, failed: np.ndarray, box: UncertaintyBox,
+               critical_sides: Sequence[Mapping[str, str | None]] = (),
+               trend: Mapping[str, float] | None = None) -> list[str]:
+    """Per parameter, the side where the motion fails: "above" or "below".
+
+    In order: the critical values' sides (``MomentReport.critical_side`` of each moment) by
+    majority; else the sign of ``trend`` (how much the cost grows from the low to the high
+    end of the parameter's 1-D curve with the others at nominal, summed over the moments);
+    else the sign of the rank correlation of the parameter with the samples' failures.
+    """
+    sides = []
+    failed = np.asarray(failed, dtype=np.float64)
+    for j, p in enumerate(box.parameters):
+        votes = [cs.get(p.name) for cs in critical_sides]
+        above, below = votes.count("above"), votes.count("below")
+        if above != below:
+            sides.append("above" if above > below else "below")
+            continue
+        t = None if trend is None else trend.get(p.name)
+        if t is not None and np.isfinite(t) and abs(t) > 1e-9:
+            sides.append("above" if t > 0 else "below")
+            continue
+        rank_x = np.argsort(np.argsort(samples[:, j], kind="stable"), kind="stable")
+        corr = (np.corrcoef(rank_x, failed)[0, 1]
+                if samples.shape[0] > 1 and np.std(failed) > 0 else 0.0)
+        sides.append("below" if corr < 0 else "above")
+    return sides
+
+
+def _oriented(box: UncertaintyBox, points: np.ndarray, sides: Sequence[str]) -> np.ndarray:
+    """Unit coordinates, each axis oriented so that failure lies at large values."""
+    unit = box.to_unit(np.asarray(points, dtype=np.float64).reshape(-1, box.ndim))
+    return np.where(np.array(sides) == "below", 1.0 - unit, unit)
+
+
+def _region_of_cut(box: UncertaintyBox, cut: np.ndarray, sides: Sequence[str]
+                   ) -> dict[str, tuple[float, float]]:
+    region = {}
+    for j, p in enumerate(box.parameters):
+        lo_u, hi_u = (0.0, cut[j]) if sides[j] == "above" else (1.0 - cut[j], 1.0)
+        pts = box.from_unit(np.array([[lo_u if i == j else 0.5 for i in range(box.ndim)],
+                                      [hi_u if i == j else 0.5 for i in range(box.ndim)]]))
+        region[p.name] = (float(np.clip(pts[0, j], p.low, p.high)),
+                          float(np.clip(pts[1, j], p.low, p.high)))
+    return region
+
+
+def _cut_of_region(box: UncertaintyBox, region: Mapping[str, tuple[float, float]],
+                   sides: Sequence[str]) -> np.ndarray:
+    lo = np.array([region[n][0] for n in box.names])
+    hi = np.array([region[n][1] for n in box.names])
+    u_lo, u_hi = box.to_unit(lo[None])[0], box.to_unit(hi[None])[0]
+    return np.where(np.array(sides) == "above", u_hi, 1.0 - u_lo)
+
+
+def _best_cut(bad: np.ndarray, a: np.ndarray, b: np.ndarray, margin: float,
+              extra: np.ndarray | None = None) -> np.ndarray | None:
+    """The upper cuts c (a < c ≤ b) of the largest box [a, c] (oriented unit coordinates)
+    that keeps every ``bad`` point (q, k) out: strictly outside without a margin (a point on
+    the face is allowed), else at least ``margin`` away. The cuts are chosen among the bad
+    points' coordinates minus ``margin`` and the coordinates of ``extra`` points (r, k).
+    None when no such box exists."""
+    k = a.size
+    inside_bad = bad[(bad >= a - 1e-12).all(axis=1)] if bad.size else bad.reshape(0, k)
+    if inside_bad.shape[0] == 0:
+        return b.copy()
+    cands = []
+    for j in range(k):
+        c = inside_bad[:, j] - margin
+        if extra is not None and extra.size:
+            c = np.concatenate([c, extra[:, j]])
+        c = np.unique(np.concatenate([[b[j]], c[(c > a[j]) & (c < b[j])]]))
+        if c.size > 64:
+            c = np.unique(np.concatenate([[b[j]], np.quantile(c, np.linspace(0, 1, 63),
+                                                              method="lower")]))
+        cands.append(c)
+
+    def blocked(cuts: np.ndarray) -> np.ndarray:
+        if margin > 0:
+            inside = inside_bad[None, :, :] <= cuts[:, None, :] + margin * (1 - 1e-9)
+        else:
+            inside = inside_bad[None, :, :] < cuts[:, None, :]
+        return inside.all(axis=2).any(axis=1)
+
+    if k <= 2:
+        grids = np.meshgrid(*cands, indexing="ij")
+        cuts = np.stack([g.reshape(-1) for g in grids], axis=1)
+        vol = np.prod(cuts - a, axis=1)
+        vol[blocked(cuts)] = -1.0
+        i = int(np.argmax(vol))
+        return cuts[i] if vol[i] > 0 else None
+    cut = b.copy()
+    while blocked(cut[None])[0]:
+        hit = (inside_bad <= cut + margin) if margin > 0 else (inside_bad < cut)
+        inside = inside_bad[hit.all(axis=1)]
+        j = int(np.argmax(cut - inside.min(axis=0)))
+        cut[j] = inside[:, j].min() - margin
+        if cut[j] <= a[j]:
+            return None
+    return cut
+
+
+def safe_subbox(samples: np.ndarray, failed: np.ndarray, box: UncertaintyBox,
+                sides: Sequence[str], *, margin: float = 0.0
+                ) -> dict[str, tuple[float, float]] | None:
+    """The largest (prior volume) sub-box anchored at the box's safe corner with no failure.
+
+    Each parameter keeps its safe end (the one opposite its failing side) and gets a cut
+    chosen among the failing samples' coordinates (minus ``margin``); with k ≤ 2 every pair
+    of cuts is tried, above that the cuts shrink one coordinate at a time.
+
+    Args:
+        samples: parameter samples, (n, k).
+        failed: which samples fail, (n,).
+        box: the uncertainty box.
+        sides: per parameter, "above" (large values fail) or "below".
+        margin: distance kept from each failing sample, in the unit (prior-quantile)
+            coordinates: 0 lets a failing sample lie on the region's edge.
+
+    Returns:
+        {name: (low, high)}, or None when even the safe corner's neighbourhood fails.
+    """
+    u = _oriented(box, samples, sides)
+    bad = u[np.asarray(failed, dtype=bool)]
+    cut = _best_cut(bad, np.zeros(box.ndim), np.ones(box.ndim), float(margin))
+    return None if cut is None else _region_of_cut(box, cut, sides)
+
+
+def candidate_region(samples: np.ndarray, failed: np.ndarray, box: UncertaintyBox,
+                     sides: Sequence[str], moments: Sequence[MomentReport] = (), *,
+                     margin: float = 0.0) -> dict[str, tuple[float, float]] | None:
+    """The region to check: :func:`safe_subbox`, none when no sample passes, and cut where a
+    critical value (the others at nominal, inside the region) says the motion fails.
+
+    A moment whose failures are all unlifted ones (``squeeze``) does not cut: rollouts
+    decide those.
+    """
+    failed = np.asarray(failed, dtype=bool)
+    if failed.size == 0 or failed.all():
+        return None
+    region = safe_subbox(samples, failed, box, sides, margin=margin)
+    if region is None:
+        return None
+    nominal = dict(zip(box.names, map(float, box.nominal), strict=True))
+    for mr in moments:
+        if mr.squeeze:
+            continue
+        for name in box.names:
+            value, side = mr.critical.get(name), mr.critical_side.get(name)
+            if value is None or side is None:
+                continue
+            others_inside = all(region[q][0] <= nominal[q] <= region[q][1]
+                                for q in box.names if q != name)
+            if not others_inside:
+                continue
+            lo, hi = region[name]
+            if side == "above" and value < hi:
+                hi = value
+            elif side == "below" and value > lo:
+                lo = value
+            if hi <= lo:
+                return None
+            region[name] = (lo, hi)
+    return region
+
+
+def round_inward(region: Mapping[str, tuple[float, float]] | None, box: UncertaintyBox, *,
+                 digits: int = 3) -> dict[str, tuple[float, float]] | None:
+    """The region with each cut bound rounded to ``digits`` significant digits towards its
+    inside, so that the stated numbers are the checked ones; the box's own ends stay."""
+    if region is None:
+        return None
+    out = {}
+    for p in box.parameters:
+        lo, hi = region[p.name]
+        if not np.isclose(lo, p.low):
+            lo = _round(lo, digits, up=True)
+        if not np.isclose(hi, p.high):
+            hi = _round(hi, digits, up=False)
+        if hi < lo:
+            return None
+        out[p.name] = (float(lo), float(hi))
+    return out
+
+
+def _round(x: float, digits: int, *, up: bool) -> float:
+    if x == 0 or not math.isfinite(x):
+        return x
+    scale = 10.0 ** (digits - 1 - math.floor(math.log10(abs(x))))
+    y = (math.ceil(x * scale - 1e-9) if up else math.floor(x * scale + 1e-9)) / scale
+    return float(y)
+
+
+def region_points(region: Mapping[str, tuple[float, float]], box: UncertaintyBox, *,
+                  per_edge: int = 5, dense: Sequence[int] = (), factor: int = 4
+                  ) -> tuple[np.ndarray, list[np.ndarray]]:
+    """Points on the region's corners and edges.
+
+    Args:
+        region: {name: (low, high)}.
+        box: the box (its parameter order and prior give the spacing).
+        per_edge: points per edge, corners included (≥ 2), evenly spaced in prior quantiles.
+        dense: indices of the edges (in the returned order) sampled ``factor`` times more
+            densely (where the cost came near the threshold).
+        factor: the densification.
+
+    Returns:
+        (points (p, k), edges): ``edges`` lists, per edge, the rows of ``points`` along it
+        in order; the corners are shared rows.
+    """
+    if per_edge < 2:
+        raise ParameterError(f"per_edge: expected >= 2, got {per_edge}")
+    k = box.ndim
+    lo = np.array([region[n][0] for n in box.names])
+    hi = np.array([region[n][1] for n in box.names])
+    u_lo, u_hi = box.to_unit(lo[None])[0], box.to_unit(hi[None])[0]
+    rows: dict[bytes, int] = {}
+    pts: list[np.ndarray] = []
+
+    def add(u: np.ndarray) -> int:
+        x = np.clip(box.from_unit(u[None])[0], lo, hi)
+        x[u == u_lo] = lo[u == u_lo]
+        x[u == u_hi] = hi[u == u_hi]
+        key = np.round(x, 12).tobytes()
+        if key not in rows:
+            rows[key] = len(pts)
+            pts.append(x)
+        return rows[key]
+
+    edges = []
+    dense = set(int(e) for e in dense)
+    for j in range(k):
+        others = [i for i in range(k) if i != j]
+        for corner in np.ndindex(*([2] * len(others))):
+            base = u_lo.copy()
+            for i, c in zip(others, corner, strict=True):
+                base[i] = u_hi[i] if c else u_lo[i]
+            edge = []
+            n_t = per_edge if len(edges) not in dense else factor * (per_edge - 1) + 1
+            for tt in np.linspace(0.0, 1.0, n_t):
+                u = base.copy()
+                u[j] = u_lo[j] + tt * (u_hi[j] - u_lo[j])
+                edge.append(add(u))
+            edges.append(np.array(list(dict.fromkeys(edge)), dtype=np.int64))
+    if k == 0:
+        return np.zeros((0, 0)), []
+    return np.array(pts), edges
+
+
+def hot_edges(edges: Sequence[np.ndarray], cost: np.ndarray, *, near: float) -> list[int]:
+    """Indices of the edges with a point whose cost is at or above ``near`` (a failure, a
+    divergence or an unknown cost counts too): where the check is densified.
+
+    Args:
+        edges: per edge, the rows of the checked points along it.
+        cost: each point's highest sparse cost, (p,) (+inf where diverged, NaN unknown).
+        near: the cost from which an edge is densified.
+    """
+    hot = ~(np.nan_to_num(np.asarray(cost, dtype=np.float64), nan=np.inf) < near)
+    return [i for i, e in enumerate(edges) if hot[e].any()]
+
+
+def points_to_roll_out(cost: np.ndarray, failed: np.ndarray, already: np.ndarray, *,
+                       worst: int) -> np.ndarray:
+    """The region check's worst points: the ``worst`` highest-cost points that pass and have
+    no rollout yet, (p,) bool."""
+    cost = np.nan_to_num(np.asarray(cost, dtype=np.float64), nan=-np.inf)
+    free = ~np.asarray(failed, dtype=bool) & ~np.asarray(already, dtype=bool)
+    out = np.zeros(cost.shape, bool)
+    order = [i for i in np.argsort(-cost, kind="stable") if free[i]]
+    out[order[:max(0, int(worst))]] = True
+    return out
+
+
+def shrink_region(region: Mapping[str, tuple[float, float]], failing: np.ndarray,
+                  box: UncertaintyBox, sides: Sequence[str], *, margin: float = 0.01,
+                  passing: np.ndarray | None = None) -> dict[str, tuple[float, float]] | None:
+    """The largest sub-box of ``region`` with its failing-side faces moved in until it keeps
+    ``margin`` (unit, prior-quantile coordinates) from every failing check point.
+
+    With ``passing``, the new region's worst corner (the one at the failing-side faces) is
+    the checked point that passed and gives the largest region keeping ``margin`` from
+    every failing point: the faces then land where the check found the motion passing,
+    not just past a failure on a boundary that runs across them. Without one, the faces
+    move to ``margin`` inside the failing points.
+
+    Args:
+        region: {name: (low, high)}.
+        failing: the failing check points, (q, k).
+        box: the box.
+        sides: per parameter, the failing side ("above"/"below").
+        margin: distance kept from each failing point.
+        passing: the check points that passed, (r, k), or None.
+
+    Returns:
+        The shrunk region, or None when no sub-box is left.
+    """
+    orient = np.array(sides) == "below"
+    lo = np.array([region[n][0] for n in box.names], dtype=np.float64)
+    hi = np.array([region[n][1] for n in box.names], dtype=np.float64)
+    u_lo, u_hi = box.to_unit(lo[None])[0], box.to_unit(hi[None])[0]
+    a = np.where(orient, 1.0 - u_hi, u_lo)
+    b = np.where(orient, 1.0 - u_lo, u_hi)
+    bad = _oriented(box, failing, sides)
+    cut = None
+    if passing is not None and np.size(passing):
+        # the new worst corner is a checked point that passed
+        corners = np.clip(_oriented(box, passing, sides), a, b)
+        corners = corners[(corners > a + 1e-12).all(axis=1)]
+        if corners.shape[0]:
+            inside = (bad[None, :, :] >= a - 1e-12) & (
+                bad[None, :, :] <= corners[:, None, :] + margin)
+            clean = ~inside.all(axis=2).any(axis=1)
+            if clean.any():
+                vol = np.where(clean, np.prod(corners - a, axis=1), -1.0)
+                cut = corners[int(np.argmax(vol))]
+    if cut is None:
+        cut = _best_cut(bad, a, b, float(margin))
+    if cut is None:
+        return None
+    out = {}
+    for j, p in enumerate(box.parameters):
+        if np.isclose(cut[j], b[j], rtol=0, atol=1e-12):
+            out[p.name] = (float(lo[j]), float(hi[j]))
+            continue
+        u_cut = 1.0 - cut[j] if orient[j] else cut[j]
+        x = box.from_unit(np.where(np.arange(box.ndim) == j, u_cut, 0.5)[None])[0, j]
+        x = float(np.clip(x, lo[j], hi[j]))
+        out[p.name] = (x, float(hi[j])) if orient[j] else (float(lo[j]), x)
+    return out
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class RegionCheck:
+    """The check of a safe region on its corners and edges.
+
+    Attributes:
+        region: the region that holds, {name: (low, high)}, or None when none does.
+        points: the points checked in the last (holding) round, (p, k).
+        failed: their decision (sparse evaluation, then own rollouts), (p,) bool.
+        rolled_out: which of them have their own full rollout, (p,) bool.
+        rounds: check-and-shrink rounds.
+        n_sparse: points evaluated by sparse evaluation over every round.
+        n_rollouts: full rollouts over every round.
+        first_claim: the region first claimed (before any shrinking), or None.
+    """
+
+    region: Mapping[str, tuple[float, float]] | None
+    points: np.ndarray
+    failed: np.ndarray
+    rolled_out: np.ndarray
+    rounds: int
+    n_sparse: int
+    n_rollouts: int
+    first_claim: Mapping[str, tuple[float, float]] | None = None
+
+    @property
+    def holds(self) -> bool:
+        return self.region is not None and not self.failed.any()
+
+    @property
+    def shrunk(self) -> bool:
+        return self.first_claim is not None and dict(self.first_claim) != (
+            dict(self.region) if self.region is not None else None)
+
+    def to_json(self) -> dict:
+        return {"region": (None if self.region is None else
+                           {k: [float(a), float(b)] for k, (a, b) in self.region.items()}),
+                "first_claim": (None if self.first_claim is None else
+                                {k: [float(a), float(b)]
+                                 for k, (a, b) in self.first_claim.items()}),
+                "holds": self.holds, "rounds": self.rounds,
+                "points": int(self.points.shape[0]), "sparse": self.n_sparse,
+                "rollouts": self.n_rollouts,
+                "rollouts_last_round": int(self.rolled_out.sum())}
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class Evidence:
+    """Everything :func:`decide` needs, computed before (no simulation in the decision).
+
+    Attributes:
+        box: the uncertainty box.
+        samples: the sweep's evidence (sparse results, the rollouts' outcomes).
+        nominal_cost: highest sparse cost at the nominal parameters over the moments.
+        nominal_unlifted: the nominal parameters fail only through unlifted failures.
+        nominal_stage: (highest stage reached, final stage) of the nominal run.
+        moments: per audited moment, what was found there.
+        worst_unlifted: per moment step whose worst case fails, whether only unlifted.
+        worst_rollouts_failed: per moment step whose worst case got its own rollout, its
+            real outcome (failed).
+        region: the check of the safe region, or None when it was not checked.
+        completion_rule: the task's completion rule in words, for the causes.
+        trend: per parameter, how much the cost grows from its low to its high end along
+            the 1-D curves with the others at nominal (summed over the moments), or None
+            (see :func:`fail_sides`).
+    """
+
+    box: UncertaintyBox
+    samples: SampleEvidence
+    nominal_cost: float
+    nominal_unlifted: bool = False
+    nominal_stage: tuple[int, int] = (4, 4)
+    moments: tuple[MomentReport, ...] = ()
+    worst_unlifted: Mapping[int, bool] = dataclasses.field(default_factory=dict)
+    worst_rollouts_failed: Mapping[int, bool] = dataclasses.field(default_factory=dict)
+    region: RegionCheck | None = None
+    completion_rule: str = "stage 4 needed and kept to the end"
+    trend: Mapping[str, float] | None = None
+
+    def sides(self, failed: np.ndarray) -> list[str]:
+        """The failing side of each parameter (:func:`fail_sides`) for these failures."""
+        samples = (self.samples.sweep.samples if self.samples.sweep is not None
+                   else np.zeros((0, self.box.ndim)))
+        return fail_sides(samples, failed, self.box,
+                          [mr.critical_side for mr in self.moments if not mr.squeeze],
+                          self.trend)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class Decision:
+    """The audit's decision.
+
+    Attributes:
+        verdict: SAFE, CONDITIONAL or UNSAFE.
+        failed: per sample of the sweep, whether it fails, (n,) bool.
+        p_success: fraction of the samples that pass (0 when the nominal run fails the
+            task).
+        p_success_interval: Wilson interval of ``p_success``.
+        safe_region: the checked region that holds, or None.
+        safe_region_text: the region in words, with its evidence.
+        causes: the failure causes, in words.
+        region_to_check: the region the evidence must check before the region can be
+            stated (the whole box for a SAFE candidate), or None when there is none or
+            ``evidence.region`` checked it.
+        near: samples re-run because their cost was near the threshold, (n,) bool.
+        unlifted: samples re-run because they failed only unlifted, (n,) bool.
+    """
+
+    verdict: Verdict
+    failed: np.ndarray
+    p_success: float
+    p_success_interval: tuple[float, float]
+    safe_region: Mapping[str, tuple[float, float]] | None
+    safe_region_text: str
+    causes: tuple[str, ...]
+    region_to_check: Mapping[str, tuple[float, float]] | None
+    near: np.ndarray
+    unlifted: np.ndarray
+
+
+def _nominal_fails(evidence: Evidence, options: DecisionOptions) -> tuple[bool, bool, bool]:
+    """(nominal fails, nominal squeeze only, task failed)."""
+    se = evidence.samples
+    has_moments = se.sweep is not None and se.sweep.n_moments > 0
+    task_failed = options.require_task and not se.nominal_completed
+    squeeze = (options.rolls_unlifted and has_moments and evidence.nominal_cost > options.threshold
+               and se.nominal_completed and evidence.nominal_unlifted)
+    return (evidence.nominal_cost > options.threshold and not squeeze) or task_failed, \
+        squeeze, task_failed
+
+
+def _worst_cases_pass(evidence: Evidence, options: DecisionOptions) -> bool:
+    failing = [mr for mr in evidence.moments if not mr.max_cost <= options.threshold]
+    if not failing:
+        return True
+    steps = [int(mr.moment.step) for mr in failing]
+    if not options.rolls_unlifted or not all(evidence.worst_unlifted.get(s, False)
+                                             for s in steps):
+        return False
+    return all(s in evidence.worst_rollouts_failed and not evidence.worst_rollouts_failed[s]
+               for s in steps)
+
+
+def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
+    """The verdict, P(success), the safe region and the causes from the evidence.
+
+    Pure: call it once without ``evidence.region`` to learn the region to check
+    (``Decision.region_to_check``), check it, and call it again with the check.
+
+    Args:
+        evidence: what the audit measured.
+        options: the decision options.
+
+    Returns:
+        The :class:`Decision`.
+    """
+    box = evidence.box
+    se = evidence.samples
+    n = se.n_samples
+    failed = failing_samples(se, options)
+    near, unlifted = samples_to_rerun(se.sweep, options, nominal_completed=se.nominal_completed)
+    n_fail = int(failed.sum())
+    nominal_fails, nominal_squeeze, task_failed = _nominal_fails(evidence, options)
+    if n:
+        p = 1.0 - n_fail / n
+        interval = wilson_interval(n - n_fail, n, confidence=options.confidence)
+    else:
+        p, interval = (0.0 if nominal_fails else 1.0), (0.0, 1.0)
+    if task_failed:
+        p = 0.0
+        interval = wilson_interval(0, n, confidence=options.confidence) if n else (0.0, 1.0)
+    has_moments = se.sweep is not None and se.sweep.n_moments > 0
+    candidate = None
+    if nominal_fails:
+        verdict = Verdict.UNSAFE
+    elif n_fail == 0 and _worst_cases_pass(evidence, options):
+        verdict = Verdict.SAFE
+        candidate = {p_.name: (p_.low, p_.high) for p_ in box.parameters}
+    else:
+        verdict = Verdict.CONDITIONAL
+        if has_moments:
+            sweep = se.sweep
+            sides = evidence.sides(failed)
+            candidate = round_inward(candidate_region(sweep.samples, failed, box, sides,
+                                                      evidence.moments), box)
+    check = evidence.region
+    region = None
+    to_check = None
+    if candidate is not None:
+        if check is None:
+            to_check = candidate
+        elif check.holds:
+            region = dict(check.region)
+    if verdict is Verdict.SAFE and check is not None and not (
+            region is not None and _is_whole_box(region, box)):
+        verdict = Verdict.CONDITIONAL  # the whole box did not pass its own check
+    text = region_text(region, box, verdict, check)
+    causes = tuple(_causes(evidence.moments, options.threshold))
+    if nominal_squeeze:
+        causes = (f"the nominal cost exceeds the threshold ({evidence.nominal_cost:.3g} > "
+                  f"{options.threshold:g}) only where the grip squeezes the object off its "
+                  f"support without lifting it; the nominal run completes the task",) + causes
+    elif evidence.nominal_cost > options.threshold:
+        causes = (f"fails at the nominal parameters (max cost {evidence.nominal_cost:.3g} > "
+                  f"{options.threshold:g})",) + causes
+    if near.any() and se.rerun_failed is not None:
+        near_failed = int(np.asarray(se.rerun_failed, bool)[near].sum())
+        if near_failed:
+            causes += (f"{near_failed} of {int(near.sum())} samples that pass at the moments "
+                       f"with a cost ≥ {options.verify * options.threshold:.3g} fail in their "
+                       f"own full rollout (between the moments or by not completing the "
+                       f"task); suggestion: reduce the uncertainty near the safe region's "
+                       f"edge",)
+    if check is not None and check.shrunk and check.region is not None:
+        causes += (f"the safe region first claimed ({_bounds_text(check.first_claim, box)}) "
+                   f"failed its check at its corners and edges and was shrunk to "
+                   f"{_bounds_text(check.region, box)}",)
+    if task_failed:
+        reached, final = evidence.nominal_stage
+        causes = (f"the task is not completed at the nominal parameters (stage {reached} "
+                  f"reached, final stage {final}, {evidence.completion_rule})",) + causes
+    return Decision(verdict=verdict, failed=failed, p_success=float(p),
+                    p_success_interval=(float(interval[0]), float(interval[1])),
+                    safe_region=region, safe_region_text=text, causes=causes,
+                    region_to_check=to_check, near=near, unlifted=unlifted)
+
+
+def _is_whole_box(region: Mapping[str, tuple[float, float]], box: UncertaintyBox) -> bool:
+    return all(np.isclose(region[p.name][0], p.low) and np.isclose(region[p.name][1], p.high)
+               for p in box.parameters)
+
+
+def _bounds_text(region: Mapping[str, tuple[float, float]] | None, box: UncertaintyBox) -> str:
+    if region is None:
+        return "none"
+    parts = []
+    for p in box.parameters:
+        lo, hi = region[p.name]
+        unit = f" {p.unit}" if p.unit else ""
+        if np.isclose(lo, p.low) and np.isclose(hi, p.high):
+            continue
+        if np.isclose(lo, p.low):
+            parts.append(f"{p.name} ≤ {hi:.3g}{unit}")
+        elif np.isclose(hi, p.high):
+            parts.append(f"{p.name} ≥ {lo:.3g}{unit}")
+        else:
+            parts.append(f"{lo:.3g} ≤ {p.name} ≤ {hi:.3g}{unit}")
+    return " at ".join(parts) if parts else "the whole box"
+
+
+def region_text(region: Mapping[str, tuple[float, float]] | None, box: UncertaintyBox,
+                verdict: Verdict, check: RegionCheck | None = None) -> str:
+    """The safe region in words, with the evidence that checked it."""
+    if verdict is Verdict.UNSAFE:
+        return "no safe region: fails at the nominal parameters"
+    evidence = ""
+    if check is not None and region is not None:
+        evidence = (f" (checked at {check.n_sparse} points of its corners and edges by sparse "
+                    f"evaluation and by {check.n_rollouts} full rollouts of its worst points)")
+    if region is None:
+        if check is not None and check.first_claim is not None:
+            return (f"no safe region: every sub-box tried failed its check at its corners and "
+                    f"edges ({check.n_sparse} points, {check.n_rollouts} full rollouts)")
+        return ("no safe region: no sub-box at the box's safe corner is free of failing "
+                "samples")
+    words = _bounds_text(region, box)
+    if words == "the whole box":
+        return "safe over the whole box" + evidence
+    return "safe for " + words + evidence
+
+
+_SUGGEST = {
+    "contact": ("grip slip", "reduce the uncertainty of the object's mass and friction, grip "
+                "differently (more pad contact, more grip force), or lift more slowly"),
+    "motor": ("motor overload", "slow down, carry the object closer to the arm's base, reduce "
+              "the mass uncertainty, or push the object instead of lifting it"),
+    "diverged": ("simulation diverged", "check the model and the trajectory near this moment"),
+}
+
+
+def _causes(reports: Sequence[MomentReport], threshold: float) -> list[str]:
+    """One line per failure cause (grip slip, overload of one actuator, ...), the moments where
+    it limits (with their critical values) and the suggestion.
+
+    A moment counts where sweep samples fail there, where the cost crosses the threshold
+    along a critical-value curve, or where the worst case found fails (with a first-failure
+    sweep a later moment's failures are hidden behind earlier ones; its critical values and
+    worst case still say where it would fail).
+    """
+    groups: dict[str, list[str]] = {}
+    for mr in reports:
+        crossed = any(v is not None for v in mr.critical.values())
+        if mr.dominant is None or (mr.fail_fraction == 0 and not crossed
+                                   and not mr.max_cost > threshold):
+            continue
+        name = _SUGGEST[mr.dominant][0]
+        if mr.dominant == "motor":
+            name = f"{name} at {mr.limiting_actuator}"
+        crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
+                         if v is not None)
+        if mr.squeeze:
+            where = (f" (a squeeze without a lift: sparse evaluation fails "
+                     f"{'for ' + crit if crit else 'there'}; the samples' own rollouts decide)")
+        elif crit:
+            where = f" (fails for {crit})"
+        elif mr.fail_fraction > 0:
+            where = f" ({mr.fail_fraction:.0%} of the box)"
+        else:
+            where = " (at " + ", ".join(f"{k} = {v:.3g}" for k, v in mr.worst_case.items()) + ")"
+        groups.setdefault(f"{mr.dominant}|{name}", []).append(
+            f"{mr.moment.label.value} at t = {mr.moment.time:.2f} s{where}")
+    return [f"{key.split('|', 1)[1]}: {'; '.join(where)}; suggestion: "
+            f"{_SUGGEST[key.split('|', 1)[0]][1]}" for key, where in groups.items()]
+
