@@ -255,3 +255,25 @@ def test_cli_exits_2_with_one_line_for_an_infeasible_twin(tmp_path, capsys):
     errors = [line for line in err if "error" in line]
     assert len(errors) == 1 and "frictionloss 45 N·m > force limit 20 N·m" in errors[0]
     assert "joint 'hinge'" in errors[0]
+
+
+def test_bundled_model_with_interbotix_friction_is_infeasible(tmp_path, demo_traj):
+    import shutil
+
+    # issue 12's ACT variant: joint frictionloss 30 N·m against motor limits of 1-20 N·m
+    src = load_scenario().mjcf.parent
+    dst = tmp_path / "sticky_aloha"
+    shutil.copytree(src, dst)
+    xml = (dst / "vx300s.xml").read_text()
+    assert xml.count('<joint frictionloss="0.1" damping="0.1"/>') == 1
+    (dst / "vx300s.xml").write_text(
+        xml.replace('<joint frictionloss="0.1" damping="0.1"/>',
+                    '<joint frictionloss="30" damping="0.1"/>'))
+    twin = Twin(load_scenario(dst))
+    rec = _record(twin, demo_traj)
+    with pytest.raises(InfeasibleTwinError, match=r"joint 'left/\w+'.*frictionloss 30 N·m > "
+                       r"force limit \d+ N·m") as exc:
+        check_feasibility(rec, twin)
+    # every arm joint whose target moves is named, the fingers (0.1 N) are not
+    problems = exc.value.report.problems
+    assert len(problems) >= 6 and not any("finger" in p for p in problems)
