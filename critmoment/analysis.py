@@ -27,7 +27,7 @@ from critmoment import sparse as sp
 from critmoment import verdict as vd
 from critmoment.exceptions import ParameterError
 from critmoment.feasibility import FeasibilityReport, check_fit, preflight
-from critmoment.groundtruth import brute_force
+from critmoment.groundtruth import NominalReference, brute_force
 from critmoment.moments import Moment, MomentDetector, MomentLabel
 from critmoment.recording import Recording, model_hash, rollout
 from critmoment.scenario import Scenario, load_scenario
@@ -419,12 +419,12 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                                          nominal_completed=rec.completed)
     rerun = near | unlifted
     rerun_failed = np.zeros(len(samples), bool)
+    roll = _Rollouts(trajectory, twin, opt.nthread)
     verification = None
     if opt.verify is not None and steps.size:
         with stage("verification"):
             if rerun.any():
-                rerun_failed[rerun] = brute_force(trajectory, twin=twin, samples=samples[rerun],
-                                                  nthread=opt.nthread).failed
+                rerun_failed[rerun] = roll(samples[rerun])
     sample_evidence = vd.SampleEvidence(sweep=res if steps.size else None,
                                         nominal_completed=rec.completed, rerun=rerun,
                                         rerun_failed=rerun_failed)
@@ -498,7 +498,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     if rerun_steps:
         by_step = {int(mr.moment.step): mr for mr in moment_reports}
         points = np.array([[by_step[s].worst_case[n] for n in box.names] for s in rerun_steps])
-        real = brute_force(trajectory, twin=twin, samples=points, nthread=opt.nthread).failed
+        real = roll(points)
         worst_failed = dict(zip(rerun_steps, map(bool, real), strict=True))
         if verification is not None:
             verification["worst_cases"] = len(rerun_steps)
@@ -518,7 +518,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                                         twin=twin, evaluator=evaluator, steps=steps,
                                         sides=sides, options=dopt,
                                         nominal_completed=rec.completed,
-                                        exhaustive=opt.exhaustive, nthread=opt.nthread)
+                                        exhaustive=opt.exhaustive, nthread=opt.nthread,
+                                        reference=roll.reference)
         decision = vd.decide(dataclasses.replace(evidence, region=region_check), dopt)
         if verification is not None:
             verification["region"] = region_check.to_json()
@@ -549,7 +550,8 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
                  twin: Twin, evaluator: sp.SparseEvaluator, steps: np.ndarray,
                  sides: Sequence[str], options: vd.DecisionOptions, nominal_completed: bool,
                  exhaustive: bool = False, nthread: int = 0, per_edge: int = 5,
-                 worst: int = 4, margin: float = 0.01, max_rounds: int = 4) -> vd.RegionCheck:
+                 worst: int = 4, margin: float = 0.01, max_rounds: int = 4,
+                 reference: NominalReference | None = None) -> vd.RegionCheck:
     """Check a claimed safe region on its corners and edges, and shrink it until it holds.
 
     Each round evaluates the region's corners and edges (:func:`critmoment.verdict.
@@ -576,6 +578,8 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         worst: extra full rollouts of the highest-cost passing points per round.
         margin: distance a shrunk face keeps from a failing point (prior quantiles).
         max_rounds: rounds before giving up (no region then).
+        reference: the nominal run of an earlier :func:`~critmoment.groundtruth.brute_force`
+            of this trajectory, or None.
 
     Returns:
         The :class:`~critmoment.verdict.RegionCheck`.
@@ -583,6 +587,7 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
     box = twin.scenario.box
     near_cost = (options.verify if options.verify is not None else 0.8) * options.threshold
     first = dict(region)
+    roll = _Rollouts(trajectory, twin, nthread, reference)
     n_sparse = n_rollouts = 0
     current: dict | None = vd.round_inward(first, box)
     pts = np.zeros((0, box.ndim))
@@ -605,8 +610,7 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         rolled = unlifted | vd.points_to_roll_out(cost, res.failed_any, unlifted, worst=worst)
         outcome = np.zeros(pts.shape[0], bool)
         if rolled.any():
-            outcome[rolled] = brute_force(trajectory, twin=twin, samples=pts[rolled],
-                                          nthread=nthread).failed
+            outcome[rolled] = roll(pts[rolled])
             n_rollouts += int(rolled.sum())
         fails = np.array(res.failed_any, dtype=bool)
         if options.require_task and not nominal_completed:
@@ -621,6 +625,22 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
     return vd.RegionCheck(region=None, points=pts, failed=fails, rolled_out=rolled,
                           rounds=max_rounds, n_sparse=n_sparse, n_rollouts=n_rollouts,
                           first_claim=first)
+
+
+class _Rollouts:
+    """Full rollouts of parameter points (their real outcome: failed), sharing one nominal
+    reference run over the calls."""
+
+    def __init__(self, trajectory: Trajectory, twin: Twin, nthread: int,
+                 reference: NominalReference | None = None):
+        self.trajectory, self.twin, self.nthread = trajectory, twin, nthread
+        self.reference = reference
+
+    def __call__(self, points: np.ndarray) -> np.ndarray:
+        bf = brute_force(self.trajectory, twin=self.twin, samples=points, nthread=self.nthread,
+                         reference=self.reference)
+        self.reference = bf.reference
+        return bf.failed
 
 
 def _trend(curves: Mapping[int, Mapping[str, sp.SparseResult]], box) -> dict[str, float]:

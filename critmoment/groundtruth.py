@@ -72,6 +72,7 @@ __all__ = [
     "ends_completed",
     "grip_slip",
     "BruteForce",
+    "NominalReference",
     "brute_force",
     "rerun_in_full",
 ]
@@ -498,6 +499,23 @@ def _closing_projector(model: mujoco.MjModel, geoms: Sequence[str], anchor: int)
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
+class NominalReference:
+    """The nominal-parameter run that :func:`brute_force` classifies against, to reuse.
+
+    Attributes:
+        frames: what the classification reads from it.
+        completed: it completes the task.
+        n_steps: physics steps of the trajectory.
+        nominal: the nominal parameter values, (k,).
+    """
+
+    frames: _Frames
+    completed: bool
+    n_steps: int
+    nominal: np.ndarray
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
 class BruteForce:
     """Real outcomes of full rollouts for parameter samples.
 
@@ -510,6 +528,8 @@ class BruteForce:
         n_steps: physics steps per rollout.
         dt: physics step [s].
         seconds: wall time of the rollouts and their classification [s].
+        reference: the nominal run, to pass to a later :func:`brute_force` of the same
+            trajectory and twin (it then does not run again).
     """
 
     samples: np.ndarray
@@ -520,6 +540,7 @@ class BruteForce:
     n_steps: int
     dt: float
     seconds: float
+    reference: NominalReference | None = dataclasses.field(default=None, repr=False)
 
     @property
     def outcome(self) -> tuple[Outcome, ...]:
@@ -533,7 +554,7 @@ class BruteForce:
 
 def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
                 criteria: OutcomeCriteria = OutcomeCriteria(), chunk: int = 16,
-                nthread: int = 0) -> BruteForce:
+                nthread: int = 0, reference: NominalReference | None = None) -> BruteForce:
     """Run the whole trajectory once per parameter sample and classify each real outcome.
 
     The samples run in chunks of at most ``chunk`` simulations through
@@ -541,7 +562,8 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
     threads), on the twin's model with sensors appended for the object's position in each
     gripper and the joints' positions; each chunk is classified and dropped before the next,
     so memory stays at about ``chunk × T × nsensordata × 8`` bytes. The nominal parameters run
-    first, as the reference of the drop, slip and tracking criteria.
+    first, as the reference of the drop, slip and tracking criteria, unless ``reference``
+    (``BruteForce.reference`` of an earlier call with the same trajectory and twin) gives it.
 
     Args:
         traj: the trajectory.
@@ -550,6 +572,7 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
         criteria: the outcome tolerances.
         chunk: most simulations per batch call.
         nthread: threads (0: all CPUs).
+        reference: the nominal run from an earlier call, or None to run it.
 
     Returns:
         The :class:`BruteForce` result.
@@ -565,27 +588,39 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
     controls = prepare_controls(twin, traj)
     state0 = initial_state(twin, traj)
     dt = float(twin.model.opt.timestep)
-    everything = np.vstack([box.nominal[None, :], samples])
-    reference = None
+    if reference is not None and (reference.n_steps != controls.shape[0]
+                                  or not np.array_equal(reference.nominal, box.nominal)):
+        raise ParameterError(
+            f"reference: expected the nominal run of this trajectory ({controls.shape[0]} "
+            f"steps, nominal {box.nominal.tolist()}), got {reference.n_steps} steps, nominal "
+            f"{np.asarray(reference.nominal).tolist()}")
+    skip = 0 if reference is not None else 1
+    everything = samples if reference is not None else np.vstack([box.nominal[None, :],
+                                                                  samples])
+    frames_ref = None if reference is None else reference.frames
     parts, diverged = [], []
     for _, out, mu in batched_rollouts(twin, state0, controls, everything, model=probe.model,
                                        chunk=chunk, nthread=nthread):
         frames = _Frames.read(twin, probe, out["sensordata"], mu)
-        if reference is None:
-            reference = frames.row(0)
-        parts.append(_classify_frames(frames, reference, controls, probe, dt, criteria,
+        if frames_ref is None:
+            frames_ref = frames.row(0)
+        parts.append(_classify_frames(frames, frames_ref, controls, probe, dt, criteria,
                                       out["diverged"], out["diverged_step"]))
         diverged.append(out["diverged"])
     result = Classification.concatenate(parts)
-    keep = slice(1, None)
+    keep = slice(skip, None)
     classification = Classification(
-        outcome=result.outcome[1:], dt=dt, criteria=criteria,
+        outcome=result.outcome[skip:], dt=dt, criteria=criteria,
         **{f.name: getattr(result, f.name)[keep] for f in dataclasses.fields(Classification)
            if f.name not in ("outcome", "dt", "criteria")})
+    if reference is None:
+        reference = NominalReference(frames=frames_ref, completed=bool(result.completed[0]),
+                                     n_steps=int(controls.shape[0]),
+                                     nominal=box.nominal.copy())
     return BruteForce(samples=samples, parameter_names=box.names, classification=classification,
                       diverged=np.concatenate(diverged)[keep],
-                      nominal_completed=bool(result.completed[0]), n_steps=controls.shape[0],
-                      dt=dt, seconds=time.perf_counter() - t_start)
+                      nominal_completed=reference.completed, n_steps=controls.shape[0],
+                      dt=dt, seconds=time.perf_counter() - t_start, reference=reference)
 
 
 @dataclasses.dataclass(frozen=True)

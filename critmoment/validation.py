@@ -1,84 +1,61 @@
-"""Ground truth: check the audit's sparse verdicts against brute-force full rollouts.
+"""The validation study: the audit's decisions against brute-force full rollouts.
 
-For every parameter sample of the uncertainty box, :func:`brute_force` re-runs the *whole*
-trajectory with that sample's physics (batched through :func:`critmoment.recording.simulate`,
-i.e. ``mujoco.batch.Batch.rollout`` on all threads) and :func:`classify` names the real
-outcome (:class:`Outcome`). :func:`predict` runs the audit's own sparse method on the same
-samples: the frequent rollout at nominal parameters, the audit's critical moments (the ranked
-candidates of :func:`critmoment.analysis.detect_moments`, the first ``max_moments`` of them, as
-:func:`critmoment.analysis.analyze` takes them), and one sparse evaluation per moment and
-sample; a sample is predicted to fail when its cost exceeds the scenario's threshold at any
-audited moment (or diverges there), or when the nominal rollout itself does not complete the
-task (the audit then says UNSAFE whatever the parameters). Two optional additions to the
-method are prototyped here: an *envelope* check (sparse evaluations every ~0.1 s of the
-carrying phase) and the *verification* of near-threshold safes by their own full rollout.
-:func:`compare` builds the confusion matrix; :func:`validate` chains the three.
-
-Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
-
-* ``DIVERGED``: the sample's simulation diverged (MuJoCo warning or non-finite readings).
-* ``MOTOR``: a rotational actuator's force stays at its limit (|force| ≥ ``saturation`` ×
-  limit) for longer than ``motor_time``, or a rotational joint lags its target by more than the
-  nominal run does, by over ``tracking_tolerance``, for longer than ``tracking_time`` —
-  unless this happens only after the object was dropped (then it is a consequence).
-* ``DROPPED``: the task is not completed and, for longer than ``drop_time``, the object is not
-  carried (touches the support, or no gripper) at steps where the nominal run carries it; the
-  drop is the last such loss (an earlier one, a late lift, was recovered from).
-* ``SLIPPED``: the object moved in a holding gripper by more than ``slip_tolerance`` for
-  longer than ``slip_time`` (see :func:`grip_slip`): its position in the frame of the
-  gripper's base body, along the pads (the fingers' closing axes removed: squeezing is not
-  slip), counted from the step both the sample and the nominal run first hold it with that
-  gripper, minus the nominal run's own displacement, at steps where the nominal run holds it
-  with that gripper alone (an object moves in a gripper that lets go: that is the release).
-  With ``slip_is_failure`` (default) a run that slips counts as a failure even when it
-  completes the task; otherwise it is ``SUCCESS`` when completed.
-* ``NOT_COMPLETED``: the task is not completed (:func:`~critmoment.recording.ends_completed`:
-  the run ends in stage 4) and none of the above
-  explains it (e.g. the object was never grasped, as in the nominal run itself).
-* ``SUCCESS``: completed, and none of the above.
-
-A sample has exactly one outcome, the first in the order DIVERGED, MOTOR, DROPPED, SLIPPED,
-NOT_COMPLETED that applies; the step of its earliest failure event (``first_failure_step``)
-is kept for the analysis of missed failures.
+:func:`predict` runs the audit's own method on parameter samples: the frequent rollout at
+nominal parameters, the audit's critical moments (:func:`critmoment.analysis.audit_moments`,
+the first ``max_moments`` of the ranked candidates, as :func:`critmoment.analysis.analyze`
+takes them), one sparse evaluation per moment and sample, and the audit's decision path
+(:func:`critmoment.verdict.samples_to_rerun`, :func:`critmoment.verdict.failing_samples`):
+the same function decides which samples fail in ``analyze`` and here. One optional addition
+to the method is prototyped here: an *envelope* check (sparse evaluations every ~0.1 s of the
+carrying phase). The ground truth, :func:`critmoment.groundtruth.brute_force` (the real
+outcome of each sample's full rollout, from the task's success rule and plain kinematics),
+sits below the audit; its names stay importable from here. :func:`compare` builds the
+confusion matrix; :func:`validate` chains the three.
 
 The confusion matrix counts ``true_safe`` (predicted safe, succeeded), ``false_safe``
 (predicted safe, failed), ``true_unsafe`` (predicted unsafe, failed) and ``false_unsafe``
 (predicted unsafe, succeeded). The **false-safe rate** is false_safe / (false_safe +
 true_unsafe): the fraction of the real failures that the audit called safe (the miss rate;
-``None`` when no sample fails). Agreement is (true_safe + true_unsafe) / n.
+``None`` when no sample fails). Agreement is (true_safe + true_unsafe) / n. A validation in
+which no sample really succeeds, or none really fails, is **vacuous**
+(:attr:`ValidationResult.vacuous`): its false-safe rate says nothing about the method.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import enum
 import math
-import numbers
 import time
-from collections.abc import Mapping, Sequence
-from typing import Any
+from collections.abc import Mapping
 
-import mujoco
-import mujoco.batch
 import numpy as np
 
 from critmoment import sparse as sp
-from critmoment.analysis import AnalyzeOptions, audit_moments
+from critmoment.analysis import AnalyzeOptions, audit_moments, decision_options
 from critmoment.exceptions import ParameterError
 from critmoment.feasibility import check_fit, preflight
-from critmoment.moments import Moment
-from critmoment.recording import (
-    Recording,
-    batched_rollouts,
+from critmoment.groundtruth import (
+    BruteForce,
+    Classification,
+    Outcome,
+    OutcomeCriteria,
+    _check_int,
+    _check_positive,
+    _Probe,  # noqa: F401 (the probe model, read by tests)
+    brute_force,
+    classify,
     ends_completed,
-    initial_state,
-    prepare_controls,
-    rollout,
+    grip_slip,
+    rerun_in_full,
 )
+from critmoment.moments import Moment
+from critmoment.recording import Recording, rollout
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin, carried_flags
+from critmoment.verdict import SampleEvidence, failing_samples, samples_to_rerun
 
 __all__ = [
+    # the ground truth (critmoment.groundtruth), re-exported for compatibility
     "Outcome",
     "OutcomeCriteria",
     "Classification",
@@ -87,9 +64,10 @@ __all__ = [
     "grip_slip",
     "BruteForce",
     "brute_force",
+    "rerun_in_full",
+    # the validation study
     "Prediction",
     "predict",
-    "rerun_in_full",
     "envelope_steps",
     "MissedFailure",
     "ValidationResult",
@@ -104,553 +82,7 @@ VALIDATION_SCHEMA = "critmoment.validation/1"
 #: the audit's default options: validation tests what ``analyze`` does unless told otherwise
 _AUDIT = AnalyzeOptions()
 
-_SENSOR_PREFIX = "critmoment:validate:"
-
-
-class Outcome(enum.Enum):
-    """Real outcome of one full rollout (see the module docstring for the definitions)."""
-
-    SUCCESS = "success"
-    DIVERGED = "diverged"
-    MOTOR = "motor"
-    DROPPED = "dropped"
-    SLIPPED = "slipped"
-    NOT_COMPLETED = "not_completed"
-
-
-#: precedence of the failure outcomes: the first that applies names the sample's outcome
-_PRECEDENCE = (Outcome.DIVERGED, Outcome.MOTOR, Outcome.DROPPED, Outcome.SLIPPED,
-               Outcome.NOT_COMPLETED)
-
-
-@dataclasses.dataclass(frozen=True)
-class OutcomeCriteria:
-    """Tolerances that turn a full rollout into an :class:`Outcome`.
-
-    Attributes:
-        slip_tolerance: largest displacement of the object in a holding gripper, relative to
-            the nominal run, that is not slip [m] (1 cm: a quarter of the bundled 4 cm cube).
-        slip_time: how long the displacement must exceed the tolerance to count [s]
-            (transients at the hand-over settle within a few tens of ms).
-        slip_is_failure: a run that slips but completes the task counts as a failure.
-        saturation: fraction of the force limit at which a rotational actuator is saturated.
-        motor_time: how long a saturation must last to count [s].
-        tracking_tolerance: how much more than in the nominal run a rotational joint may lag
-            its target [rad].
-        tracking_time: how long a tracking loss must last to count [s].
-        drop_time: longest ignored loss of the object where the nominal run carries it [s]
-            (the debounce of the drop test).
-    """
-
-    slip_tolerance: float = 0.01
-    slip_time: float = 0.05
-    slip_is_failure: bool = True
-    saturation: float = 0.999
-    motor_time: float = 0.05
-    tracking_tolerance: float = 0.1
-    tracking_time: float = 0.05
-    drop_time: float = 0.02
-
-    def __post_init__(self):
-        for name in ("slip_tolerance", "tracking_tolerance"):
-            _check_positive(name, getattr(self, name))
-        for name in ("slip_time", "motor_time", "tracking_time", "drop_time"):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, numbers.Real) or not (
-                    math.isfinite(value) and value >= 0):
-                raise ParameterError(f"{name}: expected a finite time >= 0 s, got {value!r}")
-        if not isinstance(self.saturation, numbers.Real) or not 0 < self.saturation <= 1:
-            raise ParameterError(f"saturation: expected a fraction in (0, 1], got "
-                                 f"{self.saturation!r}")
-
-    def steps(self, seconds: float, dt: float) -> int:
-        """Shortest run of steps that lasts *longer* than ``seconds`` at step ``dt`` [s]."""
-        return int(round(seconds / dt)) + 1
-
-
-def _check_positive(name: str, value: Any) -> float:
-    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not (
-            math.isfinite(value) and value > 0):
-        raise ParameterError(f"{name}: expected a finite number > 0, got {value!r}")
-    return float(value)
-
-
-def _check_int(name: str, value: Any, minimum: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
-        raise ParameterError(f"{name}: expected an integer >= {minimum}, got {value!r}")
-    return int(value)
-
-
-# --------------------------------------------------------------------------
-# classification of full rollouts
-# --------------------------------------------------------------------------
-
-
-def _run_length(flags: np.ndarray) -> np.ndarray:
-    """Length of the run of True ending at each step, (n, T) int (0 where False)."""
-    t = flags.shape[-1]
-    idx = np.arange(t)
-    last_false = np.maximum.accumulate(np.where(flags, -1, idx), axis=-1)
-    return idx - last_false
-
-
-def _first_run(flags: np.ndarray, min_len: int) -> np.ndarray:
-    """First step of the first run of at least ``min_len`` True values, (n,) int, −1 if none."""
-    long = _run_length(flags) >= min_len
-    hit = long.any(axis=-1)
-    return np.where(hit, np.argmax(long, axis=-1) - min_len + 1, -1)
-
-
-def _last_run(flags: np.ndarray, min_len: int) -> np.ndarray:
-    """First step of the last run of at least ``min_len`` True values, (n,) int, −1 if none."""
-    length = _run_length(flags)
-    long = length >= min_len
-    hit = long.any(axis=-1)
-    end = flags.shape[-1] - 1 - np.argmax(long[:, ::-1], axis=-1)
-    start = end - length[np.arange(flags.shape[0]), end] + 1
-    return np.where(hit, start, -1)
-
-
-@dataclasses.dataclass(frozen=True, eq=False)
-class Classification:
-    """Real outcomes of n full rollouts.
-
-    Attributes:
-        outcome: one :class:`Outcome` per sample.
-        completed: the task was completed, (n,) bool.
-        first_failure_step: step of the earliest failure event of a failed sample (slip,
-            drop, motor, divergence; for NOT_COMPLETED the start of the final loss of stage
-            4, or −1 when stage 4 was never reached); −1 for a success, (n,) int.
-        slip_step: first step of the first slip, −1 if none, (n,) int.
-        drop_step: first step of the last loss of the object where the nominal run carries
-            it (the drop; an earlier loss, such as a lift that starts late, was recovered
-            from), −1 if none (counted as DROPPED only when not completed), (n,) int.
-        motor_step: first step of the first motor saturation or tracking loss, −1 if none,
-            (n,) int.
-        max_slip: largest displacement in a holding gripper relative to the nominal run [m],
-            (n,) (0 where never held).
-        saturation_time: longest saturation of a rotational actuator [s], (n,).
-        dt: physics step [s].
-        criteria: the tolerances used.
-    """
-
-    outcome: tuple[Outcome, ...]
-    completed: np.ndarray
-    first_failure_step: np.ndarray
-    slip_step: np.ndarray
-    drop_step: np.ndarray
-    motor_step: np.ndarray
-    max_slip: np.ndarray
-    saturation_time: np.ndarray
-    dt: float
-    criteria: OutcomeCriteria
-
-    @property
-    def failed(self) -> np.ndarray:
-        """(n,) bool: the outcome is anything but SUCCESS."""
-        return np.array([o is not Outcome.SUCCESS for o in self.outcome], dtype=bool)
-
-    def counts(self) -> dict[str, int]:
-        """Samples per outcome, every outcome listed."""
-        return {o.value: sum(1 for x in self.outcome if x is o) for o in Outcome}
-
-    @staticmethod
-    def concatenate(parts: Sequence[Classification]) -> Classification:
-        """Join classifications of successive chunks of samples."""
-        if not parts:
-            raise ParameterError("expected at least one classification to concatenate")
-        arrays = {f.name: np.concatenate([getattr(p, f.name) for p in parts])
-                  for f in dataclasses.fields(Classification)
-                  if f.name not in ("outcome", "dt", "criteria")}
-        return Classification(outcome=tuple(o for p in parts for o in p.outcome),
-                              dt=parts[0].dt, criteria=parts[0].criteria, **arrays)
-
-
-def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
-             contact_support: np.ndarray, nominal_carried: np.ndarray,
-             actuator_norm: np.ndarray, tracking_excess: np.ndarray | None = None,
-             slip: np.ndarray | None = None, diverged: np.ndarray | None = None,
-             diverged_step: np.ndarray | None = None,
-             criteria: OutcomeCriteria = OutcomeCriteria()) -> Classification:
-    """Classify n full rollouts from their signals.
-
-    Args:
-        dt: physics step [s].
-        stage: task stage per step, (n, T) int.
-        contact_gripper: the object touches gripper g, (n, T, G) bool.
-        contact_support: the object touches the support, (n, T) bool.
-        nominal_carried: the nominal run carries the object (off the support, touched by a
-            gripper), (T,) bool.
-        actuator_norm: force / limit of the rotational actuators, (n, T, r).
-        tracking_excess: how much more than in the nominal run each rotational joint lags
-            its target, |q − target| − |q_nominal − target| [rad], (n, T, r), or None.
-        slip: displacement of the object in its holding gripper relative to the nominal run
-            [m], (n, T) (0 where not held), or None (see :func:`grip_slip`).
-        diverged: the simulation diverged, (n,) bool, or None.
-        diverged_step: the step it diverged at, (n,) int, or None.
-        criteria: the tolerances.
-
-    Returns:
-        The :class:`Classification`.
-
-    Raises:
-        ParameterError: arrays of inconsistent shapes.
-    """
-    _check_positive("dt", dt)
-    stage = np.asarray(stage)
-    if stage.ndim != 2:
-        raise ParameterError(f"stage: expected shape (n, T), got {stage.shape}")
-    n, t = stage.shape
-    contact_gripper = np.asarray(contact_gripper, dtype=bool)
-    contact_support = np.asarray(contact_support, dtype=bool)
-    nominal_carried = np.asarray(nominal_carried, dtype=bool)
-    actuator_norm = np.asarray(actuator_norm, dtype=np.float64)
-    expect = {"contact_gripper": (contact_gripper, 3), "contact_support": (contact_support, 2),
-              "actuator_norm": (actuator_norm, 3)}
-    if tracking_excess is not None:
-        tracking_excess = np.asarray(tracking_excess, dtype=np.float64)
-        expect["tracking_excess"] = (tracking_excess, 3)
-    if slip is not None:
-        slip = np.asarray(slip, dtype=np.float64)
-        expect["slip"] = (slip, 2)
-    for name, (arr, ndim) in expect.items():
-        if arr.ndim != ndim or arr.shape[:2] != (n, t):
-            raise ParameterError(
-                f"{name}: expected {ndim} axes with leading shape (n, T) = {(n, t)}, got "
-                f"{arr.shape}")
-    if nominal_carried.shape != (t,):
-        raise ParameterError(f"nominal_carried: expected shape ({t},), got {nominal_carried.shape}")
-    diverged = np.zeros(n, bool) if diverged is None else np.asarray(diverged, dtype=bool)
-    if diverged.shape != (n,):
-        raise ParameterError(f"diverged: expected shape ({n},), got {diverged.shape}")
-    diverged_step = (np.full(n, -1) if diverged_step is None
-                     else np.asarray(diverged_step, dtype=np.int64))
-    c = criteria
-
-    completed = ends_completed(stage)
-    # motor: saturation, or tracking lost, for longer than the stated times
-    saturated = np.abs(actuator_norm) >= c.saturation
-    sat_run = _run_length(saturated.transpose(0, 2, 1))  # (n, r, T)
-    saturation_time = (sat_run.max(axis=(1, 2)) if sat_run.size else np.zeros(n)) * dt
-    starts = [_first_run(saturated[..., j], c.steps(c.motor_time, dt))
-              for j in range(actuator_norm.shape[-1])]
-    if tracking_excess is not None:
-        lost = tracking_excess > c.tracking_tolerance
-        starts += [_first_run(lost[..., j], c.steps(c.tracking_time, dt))
-                   for j in range(tracking_excess.shape[-1])]
-    motor_step = _earliest(np.stack(starts, axis=-1)) if starts else np.full(n, -1)
-    # drop: not carried where the nominal run carries the object
-    carried = carried_flags(contact_support, contact_gripper)
-    drop_step = _last_run(nominal_carried[None, :] & ~carried, c.steps(c.drop_time, dt))
-    # slip: moved in the grip beyond the tolerance for longer than slip_time
-    if slip is None:
-        slip_step, max_slip = np.full(n, -1), np.zeros(n)
-    else:
-        slip_step = _first_run(slip > c.slip_tolerance, c.steps(c.slip_time, dt))
-        max_slip = np.nan_to_num(slip, nan=0.0).max(axis=1) if t else np.zeros(n)
-    # the final loss of stage 4 of an incomplete run (for its failure step)
-    at4 = stage >= 4
-    ever4 = at4.any(axis=1)
-    last4 = t - 1 - np.argmax(at4[:, ::-1], axis=1)
-    final_loss = np.where(ever4 & (last4 < t - 1), last4 + 1, -1)
-
-    drop_ok = (drop_step >= 0) & ~completed
-    # a motor event after the object is lost is a consequence (the arms move unloaded, may
-    # touch each other), not the cause
-    motor_ok = (motor_step >= 0) & ~(drop_ok & (motor_step > drop_step))
-    slip_ok = (slip_step >= 0) & (c.slip_is_failure | ~completed)
-    conditions = [diverged, motor_ok, drop_ok, slip_ok, ~completed]
-    codes = np.select(conditions, np.arange(len(_PRECEDENCE)), default=-1)
-    outcome = tuple(Outcome.SUCCESS if k < 0 else _PRECEDENCE[k] for k in codes)
-    event_steps = np.stack([np.where(diverged, diverged_step, -1),
-                            np.where(motor_ok, motor_step, -1),
-                            np.where(drop_ok, drop_step, -1),
-                            np.where(slip_ok, slip_step, -1)], axis=-1)
-    first = _earliest(event_steps)
-    first = np.where(first < 0, np.where(~completed, final_loss, -1), first)
-    return Classification(
-        outcome=tuple(outcome), completed=completed, first_failure_step=first,
-        slip_step=slip_step.astype(np.int64), drop_step=drop_step.astype(np.int64),
-        motor_step=motor_step.astype(np.int64), max_slip=np.asarray(max_slip, dtype=float),
-        saturation_time=np.asarray(saturation_time, dtype=float), dt=float(dt), criteria=c)
-
-
-def _earliest(steps: np.ndarray) -> np.ndarray:
-    """Earliest non-negative entry along the last axis, −1 where none, (n,)."""
-    big = np.iinfo(np.int64).max
-    masked = np.where(steps >= 0, steps, big).min(axis=-1)
-    return np.where(masked == big, -1, masked)
-
-
-def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarray,
-              nominal_held: np.ndarray, *, counted: np.ndarray | None = None,
-              projectors: np.ndarray | None = None) -> np.ndarray:
-    """Displacement of the object in its holding grippers, relative to the nominal run.
-
-    For gripper g, from the first step ``t0`` at which both the sample and the nominal run
-    hold the object with g, the displacement at t is
-    ``(p(t) − p(t0)) − (p_nom(t) − p_nom(t0))`` of the object's position in g's base frame,
-    projected by ``projectors[g]`` (to drop the fingers' closing axis). It counts where both
-    runs hold the object with g and ``counted`` allows it; the result is the largest magnitude
-    over the grippers.
-
-    Args:
-        position: object position in each gripper's frame [m], (n, T, G, 3).
-        nominal_position: the same in the nominal run [m], (T, G, 3).
-        held: the sample holds the object with gripper g (touch, off the support),
-            (n, T, G) bool.
-        nominal_held: the same in the nominal run, (T, G) bool.
-        counted: where a gripper's displacement counts, (T, G) bool; default everywhere.
-            Brute force counts a gripper only while it holds the object alone in the nominal
-            run: the object moves in a gripper that is letting go, which is the release, not
-            slip (what slipped during a hand-over still shows once the receiver holds alone).
-        projectors: per gripper, a (3, 3) projector applied to the displacement, (G, 3, 3);
-            None for the identity.
-
-    Returns:
-        (n, T) displacement [m], 0 where it does not count.
-    """
-    position = np.asarray(position, dtype=np.float64)
-    nominal_position = np.asarray(nominal_position, dtype=np.float64)
-    if (position.ndim != 4 or position.shape[-1] != 3
-            or position.shape[1:] != nominal_position.shape):
-        raise ParameterError(
-            f"position: expected (n, T, G, 3) matching nominal_position (T, G, 3), got "
-            f"{position.shape} and {nominal_position.shape}")
-    n, t, g, _ = position.shape
-    both = np.asarray(held, dtype=bool) & np.asarray(nominal_held, dtype=bool)[None]
-    if both.shape != (n, t, g):
-        raise ParameterError(f"held: expected shape {(n, t, g)}, got {both.shape}")
-    mask = both
-    if counted is not None:
-        counted = np.asarray(counted, dtype=bool)
-        if counted.shape != (t, g):
-            raise ParameterError(f"counted: expected shape {(t, g)}, got {counted.shape}")
-        mask = both & counted[None]
-    t0 = np.argmax(both, axis=1)  # (n, G)
-    rows = np.arange(n)[:, None]
-    cols = np.arange(g)[None, :]
-    rel = ((position - position[rows, t0, cols][:, None])
-           - (nominal_position[None] - nominal_position[t0, cols][:, None]))
-    if projectors is not None:
-        rel = np.einsum("gij,ntgj->ntgi", np.asarray(projectors, dtype=np.float64), rel)
-    disp = np.where(mask, np.linalg.norm(rel, axis=-1), 0.0)
-    return disp.max(axis=-1) if g else np.zeros((n, t))
-
-
-# --------------------------------------------------------------------------
-# brute force
-# --------------------------------------------------------------------------
-
-
-class _Probe:
-    """The twin's model with extra sensors for the brute force, and how to read them.
-
-    The twin's own sensors come first and keep their addresses (the extra ones are appended),
-    so ``Twin.signals`` reads the first ``twin.nsensordata`` values unchanged and the physics
-    is the twin's: sensors do not act on the dynamics.
-    """
-
-    def __init__(self, twin: Twin):
-        sc = twin.scenario
-        base = twin.model
-        self.anchors = [_gripper_anchor(base, g.geoms) for g in sc.grippers]
-        spec = mujoco.MjSpec.from_file(str(sc.mjcf))
-        twin.add_sensors(spec)  # the twin's sensors first, at the same addresses
-        for g, anchor in zip(sc.grippers, self.anchors, strict=False):
-            s = spec.add_sensor()
-            s.name = f"{_SENSOR_PREFIX}pos:{g.name}"
-            s.type = mujoco.mjtSensor.mjSENS_FRAMEPOS
-            s.objtype = mujoco.mjtObj.mjOBJ_BODY
-            s.objname = sc.object_body
-            s.reftype = mujoco.mjtObj.mjOBJ_BODY
-            s.refname = base.body(anchor).name
-        self.rotational = np.flatnonzero(twin.rotational)
-        for a in self.rotational:
-            s = spec.add_sensor()
-            s.name = f"{_SENSOR_PREFIX}q:{base.actuator(int(a)).name}"
-            s.type = mujoco.mjtSensor.mjSENS_ACTUATORPOS
-            s.objtype = mujoco.mjtObj.mjOBJ_ACTUATOR
-            s.objname = base.actuator(int(a)).name
-        self.model = spec.compile()
-        twin.write_parameters(self.model, sc.box.nominal[None, :])
-        nsd = twin.nsensordata
-        ngrip = len(sc.grippers)
-        self.pos = slice(nsd, nsd + 3 * ngrip)
-        self.q = slice(self.pos.stop, self.pos.stop + self.rotational.size)
-        self.projectors = np.stack([_closing_projector(base, g.geoms, a)
-                                    for g, a in zip(sc.grippers, self.anchors, strict=False)])
-
-
-def _gripper_anchor(model: mujoco.MjModel, geoms: Sequence[str]) -> int:
-    """The deepest body that is an ancestor of every geom of a gripper (its base)."""
-    chains = []
-    for name in geoms:
-        body = int(model.geom_bodyid[model.geom(name).id])
-        chain = [body]
-        while body != 0:
-            body = int(model.body_parentid[body])
-            chain.append(body)
-        chains.append(chain)
-    return next(b for b in chains[0] if all(b in c for c in chains[1:]))
-
-
-def _closing_projector(model: mujoco.MjModel, geoms: Sequence[str], anchor: int) -> np.ndarray:
-    """Projector (3, 3) onto the plane normal to the gripper's slide (finger) axes in its frame."""
-    data = mujoco.MjData(model)
-    mujoco.mj_kinematics(model, data)
-    frame = data.xmat[anchor].reshape(3, 3)
-    axes = []
-    for name in geoms:
-        body = int(model.geom_bodyid[model.geom(name).id])
-        while body not in (anchor, 0):
-            first = model.body_jntadr[body]
-            for j in range(first, first + model.body_jntnum[body]):
-                if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE:
-                    axes.append(frame.T @ data.xaxis[j])
-            body = int(model.body_parentid[body])
-    if not axes:
-        return np.eye(3)
-    u, s, _ = np.linalg.svd(np.array(axes).T, full_matrices=False)
-    basis = u[:, s > 1e-9 * s.max()]
-    return np.eye(3) - basis @ basis.T
-
-
-@dataclasses.dataclass(frozen=True, eq=False)
-class BruteForce:
-    """Real outcomes of full rollouts for parameter samples.
-
-    Attributes:
-        samples: the parameter values, (n, k), columns in ``parameter_names`` order.
-        parameter_names: names of the k parameters.
-        classification: the outcomes.
-        diverged: the simulation diverged, (n,) bool.
-        nominal_completed: the nominal-parameter run (the reference) completes the task.
-        n_steps: physics steps per rollout.
-        dt: physics step [s].
-        seconds: wall time of the rollouts and their classification [s].
-    """
-
-    samples: np.ndarray
-    parameter_names: tuple[str, ...]
-    classification: Classification
-    diverged: np.ndarray
-    nominal_completed: bool
-    n_steps: int
-    dt: float
-    seconds: float
-
-    @property
-    def outcome(self) -> tuple[Outcome, ...]:
-        return self.classification.outcome
-
-    @property
-    def failed(self) -> np.ndarray:
-        """(n,) bool: the real outcome is anything but SUCCESS."""
-        return self.classification.failed
-
-
-def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
-                criteria: OutcomeCriteria = OutcomeCriteria(), chunk: int = 16,
-                nthread: int = 0) -> BruteForce:
-    """Run the whole trajectory once per parameter sample and classify each real outcome.
-
-    The samples run in chunks of at most ``chunk`` simulations through
-    :func:`critmoment.recording.simulate` (``mujoco.batch.Batch.rollout``, ``nthread``
-    threads), on the twin's model with sensors appended for the object's position in each
-    gripper and the joints' positions; each chunk is classified and dropped before the next,
-    so memory stays at about ``chunk × T × nsensordata × 8`` bytes. The nominal parameters run
-    first, as the reference of the drop, slip and tracking criteria.
-
-    Args:
-        traj: the trajectory.
-        twin: the twin.
-        samples: parameter values, (n, k) in the box's column order.
-        criteria: the outcome tolerances.
-        chunk: most simulations per batch call.
-        nthread: threads (0: all CPUs).
-
-    Returns:
-        The :class:`BruteForce` result.
-    """
-    t_start = time.perf_counter()
-    box = twin.scenario.box
-    samples = box.check_samples(samples)
-    if samples.shape[0] == 0:
-        raise ParameterError(f"samples: expected at least one row of {box.names}, got none")
-    chunk = _check_int("chunk", chunk, 1)
-    nthread = _check_int("nthread", nthread, 0)
-    probe = _Probe(twin)
-    controls = prepare_controls(twin, traj)
-    state0 = initial_state(twin, traj)
-    dt = float(twin.model.opt.timestep)
-    everything = np.vstack([box.nominal[None, :], samples])
-    reference = None
-    parts, diverged = [], []
-    for _, out, mu in batched_rollouts(twin, state0, controls, everything, model=probe.model,
-                                       chunk=chunk, nthread=nthread):
-        frames = _Frames.read(twin, probe, out["sensordata"], mu)
-        if reference is None:
-            reference = frames.row(0)
-        parts.append(_classify_frames(frames, reference, controls, probe, dt, criteria,
-                                      out["diverged"], out["diverged_step"]))
-        diverged.append(out["diverged"])
-    result = Classification.concatenate(parts)
-    keep = slice(1, None)
-    classification = Classification(
-        outcome=result.outcome[1:], dt=dt, criteria=criteria,
-        **{f.name: getattr(result, f.name)[keep] for f in dataclasses.fields(Classification)
-           if f.name not in ("outcome", "dt", "criteria")})
-    return BruteForce(samples=samples, parameter_names=box.names, classification=classification,
-                      diverged=np.concatenate(diverged)[keep],
-                      nominal_completed=bool(result.completed[0]), n_steps=controls.shape[0],
-                      dt=dt, seconds=time.perf_counter() - t_start)
-
-
-@dataclasses.dataclass(frozen=True)
-class _Frames:
-    """What the classification reads from a chunk of full rollouts (leading (c, T))."""
-
-    stage: np.ndarray
-    contact_gripper: np.ndarray
-    contact_support: np.ndarray
-    actuator_norm: np.ndarray
-    position: np.ndarray
-    q: np.ndarray
-
-    @classmethod
-    def read(cls, twin: Twin, probe: _Probe, sensordata: np.ndarray,
-             mu: np.ndarray) -> _Frames:
-        sig = twin.signals(sensordata[..., :twin.nsensordata], mu=mu[:, None])
-        c, t = sensordata.shape[:2]
-        return cls(stage=sig.stage, contact_gripper=sig.contact_gripper,
-                   contact_support=sig.contact_support,
-                   actuator_norm=sig.actuator_norm[..., probe.rotational],
-                   position=sensordata[..., probe.pos].reshape(c, t, -1, 3),
-                   q=sensordata[..., probe.q])
-
-    def row(self, i: int) -> _Frames:
-        return _Frames(**{f.name: getattr(self, f.name)[i] for f in dataclasses.fields(self)})
-
-    @property
-    def held(self) -> np.ndarray:
-        return self.contact_gripper & ~self.contact_support[..., None]
-
-
-def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, probe: _Probe,
-                     dt: float, criteria: OutcomeCriteria, diverged: np.ndarray,
-                     diverged_step: np.ndarray) -> Classification:
-    target = controls[:, probe.rotational]
-    excess = np.abs(frames.q - target[None]) - np.abs(reference.q - target)[None]
-    nominal_held = reference.held
-    alone = nominal_held & (nominal_held.sum(axis=-1, keepdims=True) == 1)
-    slip = grip_slip(frames.position, reference.position, frames.held, nominal_held,
-                     counted=alone, projectors=probe.projectors)
-    nominal_carried = carried_flags(reference.contact_support, reference.contact_gripper)
-    return classify(dt=dt, stage=frames.stage, contact_gripper=frames.contact_gripper,
-                    contact_support=frames.contact_support, nominal_carried=nominal_carried,
-                    actuator_norm=frames.actuator_norm, tracking_excess=excess, slip=slip,
-                    diverged=diverged, diverged_step=diverged_step, criteria=criteria)
+_CRITERIA = OutcomeCriteria()
 
 
 # --------------------------------------------------------------------------
@@ -729,12 +161,12 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     """The audit's sparse prediction for parameter samples (the method under test).
 
     Runs what :func:`critmoment.analysis.analyze` runs to decide which samples fail: the
-    frequent rollout, :func:`critmoment.analysis.detect_moments` with the evaluator's horizon
-    (the first ``max_moments`` of its ranked candidates), and one sparse evaluation per moment
-    and sample. A
-    sample fails where its cost exceeds the scenario's threshold (or diverges) at any
-    moment, or, with ``require_task``, everywhere when the nominal rollout does not complete
-    the task.
+    frequent rollout, :func:`critmoment.analysis.audit_moments` with the evaluator's horizon
+    (the first ``max_moments`` of its ranked candidates), one sparse evaluation per moment
+    and sample, and the audit's own decision path, :func:`critmoment.verdict.samples_to_rerun`
+    (the samples decided by their own full rollout) and
+    :func:`critmoment.verdict.failing_samples` (which samples fail). There is no second
+    copy of the decision here: validation measures the method itself.
 
     Args:
         traj: the trajectory.
@@ -765,10 +197,11 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     if max_moments is None:
         max_moments = _AUDIT.max_moments
     max_moments = _check_int("max_moments", max_moments, 1)
-    if verify is not None and (isinstance(verify, bool) or not isinstance(verify, numbers.Real)
-                               or not 0 < verify <= 1):
-        raise ParameterError(f"verify: expected a fraction of the threshold in (0, 1] or None, "
-                             f"got {verify!r}")
+    chunk = _check_int("chunk", chunk, 1)
+    # the audit's own decision options (AnalyzeOptions validates them as analyze does)
+    audit = dataclasses.replace(_AUDIT, verify=verify, verify_unlifted=verify_unlifted,
+                                require_task=require_task)
+    dopt = decision_options(audit, twin.scenario.cost.threshold)
     samples = twin.scenario.box.check_samples(samples)
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
@@ -789,74 +222,36 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     extra = np.setdiff1d(extra, steps)
     every = np.concatenate([steps, extra])
     n = samples.shape[0]
+    res = None
     if every.size:
         # as the audit: each sample stops at its first failure (the same samples fail); the
         # envelope study compares moments with envelope steps, so it evaluates everything
         res = evaluator.evaluate(every, samples, first_failure=extra.size == 0)
         cost_all = res.worst_cost()
         cost_moments = res.worst_cost(slice(0, steps.size)) if steps.size else np.zeros(n)
-        failed = res.failed_any
-        unlifted = res.failed_unlifted_only
     else:
         cost_all = cost_moments = np.zeros(n)
-        failed = unlifted = np.zeros(n, dtype=bool)
     t3 = time.perf_counter()
     timings["sparse evaluation"] = t3 - t2
-    failed = np.asarray(failed, dtype=bool).copy()
     nominal_completed = rec.completed
-    if require_task and not nominal_completed:
-        failed[:] = True
-    verified = np.zeros(n, dtype=bool)
+    # the audit's decision path (critmoment.verdict): which samples its own rollouts decide,
+    # then which fail
+    near, unlifted = samples_to_rerun(res, dopt, nominal_completed=nominal_completed)
+    verified = near | unlifted
+    rerun_failed = np.zeros(n, dtype=bool)
+    if verified.any():
+        rerun_failed[verified] = brute_force(traj, twin=twin, samples=samples[verified],
+                                             chunk=chunk, nthread=nthread).failed
     if verify is not None:
-        failed, near, rerun_unlifted = rerun_in_full(
-            traj, twin=twin, samples=samples, failed=failed, cost=cost_all,
-            unlifted=unlifted if verify_unlifted and nominal_completed else None,
-            verify=verify, chunk=_check_int("chunk", chunk, 1), nthread=nthread)
-        verified = near | rerun_unlifted
         timings["verification"] = time.perf_counter() - t3
+    failed = failing_samples(SampleEvidence(sweep=res, nominal_completed=nominal_completed,
+                                            rerun=verified, rerun_failed=rerun_failed), dopt)
     return Prediction(samples=samples, moments=moments, steps=steps, envelope_steps=extra,
                       max_moments=max_moments, horizon=h, mode=evaluator.mode, cost=cost_all,
                       cost_moments=cost_moments,
                       failed=failed, verified=verified, nominal_completed=nominal_completed,
                       require_task=bool(require_task), seconds=time.perf_counter() - t0,
                       timings=timings)
-
-
-def rerun_in_full(traj: Trajectory, *, twin: Twin, samples: np.ndarray, failed: np.ndarray,
-                  cost: np.ndarray, unlifted: np.ndarray | None, verify: float,
-                  chunk: int = 16, nthread: int = 0
-                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The audit's verification: the samples sparse evaluation cannot decide, decided by the
-    real outcome of their own full rollout (:func:`brute_force`).
-
-    Those are the samples that pass with a cost at or above ``verify × threshold`` (near the
-    threshold, where a failure between the moments can hide) and the ``unlifted`` ones (they
-    fail only where the object is squeezed off its support without a lift,
-    ``SparseResult.failed_unlifted_only``).
-
-    Args:
-        traj: the trajectory.
-        twin: the twin.
-        samples: parameter values, (n, k).
-        failed: the sparse prediction, (n,) bool.
-        cost: each sample's highest sparse cost, (n,) (``SparseResult.worst_cost``).
-        unlifted: the samples to re-run as unlifted, (n,) bool, or None for none.
-        verify: the fraction of the threshold from which passing samples are re-run.
-        chunk: most full rollouts per batch call.
-        nthread: threads (0: all CPUs).
-
-    Returns:
-        The prediction with the re-run samples' outcomes, and which samples were re-run as
-        near the threshold and as unlifted, each (n,) bool.
-    """
-    near = ~failed & (cost >= verify * twin.scenario.cost.threshold)
-    unlifted = np.zeros_like(near) if unlifted is None else np.asarray(unlifted, dtype=bool)
-    rerun = near | unlifted
-    failed = np.array(failed, dtype=bool)
-    if rerun.any():
-        failed[rerun] = brute_force(traj, twin=twin, samples=samples[rerun], chunk=chunk,
-                                    nthread=nthread).failed
-    return failed, near, unlifted
 
 
 # --------------------------------------------------------------------------
@@ -992,6 +387,13 @@ class ValidationResult:
         return c["false_safe"] / failures if failures else None
 
     @property
+    def vacuous(self) -> bool:
+        """No sample really succeeds, or none really fails: the false-safe rate (and the
+        agreement) then say nothing about the method's ability to tell the two apart."""
+        real = np.asarray(self.real_failed, dtype=bool)
+        return bool(real.all() or not real.any())
+
+    @property
     def agreement(self) -> float:
         """(true_safe + true_unsafe) / n."""
         c = self.confusion
@@ -1030,6 +432,7 @@ class ValidationResult:
             "criteria": dataclasses.asdict(self.criteria),
             "confusion": self.confusion,
             "false_safe_rate": self.false_safe_rate,
+            "vacuous": self.vacuous,
             "agreement": self.agreement,
             "outcomes": self.outcome_counts(),
             "missed": [m.to_json() for m in self.missed],
@@ -1066,7 +469,10 @@ class ValidationResult:
             f"confusion: true safe {c['true_safe']}, false safe {c['false_safe']}, true unsafe "
             f"{c['true_unsafe']}, false unsafe {c['false_unsafe']}",
             f"false-safe rate {'n/a (no real failure)' if fsr is None else f'{fsr:.3f}'}, "
-            f"agreement {self.agreement:.3f}",
+            f"agreement {self.agreement:.3f}"
+            + (f"; VACUOUS: no real {'failure' if fsr is None else 'success'} among the "
+               f"samples, the false-safe rate says nothing about the method"
+               if self.vacuous else ""),
             f"time: sparse {self.sparse_seconds:.2f} s, brute force "
             f"{self.brute_force_seconds:.2f} s (ratio {self.compute_ratio:.3g})",
         ]
@@ -1133,7 +539,7 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
              mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int | None = None,
              envelope: float | None = None, verify: float | None = _AUDIT.verify,
              verify_unlifted: bool = _AUDIT.verify_unlifted,
-             require_task: bool = True, criteria: OutcomeCriteria = OutcomeCriteria(),
+             require_task: bool = True, criteria: OutcomeCriteria = _CRITERIA,
              chunk: int = 16, nthread: int = 0) -> ValidationResult:
     """Check the audit's sparse verdicts against brute-force full rollouts.
 
