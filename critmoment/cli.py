@@ -222,7 +222,8 @@ def cmd_validate(args) -> int:
         payload = result.to_json()
         if out is not None:
             (out / "validation.json").write_text(_dump(payload))
-    code = EXIT_OK if result.confusion["false_safe"] == 0 else EXIT_UNSAFE
+    # a vacuous validation (no real success or no real failure) proves nothing: exit 1
+    code = EXIT_OK if result.confusion["false_safe"] == 0 and not result.vacuous else EXIT_UNSAFE
     _Stdout.emit(_dump(payload) if args.json else result.summary_text())
     return code
 
