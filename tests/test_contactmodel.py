@@ -1,0 +1,131 @@
+"""Tests of critmoment.contactmodel: a box pinched between two force-limited pads."""
+
+from __future__ import annotations
+
+import warnings
+
+import mujoco
+import numpy as np
+import pytest
+
+from critmoment import contactmodel as cm
+from critmoment.exceptions import ParameterError
+
+
+def _pinch_xml(cone: str, impratio: float, noslip: int = 0, solref: str = "0.02 1") -> str:
+    """Two pads on slide joints, each pressed on a 4 cm box by a 10 N motor, under gravity;
+    nothing else touches the box."""
+    return f"""
+<mujoco model="pinch">
+  <option timestep="0.002" gravity="0 0 -9.81" cone="{cone}" impratio="{impratio}"
+          noslip_iterations="{noslip}"/>
+  <worldbody>
+    <body name="hand" pos="0 0 0.3">
+      <body name="left_finger" pos="-0.03 0 0">
+        <joint name="left_slide" type="slide" axis="1 0 0" range="-0.02 0.02"/>
+        <geom name="left_pad" type="box" size="0.01 0.02 0.02" mass="0.05" solref="{solref}"/>
+      </body>
+      <body name="right_finger" pos="0.03 0 0">
+        <joint name="right_slide" type="slide" axis="-1 0 0" range="-0.02 0.02"/>
+        <geom name="right_pad" type="box" size="0.01 0.02 0.02" mass="0.05" solref="{solref}"/>
+      </body>
+    </body>
+    <body name="box" pos="0 0 0.3">
+      <freejoint/>
+      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.05" solref="{solref}"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <motor name="left" joint="left_slide"/>
+    <motor name="right" joint="right_slide"/>
+  </actuator>
+</mujoco>"""
+
+
+def _held(xml: str) -> tuple[mujoco.MjModel, mujoco.MjData]:
+    model = mujoco.MjModel.from_xml_string(xml)
+    data = mujoco.MjData(model)
+    data.ctrl[:] = 10.0
+    for _ in range(50):  # let the pads close on the box
+        mujoco.mj_step(model, data)
+    return model, data
+
+
+def _probe(xml: str, **options) -> cm.ContactModelReport:
+    model, data = _held(xml)
+    # slide axes are x: squeezing is not creep
+    projector = np.diag([0.0, 1.0, 1.0])
+    return cm.probe_contact_model(
+        model, data, object_body="box", object_geom="box", pad_geoms=["left_pad", "right_pad"],
+        anchor_body="hand", carry_time=2.0, projector=projector, **options)
+
+
+def test_soft_contacts_creep_and_warn_hard_ones_do_not():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", cm.ContactModelWarning)
+        hard = _probe(_pinch_xml("elliptic", 10), mass=0.3)
+    with pytest.warns(cm.ContactModelWarning, match=r"creeps .* mm/s"):
+        soft = _probe(_pinch_xml("pyramidal", 1), mass=0.3)
+    # 20 N of squeeze at μ = 1 holds 0.3 kg with a force ratio of 6.8, yet the soft model
+    # lets it creep; the hard one barely moves
+    assert soft.creep_rate > 10 * hard.creep_rate
+    assert soft.creep_rate * 2.0 > cm.DROP_TOLERANCE > hard.creep_rate * 2.0
+    assert soft.soft and not hard.soft
+    assert hard.creep_horizon == 0 and 1 < soft.creep_horizon <= cm.MAX_CREEP_HORIZON
+    # sized so that the ground truth's 1 cm over the carry is 5 mm over the horizon (1 s),
+    # at most MAX_CREEP_HORIZON steps
+    assert soft.creep_horizon == min(cm.MAX_CREEP_HORIZON, round(2.0 * 0.005 / 0.01 / 0.002))
+    codes = {f.code for f in soft.findings}
+    assert {"pyramidal-cone", "low-impratio", "creep"} <= codes
+    assert "creep" not in {f.code for f in hard.findings}
+    assert "mm/s" in soft.summary() and "creep_horizon" in soft.summary()
+
+
+def test_noslip_removes_the_creep():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", cm.ContactModelWarning)
+        report = _probe(_pinch_xml("pyramidal", 1, noslip=10), mass=0.3)
+    assert report.creep_rate < 1e-4 and not report.soft
+    assert "noslip" in {f.code for f in report.findings}
+
+
+def test_creep_grows_with_mass_and_the_default_probe_mass_is_the_fos_2_mass():
+    light = _probe(_pinch_xml("pyramidal", 1), mass=0.1, warn=False)
+    heavy = _probe(_pinch_xml("pyramidal", 1), mass=0.5, warn=False)
+    assert heavy.creep_rate > 2 * light.creep_rate
+    auto = _probe(_pinch_xml("pyramidal", 1), warn=False)
+    # ΣFn ≈ 20 N, μ = 1: FOS 2 at 20 / (2 g) ≈ 1.02 kg
+    assert auto.probe_mass == pytest.approx(20.0 / (2 * 9.81), rel=0.05)
+    capped = _probe(_pinch_xml("pyramidal", 1), warn=False, max_mass=0.4)
+    assert capped.probe_mass == pytest.approx(0.4)
+
+
+def test_inspection_reports_soft_solref_and_pairs():
+    model = mujoco.MjModel.from_xml_string(_pinch_xml("elliptic", 10, solref="0.05 1"))
+    report = cm.inspect_contact_model(model, object_geom="box", pad_geoms=["left_pad",
+                                                                          "right_pad"])
+    assert report.cone == "elliptic" and report.impratio == 10
+    np.testing.assert_allclose(report.solref, [[0.05, 1.0], [0.05, 1.0]])
+    assert report.solimp.shape == (2, 5)
+    assert "soft-solref" in {f.code for f in report.findings}
+    assert not report.soft and np.isnan(report.creep_rate)
+    with pytest.raises(ParameterError, match="pad_geoms"):
+        cm.inspect_contact_model(model, object_geom="box", pad_geoms=[])
+
+
+def test_bad_probe_options_raise():
+    model, data = _held(_pinch_xml("elliptic", 10))
+    with pytest.raises(ParameterError, match="carry_time"):
+        cm.probe_contact_model(model, data, object_body="box", object_geom="box",
+                               pad_geoms=["left_pad"], anchor_body="hand", carry_time=0.0)
+    with pytest.raises(ParameterError, match="steps"):
+        cm.measure_creep(model, data, object_body="box", anchor_body="hand", steps=1)
+
+
+def test_bundled_demo_is_hard(twin, demo_recording):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", cm.ContactModelWarning)
+        report = cm.check_contact_model(twin, demo_recording)
+    assert report.cone == "elliptic" and report.impratio == 10
+    assert np.isfinite(report.creep_rate) and not report.soft and report.creep_horizon == 0
+    assert report.carry_time > 0.5 and 0 < report.probe_mass <= 10.0
