@@ -370,7 +370,10 @@ def test_a_3kg_cube_is_not_placed(nominal_runs, model):
     traj, _ = nominal_runs[0]
     out = simulate(traj, model, mass=3.0)
     assert placement_error(out) > 0.1
-    assert longest_saturation(out) <= 0.05  # the arm carries 3 kg: the grip is what fails
+    # the grip is what fails: with friction 2 (outside the box) the arm carries 3 kg
+    carried = simulate(traj, model, mass=3.0, friction=2.0)
+    assert placement_error(carried) < 0.03
+    assert np.all(np.abs(carried["force"][:, :7]).max(axis=0) < 0.8 * carried["limit"][:7])
 
 
 def test_options_are_validated():
