@@ -437,13 +437,22 @@ def _blocking_contact(model: mujoco.MjModel, states: np.ndarray, start: float,
     """The contact that holds ``joint`` back over a stretch of the run, or "".
 
     The stretch's states are replayed (positions and collisions only) at up to ``probes``
-    steps; a contact between a body the joint carries and one it does not, present at at
-    least half of them, is named as "geom1–geom2" (its most frequent pair).
+    steps. A contact between a body the joint carries and one it does not is an obstacle,
+    unless the other body is a payload: a free body (the object) whose every contact is
+    with the joint's bodies, which the joint carries like its own links. An obstacle
+    present at at least half of the probed steps is named "geom1–geom2" (its most frequent
+    pair): a gripper closed on the object is held by it, an arm carrying the object is not.
     """
     dt = float(model.opt.timestep)
     first, count = int(round(start / dt)), max(1, int(round(duration / dt)))
     steps = np.unique(np.linspace(first, first + count - 1, min(count, probes)).astype(int))
     carried = _subtree(model, int(model.jnt_bodyid[joint]))
+    root = model.body_rootid
+    free_root = np.zeros(model.nbody, dtype=bool)
+    for b in range(1, model.nbody):
+        jnt = model.body_jntadr[b]
+        free_root[b] = (model.body_jntnum[b] > 0
+                        and model.jnt_type[jnt] == mujoco.mjtJoint.mjJNT_FREE)
     data = mujoco.MjData(model)
     pairs: dict[tuple[int, int], int] = {}
     hits = 0
@@ -453,7 +462,19 @@ def _blocking_contact(model: mujoco.MjModel, states: np.ndarray, start: float,
         con = data.contact
         g1, g2 = np.asarray(con.geom1)[:data.ncon], np.asarray(con.geom2)[:data.ncon]
         touching = np.asarray(con.dist)[:data.ncon] <= 0
-        across = touching & (carried[model.geom_bodyid[g1]] != carried[model.geom_bodyid[g2]])
+        b1, b2 = model.geom_bodyid[g1], model.geom_bodyid[g2]
+        g1, g2, b1, b2 = g1[touching], g2[touching], b1[touching], b2[touching]
+        across = carried[b1] != carried[b2]
+        outside = np.where(carried[b1], b2, b1)
+        for i in np.flatnonzero(across):
+            r = root[outside[i]]
+            if free_root[r]:
+                # a free body touched only by the joint's bodies is its payload
+                mine = root[b1] == r
+                theirs = root[b2] == r
+                partners = np.concatenate([b2[mine], b1[theirs]])
+                if carried[partners].all():
+                    across[i] = False
         hits += bool(across.any())
         for a, b in zip(g1[across], g2[across], strict=True):
             key = (int(min(a, b)), int(max(a, b)))

@@ -199,6 +199,17 @@ def test_bundled_demo_is_feasible(twin, demo_recording, demo_traj):
     assert {"max_lag", "lag_duration", "saturation_duration"} <= set(doc["joints"][0])
 
 
+def test_a_carried_object_is_payload_not_an_obstacle(twin, demo_recording):
+    # without the delay allowance the left wrist_rotate lags 0.11 rad behind its 3 rad/s
+    # swing while the left gripper carries the cube: the cube rides with the wrist (touched
+    # only by its fingers), so the lag is the twin's, not a contact's
+    late = FeasibilityOptions(delay=0.0)
+    with pytest.raises(InfeasibleTwinError, match="joint 'left/wrist_rotate'.*lags") as exc:
+        check_feasibility(demo_recording, twin, options=late)
+    entry = exc.value.report.joint("left/wrist_rotate")
+    assert entry.blocked_by == "" and 0.1 < entry.lag_in_run < 0.13
+
+
 # -- (d) a nominal run that never touches the object --------------------------------------------
 def test_untouched_object_gives_the_fit_hint(twin):
     with warnings.catch_warnings():
