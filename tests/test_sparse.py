@@ -570,3 +570,90 @@ def test_unlifted_failures_are_marked_and_do_not_stop_a_sample(twin, scenario):
     np.testing.assert_array_equal(ff.failed_unlifted_only, full.failed_unlifted_only)
     # a sample whose only failures are unlifted ones is evaluated at every moment
     assert ff.evaluated[:, ff.failed_unlifted_only].all()
+
+
+# --------------------------------------------------------------------------
+# the decision: persistence of contact excursions, measured slip, creep horizon
+# --------------------------------------------------------------------------
+
+
+def test_without_persistence_and_slip_the_decision_is_the_cost(scenario, twin, demo_recording):
+    steps = [_lift_step(demo_recording), _handover_step(demo_recording)]
+    samples = sparse.sweep_samples(scenario.box, n=64, seed=5)
+    res = sparse.evaluate(demo_recording, twin, steps, samples, horizon=5)
+    engine = SparseEvaluator(demo_recording, twin, horizon=5, persistence=0.0,
+                             slip_tolerance=math.inf)
+    plain = engine.evaluate(steps, samples)
+    expected = (plain.cost > scenario.cost.threshold) | plain.diverged
+    np.testing.assert_array_equal(plain.failed, expected)
+    assert 0 < expected.sum() < expected.size
+    # the values do not depend on the decision
+    np.testing.assert_array_equal(plain.cost, res.cost)
+    np.testing.assert_array_equal(plain.fos_grasp, res.fos_grasp)
+    # with persistence a failure is a subset: motor at once, contact once it lasts
+    assert not (res.failed & ~plain.failed & (res.failure != sparse.Failure.SLIP)).any()
+    contact = res.failure == sparse.Failure.CONTACT
+    assert (res.excursion[contact] >= res.settings.persistence - 1e-12).all()
+    brief = (plain.failure == sparse.Failure.CONTACT) & (res.failure == sparse.Failure.PASS)
+    assert (res.excursion[brief] < res.settings.persistence).all()
+
+
+def test_nominal_parameters_do_not_slip(scenario, twin, demo_recording):
+    steps = [_lift_step(demo_recording), _handover_step(demo_recording) - 250]
+    res = sparse.evaluate(demo_recording, twin, steps, scenario.box.nominal[None], horizon=20)
+    # the restored run is the nominal run, bit for bit: no displacement in the grip
+    np.testing.assert_array_equal(res.slip, 0.0)
+    heavy = sparse.evaluate(demo_recording, twin, steps, _mass_samples(scenario, [1.0]),
+                            horizon=20)
+    # the picker holds the cube alone at lift-off: the heavier cube moves in its grip
+    assert heavy.slip[0, 0] > 1e-6
+
+
+def test_settings_come_from_the_arguments_else_the_scenario_else_the_defaults(twin,
+                                                                                demo_recording):
+    engine = SparseEvaluator(demo_recording, twin)
+    table = getattr(twin.scenario, "sparse", None)
+    assert engine.settings.persistence == getattr(table, "persistence",
+                                                  sparse.DEFAULT_PERSISTENCE)
+    assert engine.persistence_steps == max(1, round(engine.settings.persistence / 0.002))
+    mine = SparseEvaluator(demo_recording, twin, persistence=0.05, slip_tolerance=0.01,
+                           creep_horizon=30)
+    assert mine.settings == sparse.SparseSettings(0.05, 0.01, 30)
+    assert mine.persistence_steps == 25
+    with pytest.raises(ParameterError, match="persistence"):
+        sparse.SparseSettings(persistence=-1.0)
+    with pytest.raises(ParameterError, match="slip_tolerance"):
+        sparse.SparseSettings(slip_tolerance=0.0)
+    with pytest.raises(ParameterError, match="creep_horizon"):
+        sparse.SparseSettings(creep_horizon=-2)
+
+
+def test_creep_horizon_fails_a_creeping_grip_the_force_ratio_passes(tmp_path, scenario,
+                                                                      demo_traj):
+    """A soft contact model (pyramidal cone, impratio 1): a 0.6 kg cube held with a force
+    ratio of about 2 creeps; over the creep horizon its measured slip fails it."""
+    import shutil
+
+    from critmoment import contactmodel
+
+    folder = tmp_path / "soft"
+    shutil.copytree(scenario.path.parent, folder)
+    xml = (folder / "scene.xml").read_text()
+    assert 'cone="elliptic" impratio="10"' in xml
+    (folder / "scene.xml").write_text(xml.replace('cone="elliptic" impratio="10"',
+                                                  'cone="pyramidal" impratio="1"'))
+    soft = Twin(load_scenario(folder))
+    rec = rollout.rollout(demo_traj, twin=soft)
+    with pytest.warns(contactmodel.ContactModelWarning, match="creeps"):
+        report = contactmodel.check_contact_model(soft, rec)
+    assert report.soft and report.creep_horizon > soft.scenario.horizon
+    held = rec.signals.contact_gripper[:, 1] & ~rec.signals.contact_support
+    k = int(np.flatnonzero(held)[200])
+    samples = _mass_samples(soft.scenario, [0.05, 0.6])
+    one_step = sparse.evaluate(rec, soft, [k], samples)
+    creep = SparseEvaluator(rec, soft, creep_horizon=report.creep_horizon).evaluate([k],
+                                                                                   samples)
+    assert one_step.fos_grasp[0, 1] > 1.8  # the force ratio calls the grip safe
+    assert not one_step.failed.any()
+    assert creep.failure[0, 1] == sparse.Failure.SLIP and creep.slip[0, 1] > 0.005
+    assert creep.failure[0, 0] == sparse.Failure.PASS and creep.slip[0, 0] == 0.0
