@@ -24,7 +24,7 @@ import mujoco
 import numpy as np
 
 __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
-           "gripper_gap"]
+           "gripper_gap", "closing_ends", "moves_geoms"]
 
 
 class ActuatorKind(enum.Enum):
@@ -181,7 +181,7 @@ def _subtree_root(model: mujoco.MjModel, geom_ids: Sequence[int]) -> int:
 def gripper_gap(model: mujoco.MjModel, actuators: Sequence[int], ctrl: Sequence[float],
                 geom_ids: Sequence[int], *, keyframe: int | None = None,
                 seconds: float = 0.6) -> float:
-    """Largest distance between a gripper's geoms after driving it to ``ctrl`` [m].
+    """Mean distance between a gripper's geoms after driving it to ``ctrl`` [m].
 
     The gripper's own joints move under their actuators for ``seconds`` of simulated
     time; every other joint is held where the keyframe (or qpos0) puts it, gravity and
@@ -226,4 +226,66 @@ def gripper_gap(model: mujoco.MjModel, actuators: Sequence[int], ctrl: Sequence[
     mujoco.mj_kinematics(m, d)
     pts = d.geom_xpos[list(geom_ids)]
     diff = pts[:, None, :] - pts[None, :, :]
-    return float(np.sqrt((diff ** 2).sum(-1)).max())
+    # the mean over pairs: a palm far from the fingertips would dominate the largest one
+    n = len(geom_ids)
+    return float(np.sqrt((diff ** 2).sum(-1)).sum() / (n * (n - 1)))
+
+
+def _mid(model: mujoco.MjModel, i: int) -> float:
+    lo, hi = model.actuator_ctrlrange[i]
+    return float(0.5 * (lo + hi))
+
+
+def closing_ends(model: mujoco.MjModel, actuators: Sequence[int], geom_ids: Sequence[int], *,
+                 keyframe: int | None = None, tolerance: float = 1e-4
+                 ) -> tuple[list[float], list[float]]:
+    """The control that closes and the one that opens each of a gripper's actuators.
+
+    Each actuator is driven alone to either end of its ``ctrlrange`` (the others at mid
+    range); the end at which the gripper's geoms are closer together closes it. Two
+    fingers on mirrored slides (ALOHA: one closes at its low end, the other at its high
+    end) are each told apart this way.
+
+    Returns:
+        (closed, open) control values, one per actuator.
+
+    Raises:
+        ValueError: an actuator without a ctrlrange, or one that moves the geoms less
+            than ``tolerance`` [m] over its range.
+    """
+    closed, open_ = [], []
+    base = [_mid(model, i) for i in actuators]
+    for k, i in enumerate(actuators):
+        if not model.actuator_ctrllimited[i]:
+            raise ValueError(f"actuator {model.actuator(i).name!r} has no ctrlrange")
+        lo, hi = (float(v) for v in model.actuator_ctrlrange[i])
+        gaps = []
+        for end in (lo, hi):
+            ctrl = list(base)
+            ctrl[k] = end
+            gaps.append(gripper_gap(model, actuators, ctrl, geom_ids, keyframe=keyframe))
+        if abs(gaps[1] - gaps[0]) < tolerance:
+            raise ValueError(
+                f"actuator {model.actuator(i).name!r} moves the gripper's geoms "
+                f"{abs(gaps[1] - gaps[0]) * 1e3:.2f} mm over its control range {lo}..{hi}")
+        c, o = (lo, hi) if gaps[0] < gaps[1] else (hi, lo)
+        closed.append(c)
+        open_.append(o)
+    return closed, open_
+
+
+def moves_geoms(model: mujoco.MjModel, actuators: Sequence[int], geom_ids: Sequence[int], *,
+                tolerance: float = 1e-4) -> bool:
+    """Whether driving ``actuators`` over their control ranges moves the geoms apart."""
+    if not all(model.actuator_ctrllimited[i] for i in actuators):
+        return False
+    lo = [float(model.actuator_ctrlrange[i, 0]) for i in actuators]
+    hi = [float(model.actuator_ctrlrange[i, 1]) for i in actuators]
+    spread = [gripper_gap(model, actuators, c, geom_ids) for c in (lo, hi)]
+    per = []
+    for k, _i in enumerate(actuators):
+        ctrl_lo, ctrl_hi = list(hi), list(hi)
+        ctrl_lo[k] = lo[k]
+        per.append(abs(gripper_gap(model, actuators, ctrl_lo, geom_ids)
+                       - gripper_gap(model, actuators, ctrl_hi, geom_ids)))
+    return abs(spread[1] - spread[0]) > tolerance or max(per) > tolerance

@@ -369,21 +369,16 @@ def _gripper_ends(entry, acts, where, model, grippers, keyframe):
             raise ScenarioError(
                 f"{where}: a normalised channel on actuators without a ctrlrange needs "
                 "closed = ... and open = ... control values (or scales/offsets)")
-        lo = [float(model.actuator_ctrlrange[i, 0]) for i in ids]
-        hi = [float(model.actuator_ctrlrange[i, 1]) for i in ids]
         geoms = _channel_gripper_geoms(model, ids, grippers)
         if geoms is None:
             raise ScenarioError(
                 f"{where}: cannot tell which end of the control range closes the gripper "
                 "(no gripper's geoms move with it); give closed = ... and open = ...")
-        gap_lo = act_info.gripper_gap(model, ids, lo, geoms, keyframe=keyframe)
-        gap_hi = act_info.gripper_gap(model, ids, hi, geoms, keyframe=keyframe)
-        if abs(gap_hi - gap_lo) < 1e-4:
-            raise ScenarioError(
-                f"{where}: the gripper's geoms move {abs(gap_hi - gap_lo) * 1e3:.2f} mm over the "
-                f"control range {lo}..{hi}; cannot tell closed from open: give closed = ... "
-                "and open = ...")
-        closed, open_ = (lo, hi) if gap_lo < gap_hi else (hi, lo)
+        try:
+            closed, open_ = act_info.closing_ends(model, ids, geoms, keyframe=keyframe)
+        except ValueError as exc:
+            raise ScenarioError(f"{where}: cannot tell closed from open ({exc}); give "
+                                "closed = ... and open = ...") from None
     if any(c == o for c, o in zip(closed, open_, strict=True)):
         raise ScenarioError(f"{where}: expected closed != open, got {closed} and {open_}")
     return [o - c for c, o in zip(closed, open_, strict=True)], closed
@@ -393,12 +388,7 @@ def _channel_gripper_geoms(model, act_ids, grippers):
     """Geom ids of the gripper whose geoms move with actuators ``act_ids``, or None."""
     for g in grippers:
         ids = [model.geom(name).id for name in g.geoms]
-        if len(ids) < 2:
-            continue
-        lo = [float(model.actuator_ctrlrange[i, 0]) for i in act_ids]
-        hi = [float(model.actuator_ctrlrange[i, 1]) for i in act_ids]
-        if abs(act_info.gripper_gap(model, act_ids, lo, ids)
-               - act_info.gripper_gap(model, act_ids, hi, ids)) > 1e-4:
+        if len(ids) >= 2 and act_info.moves_geoms(model, act_ids, ids):
             return ids
     return None
 

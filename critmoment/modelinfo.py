@@ -1,0 +1,541 @@
+"""Read a model as it ships, and write a scenario for it.
+
+:func:`inspect_model` lists what a scenario needs from an MJCF without reading the XML:
+free bodies (candidate objects), actuators (type, target, control and force ranges),
+gripper candidates, sites, keyframes and the contact settings (cone, impratio, noslip).
+
+:func:`init_scenario` writes a complete, commented ``scenario.toml`` that loads and runs
+as written, and says what it guessed and what the user should check:
+
+* the object's collision geom, and the supports it rests on (after settling);
+* grippers: actuators on slides, tendons, or joints named like a gripper
+  (gripper/finger/jaw/claw/hand), grouped by the body that carries their fingers; each
+  gripper is given by that body (every collision geom of its subtree) and drives one
+  normalised channel whose closed/open controls are measured on the model;
+* one joint channel per remaining actuator, in actuator order (position-like actuators
+  only: a torque motor under a joint-position convention is refused at load);
+* force limits from the MJCF (``forcerange``/``actuatorfrcrange``) where present, and a
+  note for every actuator without one;
+* a default uncertainty box (object mass ×0.5–×20, friction 0.2–1.5) and cost.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+import re
+from collections.abc import Sequence
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from critmoment import actuators as act_info
+from critmoment.exceptions import ScenarioError
+from critmoment.scenario import GENERATED, load_scenario, prepare_spec
+from critmoment.task import TASK_KINDS
+
+__all__ = ["ModelInfo", "GripperGuess", "InitResult", "inspect_model", "init_scenario"]
+
+_GRIPPER_WORDS = re.compile(r"grip|finger|jaw|claw|hand|pad|split|fingers", re.IGNORECASE)
+
+
+@dataclasses.dataclass(frozen=True)
+class GripperGuess:
+    """A gripper found in a model.
+
+    Attributes:
+        name: a short name for the scenario.
+        body: the body whose subtree holds the gripper's fingers.
+        actuators: actuators that open and close it.
+        closed: control of each actuator that closes it.
+        open: control of each actuator that opens it.
+        geoms: collision geoms of the body's subtree.
+    """
+
+    name: str
+    body: str
+    actuators: tuple[str, ...]
+    closed: tuple[float, ...]
+    open: tuple[float, ...]
+    geoms: tuple[str, ...]
+
+
+@dataclasses.dataclass(frozen=True)
+class ModelInfo:
+    """What :func:`inspect_model` found (see the module docstring)."""
+
+    path: Path
+    timestep: float
+    cone: str
+    impratio: float
+    noslip_iterations: int
+    integrator: str
+    free_bodies: tuple[dict, ...]
+    actuators: tuple[act_info.ActuatorInfo, ...]
+    default_limits: tuple[float | None, ...]
+    grippers: tuple[GripperGuess, ...]
+    sites: tuple[str, ...]
+    keyframes: tuple[str, ...]
+    notes: tuple[str, ...]
+
+    def to_json(self) -> dict:
+        return {
+            "path": self.path.name, "timestep": self.timestep,
+            "contact": {"cone": self.cone, "impratio": self.impratio,
+                        "noslip_iterations": self.noslip_iterations},
+            "integrator": self.integrator, "free_bodies": list(self.free_bodies),
+            "actuators": [dict(a.to_json(), default_limit=lim)
+                          for a, lim in zip(self.actuators, self.default_limits, strict=True)],
+            "grippers": [dataclasses.asdict(g) for g in self.grippers],
+            "sites": list(self.sites), "keyframes": list(self.keyframes),
+            "notes": list(self.notes),
+        }
+
+    def text(self) -> str:
+        """A readable listing (``critmoment inspect``)."""
+        lines = [f"model {self.path.name}: timestep {self.timestep * 1e3:g} ms, integrator "
+                 f"{self.integrator}, cone {self.cone}, impratio {self.impratio:g}, noslip "
+                 f"iterations {self.noslip_iterations}"]
+        lines.append(f"free bodies ({len(self.free_bodies)}):")
+        for b in self.free_bodies:
+            pos = ", ".join(f"{v:.3f}" for v in b["pos"])
+            lines.append(f"  {b['name']}: mass {b['mass']:.4g} kg at ({pos}) m, collision geoms "
+                         f"{', '.join(b['geoms']) or '(none)'}")
+        lines.append(f"actuators ({len(self.actuators)}):")
+        for a, lim in zip(self.actuators, self.default_limits, strict=True):
+            ctrl = (f"ctrl {a.ctrlrange[0]:g}..{a.ctrlrange[1]:g}" if a.ctrlrange
+                    else "ctrl unlimited")
+            force = f"force limit {lim:g}" if lim is not None else "no force limit"
+            lines.append(f"  {a.name}: {a.kind.value} on {a.transmission} {a.target} "
+                         f"{('(' + a.joint_type + ')') if a.joint_type else ''}, {ctrl}, {force}")
+        lines.append(f"gripper candidates ({len(self.grippers)}):")
+        for g in self.grippers:
+            lines.append(f"  {g.name}: body {g.body}, actuators {', '.join(g.actuators)} "
+                         f"(closed {list(g.closed)}, open {list(g.open)}), {len(g.geoms)} "
+                         "collision geoms")
+        lines.append(f"keyframes: {', '.join(self.keyframes) or '(none)'}")
+        lines.append(f"sites: {', '.join(self.sites) or '(none)'}")
+        lines += [f"note: {n}" for n in self.notes]
+        return "\n".join(lines)
+
+
+def _subtree(model: mujoco.MjModel, root: int) -> np.ndarray:
+    inside = np.zeros(model.nbody, bool)
+    for b in range(model.nbody):
+        a = b
+        while a not in (0, root):
+            a = int(model.body_parentid[a])
+        inside[b] = a == root
+    return inside
+
+
+def _collision_geoms(model: mujoco.MjModel, bodies: np.ndarray) -> list[int]:
+    return [g for g in range(model.ngeom) if bodies[model.geom_bodyid[g]]
+            and (model.geom_contype[g] or model.geom_conaffinity[g])]
+
+
+def _moved_bodies(model: mujoco.MjModel, i: int) -> list[int]:
+    """Bodies whose joints actuator ``i`` drives (through its joint or tendon)."""
+    trn = int(model.actuator_trntype[i])
+    tid = int(model.actuator_trnid[i, 0])
+    if trn in (int(mujoco.mjtTrn.mjTRN_JOINT), int(mujoco.mjtTrn.mjTRN_JOINTINPARENT)):
+        return [int(model.jnt_bodyid[tid])]
+    if trn == int(mujoco.mjtTrn.mjTRN_TENDON):
+        adr, num = model.tendon_adr[tid], model.tendon_num[tid]
+        bodies = []
+        for w in range(adr, adr + num):
+            if model.wrap_type[w] == mujoco.mjtWrap.mjWRAP_JOINT:
+                bodies.append(int(model.jnt_bodyid[model.wrap_objid[w]]))
+        return bodies
+    return []
+
+
+def _is_gripper_actuator(model: mujoco.MjModel, info: act_info.ActuatorInfo) -> bool:
+    if info.transmission == "tendon":
+        return True
+    if info.joint_type == "slide":
+        return True
+    names = [info.name, info.target]
+    for b in _moved_bodies(model, info.index):
+        names.append(model.body(b).name)
+    return any(_GRIPPER_WORDS.search(n or "") for n in names)
+
+
+def _common_ancestor(model: mujoco.MjModel, bodies: Sequence[int]) -> int:
+    def chain(b):
+        out = [b]
+        while b != 0:
+            b = int(model.body_parentid[b])
+            out.append(b)
+        return out[::-1]
+
+    chains = [chain(b) for b in bodies]
+    root = 0
+    for level in zip(*chains, strict=False):
+        if all(b == level[0] for b in level):
+            root = level[0]
+        else:
+            break
+    return root
+
+
+def _short(name: str, taken: set[str]) -> str:
+    base = re.sub(r"[^A-Za-z0-9_]+", "_", name).strip("_") or "gripper"
+    out, k = base, 2
+    while out in taken:
+        out, k = f"{base}_{k}", k + 1
+    taken.add(out)
+    return out
+
+
+def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
+                   ) -> tuple[list[GripperGuess], list[str]]:
+    notes: list[str] = []
+    groups: dict[int, list[int]] = {}
+    for info in infos:
+        if not _is_gripper_actuator(model, info):
+            continue
+        moved = _moved_bodies(model, info.index)
+        if not moved:
+            continue
+        # the hand: the body that carries the moving fingers (parent of a lone finger)
+        hand = _common_ancestor(model, moved)
+        if len(moved) == 1:
+            hand = int(model.body_parentid[moved[0]])
+        groups.setdefault(hand, []).append(info.index)
+    guesses: list[GripperGuess] = []
+    taken: set[str] = set()
+    for hand, acts in groups.items():
+        geoms = _collision_geoms(model, _subtree(model, hand))
+        if len(geoms) < 2:
+            notes.append(f"actuators {[model.actuator(a).name for a in acts]} look like a "
+                         f"gripper but body {model.body(hand).name!r} has fewer than two "
+                         "collision geoms")
+            continue
+        try:
+            closed, open_ = act_info.closing_ends(model, acts, geoms, keyframe=keyframe)
+        except ValueError:
+            continue  # named like a gripper, but it does not open and close one
+        name = model.body(hand).name or f"body{hand}"
+        guesses.append(GripperGuess(
+            name=_short(name.split("/")[0] if "/" in name else name, taken), body=name,
+            actuators=tuple(model.actuator(a).name for a in acts),
+            closed=tuple(closed), open=tuple(open_),
+            geoms=tuple(model.geom(g).name for g in geoms)))
+    return guesses, notes
+
+
+def _compile(path: Path, **kwargs) -> mujoco.MjModel:
+    spec = prepare_spec(path, **kwargs)
+    try:
+        return spec.compile()
+    except Exception as exc:
+        raise ScenarioError(f"could not compile MJCF {path}: {exc}") from exc
+
+
+def inspect_model(path: str | Path) -> ModelInfo:
+    """What a scenario needs from the MJCF at ``path`` (see the module docstring)."""
+    path = Path(path)
+    model = _compile(path)
+    data = mujoco.MjData(model)
+    key = 0 if model.nkey else None
+    if key is not None:
+        mujoco.mj_resetDataKeyframe(model, data, key)
+    mujoco.mj_forward(model, data)
+    free = []
+    for j in range(model.njnt):
+        if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE:
+            b = int(model.jnt_bodyid[j])
+            geoms = _collision_geoms(model, _subtree(model, b))
+            free.append({"name": model.body(b).name, "mass": float(model.body_subtreemass[b]),
+                         "pos": [float(v) for v in data.xpos[b]],
+                         "geoms": [model.geom(g).name for g in geoms]})
+    infos = act_info.describe_all(model)
+    grippers, notes = _find_grippers(model, infos, key)
+    unnamed_geoms = sum(1 for i in range(model.ngeom)
+                        if model.geom(i).name.startswith(GENERATED))
+    if unnamed_geoms:
+        notes.append(f"{unnamed_geoms} of {model.ngeom} geoms are unnamed; critmoment names them "
+                     "critmoment:geom:<id> in its own copy (give grippers by body)")
+    cone = "elliptic" if model.opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC else "pyramidal"
+    if cone == "pyramidal" or model.opt.impratio < 2:
+        notes.append(f"soft friction model (cone {cone}, impratio {model.opt.impratio:g}): "
+                     "a held object can creep through the grip; the audit measures slip over "
+                     "its horizon")
+    return ModelInfo(
+        path=path, timestep=float(model.opt.timestep), cone=cone,
+        impratio=float(model.opt.impratio), noslip_iterations=int(model.opt.noslip_iterations),
+        integrator=mujoco.mjtIntegrator(model.opt.integrator).name.removeprefix("mjINT_").lower(),
+        free_bodies=tuple(free), actuators=infos,
+        default_limits=tuple(act_info.force_limit(model, i) for i in range(model.nu)),
+        grippers=tuple(grippers),
+        sites=tuple(model.site(i).name for i in range(model.nsite) if model.site(i).name),
+        keyframes=tuple(model.key(i).name or str(i) for i in range(model.nkey)),
+        notes=tuple(notes))
+
+
+@dataclasses.dataclass(frozen=True)
+class InitResult:
+    """What :func:`init_scenario` wrote and guessed.
+
+    Attributes:
+        text: the scenario TOML.
+        path: where it was written, or None.
+        guesses: what it guessed, one line each.
+        checks: what the user should check, one line each.
+    """
+
+    text: str
+    path: Path | None
+    guesses: tuple[str, ...]
+    checks: tuple[str, ...]
+
+
+def _toml_str(s: str) -> str:
+    return '"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def _num(x: float) -> str:
+    return repr(float(x)) if math.isfinite(x) else "inf"
+
+
+def _resting_supports(model: mujoco.MjModel, object_body: int, key: int | None) -> list[str]:
+    """Geoms the object touches once settled (robot held still)."""
+    data = mujoco.MjData(model)
+    if key is not None:
+        mujoco.mj_resetDataKeyframe(model, data, key)
+    adr = int(model.jnt_qposadr[model.body_jntadr[object_body]])
+    dof = int(model.jnt_dofadr[model.body_jntadr[object_body]])
+    q = data.qpos.copy()
+    keep_q = np.ones(model.nq, bool)
+    keep_q[adr:adr + 7] = False
+    keep_v = np.ones(model.nv, bool)
+    keep_v[dof:dof + 6] = False
+    for _ in range(int(1.0 / model.opt.timestep)):
+        mujoco.mj_step(model, data)
+        data.qpos[keep_q] = q[keep_q]
+        data.qvel[keep_v] = 0
+    mujoco.mj_forward(model, data)
+    found = []
+    for c in data.contact[:data.ncon]:
+        b1, b2 = model.geom_bodyid[c.geom1], model.geom_bodyid[c.geom2]
+        other = c.geom2 if b1 == object_body else c.geom1 if b2 == object_body else None
+        if other is not None and model.geom_bodyid[other] != object_body:
+            name = model.geom(other).name
+            if name not in found:
+                found.append(name)
+    return found
+
+
+def init_scenario(model_path: str | Path, *, object_body: str, task: str,
+                  supports: Sequence[str] = (), out: str | Path | None = None,
+                  goal: Sequence[float] | None = None, goal_site: str | None = None,
+                  picker: str | None = None, receiver: str | None = None,
+                  overwrite: bool = False) -> InitResult:
+    """Write a scenario for a model as it ships (see the module docstring).
+
+    Args:
+        model_path: the MJCF scene.
+        object_body: the free body to audit.
+        task: a task kind (:data:`critmoment.task.TASK_KINDS`).
+        supports: support geom names; default the geoms the object rests on.
+        out: where to write ``scenario.toml`` (its ``mjcf`` is relative to it), or None.
+        goal: for ``pick_place``, the goal position [m] (3,).
+        goal_site: for ``pick_place``, a site whose position is the goal.
+        picker: for ``handover``, the gripper that lifts first (default: nearest the object).
+        receiver: for ``handover``, the gripper that takes over.
+        overwrite: replace an existing ``out``.
+
+    Returns:
+        The text, and what was guessed and should be checked. The written scenario is
+        loaded once to prove that it loads as written.
+
+    Raises:
+        ScenarioError: unknown object or task kind, no gripper found, missing goal.
+    """
+    model_path = Path(model_path)
+    if task not in TASK_KINDS:
+        raise ScenarioError(f"--task: expected one of {', '.join(TASK_KINDS)}, got {task!r}")
+    info = inspect_model(model_path)
+    free = {b["name"]: b for b in info.free_bodies}
+    if object_body not in free:
+        raise ScenarioError(f"--object: expected a free body of the model, got {object_body!r}; "
+                            f"free bodies: {', '.join(free) or '(none)'}")
+    obj = free[object_body]
+    if not obj["geoms"]:
+        raise ScenarioError(f"--object: body {object_body!r} has no collision geom")
+    model = _compile(model_path, object_body=object_body, friction_geoms=tuple(obj["geoms"]))
+    bid = model.body(object_body).id
+    key = 0 if model.nkey else None
+    guesses, checks = [], []
+    geom_sizes = [(float(np.prod(model.geom_size[model.geom(g).id][:3] + 1e-9)), g)
+                  for g in obj["geoms"]]
+    object_geom = max(geom_sizes)[1]
+    if len(obj["geoms"]) > 1:
+        guesses.append(f"object geom {object_geom!r} (the largest of {len(obj['geoms'])})")
+    grippers = [g for g in info.grippers]
+    if not grippers:
+        raise ScenarioError(
+            "found no gripper: expected actuators on slide joints, tendons, or joints/bodies "
+            "named like grip/finger/jaw/claw/hand; write [grippers.*] by hand")
+    data = mujoco.MjData(model)
+    if key is not None:
+        mujoco.mj_resetDataKeyframe(model, data, key)
+    mujoco.mj_forward(model, data)
+    dist = {g.name: float(np.linalg.norm(data.xpos[model.body(g.body).id] - data.xpos[bid]))
+            for g in grippers}
+    for g in grippers:
+        guesses.append(f"gripper {g.name!r}: body {g.body!r} ({len(g.geoms)} collision geoms), "
+                       f"actuators {', '.join(g.actuators)}, closed at {list(g.closed)}, open "
+                       f"at {list(g.open)} (measured), {dist[g.name]:.3f} m from the object")
+    if not supports:
+        supports = _resting_supports(model, bid, key)
+        supports = [s for s in supports if not any(s in g.geoms for g in grippers)]
+        if not supports:
+            raise ScenarioError(f"the object {object_body!r} rests on nothing at the start; "
+                                "give --support GEOM")
+        guesses.append(f"supports {supports} (what the object rests on once settled)")
+    else:
+        names = {model.geom(i).name for i in range(model.ngeom)}
+        for s in supports:
+            if s not in names:
+                raise ScenarioError(f"--support: unknown geom {s!r}")
+    by_distance = sorted(grippers, key=lambda g: dist[g.name])
+    task_lines = [f"kind = {_toml_str(task)}"]
+    if task == "handover":
+        if len(grippers) < 2:
+            raise ScenarioError(f"--task handover needs two grippers, found {len(grippers)}")
+        picker = picker or by_distance[0].name
+        receiver = receiver or next(g.name for g in by_distance if g.name != picker)
+        guesses.append(f"picker {picker!r} (nearest the object), receiver {receiver!r}")
+        checks.append("the handover roles: picker lifts first, receiver holds at the end")
+        task_lines += [f"picker = {_toml_str(picker)}", f"receiver = {_toml_str(receiver)}"]
+    else:
+        holder = by_distance[0].name
+        if len(grippers) > 1:
+            guesses.append(f"the gripper {holder!r} carries the object (nearest it)")
+            checks.append(f"which gripper carries the object ([task] gripper = {holder!r})")
+        task_lines.append(f"gripper = {_toml_str(holder)}")
+        if task == "pick_place":
+            if (goal is None) == (goal_site is None):
+                raise ScenarioError("--task pick_place: expected --goal X Y Z or --goal-site NAME "
+                                    "(where the object must be placed)")
+            if goal is not None:
+                task_lines.append("goal = [" + ", ".join(_num(v) for v in goal) + "]   # [m]")
+            else:
+                task_lines.append(f"goal_site = {_toml_str(goal_site)}")
+            task_lines += ["tolerance = 0.03        # [m] distance of the object's centre from "
+                           "the goal", "rest_speed = 0.05       # [m/s] at the end"]
+        task_lines.append("lift_height = 0.02      # [m] least rise that counts as a lift")
+    # channels: each gripper's actuators in one normalised channel, every other actuator one
+    gripper_of = {a: g for g in grippers for a in g.actuators}
+    channels, done = [], set()
+    unusable = []
+    for a in info.actuators:
+        if a.name in done:
+            continue
+        if a.name in gripper_of:
+            g = gripper_of[a.name]
+            done.update(g.actuators)
+            channels.append(("gripper", g))
+        elif a.kind.tracks_position:
+            channels.append(("joint", a))
+        else:
+            unusable.append(a)
+    if unusable:
+        raise ScenarioError(
+            "actuators " + ", ".join(f"{a.name} ({a.kind.value})" for a in unusable)
+            + " are not position servos: a joint-position trajectory cannot drive them; "
+            "critmoment audits position-controlled robots")
+    lines = [f"# critmoment scenario for {model_path.name}, written by `critmoment init`.",
+             "# Every name is checked against the compiled model when this file is loaded.",
+             "", f"name = {_toml_str(model_path.stem)}",
+             f"description = {_toml_str(f'{task} of {object_body} ({model_path.name})')}", "",
+             "[model]"]
+    out_path = Path(out) if out is not None else None
+    base = out_path.parent if out_path is not None else Path.cwd()
+    rel = os.path.relpath(model_path.resolve(), base.resolve())
+    lines.append(f"mjcf = {_toml_str(rel)}")
+    if info.keyframes:
+        k0 = info.keyframes[0]
+        lines.append(f"keyframe = {_toml_str(k0) if not k0.isdigit() else k0}   # initial pose")
+        guesses.append(f"initial pose: keyframe {k0}")
+    lines += ["", "[object]", f"body = {_toml_str(object_body)}",
+              f"geom = {_toml_str(object_geom)}", ""]
+    for g in grippers:
+        lines += [f"[grippers.{g.name}]", f"body = {_toml_str(g.body)}   # every collision geom "
+                  "of its subtree", ""]
+    lines += ["[support]", "geoms = [" + ", ".join(_toml_str(s) for s in supports) + "]", ""]
+    lines += ["# One channel per actuator, in the model's actuator order; a gripper's actuators",
+              "# share one normalised channel: 0 closed, 1 open.", "[actions]",
+              'convention = "explicit"', "fps = 50.0", 'range_policy = "warn"', ""]
+    labels = []
+    for kind, item in channels:
+        lines.append("[[actions.channel]]")
+        if kind == "gripper":
+            lines += ["actuators = [" + ", ".join(_toml_str(a) for a in item.actuators) + "]",
+                      "normalised = true",
+                      "closed = [" + ", ".join(_num(v) for v in item.closed) + "]",
+                      "open = [" + ", ".join(_num(v) for v in item.open) + "]",
+                      f"label = {_toml_str(item.name + '/gripper')}"]
+            labels.append(f"{item.name}/gripper")
+        else:
+            lines.append(f"actuators = [{_toml_str(item.name)}]   # {item.kind.value} on "
+                         f"{item.transmission} {item.target}")
+            labels.append(item.name)
+        lines.append("")
+    guesses.append(f"action convention: {len(channels)} channels [{', '.join(labels)}]")
+    checks.append("the action layout matches your trajectories (width "
+                  f"{len(channels)}, joint targets in radians/metres, grippers 0 closed..1 open)")
+    lines += ["[task]"] + task_lines + [""]
+    lines.append("# Force limits [N·m or N] for the motor factor of safety. Defaults come from the")
+    lines.append("# MJCF's forcerange/actuatorfrcrange; give the datasheet's values here.")
+    lines.append("[limits]")
+    for a, lim in zip(info.actuators, info.default_limits, strict=True):
+        if lim is None:
+            lines.append(f"# {a.name} = ...   # no limit in the MJCF: unlimited until you set one")
+            checks.append(f"actuator {a.name!r} has no force limit in the MJCF: set [limits]")
+        else:
+            lines.append(f"# {a.name} = {lim:g}   (from the MJCF)")
+    mass = float(obj["mass"])
+    mu = float(model.geom_friction[model.geom(object_geom).id, 0])
+    mu_nom = min(max(mu, 0.2), 1.5)
+    lines += ["", "# The uncertainty box: what the policy cannot see.", "[uncertainty.mass]",
+              f"body = {_toml_str(object_body)}",
+              f"range = [{_num(0.5 * mass)}, {_num(20.0 * mass)}]   # [kg]",
+              f"nominal = {_num(mass)}", "", "[uncertainty.friction]",
+              f"geom = {_toml_str(object_geom)}",
+              "range = [0.2, 1.5]   # sliding friction of the object's contacts (critmoment "
+              "gives the object priority)", f"nominal = {_num(mu_nom)}", "",
+              "[cost]", "A = 1.0", "B = 1.0", "alpha = 0.7", "beta = 2.0", "threshold = 0.9", "",
+              "[sparse]", "horizon = 10   # physics steps per sparse evaluation", ""]
+    guesses.append(f"uncertainty box: mass {0.5 * mass:.4g}..{20 * mass:.4g} kg (nominal "
+                   f"{mass:.4g}), friction 0.2..1.5 (nominal {mu_nom:g})")
+    checks.append("the uncertainty box ranges")
+    if info.cone == "pyramidal" or info.impratio < 2:
+        checks.append(f"soft contacts (cone {info.cone}, impratio {info.impratio:g}): grips "
+                      "may creep")
+    text = "\n".join(lines)
+    if out_path is not None:
+        if out_path.exists() and not overwrite:
+            raise ScenarioError(f"--out: {out_path} exists; pass --force to replace it")
+        tmp = out_path.with_name(f".{out_path.name}.tmp")
+        try:
+            tmp.write_text(text, encoding="utf-8")
+            load_scenario(tmp)  # loads as written, or the error says why
+            os.replace(tmp, out_path)
+        finally:
+            if tmp.exists():
+                tmp.unlink()
+    else:
+        import tempfile
+
+        with tempfile.TemporaryDirectory() as d:
+            probe = Path(d) / "scenario.toml"
+            probe.write_text(text.replace(f"mjcf = {_toml_str(rel)}",
+                                          f"mjcf = {_toml_str(str(model_path.resolve()))}"),
+                             encoding="utf-8")
+            load_scenario(probe)
+    return InitResult(text=text, path=out_path, guesses=tuple(guesses), checks=tuple(checks))

@@ -1,0 +1,165 @@
+"""Tests for critmoment.actuators and critmoment.modelinfo (inspect, init) on inline models
+as they ship: named and unnamed elements, three gripper mechanisms, torque motors."""
+
+from __future__ import annotations
+
+import mujoco
+import numpy as np
+import pytest
+from inline_models import arm_xml
+
+from critmoment import actuators as act_info
+from critmoment.cli import main
+from critmoment.exceptions import ScenarioError
+from critmoment.modelinfo import init_scenario, inspect_model
+from critmoment.recording import rollout
+from critmoment.scenario import load_scenario
+from critmoment.trajectory import Trajectory
+from critmoment.twin import Twin
+
+GRIPPERS = ("slides", "tendon", "jaw")
+
+
+def _write(tmp_path, name="arm.xml", **kwargs):
+    path = tmp_path / name
+    path.write_text(arm_xml(**kwargs))
+    return path
+
+
+def test_actuator_kinds_are_read_off_the_model(tmp_path):
+    model = mujoco.MjModel.from_xml_path(str(_write(tmp_path, gripper="tendon")))
+    kinds = [a.kind for a in act_info.describe_all(model)]
+    assert kinds == [act_info.ActuatorKind.POSITION, act_info.ActuatorKind.POSITION,
+                     act_info.ActuatorKind.AFFINE]
+    fingers = act_info.describe(model, 2)
+    assert (fingers.transmission, fingers.target, fingers.ctrlrange) == ("tendon", "split",
+                                                                          (0.0, 255.0))
+    motor = mujoco.MjModel.from_xml_path(str(_write(tmp_path, "m.xml", motor=True)))
+    assert act_info.describe(motor, 0).kind is act_info.ActuatorKind.MOTOR
+    assert not act_info.ActuatorKind.MOTOR.tracks_position
+
+
+def test_force_limit_defaults_from_the_mjcf():
+    model = mujoco.MjModel.from_xml_string("""
+<mujoco><worldbody><body><joint name="a" type="hinge" actuatorfrcrange="-7 7"/>
+<geom size=".1" mass="1"/><body><joint name="b" type="hinge"/><geom size=".1" mass="1"/>
+</body></body></worldbody><actuator>
+<position joint="a" kp="10"/><position joint="b" kp="10" forcerange="-3 3"/>
+<position joint="b" kp="10"/></actuator></mujoco>""")
+    assert [act_info.force_limit(model, i) for i in range(3)] == [7.0, 3.0, None]
+
+
+@pytest.mark.parametrize("named", [True, False], ids=["named", "unnamed"])
+@pytest.mark.parametrize("gripper", GRIPPERS)
+def test_init_writes_a_scenario_that_loads_and_closes_the_gripper(tmp_path, gripper, named):
+    model_path = _write(tmp_path, gripper=gripper, named=named)
+    out = tmp_path / "scenario.toml"
+    result = init_scenario(model_path, object_body="cube", task="pick_place", goal_site="goal",
+                           out=out)
+    assert out.is_file() and result.path == out
+    assert any("gripper 'hand'" in g for g in result.guesses)
+    sc = load_scenario(out)
+    assert sc.task.kind == "pick_place" and sc.task.goal == pytest.approx((0.3, 0.2, 0.02))
+    assert sc.grippers[0].body == "hand" and len(sc.grippers[0].geoms) >= 3
+    assert sc.support_geoms == (("table",) if named else ("critmoment:geom:0",))
+    # limits from the MJCF forcerange, nothing silently infinite
+    assert all(np.isfinite(v) for v in sc.limits.values())
+    assert set(sc.limit_sources.values()) == {"mjcf"}
+    # the gripper channel really opens and closes the gripper (a 0..255 tendon included)
+    twin = Twin(sc)
+    pads = [twin.model.geom(g).id for g in sc.grippers[0].geoms]
+
+    def gap(opening):
+        actions = np.tile([0.0, 0.0, opening], (50, 1))
+        rec = rollout(Trajectory(actions=actions, fps=50.0, start=actions[0],
+                                 object_pose=[0.8, 0.0, 0.02, 1, 0, 0, 0]), twin=twin)
+        data = mujoco.MjData(twin.model)
+        twin.set_state(twin.model, data, rec.states[-1])
+        mujoco.mj_kinematics(twin.model, data)
+        pts = data.geom_xpos[pads]
+        return np.linalg.norm(pts[:, None] - pts[None], axis=-1).mean()
+
+    assert gap(0.0) < gap(1.0) - 0.005
+
+
+def test_init_handover_needs_two_grippers_and_pick_place_a_goal(tmp_path):
+    model_path = _write(tmp_path)
+    with pytest.raises(ScenarioError, match="handover needs two grippers, found 1"):
+        init_scenario(model_path, object_body="cube", task="handover")
+    with pytest.raises(ScenarioError, match="expected --goal X Y Z or --goal-site NAME"):
+        init_scenario(model_path, object_body="cube", task="pick_place")
+    with pytest.raises(ScenarioError, match=r"--object: expected a free body.*free bodies: cube"):
+        init_scenario(model_path, object_body="hand", task="pick_hold")
+    with pytest.raises(ScenarioError, match="--task: expected one of"):
+        init_scenario(model_path, object_body="cube", task="juggle")
+
+
+def test_init_refuses_torque_motors(tmp_path):
+    with pytest.raises(ScenarioError, match=r"shoulder_act \(motor\).*not position servos"):
+        init_scenario(_write(tmp_path, motor=True), object_body="cube", task="pick_hold")
+
+
+def test_a_joint_channel_on_a_torque_motor_is_an_error(tmp_path):
+    model_path = _write(tmp_path, motor=True)
+    (tmp_path / "scenario.toml").write_text(f"""
+[model]
+mjcf = "{model_path.name}"
+[object]
+body = "cube"
+[grippers.hand]
+body = "hand"
+[support]
+geoms = ["table"]
+[actions]
+convention = "explicit"
+[[actions.channel]]
+actuators = ["shoulder"]
+[task]
+kind = "pick_hold"
+[uncertainty.mass]
+body = "cube"
+range = [0.05, 1.0]
+nominal = 0.1
+""")
+    with pytest.raises(ScenarioError, match=r"actuator 'shoulder_act' is a motor actuator .*"
+                                            r"joint-position targets"):
+        load_scenario(tmp_path)
+
+
+def test_unlimited_actuators_are_stated(tmp_path):
+    text = arm_xml().replace(' forcerange="-60 60"', "")
+    (tmp_path / "arm.xml").write_text(text)
+    init_scenario(tmp_path / "arm.xml", object_body="cube", task="pick_hold",
+                  out=tmp_path / "scenario.toml")
+    sc = load_scenario(tmp_path)
+    assert sc.unlimited == ("shoulder_act",)
+    assert sc.limit_sources["shoulder_act"] == "none"
+
+
+def test_inspect_lists_what_a_scenario_needs(tmp_path):
+    info = inspect_model(_write(tmp_path, gripper="tendon", named=False,
+                                cone="pyramidal", impratio=1.0))
+    assert [b["name"] for b in info.free_bodies] == ["cube"]
+    assert info.free_bodies[0]["mass"] == pytest.approx(0.1)
+    assert info.cone == "pyramidal" and info.impratio == 1.0
+    assert [g.body for g in info.grippers] == ["hand"]
+    assert info.grippers[0].closed == (255.0,) and info.grippers[0].open == (0.0,)
+    assert any("unnamed" in n for n in info.notes) and any("creep" in n for n in info.notes)
+    doc = info.to_json()
+    assert doc["actuators"][2]["kind"] == "general-affine"
+    assert "split" in info.text()
+
+
+def test_cli_init_and_inspect(tmp_path, capsys):
+    model_path = _write(tmp_path, gripper="jaw")
+    assert main(["inspect", str(model_path)]) == 0
+    assert "gripper candidates (1)" in capsys.readouterr().out
+    out = tmp_path / "s.toml"
+    assert main(["init", str(model_path), "--object", "cube", "--task", "pick_place",
+                 "--goal", "0.3", "0.2", "0.02", "--out", str(out)]) == 0
+    printed = capsys.readouterr().out
+    assert "loads as written" in printed and "check:" in printed
+    assert main(["init", str(model_path), "--object", "cube", "--task", "pick_place",
+                 "--goal", "0.3", "0.2", "0.02", "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "exists; pass --force" in err[0]

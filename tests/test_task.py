@@ -1,0 +1,140 @@
+"""Tests for critmoment.task: stages and success rules of each task kind on known runs."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from critmoment.exceptions import ScenarioError
+from critmoment.task import (
+    TASK_KINDS,
+    HandoverTask,
+    PickHoldTask,
+    PickPlaceTask,
+    TaskEvidence,
+    task_from_table,
+)
+
+DT = 0.002
+
+
+def _run(z, touch, support, x=None, v_end=0.0):
+    """Evidence of one run from per-step height [m], touch (T, G) and support flags (T,)."""
+    t = len(z)
+    pos = np.zeros((t, 3))
+    pos[:, 2] = z
+    if x is not None:
+        pos[:, 0] = x
+    vel = np.zeros((t, 3))
+    vel[-1, 2] = v_end
+    return TaskEvidence(contact_gripper=np.asarray(touch, bool),
+                        contact_support=np.asarray(support, bool), object_pos=pos,
+                        object_vel=vel, dt=DT)
+
+
+def _pick_place_run(*, place_x=0.3, release=True, lift=0.1, v_end=0.0):
+    """Cube starts at x = 0 on the table, lifted by `lift`, carried to place_x, put down."""
+    n = 100
+    z = np.concatenate([np.full(n, 0.02), np.full(n, 0.02 + lift), np.full(n, 0.02),
+                        np.full(n, 0.02)])
+    x = np.concatenate([np.zeros(n), np.linspace(0, place_x, n), np.full(2 * n, place_x)])
+    touch = np.zeros((4 * n, 1), bool)
+    touch[50:3 * n if release else 4 * n] = True
+    support = np.ones(4 * n, bool)
+    support[n:2 * n] = False
+    return _run(z, touch, support, x=x, v_end=v_end)
+
+
+PLACE = PickPlaceTask(grippers=("hand",), gripper="hand", goal=(0.3, 0.0, 0.02),
+                      tolerance=0.03)
+
+
+def test_pick_place_success_needs_lift_goal_release_and_rest():
+    assert PLACE.success(_pick_place_run())
+    # a release onto the table at the goal is the success, not a drop
+    assert not PLACE.success(_pick_place_run(place_x=0.1))      # put down far from the goal
+    assert not PLACE.success(_pick_place_run(release=False))    # still gripped at the end
+    assert not PLACE.success(_pick_place_run(lift=0.005))       # pushed, never lifted
+    assert not PLACE.success(_pick_place_run(v_end=0.5))        # still moving (tipping over)
+
+
+def test_pick_place_stages():
+    ev = _pick_place_run()
+    stage = PLACE.stage(ev.contact_gripper, ev.contact_support, ev.object_pos)
+    assert stage[0] == 0 and stage[60] == 1 and stage[150] == 2
+    assert stage[250] == 3 and stage[-1] == 4
+    assert PLACE.stage_names[stage[-1]] == "released"
+
+
+def test_pick_place_success_is_batched_over_runs():
+    runs = [_pick_place_run(), _pick_place_run(place_x=0.1)]
+    ev = TaskEvidence(*(np.stack([getattr(r, f) for r in runs]) for f in
+                        ("contact_gripper", "contact_support", "object_pos", "object_vel")),
+                      dt=DT)
+    np.testing.assert_array_equal(PLACE.success(ev), [True, False])
+
+
+def test_contact_chatter_at_the_end_does_not_fail_a_hold():
+    task = PickHoldTask(grippers=("hand",), gripper="hand")
+    n = 200
+    z = np.concatenate([np.full(n, 0.02), np.full(n, 0.1)])
+    touch = np.ones((2 * n, 1), bool)
+    touch[-1] = False  # the last step's contact flag flickers off
+    support = np.concatenate([np.ones(n, bool), np.zeros(n, bool)])
+    assert task.success(_run(z, touch, support))
+    touch[-40:] = False  # 80 ms without contact: it was dropped
+    assert not task.success(_run(z, touch, support))
+
+
+def test_handover_success_is_the_receiver_holding_it_off_the_support():
+    task = HandoverTask(grippers=("left", "right"), picker="right", receiver="left")
+    n = 100
+    touch = np.zeros((3 * n, 2), bool)
+    touch[:2 * n, 1] = True      # the picker holds it
+    touch[n:, 0] = True          # the receiver takes it
+    support = np.zeros(3 * n, bool)
+    support[:10] = True
+    z = np.full(3 * n, 0.1)
+    ev = _run(z, touch, support)
+    assert task.success(ev)
+    stage = task.stage(ev.contact_gripper, ev.contact_support, ev.object_pos)
+    assert stage[5] == 1 and stage[50] == 2 and stage[-1] == 4
+    support[-50:] = True         # it ends on the table
+    assert not task.success(_run(z, touch, support))
+
+
+@pytest.mark.parametrize("table, message", [
+    ({}, r"\[task\]: missing kind; expected kind = one of handover, pick_place, pick_hold"),
+    ({"kind": "stack"}, r"\[task\] kind: expected one of handover, pick_place, pick_hold, got"),
+    ({"kind": "pick_place", "gripper": "hand"}, r"expected exactly one of goal"),
+    ({"kind": "pick_place", "goal": [0, 0]}, r"\[task\] goal: expected \[x, y, z\]"),
+    ({"kind": "pick_place", "goal": [0, 0, 0], "tolerence": 0.01},
+     r"unknown key 'tolerence' \(did you mean 'tolerance'\?\)"),
+    ({"kind": "pick_hold", "gripper": "claw"}, r"\[task\] gripper: expected one of"),
+    ({"kind": "handover", "picker": "hand", "receiver": "hand"},
+     r"two different grippers for picker and receiver"),
+    ({"kind": "pick_place", "goal": [0, 0, 0], "tolerance": -1.0},
+     r"\[task\] tolerance: expected a finite number > 0"),
+])
+def test_bad_task_tables(table, message):
+    with pytest.raises(ScenarioError, match=message):
+        task_from_table(table, ["hand"])
+
+
+def test_several_grippers_need_the_gripper_named():
+    with pytest.raises(ScenarioError, match=r"several grippers needs gripper = one of"):
+        task_from_table({"kind": "pick_hold"}, ["left", "right"])
+    assert task_from_table({"kind": "pick_hold"}, ["hand"]).gripper == "hand"
+
+
+def test_registry_and_json():
+    assert set(TASK_KINDS) == {"handover", "pick_place", "pick_hold"}
+    doc = PLACE.to_json()
+    assert doc["kind"] == "pick_place" and doc["goal"] == [0.3, 0.0, 0.02]
+    assert doc["stages"][-1] == "released" and "place" in doc["description"]
+
+
+def test_evidence_shapes_are_checked():
+    with pytest.raises(ScenarioError, match="task evidence: expected"):
+        TaskEvidence(contact_gripper=np.zeros((5, 1), bool), contact_support=np.zeros(4, bool),
+                     object_pos=np.zeros((5, 3)), object_vel=np.zeros((5, 3)), dt=DT)
