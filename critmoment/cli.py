@@ -88,13 +88,24 @@ def _staged(args, command: str, *, kind: str = "folder") -> Iterator[Path | None
 
 
 # -- inputs ------------------------------------------------------------------------
+def _scenario_for(given, traj):
+    """The scenario to load: ``--scenario``, else the bundled one the trajectory names in its
+    ``meta`` (``critmoment demo`` writes it), else the default bundled scenario."""
+    from critmoment.scenario import BUNDLED_SCENARIOS
+
+    if given is not None:
+        return given
+    named = traj.meta.get("scenario") if isinstance(traj.meta, dict) else None
+    return named if named in BUNDLED_SCENARIOS else None
+
+
 def _load(args):
     from critmoment.scenario import load_scenario
     from critmoment.trajectory import load_trajectory
     from critmoment.twin import Twin
 
-    scenario = load_scenario(args.scenario)
     traj = load_trajectory(args.trajectory, episode=args.episode, object_pose=args.object_pose)
+    scenario = load_scenario(_scenario_for(args.scenario, traj))
     twin = Twin(scenario)
     budget.check_rollout(traj, twin)
     return twin, traj
@@ -226,6 +237,34 @@ def cmd_validate(args) -> int:
     code = EXIT_OK if result.confusion["false_safe"] == 0 and not result.vacuous else EXIT_UNSAFE
     _Stdout.emit(_dump(payload) if args.json else result.summary_text())
     return code
+
+
+def cmd_inspect(args) -> int:
+    from critmoment.modelinfo import inspect_model
+
+    info = inspect_model(args.model)
+    _Stdout.emit(_dump(info.to_json()) if args.json else info.text())
+    return EXIT_OK
+
+
+def cmd_init(args) -> int:
+    from critmoment.modelinfo import init_scenario
+
+    result = init_scenario(args.model, object_body=args.object, task=args.task,
+                           supports=args.support or (), out=args.out, goal=args.goal,
+                           goal_site=args.goal_site, picker=args.picker,
+                           receiver=args.receiver, overwrite=args.force)
+    if args.out is None:
+        _Stdout.emit(result.text)
+    lines = [f"wrote {result.path} (it loads as written)" if result.path else
+             "scenario printed above (it loads as written; --out FILE to write it)"]
+    lines += [f"guessed: {g}" for g in result.guesses]
+    lines += [f"check:   {c}" for c in result.checks]
+    if args.out is None:
+        print("\n".join(lines), file=sys.stderr)
+    else:
+        _Stdout.emit("\n".join(lines))
+    return EXIT_OK
 
 
 def cmd_episodes(args) -> int:
@@ -401,6 +440,29 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--seed", type=_seed, default=0, help="Sobol seed")
     add_method(p)
     p.set_defaults(func=cmd_validate)
+
+    p = sub.add_parser("inspect", help="list a model's free bodies, actuators, grippers and "
+                                       "contact settings")
+    p.add_argument("model", help="MJCF scene file")
+    p.add_argument("--json", action="store_true", help="print JSON to stdout")
+    p.set_defaults(func=cmd_inspect)
+
+    from critmoment.task import TASK_KINDS
+
+    p = sub.add_parser("init", help="write a scenario.toml for a model as it ships")
+    p.add_argument("model", help="MJCF scene file")
+    p.add_argument("--object", required=True, metavar="BODY", help="the free body to audit")
+    p.add_argument("--task", required=True, choices=list(TASK_KINDS), help="task kind")
+    p.add_argument("--support", action="append", metavar="GEOM",
+                   help="a support geom (repeat; default: what the object rests on)")
+    p.add_argument("--goal", nargs=3, type=_real, metavar=("X", "Y", "Z"),
+                   help="pick_place: goal position of the object [m]")
+    p.add_argument("--goal-site", default=None, help="pick_place: a site marking the goal")
+    p.add_argument("--picker", default=None, help="handover: gripper that lifts first")
+    p.add_argument("--receiver", default=None, help="handover: gripper that takes over")
+    p.add_argument("--out", default=None, help="scenario.toml to write (default: print it)")
+    p.add_argument("--force", action="store_true", help="replace an existing --out")
+    p.set_defaults(func=cmd_init)
 
     p = sub.add_parser("episodes", help="list the episodes of a LeRobot dataset")
     p.add_argument("dataset", help="LeRobot dataset folder or parquet file (an npz/HDF5 file "
