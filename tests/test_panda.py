@@ -390,11 +390,14 @@ def test_unreachable_goal_is_a_clear_error(model):
         pd.make_pick_place(0, options=pd.PickPlaceOptions(goal=(1.5, 0.0, 0.02)), model=model)
 
 
-def test_slower_demo_also_succeeds(model):
-    traj = pd.make_pick_place(1, options=pd.PickPlaceOptions(time_scale=1.5), model=model)
-    assert traj.n_steps == 750
+@pytest.mark.parametrize("options, n_steps", [(pd.PickPlaceOptions(time_scale=1.5), 750),
+                                              (pd.PickPlaceOptions(fps=100.0), 1000)])
+def test_slower_or_finer_demo_also_succeeds(model, options, n_steps):
+    traj = pd.make_pick_place(1, options=options, model=model)
+    assert traj.n_steps == n_steps and traj.fps == options.fps
     out = simulate(traj, model)
     assert placement_error(out) < 0.03 and out["speed"] < 1e-3
+    assert longest_saturation(out) <= 0.05
 
 
 # --- through critmoment ------------------------------------------------------------------------
