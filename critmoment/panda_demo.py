@@ -347,7 +347,8 @@ def make_pick_place(seed: int = 0, *, options: PickPlaceOptions | None = None,
     qpos0[model.jnt_qposadr[joints]] = READY_POSE
     for i in (1, 2):
         qpos0[model.jnt_qposadr[model.joint(f"finger_joint{i}").id]] = FINGER_OPEN
-    qpos0[model.jnt_qposadr[model.joint("cube_joint").id]:][:7] = cube
+    cube_adr = model.jnt_qposadr[model.joint("cube_joint").id]
+    qpos0[cube_adr:cube_adr + 7] = cube
     meta = {"generator": "critmoment.panda_demo.make_pick_place", "seed": int(seed),
             "options": dataclasses.asdict(opt), "scenario": "panda_pick_place"}
     return Trajectory(actions=actions, fps=opt.fps, start=start, qpos0=qpos0,
