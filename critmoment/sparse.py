@@ -867,6 +867,37 @@ class SparseEvaluator:
             return 0
         return max(self.persistence_steps - 1, self.settings.creep_horizon - self.horizon, 0)
 
+    def trace(self, step: int, samples: Any, nstep: int | None = None) -> dict[str, np.ndarray]:
+        """Body poses and positions of the samples over ``nstep`` steps from moment ``step``
+        (default: the horizon), for tools that follow a sample's own state
+        (:mod:`critmoment.history`).
+
+        Returns:
+            ``xpos`` (n, s, nbody, 3) [m], ``xmat`` (n, s, nbody, 9), ``qpos`` (n, s, nq) and
+            ``qvel`` (n, s, nv), each recorded after a step (kinematics of the state it
+            started from, as the sensor readings); a diverged sample repeats its last rows.
+        """
+        k = int(self.check_steps([step])[0])
+        samples = self.check_samples(samples)
+        nstep = self.horizon if nstep is None else _check_int("nstep", nstep, 1)
+        nstep = min(nstep, self.n_steps - k)
+        parts = {name: [] for name in ("xpos", "xmat", "qpos", "qvel")}
+        for start in range(0, samples.shape[0], self.chunk):
+            batch, _ = self._batch(samples[start:start + self.chunk])
+            batch.state[:] = self._start_row(k)
+            batch.warning[...] = 0
+            try:
+                out = batch.rollout(nstep, control=self._controls[k:k + nstep][None],
+                                    control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
+                                    record=tuple(parts))
+            except mujoco.batch.SimulationError as exc:  # pragma: no cover
+                raise SimulationDivergedError(
+                    f"trace from step {k}: MuJoCo raised for samples {exc.ids}; expected "
+                    "stable physics", step=k) from exc
+            for name in parts:
+                parts[name].append(out[name])
+        return {name: np.concatenate(v) for name, v in parts.items()}
+
     def _roll(self, batch: mujoco.batch.Batch, k: int, nstep: int, ids: np.ndarray,
               raised: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Step the simulations ``ids`` ``nstep`` steps from recording step k with the
