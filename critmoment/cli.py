@@ -119,11 +119,12 @@ def cmd_demo(args) -> int:
     if Path(args.out).suffix != ".npz":
         raise CritmomentError(f"--out: expected a path ending in .npz, got {args.out}")
     with _staged(args, "demo", kind="file") as path:
-        traj = suite.make(args.family, seed=args.seed)
+        traj = suite.make(args.family, seed=args.seed, scenario=args.scenario)
         save_trajectory(traj, path)
     box = traj.object_pose
     _Stdout.emit(f"wrote {args.out}: {traj.n_steps} actions at {traj.fps:g} Hz "
-                 f"({traj.duration:g} s), family {args.family!r}, seed {args.seed}, cube at "
+                 f"({traj.duration:g} s), {args.scenario} family {args.family!r}, seed {args.seed}, "
+                 f"object at "
                  f"x={box[0]:.3f} y={box[1]:.3f} m")
     return EXIT_OK
 
@@ -349,7 +350,7 @@ class _Parser(argparse.ArgumentParser):
 
 def build_parser() -> argparse.ArgumentParser:
     from critmoment.report import Figures
-    from critmoment.suite import FAMILIES
+    from critmoment.suite import SCENARIO_FAMILIES
 
     parser = _Parser(
         prog="critmoment",
@@ -402,8 +403,12 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("demo", help="write a scripted pick-and-transfer trajectory")
     p.add_argument("--seed", type=_seed, default=0, help="seeds the cube's spawn pose")
     p.add_argument("--out", default="traj.npz", help="output .npz (default traj.npz)")
-    p.add_argument("--family", default="nominal", choices=sorted(FAMILIES),
-                   help="trajectory family (default nominal)")
+    p.add_argument("--family", default="nominal",
+                   choices=sorted({f for fams in SCENARIO_FAMILIES.values() for f in fams}),
+                   help="trajectory family (default nominal; the Panda has nominal and fast)")
+    p.add_argument("--scenario", default="aloha_transfer_cube",
+                   choices=sorted(SCENARIO_FAMILIES),
+                   help="bundled scenario to write a trajectory for (default aloha_transfer_cube)")
     p.set_defaults(func=cmd_demo)
 
     p = sub.add_parser("rollout", help="frequent rollout: replay at nominal parameters, "
@@ -469,6 +474,7 @@ def build_parser() -> argparse.ArgumentParser:
                                    "is one episode)")
     p.add_argument("--json", action="store_true", help="print JSON to stdout")
     p.set_defaults(func=cmd_episodes)
+    parser.commands = dict(sub.choices)
     return parser
 
 
@@ -512,7 +518,10 @@ def main(argv: list[str] | None = None) -> int:
     """Runs the command line; returns the exit code (0 ok, 1 not safe, 2 error)."""
     parser = build_parser()
     try:
-        args = parser.parse_args(argv)
+        args, extra = parser.parse_known_args(argv)
+        if extra:  # reported by the command's parser, so the line names the command
+            parser.commands[args.command].error(
+                f"unrecognized arguments: {' '.join(extra)}")
     except SystemExit as exc:  # argparse: --help (0) or a usage error (2, one line)
         return exc.code if isinstance(exc.code, int) else EXIT_ERROR
     logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,

@@ -447,9 +447,9 @@ def check_output_path(path: str | os.PathLike, *, kind: str = "folder",
         dest = Path(os.path.realpath(raw))
         exists = dest.exists()
         is_dir = dest.is_dir()
-    except OSError as exc:
+    except (OSError, ValueError) as exc:  # a name too long, an embedded NUL byte
         raise OutputError(f"{option} {_short(raw)!r}: cannot be used as a {kind}: "
-                          f"{exc.strerror or exc}") from None
+                          f"{getattr(exc, 'strerror', None) or exc}") from None
     if exists and kind == "folder" and not is_dir:
         raise OutputError(f"{option} {_short(raw)!r}: expected a folder (or a path to create "
                           f"one), got an existing file")
@@ -460,6 +460,15 @@ def check_output_path(path: str | os.PathLike, *, kind: str = "folder",
     if not anchor.is_dir():
         raise OutputError(f"{option} {_short(raw)!r}: expected a path under a folder, but "
                           f"{_short(anchor)!r} is a file")
+    try:
+        name_max = os.pathconf(anchor, "PC_NAME_MAX")
+    except (OSError, ValueError, AttributeError):
+        name_max = 255
+    long_parts = [part for part in dest.relative_to(anchor).parts
+                  if len(os.fsencode(part)) > name_max]
+    if long_parts:
+        raise OutputError(f"{option} {_short(raw)!r}: expected names of at most {name_max} "
+                          f"bytes, got one of {len(os.fsencode(long_parts[0]))} bytes")
     if exists and kind == "folder":
         try:
             foreign = _foreign_entries(dest)
@@ -560,6 +569,9 @@ class StagedOutput:
         except OSError as exc:
             raise OutputError(f"{self.option} {_short(self._raw)!r}: cannot write in "
                               f"{_short(anchor)!r}: {exc.strerror or exc}") from None
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(self._tmpdir, 0o777 & ~umask)  # mkdtemp's 0700 would outlive the rename
         self.path = (self._tmpdir if self.kind == "folder"
                      else self._tmpdir / self.destination.name)
         return self

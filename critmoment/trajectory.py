@@ -475,9 +475,10 @@ def _load_any(path: str | os.PathLike, *, fps: float | None,
         )
     try:
         exists, is_dir = p.exists(), p.is_dir()
-    except OSError as exc:  # e.g. a file name longer than the file system allows
+    except (OSError, ValueError) as exc:  # a name too long, an embedded NUL byte
         raise InputFileError(
-            f"trajectory path {_short(p)!r} cannot be used: {exc.strerror or exc}; "
+            f"trajectory path {_short(p)!r} cannot be used: "
+            f"{getattr(exc, 'strerror', None) or exc}; "
             f"expected an existing file or directory: {_SUPPORTED_TEXT}"
         ) from None
     if not exists:
@@ -592,6 +593,10 @@ def _scalar(value: np.ndarray, *, what: str) -> Any:
     return value.item()
 
 
+_ZIP_METHODS = frozenset({zipfile.ZIP_STORED, zipfile.ZIP_DEFLATED, zipfile.ZIP_BZIP2,
+                          zipfile.ZIP_LZMA})
+
+
 def _npz_declared_bytes(path: Path) -> None:
     """Checks an npz archive's members from their headers, before numpy reads them.
 
@@ -623,11 +628,11 @@ def _npz_declared_bytes(path: Path) -> None:
                     f"{member} is encrypted; expected the plain (unencrypted) .npy "
                     f"members numpy.savez writes"
                 )
-            if info.compress_type not in (zipfile.ZIP_STORED, zipfile.ZIP_DEFLATED):
+            if info.compress_type not in _ZIP_METHODS:
                 raise InputFileError(
-                    f"{member} uses zip compression method {info.compress_type}; "
-                    f"expected stored (0) or deflated (8) members as numpy.savez "
-                    f"writes them"
+                    f"{member} uses zip compression method {info.compress_type}, "
+                    f"which cannot be read; expected stored (0) or deflated (8) "
+                    f"members as numpy.savez writes them (or bzip2 (12), lzma (14))"
                 )
             if not info.filename.endswith(".npy"):
                 continue
@@ -1160,8 +1165,9 @@ def list_episodes(path: str | os.PathLike) -> tuple[Episode, ...]:
     p = Path(os.fspath(path))
     try:
         is_dir, exists = p.is_dir(), p.exists()
-    except OSError as exc:
-        raise InputFileError(f"path {_short(p)!r} cannot be used: {exc.strerror or exc}") from None
+    except (OSError, ValueError) as exc:
+        raise InputFileError(f"path {_short(p)!r} cannot be used: "
+                             f"{getattr(exc, 'strerror', None) or exc}") from None
     if not exists:
         raise InputFileError(f"path {str(p)!r} does not exist; expected {_SUPPORTED_TEXT}")
     if is_dir:
@@ -1253,8 +1259,8 @@ def _load_lerobot_files(
             if len(available) > 1:
                 raise TrajectoryError(
                     f"LeRobot data {source!r} holds {len(available)} episodes, "
-                    f"which one is ambiguous; pass episode= one of "
-                    f"{_format_indices(available)}"
+                    f"which one is ambiguous; pass episode= (CLI: --episode N) one "
+                    f"of {_format_indices(available)}"
                 )
             ep = available[0]
         else:
