@@ -53,11 +53,13 @@ __all__ = [
     "CUBE_HALF",
     "CUBE_X",
     "CUBE_Y",
+    "FAMILIES",
     "FINGER_OPEN",
     "GOAL",
     "READY_POSE",
     "PickPlaceOptions",
     "ik_tcp",
+    "make",
     "make_pick_place",
     "pick_place_plan",
     "sample_cube_pose",
@@ -353,3 +355,53 @@ def make_pick_place(seed: int = 0, *, options: PickPlaceOptions | None = None,
             "options": dataclasses.asdict(opt), "scenario": "panda_pick_place"}
     return Trajectory(actions=actions, fps=opt.fps, start=start, qpos0=qpos0,
                       object_pose=cube, meta=meta, source=f"panda_pick_place(seed={seed})")
+
+
+def _no_grasp(seed: int, model: mujoco.MjModel | None = None) -> Trajectory:
+    """The nominal motion, with the cube 10 cm further along x than planned: never touched."""
+    model = model or mujoco.MjModel.from_xml_path(str(scene_path()))
+    traj = make_pick_place(seed, model=model)
+    pose = traj.object_pose.copy()
+    pose[0] += 0.10
+    qpos0 = traj.qpos0.copy()
+    adr = model.jnt_qposadr[model.joint("cube_joint").id]
+    qpos0[adr:adr + 7] = pose
+    return dataclasses.replace(traj, object_pose=pose, qpos0=qpos0,
+                               meta={**traj.meta, "family": "no_grasp"})
+
+
+def _with(options: PickPlaceOptions):
+    def build(seed: int, model: mujoco.MjModel | None = None) -> Trajectory:
+        return make_pick_place(seed, options=options, model=model)
+
+    return build
+
+
+#: family name -> function(seed, model=None) -> Trajectory, like :data:`critmoment.suite.FAMILIES`
+FAMILIES = {
+    "nominal": _with(PickPlaceOptions()),
+    "fast": _with(PickPlaceOptions(time_scale=0.6)),
+    "faster": _with(PickPlaceOptions(time_scale=0.4)),
+    "slow": _with(PickPlaceOptions(time_scale=1.5)),
+    "shallow_grasp": _with(PickPlaceOptions(grasp_offset=0.015)),
+    "no_grasp": _no_grasp,
+}
+
+
+def make(family: str, *, seed: int = 0, model: mujoco.MjModel | None = None) -> Trajectory:
+    """A Panda trajectory of ``family`` (see :data:`FAMILIES`) with ``seed``.
+
+    ``fast`` and ``faster`` scale every waypoint time by 0.6 and 0.4 (peak lift acceleration
+    1.9 and 4.3 m/s², so heavier cubes slip earlier); ``slow`` by 1.5; ``shallow_grasp`` holds
+    the cube 1.5 cm below the TCP instead of 1 cm (less tip on the cube); ``no_grasp`` moves the
+    cube 10 cm away from where the arm goes.
+
+    Raises:
+        ParameterError: unknown family.
+    """
+    if family not in FAMILIES:
+        raise ParameterError(f"unknown Panda trajectory family {family!r}; known: "
+                             f"{', '.join(FAMILIES)}")
+    traj = FAMILIES[family](int(seed), model=model)
+    meta = {**traj.meta, "family": family}
+    return dataclasses.replace(traj, meta=meta, source=f"panda {family}(seed={seed})")

@@ -420,3 +420,21 @@ def test_nominal_rollout_completes_the_task(nominal_runs):
     scenario = critmoment.load_scenario(str(SCENE.parent / "scenario.toml"))
     rec = rollout(nominal_runs[0][0], scenario)
     assert bool(np.all(rec.completed))
+
+
+def test_families(model):
+    assert set(pd.FAMILIES) >= {"nominal", "fast", "no_grasp"}
+    with pytest.raises(ParameterError, match="unknown Panda trajectory family 'nope'; known: nominal"):
+        pd.make("nope")
+    fast = pd.make("fast", seed=0, model=model)
+    assert fast.n_steps == 300 and fast.meta["family"] == "fast"
+    out = simulate(fast, model)
+    assert placement_error(out) < 0.03 and longest_saturation(out) <= 0.05
+    # a faster lift slips a lighter cube: 1.7 kg is placed by the nominal trajectory (tested
+    # above, failure at ~1.9 kg) but dropped at 0.4x the time (peak lift acceleration 4.3 m/s²)
+    faster = pd.make("faster", seed=0, model=model)
+    assert placement_error(simulate(faster, model, mass=1.7)) > 0.1
+    missed = pd.make("no_grasp", seed=0, model=model)
+    out = simulate(missed, model)
+    assert not out["grip"].any()
+    np.testing.assert_allclose(out["pos"][-1], missed.object_pose[:3], atol=1e-3)
