@@ -16,6 +16,10 @@ family                  what changes (see :class:`critmoment.demos.DemoOptions`)
 ``jitter``              white noise of 0.003 rad on every arm joint target
 ``no_grasp``            the cube lies 12 cm away from where the arms go: never touched
 ======================  ===================================================================
+
+The bundled Panda scenario (``panda_pick_place``) has its own families
+(:data:`SCENARIO_FAMILIES`): ``nominal`` (the scripted pick and place of
+:mod:`critmoment.panda_demo`) and ``fast`` (every waypoint time × 0.7).
 """
 
 from __future__ import annotations
@@ -27,7 +31,7 @@ from critmoment.exceptions import ParameterError
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin
 
-__all__ = ["FAMILIES", "make"]
+__all__ = ["FAMILIES", "SCENARIO_FAMILIES", "make"]
 
 
 def _with(options: DemoOptions) -> Callable[..., Trajectory]:
@@ -56,12 +60,38 @@ FAMILIES: dict[str, Callable[..., Trajectory]] = {
 }
 
 
-def make(family: str, *, seed: int = 0, twin: Twin | None = None) -> Trajectory:
-    """A trajectory of ``family`` with ``seed`` (cube spawn, and noise where there is any)."""
-    if family not in FAMILIES:
-        raise ParameterError(f"unknown trajectory family {family!r}; known: {', '.join(FAMILIES)}")
-    traj = FAMILIES[family](int(seed), twin=twin)
+def _panda(time_scale: float) -> Callable[..., Trajectory]:
+    def build(seed: int, twin: Twin | None = None) -> Trajectory:
+        from critmoment.panda_demo import PickPlaceOptions, make_pick_place
+
+        return make_pick_place(seed, options=PickPlaceOptions(time_scale=time_scale),
+                               model=None if twin is None else twin.model)
+
+    return build
+
+
+#: bundled scenario -> its families (family name -> function(seed, twin=None) -> Trajectory)
+SCENARIO_FAMILIES: dict[str, dict[str, Callable[..., Trajectory]]] = {
+    "aloha_transfer_cube": FAMILIES,
+    "panda_pick_place": {"nominal": _panda(1.0), "fast": _panda(0.7)},
+}
+
+
+def make(family: str, *, seed: int = 0, twin: Twin | None = None,
+         scenario: str = "aloha_transfer_cube") -> Trajectory:
+    """A trajectory of ``family`` with ``seed`` (cube spawn, and noise where there is any) for
+    the bundled ``scenario``; its ``meta`` names the scenario, so that the CLI audits it
+    against that scenario when ``--scenario`` is not given."""
+    if scenario not in SCENARIO_FAMILIES:
+        raise ParameterError(f"unknown bundled scenario {scenario!r}; known: "
+                             f"{', '.join(SCENARIO_FAMILIES)}")
+    families = SCENARIO_FAMILIES[scenario]
+    if family not in families:
+        raise ParameterError(f"unknown trajectory family {family!r} for {scenario}; known: "
+                             f"{', '.join(families)}")
+    traj = families[family](int(seed), twin=twin)
     meta = dict(traj.meta)
     meta["family"] = family
+    meta["scenario"] = scenario
     return Trajectory(actions=traj.actions, fps=traj.fps, start=traj.start, qpos0=traj.qpos0,
                       object_pose=traj.object_pose, meta=meta, source=f"{family}(seed={seed})")
