@@ -437,7 +437,7 @@ class _Probe:
         sc = twin.scenario
         base = twin.model
         self.anchors = [_gripper_anchor(base, g.geoms) for g in sc.grippers]
-        spec = mujoco.MjSpec.from_file(str(sc.mjcf))
+        spec = sc.load_spec()  # critmoment's own copy: generated names, object friction priority
         twin.add_sensors(spec)  # the twin's sensors first, at the same addresses
         for g, anchor in zip(sc.grippers, self.anchors, strict=False):
             s = spec.add_sensor()
