@@ -446,6 +446,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         with stage("analytic bounds and search"):
             analytics, searches = _search_all(rec, twin, evaluator, steps, opt)
     moment_reports = []
+    worst_failed_sparse: dict[int, bool] = {}  # per moment: its worst case fails (sparse)
     worst_unlifted: dict[int, bool] = {}  # per failing moment: its worst case is unlifted
     for row, m in enumerate(chosen):
         s = int(steps[row])
@@ -468,8 +469,9 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         if dominant is None:
             dominant = next((d for c in curves[s].values()
                              if (d := _dominant(c, 0, c.failed[0])) is not None), None)
-        if worst_case and max_cost > threshold:
+        if worst_case and not max_cost <= threshold:
             one = evaluator.evaluate([s], [[worst_case[n] for n in box.names]])
+            worst_failed_sparse[s] = bool(one.failed[0, 0])
             worst_unlifted[s] = bool(one.unlifted_failure[0, 0])
             if dominant is None:
                 # only the search's worst case fails here: its own evaluation says why
@@ -493,8 +495,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             search=searches.get(s), reached=float(here.mean()), squeeze=bool(squeeze)))
     # the failing worst cases that only a rollout can decide (squeezes)
     worst_failed: dict[int, bool] = {}
-    rerun_steps = vd.worst_cases_to_rerun(moment_reports, worst_unlifted, dopt,
-                                          n_failed=int(failed.sum()))
+    rerun_steps = vd.worst_cases_to_rerun(moment_reports, worst_failed_sparse, worst_unlifted,
+                                          dopt, n_failed=int(failed.sum()))
     if rerun_steps:
         by_step = {int(mr.moment.step): mr for mr in moment_reports}
         points = np.array([[by_step[s].worst_case[n] for n in box.names] for s in rerun_steps])
@@ -505,9 +507,11 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             verification["worst_cases_failed"] = int(real.sum())
     evidence = vd.Evidence(
         box=box, samples=sample_evidence, nominal_cost=nominal_cost,
+        nominal_failed=bool(res_all.failed_any[0]) if steps.size else False,
         nominal_unlifted=bool(res_all.failed_unlifted_only[0]) if steps.size else False,
         nominal_stage=(int(rec.stage.max()), int(rec.stage[-1])),
-        moments=tuple(moment_reports), worst_unlifted=worst_unlifted,
+        moments=tuple(moment_reports), worst_failed=worst_failed_sparse,
+        worst_unlifted=worst_unlifted,
         worst_rollouts_failed=worst_failed, trend=_trend(curves, box))
     decision = vd.decide(evidence, dopt)
     region_check = None

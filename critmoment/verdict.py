@@ -13,8 +13,8 @@ The decision path, in order:
    sparse evaluation with a cost at or above ``verify × threshold``, and those whose only
    failures are unlifted ones, ``SparseResult.failed_unlifted_only``); none when the
    nominal run itself fails the task (every sample fails then).
-2. :func:`failing_samples`: a sample fails when its cost exceeds the threshold (or diverges)
-   at an audited moment, unless its own rollout decided it; the rollout's real outcome
+2. :func:`failing_samples`: a sample fails where its sparse evaluation fails at an audited
+   moment (``SparseResult.failed``), unless its own rollout decided it; the rollout's real outcome
    decides the re-run samples; every sample fails when the nominal run does not complete
    the task (``require_task``).
 3. :func:`candidate_region`: the largest sub-box, anchored at the box's safe corner, with
@@ -213,10 +213,11 @@ def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
 def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.ndarray:
     """Which samples fail: the one decision path of ``analyze`` and ``validate``.
 
-    A sample fails when its cost exceeds the threshold (or diverges) at an audited moment;
-    a sample with its own full rollout (every sample :func:`samples_to_rerun` names must
-    have one) is decided by that rollout's real outcome instead; with ``require_task`` every sample fails when the nominal run does not
-    complete the task.
+    A sample fails where its sparse evaluation fails at an audited moment
+    (``SparseResult.failed``: the cost above the threshold, or diverged); a sample with its
+    own full rollout (every sample :func:`samples_to_rerun` names must have one) is decided
+    by that rollout's real outcome instead; with ``require_task`` every sample fails when
+    the nominal run does not complete the task.
 
     Args:
         evidence: the sweep, the nominal completion and the rollouts' outcomes.
@@ -258,20 +259,23 @@ def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.nd
     return failed
 
 
-def worst_cases_to_rerun(moments: Sequence[MomentReport], worst_unlifted: Mapping[int, bool],
-                         options: DecisionOptions, *, n_failed: int) -> list[int]:
+def worst_cases_to_rerun(moments: Sequence[MomentReport], worst_failed: Mapping[int, bool],
+                         worst_unlifted: Mapping[int, bool], options: DecisionOptions, *,
+                         n_failed: int) -> list[int]:
     """Steps of the moments whose failing worst case must be decided by its own rollout.
 
     Only when that can change the verdict to SAFE: no sample fails, unlifted failures are
-    decided by rollouts, and every moment whose worst case fails fails only at a squeeze
-    (``worst_unlifted``, by moment step). Empty otherwise.
+    decided by rollouts, and every moment whose worst case fails (``worst_failed``, by
+    moment step: its sparse evaluation fails) fails only at a squeeze (``worst_unlifted``).
+    Empty otherwise.
     """
-    failing = [mr for mr in moments if not mr.max_cost <= options.threshold]
+    failing = [int(mr.moment.step) for mr in moments
+               if worst_failed.get(int(mr.moment.step), False)]
     if n_failed or not failing or not options.rolls_unlifted:
         return []
-    if not all(worst_unlifted.get(int(mr.moment.step), False) for mr in failing):
+    if not all(worst_unlifted.get(s, False) for s in failing):
         return []
-    return [int(mr.moment.step) for mr in failing]
+    return failing
 
 
 # -- the safe region -----------------------------------------------------------------
@@ -660,9 +664,12 @@ class Evidence:
         box: the uncertainty box.
         samples: the sweep's evidence (sparse results, the rollouts' outcomes).
         nominal_cost: highest sparse cost at the nominal parameters over the moments.
+        nominal_failed: the sparse evaluation of the nominal parameters fails at a moment
+            (``SparseResult.failed_any``).
         nominal_unlifted: the nominal parameters fail only through unlifted failures.
         nominal_stage: (highest stage reached, final stage) of the nominal run.
         moments: per audited moment, what was found there.
+        worst_failed: per moment step, whether its worst case fails there (sparse).
         worst_unlifted: per moment step whose worst case fails, whether only unlifted.
         worst_rollouts_failed: per moment step whose worst case got its own rollout, its
             real outcome (failed).
@@ -676,9 +683,11 @@ class Evidence:
     box: UncertaintyBox
     samples: SampleEvidence
     nominal_cost: float
+    nominal_failed: bool = False
     nominal_unlifted: bool = False
     nominal_stage: tuple[int, int] = (4, 4)
     moments: tuple[MomentReport, ...] = ()
+    worst_failed: Mapping[int, bool] = dataclasses.field(default_factory=dict)
     worst_unlifted: Mapping[int, bool] = dataclasses.field(default_factory=dict)
     worst_rollouts_failed: Mapping[int, bool] = dataclasses.field(default_factory=dict)
     region: RegionCheck | None = None
@@ -731,17 +740,16 @@ def _nominal_fails(evidence: Evidence, options: DecisionOptions) -> tuple[bool, 
     se = evidence.samples
     has_moments = se.sweep is not None and se.sweep.n_moments > 0
     task_failed = options.require_task and not se.nominal_completed
-    squeeze = (options.rolls_unlifted and has_moments and evidence.nominal_cost > options.threshold
+    squeeze = (options.rolls_unlifted and has_moments and evidence.nominal_failed
                and se.nominal_completed and evidence.nominal_unlifted)
-    return (evidence.nominal_cost > options.threshold and not squeeze) or task_failed, \
-        squeeze, task_failed
+    return (evidence.nominal_failed and not squeeze) or task_failed, squeeze, task_failed
 
 
 def _worst_cases_pass(evidence: Evidence, options: DecisionOptions) -> bool:
-    failing = [mr for mr in evidence.moments if not mr.max_cost <= options.threshold]
-    if not failing:
+    steps = [int(mr.moment.step) for mr in evidence.moments
+             if evidence.worst_failed.get(int(mr.moment.step), False)]
+    if not steps:
         return True
-    steps = [int(mr.moment.step) for mr in failing]
     if not options.rolls_unlifted or not all(evidence.worst_unlifted.get(s, False)
                                              for s in steps):
         return False
@@ -808,7 +816,7 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
         causes = (f"the nominal cost exceeds the threshold ({evidence.nominal_cost:.3g} > "
                   f"{options.threshold:g}) only where the grip squeezes the object off its "
                   f"support without lifting it; the nominal run completes the task",) + causes
-    elif evidence.nominal_cost > options.threshold:
+    elif evidence.nominal_failed:
         causes = (f"fails at the nominal parameters (max cost {evidence.nominal_cost:.3g} > "
                   f"{options.threshold:g})",) + causes
     if near.any() and se.rerun_failed is not None:

@@ -1,0 +1,261 @@
+"""Tests of critmoment.verdict: the pure decision (no simulation), on hand-made evidence."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from critmoment import verdict as vd
+from critmoment.exceptions import ParameterError
+from critmoment.moments import Moment, MomentLabel
+from critmoment.params import FrictionParameter, MassParameter, UncertaintyBox
+from critmoment.scenario import CostParams
+from critmoment.sparse import SparseMode, SparseResult
+
+THRESHOLD = 0.9
+OPT = vd.DecisionOptions(threshold=THRESHOLD)
+
+
+def _box(mass_high: float = 1.0) -> UncertaintyBox:
+    return UncertaintyBox((MassParameter("mass", "box", 0.05, mass_high, 0.05),
+                           FrictionParameter("friction", "box", 0.2, 1.5, 1.0)))
+
+
+def _sweep(cost: np.ndarray, samples: np.ndarray, *, unlifted: np.ndarray | None = None,
+           diverged: np.ndarray | None = None) -> SparseResult:
+    """A SparseResult of m moments × n samples with the given costs (the rest neutral)."""
+    cost = np.atleast_2d(np.asarray(cost, dtype=np.float64))
+    m, n = cost.shape
+    diverged = np.zeros((m, n), bool) if diverged is None else diverged
+    return SparseResult(
+        steps=np.arange(m, dtype=np.int64) * 100 + 100, samples=np.asarray(samples, float),
+        parameter_names=("mass", "friction"), gripper_names=("g",), actuator_names=("a",),
+        horizon=1, mode=SparseMode.STEP, cost_params=CostParams(threshold=THRESHOLD),
+        fos_contact=np.full((m, n, 1), 2.0), fos_grasp=np.full((m, n), 2.0),
+        fos_motor=np.full((m, n), 3.0), motor_argmax=np.zeros((m, n), np.int64),
+        cost=np.where(diverged, np.inf, cost), cost_contact=cost, cost_motor=np.zeros((m, n)),
+        object_acc=np.zeros((m, n, 3)), actuator_norm=np.zeros((m, n, 1)),
+        contact_support=np.zeros((m, n), bool), contact_gripper=np.ones((m, n, 1), bool),
+        stage=np.full((m, n), 4, np.int8), worst_step=np.zeros((m, n), np.int64),
+        diverged=diverged,
+        unlifted_failure=np.zeros((m, n), bool) if unlifted is None else unlifted)
+
+
+def _grid(box: UncertaintyBox, n: int = 21) -> np.ndarray:
+    u = np.linspace(0.0, 1.0, n)
+    g0, g1 = np.meshgrid(u, u, indexing="ij")
+    return box.from_unit(np.stack([g0.ravel(), g1.ravel()], axis=1))
+
+
+def _cost(samples: np.ndarray) -> np.ndarray:
+    """Heavy and slippery fails: cost = threshold on the line mass = 0.4·friction."""
+    return THRESHOLD * samples[:, 0] / (0.4 * samples[:, 1])
+
+
+def _moment(step: int, critical=None, side=None) -> vd.MomentReport:
+    m = Moment(step=step, time=step * 0.002, label=MomentLabel.LIFT_OFF, reason="test")
+    return vd.MomentReport(moment=m, worst_case={"mass": 1.0, "friction": 0.2}, max_cost=2.0,
+                           min_fos_contact=1.0, min_fos_motor=3.0,
+                           critical=critical or {"mass": None, "friction": None},
+                           critical_side=side or {"mass": None, "friction": None},
+                           dominant="contact", limiting_actuator="a", fail_fraction=0.5)
+
+
+# --------------------------------------------------------------------------
+# which samples fail
+# --------------------------------------------------------------------------
+
+
+def test_failing_samples_is_the_sparse_failure_unless_a_rollout_decided():
+    samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0]])
+    sweep = _sweep([[0.1, 1.5, 0.8, 0.5]], samples)
+    near, unlifted = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
+    assert near.tolist() == [False, False, True, False]  # 0.8 ≥ 0.8 × 0.9, passes
+    assert not unlifted.any()
+    with pytest.raises(ParameterError, match="own rollout"):
+        vd.failing_samples(vd.SampleEvidence(sweep=sweep, nominal_completed=True), OPT)
+    ev = vd.SampleEvidence(sweep=sweep, nominal_completed=True, rerun=near,
+                           rerun_failed=np.array([False, False, True, False]))
+    assert vd.failing_samples(ev, OPT).tolist() == [False, True, True, False]
+    # without verification the sparse evaluation alone decides
+    plain = vd.DecisionOptions(threshold=THRESHOLD, verify=None)
+    assert vd.failing_samples(vd.SampleEvidence(sweep=sweep, nominal_completed=True),
+                              plain).tolist() == [False, True, False, False]
+    # a nominal run that fails the task fails every sample, and nothing is re-run
+    assert not any(m.any() for m in vd.samples_to_rerun(sweep, OPT, nominal_completed=False))
+    assert vd.failing_samples(vd.SampleEvidence(sweep=sweep, nominal_completed=False),
+                              OPT).all()
+
+
+def test_unlifted_failures_are_decided_by_rollouts():
+    samples = np.array([[0.1, 1.0], [0.5, 1.0]])
+    unl = np.array([[True, False]])
+    sweep = _sweep([[1.2, 1.2]], samples, unlifted=unl)
+    near, unlifted = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
+    assert unlifted.tolist() == [True, False] and not near.any()
+    ev = vd.SampleEvidence(sweep=sweep, nominal_completed=True, rerun=unlifted,
+                           rerun_failed=np.zeros(2, bool))
+    assert vd.failing_samples(ev, OPT).tolist() == [False, True]
+
+
+# --------------------------------------------------------------------------
+# the safe region
+# --------------------------------------------------------------------------
+
+
+def test_safe_subbox_keeps_failures_out_of_the_region():
+    box = _box()
+    rng = np.random.default_rng(3)
+    x = box.from_unit(rng.uniform(0.0, 1.0, size=(400, 2)))
+    failed = _cost(x) > THRESHOLD
+    region = vd.safe_subbox(x, failed, box, ["above", "below"])
+    inside = ((x[:, 0] < region["mass"][1]) & (x[:, 1] > region["friction"][0]))
+    assert not (inside & failed).any()
+    assert region["mass"][0] == box.low[0] and region["friction"][1] == box.high[1]
+
+
+def test_no_region_when_every_sample_fails():
+    box = _box(10.0)
+    x = box.from_unit(np.random.default_rng(0).uniform(size=(8, 2)))
+    assert vd.candidate_region(x, np.ones(8, bool), box, ["above", "below"]) is None
+
+
+def test_candidate_region_is_cut_at_a_critical_value():
+    box = _box()
+    x = _grid(box, 5)
+    failed = np.zeros(len(x), bool)
+    failed[np.argmax(x[:, 0] - x[:, 1])] = True  # only the heavy, slippery corner
+    crit = _moment(100, {"mass": 0.6, "friction": None}, {"mass": "above", "friction": None})
+    region = vd.candidate_region(x, failed, box, ["above", "below"], [crit])
+    # friction 1.0 (nominal) lies inside, so the region stops at the critical mass
+    assert region["mass"][1] <= 0.6
+
+
+def test_round_inward_never_grows_the_region():
+    box = _box()
+    region = {"mass": (0.05, 0.35249), "friction": (0.45251, 1.5)}
+    r = vd.round_inward(region, box)
+    assert r == {"mass": (0.05, 0.352), "friction": (0.453, 1.5)}
+
+
+def test_shrinking_lands_on_a_checked_point_that_passed():
+    """Check, shrink, check again on a known boundary: the region ends up holding."""
+    box = _box()
+    sides = ["above", "below"]
+    region = {"mass": (0.05, 0.5), "friction": (0.2, 1.5)}  # claims too much: (0.5, 0.2) fails
+    for _ in range(4):
+        pts, edges = vd.region_points(region, box, per_edge=9)
+        fails = _cost(pts) > THRESHOLD
+        if not fails.any():
+            break
+        region = vd.round_inward(vd.shrink_region(region, pts[fails], box, sides,
+                                                  passing=pts[~fails]), box)
+        assert region is not None
+    dense, _ = vd.region_points(region, box, per_edge=41)
+    assert not (_cost(dense) > THRESHOLD).any()
+    assert region["mass"][1] > 0.1  # not shrunk to nothing
+
+
+def test_region_points_cover_corners_and_densified_edges():
+    box = _box()
+    region = {"mass": (0.05, 0.5), "friction": (0.4, 1.5)}
+    pts, edges = vd.region_points(region, box, per_edge=5)
+    assert len(edges) == 4 and pts.shape == (4 * 5 - 4, 2)
+    corners = {(a, b) for a in (0.05, 0.5) for b in (0.4, 1.5)}
+    assert corners <= {tuple(np.round(p, 12)) for p in pts}
+    hot = vd.hot_edges(edges, _cost(pts), near=0.8 * THRESHOLD)
+    assert hot and len(hot) < 4
+    dense, dense_edges = vd.region_points(region, box, per_edge=5, dense=hot)
+    assert all(dense_edges[i].size == 17 for i in hot)
+    assert ((dense >= np.array([0.05, 0.4]) - 1e-12) & (dense <= np.array([0.5, 1.5]) + 1e-12)).all()
+
+
+# --------------------------------------------------------------------------
+# the decision
+# --------------------------------------------------------------------------
+
+
+def _evidence(box, samples, cost, **kw):
+    sweep = _sweep(cost[None], samples)
+    near, _ = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
+    se = vd.SampleEvidence(sweep=sweep, nominal_completed=True, rerun=near,
+                           rerun_failed=np.zeros(len(samples), bool))
+    return vd.Evidence(box=box, samples=se, nominal_cost=0.1, **kw)
+
+
+def test_decide_asks_for_the_region_check_then_states_it_with_its_evidence():
+    box = _box()
+    x = _grid(box, 11)
+    ev = _evidence(box, x, _cost(x), moments=(_moment(100),))
+    first = vd.decide(ev, OPT)
+    assert first.verdict is vd.Verdict.CONDITIONAL
+    assert first.region_to_check is not None and first.safe_region is None
+    assert 0 < first.p_success < 1
+    lo, hi = first.p_success_interval
+    assert lo < first.p_success < hi
+    pts, _ = vd.region_points(first.region_to_check, box)
+    check = vd.RegionCheck(region=first.region_to_check, points=pts,
+                           failed=np.zeros(len(pts), bool), rolled_out=np.zeros(len(pts), bool),
+                           rounds=1, n_sparse=len(pts), n_rollouts=4,
+                           first_claim=first.region_to_check)
+    final = vd.decide(vd.Evidence(**{**ev.__dict__, "region": check}), OPT)
+    assert final.safe_region == first.region_to_check
+    assert final.safe_region_text.startswith("safe for mass ≤")
+    assert "by 4 full rollouts" in final.safe_region_text
+    # a check that found no holding region leaves none
+    failed_check = vd.RegionCheck(region=None, points=pts, failed=np.ones(len(pts), bool),
+                                  rolled_out=np.zeros(len(pts), bool), rounds=4,
+                                  n_sparse=80, n_rollouts=8, first_claim=first.region_to_check)
+    none = vd.decide(vd.Evidence(**{**ev.__dict__, "region": failed_check}), OPT)
+    assert none.safe_region is None and none.safe_region_text.startswith("no safe region")
+
+
+def test_decide_all_failing_samples_state_no_region():
+    box = _box(10.0)
+    x = box.from_unit(np.random.default_rng(1).uniform(size=(8, 2)))
+    ev = _evidence(box, x, np.full(8, 2.0), moments=(_moment(100),))
+    d = vd.decide(ev, OPT)
+    assert d.verdict is vd.Verdict.CONDITIONAL and d.p_success == 0.0
+    assert d.region_to_check is None and d.safe_region is None
+    assert d.safe_region_text.startswith("no safe region")
+
+
+def test_decide_unsafe_at_nominal_and_safe_needs_the_whole_box_checked():
+    box = _box()
+    x = _grid(box, 5)
+    bad_nominal = _evidence(box, x, _cost(x), nominal_failed=True)
+    d = vd.decide(bad_nominal, OPT)
+    assert d.verdict is vd.Verdict.UNSAFE and d.region_to_check is None
+    assert any("nominal" in c for c in d.causes)
+    good = _evidence(box, x, np.full(len(x), 0.1))
+    d = vd.decide(good, OPT)
+    assert d.verdict is vd.Verdict.SAFE and d.p_success == 1.0
+    whole = {"mass": (0.05, 1.0), "friction": (0.2, 1.5)}
+    assert d.region_to_check == whole
+    shrunk = {"mass": (0.05, 0.8), "friction": (0.2, 1.5)}
+    pts, _ = vd.region_points(shrunk, box)
+    check = vd.RegionCheck(region=shrunk, points=pts, failed=np.zeros(len(pts), bool),
+                           rolled_out=np.zeros(len(pts), bool), rounds=2, n_sparse=32,
+                           n_rollouts=8, first_claim=whole)
+    d = vd.decide(vd.Evidence(**{**good.__dict__, "region": check}), OPT)
+    # a corner of the whole box failed its check: not SAFE, the shrunk region is stated
+    assert d.verdict is vd.Verdict.CONDITIONAL and d.safe_region == shrunk
+    assert any("first claimed" in c for c in d.causes)
+
+
+def test_fail_sides_follow_the_critical_values_then_the_failures():
+    box = _box()
+    x = _grid(box, 9)
+    failed = _cost(x) > THRESHOLD
+    assert vd.fail_sides(x, failed, box) == ["above", "below"]
+    votes = [{"mass": "below", "friction": None}]
+    assert vd.fail_sides(x, failed, box, votes)[0] == "below"
+    assert vd.fail_sides(x, failed, box, (), {"mass": -1.0, "friction": 2.0}) == [
+        "below", "above"]
+
+
+def test_decision_options_are_checked():
+    with pytest.raises(ParameterError, match="verify"):
+        vd.DecisionOptions(threshold=0.9, verify=1.5)
+    with pytest.raises(ParameterError, match="threshold"):
+        vd.DecisionOptions(threshold=float("nan"))
