@@ -405,7 +405,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", default="traj.npz", help="output .npz (default traj.npz)")
     p.add_argument("--family", default="nominal",
                    choices=sorted({f for fams in SCENARIO_FAMILIES.values() for f in fams}),
-                   help="trajectory family (default nominal; the Panda has nominal and fast)")
+                   help="trajectory family (default nominal; see critmoment.suite)")
     p.add_argument("--scenario", default="aloha_transfer_cube",
                    choices=sorted(SCENARIO_FAMILIES),
                    help="bundled scenario to write a trajectory for (default aloha_transfer_cube)")

@@ -18,8 +18,8 @@ family                  what changes (see :class:`critmoment.demos.DemoOptions`)
 ======================  ===================================================================
 
 The bundled Panda scenario (``panda_pick_place``) has its own families
-(:data:`SCENARIO_FAMILIES`): ``nominal`` (the scripted pick and place of
-:mod:`critmoment.panda_demo`) and ``fast`` (every waypoint time × 0.7).
+(:data:`SCENARIO_FAMILIES`, from :data:`critmoment.panda_demo.FAMILIES`): the scripted pick
+and place and its variants (``fast``, ``faster``, ``slow``, ``shallow_grasp``, ``no_grasp``).
 """
 
 from __future__ import annotations
@@ -60,20 +60,25 @@ FAMILIES: dict[str, Callable[..., Trajectory]] = {
 }
 
 
-def _panda(time_scale: float) -> Callable[..., Trajectory]:
+def _panda(family: str) -> Callable[..., Trajectory]:
     def build(seed: int, twin: Twin | None = None) -> Trajectory:
-        from critmoment.panda_demo import PickPlaceOptions, make_pick_place
+        from critmoment import panda_demo
 
-        return make_pick_place(seed, options=PickPlaceOptions(time_scale=time_scale),
-                               model=None if twin is None else twin.model)
+        return panda_demo.make(family, seed=seed, model=None if twin is None else twin.model)
 
     return build
+
+
+def _panda_families() -> dict[str, Callable[..., Trajectory]]:
+    from critmoment import panda_demo
+
+    return {name: _panda(name) for name in panda_demo.FAMILIES}
 
 
 #: bundled scenario -> its families (family name -> function(seed, twin=None) -> Trajectory)
 SCENARIO_FAMILIES: dict[str, dict[str, Callable[..., Trajectory]]] = {
     "aloha_transfer_cube": FAMILIES,
-    "panda_pick_place": {"nominal": _panda(1.0), "fast": _panda(0.7)},
+    "panda_pick_place": _panda_families(),
 }
 
 

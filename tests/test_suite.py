@@ -27,6 +27,9 @@ def test_unknown_family_or_scenario():
     with pytest.raises(ParameterError, match="unknown trajectory family 'jitter' for "
                                              "panda_pick_place; known: nominal, fast"):
         suite.make("jitter", scenario="panda_pick_place")
+    with pytest.raises(ParameterError, match="unknown trajectory family 'faster' for "
+                                             "aloha_transfer_cube"):
+        suite.make("faster")
     with pytest.raises(ParameterError, match="unknown bundled scenario 'ur5'"):
         suite.make("nominal", scenario="ur5")
 
