@@ -606,19 +606,29 @@ def analytic_bounds(recording, twin: Twin, step: Any, *,
             # touching without force: fall back on a finger's slide axis (or the world z)
             axis = _slide_axis(model, data, pad_bodies)
         fingers = _finger_limits(twin, pad_bodies)
+        # one pad force per finger body that a slide actuator drives (a gripper given by
+        # body also holds the palm's geoms, which press with no force of their own)
+        n_fingers = len({b for b in pad_bodies if _finger_limits(twin, [b])})
         if normal_force is not None:
             fn = normal_force
         elif fingers:
-            fn = len(g.geoms) * max(fingers)
+            fn = n_fingers * max(fingers)
+        elif measured > 0:
+            fn = float(measured)
+            notes.append(
+                f"gripper {g.name!r}: its fingers are not driven by slide actuators (a tendon, "
+                "linkage or hinge jaw), so the actuator's force limit gives no pad force; the "
+                f"grip bound uses the recorded grasp force {measured:.3g} N")
         else:
             fn = math.nan
-            notes.append(f"gripper {g.name!r}: no actuated finger moves its pads, so the grasp "
-                         "force is unknown; pass normal_force to bound the grip")
+            notes.append(f"gripper {g.name!r}: no slide actuator moves its pads (a tendon, "
+                         "linkage or hinge jaw) and the recording shows no grasp force here, so "
+                         "the grasp force is unknown; pass normal_force to bound the grip")
         rel = acc - gravity
         axial = float(abs(axis @ rel))
         perp = float(np.linalg.norm(rel - axis * (axis @ rel)))
         grasps.append(GraspLoad(
-            gripper=g.name, attach_body=model.body(body).name, pads=len(g.geoms),
+            gripper=g.name, attach_body=model.body(body).name, pads=max(n_fingers, 1),
             normal_force=float(fn), measured_normal_force=float(measured),
             grasp_axis=axis, demand_per_kg=perp, axial_per_kg=axial,
             y=y_g[dofs] / gear))
