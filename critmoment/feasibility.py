@@ -626,18 +626,18 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
         return []
     out: list[str] = []
     sig = recording.signals
-    pose_hint = ("the trajectory carries no object pose, the model's default was used; give "
-                 "it with --object-pose" if trajectory.object_pose is None else
-                 "is the trajectory's object pose right (--object-pose)")
+    default = ("; the trajectory gives none, so the model's default pose was used"
+               if trajectory.object_pose is None and trajectory.qpos0 is None else "")
     touched = np.asarray(sig.contact_gripper, bool).any()
     if not touched:
-        out.append(f"the nominal run never touches the object: {pose_hint}, or is this "
-                   f"trajectory for another scenario?")
+        out.append(f"the nominal run never touches the object: is the object pose right "
+                   f"(--object-pose{default}), or is this trajectory for another scenario?")
     elif _needs_lift(twin):
         carried = carried_flags(sig.contact_support, sig.contact_gripper)
         if not twin.lifted(carried, recording.states).any():
-            out.append(f"the nominal run touches the object but never lifts it: does the "
-                       f"grasp close on it (gripper targets, object size), {pose_hint}?")
+            out.append(f"the nominal run touches the object but never lifts it: too heavy or "
+                       f"slippery at the nominal parameters, a grasp that does not close on "
+                       f"it, or a wrong object pose (--object-pose{default})?")
     if strict and out:
         raise TrajectoryError(out[0])
     return out

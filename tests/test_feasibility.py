@@ -231,6 +231,16 @@ def test_untouched_object_gives_the_fit_hint(twin):
     assert len(caught) == len(report.warnings) + 1
 
 
+def test_an_object_too_heavy_to_lift_gives_the_lift_hint(scenario, demo_traj):
+    # 3 kg nominal: the grip closes on the cube, which never leaves the table
+    box = scenario.box.with_range("mass", 0.05, 10.0, nominal=3.0)
+    heavy = Twin(scenario.replace(box=box))
+    rec = _record(heavy, demo_traj)
+    hints = check_fit(demo_traj, rec, heavy)
+    assert len(hints) == 1 and "touches the object but never lifts it" in hints[0]
+    assert "too heavy" in hints[0] and "--object-pose" in hints[0]
+
+
 # -- (e) the wrong scenario --------------------------------------------------------------------
 def test_width_mismatch_names_the_bundled_scenario(sticky, twin):
     aloha = Trajectory(actions=np.zeros((10, 14)), fps=50.0)
