@@ -1,0 +1,161 @@
+"""Reports and output folders: written whole or not at all, one run per folder."""
+
+from __future__ import annotations
+
+import errno
+import json
+import os
+import threading
+import warnings
+
+import pytest
+
+from critmoment import report
+from critmoment.exceptions import OutputError
+from critmoment.report import MARKER, Figures, StagedOutput, check_output_path, write_report
+
+
+@pytest.fixture(scope="module")
+def audit():
+    import critmoment as cm
+    from critmoment import analysis, demos
+
+    twin = cm.Twin(cm.load_scenario())
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        traj = demos.scripted_transfer(0, twin=twin)
+        return analysis.analyze(traj, twin=twin, options=analysis.AnalyzeOptions(
+            seed=0, n_samples=16, max_moments=2, verify=None))
+
+
+def _files(folder):
+    return sorted(os.listdir(folder))
+
+
+@pytest.mark.parametrize("figures, pngs", [
+    (Figures.NONE, set()),
+    (Figures.SUMMARY, {"signals.png", "moments.png", "cost_map.png"}),
+    (Figures.ALL, {"signals.png", "moments.png", "cost_map.png", "moment_*"}),
+])
+def test_write_report_figures(audit, tmp_path, figures, pngs):
+    paths = write_report(audit, tmp_path / "r", figures=figures)
+    names = set(_files(tmp_path / "r"))
+    assert {"report.json", "report.html", MARKER} <= names
+    got = {n for n in names if n.endswith(".png")}
+    per_moment = {n for n in got if n.startswith("moment_")}
+    assert got - per_moment == pngs - {"moment_*"}
+    assert len(per_moment) == (len(audit.moments) if figures is Figures.ALL else 0)
+    doc = json.loads((tmp_path / "r" / "report.json").read_text())
+    assert doc["verdict"] == audit.verdict.value
+    html = (tmp_path / "r" / "report.html").read_text(encoding="utf-8")
+    assert html.count("data:image/png;base64,") == len(got)
+    assert all(p.parent == tmp_path / "r" for p in paths.values())
+    marker = json.loads((tmp_path / "r" / MARKER).read_text())
+    assert marker["command"] == "analyze" and "report.json" in marker["files"]
+    assert _files(tmp_path) == ["r"]  # no temporary folder left
+
+
+def test_rewrite_replaces_the_whole_folder(audit, tmp_path):
+    out = tmp_path / "r"
+    write_report(audit, out, figures="all")
+    stale = sorted(n for n in _files(out) if n.startswith("moment_"))
+    assert stale
+    write_report(audit, out, figures="none")
+    assert not [n for n in _files(out) if n.endswith(".png")]  # nothing of the earlier run
+
+
+def test_failed_run_keeps_the_previous_output(tmp_path):
+    out = tmp_path / "r"
+    with StagedOutput(out, command="test") as stage:
+        (stage.path / "report.json").write_text("old")
+    with pytest.raises(RuntimeError, match="boom"), StagedOutput(out, command="test") as stage:
+        (stage.path / "report.json").write_text("new, half-writ")
+        raise RuntimeError("boom")
+    assert (out / "report.json").read_text() == "old"
+    assert _files(tmp_path) == ["r"]
+
+
+def test_disk_full_is_an_output_error_and_changes_nothing(tmp_path):
+    out = tmp_path / "r"
+    with StagedOutput(out, command="test") as stage:
+        (stage.path / "report.json").write_text("old")
+    with pytest.raises(OutputError, match="writing failed, nothing was changed"), \
+            StagedOutput(out, command="test"):
+        raise OSError(errno.ENOSPC, "No space left on device")
+    assert (out / "report.json").read_text() == "old"
+    assert _files(tmp_path) == ["r"]
+
+
+def test_swap_without_renameat2(tmp_path, monkeypatch):
+    monkeypatch.setattr(report, "_exchange", lambda a, b: False)
+    out = tmp_path / "r"
+    for text in ("one", "two"):
+        with StagedOutput(out, command="test") as stage:
+            (stage.path / f"{text}.json").write_text(text)
+    assert _files(out) == [MARKER, "two.json"]
+    assert _files(tmp_path) == ["r"]
+
+
+def test_concurrent_runs_do_not_interleave(tmp_path):
+    out = tmp_path / "r"
+    barrier = threading.Barrier(4)
+
+    def run(k):
+        with StagedOutput(out, command="test") as stage:
+            for i in range(20):
+                (stage.path / f"run{k}_{i}.json").write_text(str(k))
+                if i == 10:
+                    barrier.wait()  # every run is half-written at the same time
+
+    threads = [threading.Thread(target=run, args=(k,)) for k in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    names = [n for n in _files(out) if n != MARKER]
+    runs = {n.split("_")[0] for n in names}
+    assert len(runs) == 1 and len(names) == 20  # one whole run, not a mix
+    assert _files(tmp_path) == ["r"]
+
+
+@pytest.mark.parametrize("setup, match", [
+    (lambda tmp: (tmp / "f").write_text("x") and tmp / "f", "existing file"),
+    (lambda tmp: (tmp / "f").write_text("x") and tmp / "f" / "sub", "is a file"),
+    (lambda tmp: ((tmp / "home").mkdir(), (tmp / "home" / "notes.txt").write_text("x"),
+                  tmp / "home")[2], "other files"),
+    (lambda tmp: tmp / ("n" * 400), "cannot be used|at most"),
+])
+def test_bad_destinations_are_refused_before_work(tmp_path, setup, match):
+    dest = setup(tmp_path)
+    before = _files(tmp_path)
+    with pytest.raises(OutputError, match=match):
+        StagedOutput(dest, command="test")
+    assert _files(tmp_path) == before
+
+
+def test_a_file_destination_and_a_folder_in_its_place(tmp_path):
+    with StagedOutput(tmp_path / "a" / "t.npz", command="demo", kind="file") as stage:
+        stage.path.write_bytes(b"npz")
+    assert (tmp_path / "a" / "t.npz").read_bytes() == b"npz"
+    assert _files(tmp_path / "a") == ["t.npz"]
+    (tmp_path / "d.npz").mkdir()
+    with pytest.raises(OutputError, match="existing folder"):
+        StagedOutput(tmp_path / "d.npz", command="demo", kind="file")
+
+
+def test_legacy_output_without_marker_is_replaceable(tmp_path):
+    out = tmp_path / "r"
+    out.mkdir()
+    for name in ("report.json", "report.html", "signals.png", "moment_12.png"):
+        (out / name).write_text("old")
+    assert check_output_path(out) == out.resolve()
+
+
+def test_dollar_signs_are_not_mathtext():
+    assert report._tex_safe("run $\\frac{1$.npz") == "run \\$\\frac{1\\$.npz"
+
+
+def test_figures_parse():
+    assert Figures.parse("ALL") is Figures.ALL
+    with pytest.raises(Exception, match="figures: expected one of"):
+        Figures.parse("pretty")
