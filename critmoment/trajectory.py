@@ -1105,7 +1105,7 @@ def _index_column(column: Any, *, what: str) -> np.ndarray:
         if bad.size:
             i = int(bad[0])
             raise TrajectoryError(
-                f"{what}: expected integers, got {values[i]!r} at row {i} "
+                f"{what}: expected integers, got {float(values[i])!r} at row {i} "
                 f"({bad.size} non-integer value(s) in total)"
             )
         return values.astype(np.int64)

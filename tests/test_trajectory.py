@@ -11,11 +11,21 @@ import pyarrow as pa
 import pyarrow.parquet as pq
 import pytest
 
-from critmoment.exceptions import InputFileError, ParameterError, TrajectoryError
+from critmoment import budget
+from critmoment.exceptions import (
+    CritmomentWarning,
+    InputFileError,
+    ParameterError,
+    ResourceLimitError,
+    TrajectoryError,
+)
 from critmoment.trajectory import (
     RangePolicy,
     Trajectory,
+    as_object_pose,
     check_ranges,
+    input_identity,
+    list_episodes,
     load_trajectory,
     save_trajectory,
     upsample,
@@ -445,3 +455,124 @@ def test_upsample_parameter_errors(kwargs, match):
 def test_upsample_requires_fps_for_arrays():
     with pytest.raises(ParameterError, match=r"fps"):
         upsample(np.zeros((5, 2)), physics_dt=0.002)
+
+
+# ---------------------------------------------------------------------------
+# Object pose, episodes, input identity, declared sizes (issue 14)
+# ---------------------------------------------------------------------------
+
+
+def test_missing_object_pose_warns_and_option_overrides(tmp_path):
+    path = tmp_path / "t.npz"
+    np.savez(path, actions=np.zeros((5, 3)), fps=50.0)
+    with pytest.warns(CritmomentWarning, match="default object pose"):
+        assert load_trajectory(path).object_pose is None
+    pose = [0.1, 0.2, 0.05, 2.0 ** -0.5, 0.0, 0.0, 0.70711]  # norm 1.000002: normalised
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        traj = load_trajectory(path, object_pose=pose)
+    np.testing.assert_allclose(traj.object_pose[:3], [0.1, 0.2, 0.05])
+    assert np.linalg.norm(traj.object_pose[3:]) == pytest.approx(1.0, abs=1e-15)
+    np.savez(path, actions=np.zeros((5, 3)), object_pose=[0, 0, 0, 1, 0, 0, 0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the file's own pose: no warning
+        assert load_trajectory(path, object_pose=pose).object_pose[0] == 0.1  # option wins
+
+
+@pytest.mark.parametrize("pose, match", [
+    ([0, 0, 0, 1, 0, 0], "7 numbers"),
+    ([0, 0, np.nan, 1, 0, 0, 0], "finite"),
+    ([0, 0, 0, 0, 0, 0, 0], "unit quaternion"),
+    ([0, 0, 0, 1, 0, 0, 1], "norm 1.41421"),
+])
+def test_object_pose_rejected(pose, match):
+    with pytest.raises(ParameterError, match=match):
+        as_object_pose(pose)
+
+
+def test_act_env_state_gives_the_object_pose(tmp_path):
+    path = tmp_path / "episode_0.hdf5"
+    env = np.zeros((30, 7))
+    env[:, :3] = [0.05, 0.5, 0.02]
+    env[:, 3] = 2.0  # an unnormalised but usable quaternion is normalised
+    with h5py.File(path, "w") as f:
+        f.create_dataset("action", data=np.zeros((30, NA)))
+        f.create_dataset("observations/qpos", data=np.zeros((30, NA)))
+        f.create_dataset("observations/env_state", data=env)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(CritmomentWarning, match="not an object pose"):
+            load_trajectory(path)  # norm 2 is not within 1 % of a unit quaternion
+    env[:, 3] = 1.0
+    with h5py.File(path, "w") as f:
+        f.create_dataset("action", data=np.zeros((30, NA)))
+        f.create_dataset("observations/qpos", data=np.zeros((30, NA)))
+        f.create_dataset("observations/env_state", data=env)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        traj = load_trajectory(path)
+    np.testing.assert_array_equal(traj.object_pose, [0.05, 0.5, 0.02, 1, 0, 0, 0])
+    with h5py.File(path, "w") as f:  # insertion: peg then socket pose; the first is taken
+        f.create_dataset("action", data=np.zeros((30, NA)))
+        f.create_dataset("observations/qpos", data=np.zeros((30, NA)))
+        f.attrs["env_state"] = np.r_[env[0], env[0] + [1, 0, 0, 0, 0, 0, 0]]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        np.testing.assert_array_equal(load_trajectory(path).object_pose[:3], [0.05, 0.5, 0.02])
+
+
+def test_list_episodes(tmp_path):
+    rng = np.random.default_rng(5)
+    path, per_episode = _write_lerobot(tmp_path / "ds", rng, lengths=(12, 9, 4))
+    episodes = list_episodes(tmp_path / "ds")
+    assert [(e.index, e.frames) for e in episodes] == [(0, 12), (1, 9), (2, 4)]
+    assert all(e.file == str(path) for e in episodes)
+    assert [e.frames for e in list_episodes(path)] == [12, 9, 4]
+    npz = tmp_path / "t.npz"
+    np.savez(npz, actions=np.zeros((7, 3)), object_pose=[0, 0, 0, 1, 0, 0, 0])
+    assert [(e.index, e.frames) for e in list_episodes(npz)] == [(None, 7)]
+
+
+def test_lerobot_float_episode_index_is_accepted_when_integral(tmp_path):
+    root = tmp_path / "ds"
+    (root / "meta").mkdir(parents=True)
+    (root / "meta" / "info.json").write_text('{"fps": 50}')
+    (root / "data").mkdir()
+    pq.write_table(pa.table({"action": [[0.0] * 3] * 6, "episode_index": [0.0] * 3 + [1.0] * 3,
+                             "frame_index": [0, 1, 2] * 2}), root / "data" / "e.parquet")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        assert load_trajectory(root, episode=1).n_steps == 3
+    pq.write_table(pa.table({"action": [[0.0] * 3] * 6,
+                             "episode_index": [0.0] * 3 + [np.nan] * 3}),
+                   root / "data" / "e.parquet")
+    with pytest.raises(TrajectoryError, match=r"episode_index.*expected integers, got nan"):
+        load_trajectory(root, episode=0)
+
+
+def test_input_identity_ignores_the_spelling(tmp_path, monkeypatch):
+    path = tmp_path / "sub" / "t.npz"
+    path.parent.mkdir()
+    np.savez(path, actions=np.zeros((5, 3)))
+    monkeypatch.chdir(tmp_path)
+    spellings = [path, "sub/t.npz", "./sub/../sub/t.npz"]
+    (tmp_path / "link.npz").symlink_to(path)
+    ids = [input_identity(s) for s in [*spellings, "link.npz"]]
+    assert all(i == ids[0] for i in ids)
+    assert ids[0]["name"] == "t.npz" and len(ids[0]["sha256"]) == 64
+    assert input_identity("a description") == {"name": "a description", "sha256": None}
+
+
+def test_declared_sizes_are_checked_before_reading(tmp_path):
+    path = tmp_path / "t.npz"
+    np.savez(path, actions=np.zeros((400, 14)))
+    with budget.limits(max_input_bytes=1000):
+        with pytest.raises(ResourceLimitError, match=r"actions\.npy.*max_input_bytes.*"
+                                                     r"--max-input-bytes"):
+            load_trajectory(path)
+    h5 = tmp_path / "e.hdf5"
+    with h5py.File(h5, "w") as f:  # declared, never written: the file stays tiny
+        f.create_dataset("action", shape=(10**8, 14), chunks=(1024, 14), dtype="f8")
+    assert h5.stat().st_size < 100_000
+    with pytest.raises(ResourceLimitError, match="11,200,000,000 bytes"):
+        load_trajectory(h5)
