@@ -34,6 +34,7 @@ import numpy as np
 
 from critmoment.exceptions import (
     CritmomentError,
+    CritmomentWarning,
     InfeasibleTwinError,
     ParameterError,
     TrajectoryError,
@@ -58,7 +59,7 @@ log = logging.getLogger(__name__)
 _LIFT_TASKS = ("handover", "pick_place", "pick_hold")
 
 
-class FitWarning(UserWarning):
+class FitWarning(CritmomentWarning):
     """A trajectory that probably does not belong to its scenario (see :func:`check_fit`)."""
 
 
