@@ -90,3 +90,83 @@ def test_wrong_action_width_is_a_clear_error(tmp_path, capsys):
     np.savez(path, actions=np.zeros((50, 12)), fps=50.0)
     assert main(["rollout", str(path)]) == 2
     assert "expected 14 action values" in capsys.readouterr().err
+
+
+# -- issue 14: episodes, object pose, warnings, manifests, timings -------------------
+@pytest.fixture(scope="module")
+def lerobot_dataset(traj_file, tmp_path_factory):
+    """A LeRobot dataset holding two 10-frame episodes of the demo."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    root = tmp_path_factory.mktemp("lerobot") / "ds"
+    (root / "meta").mkdir(parents=True)
+    (root / "meta" / "info.json").write_text('{"fps": 50}')
+    (root / "data" / "chunk-000").mkdir(parents=True)
+    with np.load(traj_file) as z:
+        actions = z["actions"]
+    rows = [list(map(float, r)) for r in np.r_[actions[:10], actions[100:110]]]
+    pq.write_table(pa.table({"action": rows, "episode_index": [0] * 10 + [1] * 10,
+                             "frame_index": list(range(10)) * 2}),
+                   root / "data" / "chunk-000" / "episode_000000.parquet")
+    return root
+
+
+def test_episodes_lists_a_dataset(lerobot_dataset, capsys):
+    assert main(["episodes", str(lerobot_dataset), "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert [(e["index"], e["frames"]) for e in doc["episodes"]] == [(0, 10), (1, 10)]
+    assert main(["episodes", str(lerobot_dataset)]) == 0
+    out = capsys.readouterr().out
+    assert "2 episode(s)" in out and "episode 1: 10 frames" in out
+
+
+def test_episode_option_selects_the_episode(lerobot_dataset, capsys):
+    pose = ["0.1", "0.5", "0.02", "1", "0", "0", "0"]
+    assert main(["rollout", str(lerobot_dataset), "--episode", "1", "--json",
+                 "--object-pose", *pose]) == 0
+    cap = capsys.readouterr()
+    assert json.loads(cap.out)["steps"] == 100  # 10 frames at 50 Hz, 500 Hz physics
+    assert cap.err == ""  # the pose was given: no warning
+    assert main(["rollout", str(lerobot_dataset), "--json"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--episode" in err[0] and "[0, 1]" in err[0]
+
+
+def test_default_pose_warning_is_one_line(lerobot_dataset, capsys):
+    assert main(["rollout", str(lerobot_dataset), "--episode", "0", "--json"]) == 0
+    warns = [line for line in capsys.readouterr().err.splitlines() if "default object pose" in line]
+    assert len(warns) == 1 and warns[0].startswith("critmoment rollout: warning: ")
+
+
+def test_manifest_does_not_depend_on_the_path_spelling(traj_file, capsys, monkeypatch):
+    monkeypatch.chdir(traj_file.parent)
+    docs = []
+    for spelling in (str(traj_file), traj_file.name, f"./../{traj_file.parent.name}/traj.npz"):
+        assert main(["analyze", spelling, "--samples", "16", "--max-moments", "2",
+                     "--no-verify", "--json"]) == 1
+        doc = json.loads(capsys.readouterr().out)
+        doc.pop("timings")
+        docs.append(doc)
+    assert docs[0] == docs[1] == docs[2]
+    man = docs[0]["manifest"]
+    assert man["trajectory"] == "traj.npz" and len(man["trajectory_sha256"]) == 64
+    assert "/" not in (man["scenario_file"] or "")
+
+
+def test_validate_puts_every_wall_time_under_timings(traj_file, capsys, tmp_path):
+    tiny = tmp_path / "tiny.npz"
+    with np.load(traj_file) as z:
+        np.savez(tiny, actions=z["actions"][:10], fps=50.0, object_pose=z["object_pose"])
+    assert main(["validate", str(tiny), "--samples", "4", "--max-moments", "1", "--no-verify",
+                 "--json"]) in (0, 1)
+    doc = json.loads(capsys.readouterr().out)
+    assert set(doc["timings"]) == {"sparse_seconds", "brute_force_seconds", "compute_ratio"}
+    assert doc["timings"]["sparse_seconds"] > 0
+
+
+def test_verbose_errors_add_the_traceback(capsys):
+    assert main(["-v", "rollout", "missing.npz"]) == 2
+    err = capsys.readouterr().err
+    assert "Traceback" in err and err.strip().splitlines()[-1].startswith(
+        "critmoment rollout: error: ")
