@@ -34,7 +34,8 @@ HOLD_TORQUE = LINK_MASS * G * LINK_L / 2   # 1.226 N·m
 KP = 2000.0
 
 
-def _arm_xml(*, axis: str, forcerange: float, frictionloss: float) -> str:
+def _arm_xml(*, axis: str, forcerange: float, frictionloss: float,
+             actuator: str | None = None) -> str:
     return f"""<mujoco model="arm">
   <compiler angle="radian" inertiafromgeom="true"/>
   <option timestep="0.002" integrator="implicitfast"/>
@@ -54,16 +55,18 @@ def _arm_xml(*, axis: str, forcerange: float, frictionloss: float) -> str:
     </body>
   </worldbody>
   <actuator>
-    <position name="servo" joint="hinge" kp="{KP}" kv="40" forcerange="-{forcerange} {forcerange}"/>
+    {actuator or f'<position name="servo" joint="hinge" kp="{KP}" kv="40" '
+                 f'forcerange="-{forcerange} {forcerange}"/>'}
   </actuator>
 </mujoco>
 """
 
 
-def _scene(folder: Path, *, axis: str, limit: float, frictionloss: float = 0.0) -> Path:
+def _scene(folder: Path, *, axis: str, limit: float, frictionloss: float = 0.0,
+           actuator: str | None = None) -> Path:
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "arm.xml").write_text(_arm_xml(axis=axis, forcerange=limit,
-                                             frictionloss=frictionloss))
+                                             frictionloss=frictionloss, actuator=actuator))
     toml = one_actuator_toml("arm", mjcf="arm.xml", gripper="hand", gripper_geom="pad",
                              support="floor", actuator="servo", limit=limit, label="hinge",
                              uncertainty="""[uncertainty.mass]
@@ -114,6 +117,36 @@ def test_frictionloss_on_a_joint_that_need_not_move_is_fine(sticky):
     rec = _record(sticky, _ramp(0.0))
     report = check_feasibility(rec, sticky)
     assert report.feasible and report.joint("servo").max_lag < 1e-6
+
+
+# a general actuator with an affine bias and a gear: force = kp·ctrl + b0 − kp·(2q) − kv·(2q̇),
+# which pulls q to (ctrl + b0/kp) / 2 (b0 = 0.1·kp)
+GENERAL = (f'<general name="servo" joint="hinge" gear="2" gaintype="fixed" gainprm="{KP}" '
+           f'biastype="affine" biasprm="{0.1 * KP} -{KP} -4" forcelimited="true" '
+           f'forcerange="-20 20"/>')
+
+
+@pytest.mark.parametrize("frictionloss, feasible", [(30.0, True), (45.0, False)])
+def test_general_affine_servo_target_and_geared_limit(tmp_path, frictionloss, feasible):
+    twin = Twin(load_scenario(_scene(tmp_path, axis="0 0 1", limit=20.0,
+                                     frictionloss=frictionloss, actuator=GENERAL)))
+    rec = _record(twin, _ramp(1.0))
+    # the joint limit is 20 N × gear 2 = 40 N·m: 30 N·m of friction can be overcome, 45 cannot
+    if not feasible:
+        with pytest.raises(InfeasibleTwinError, match=r"frictionloss 45 N·m > force limit "
+                           r"40 N·m \(\[limits\] × gear 2\)"):
+            check_feasibility(rec, twin)
+        return
+    report = check_feasibility(rec, twin)
+    entry = report.joint("hinge")
+    assert entry.kind == "position"
+    q_end = rec.states[-1, 1 + twin.model.jnt_qposadr[0]]
+    assert q_end == pytest.approx((1.0 + 0.1) / 2, abs=0.01)  # the physics' own target
+    # the largest lag is the first step's: the twin starts the joint at q = ctrl = 0, the
+    # servo's target is b0/kp/gear = 0.05 rad; after that it tracks (ctrl + b0/kp) / gear
+    assert entry.max_lag == pytest.approx(0.05, abs=2e-3) and entry.max_lag_time < 0.01
+    check_feasibility(rec, twin, options=FeasibilityOptions(lag_tolerance=0.02))
+    assert entry.target_span == pytest.approx(0.5, abs=0.005)  # spline overshoot
 
 
 # -- (b) a servo too weak for gravity ------------------------------------------------------
