@@ -331,3 +331,14 @@ def test_bundled_model_with_interbotix_friction_is_infeasible(tmp_path, demo_tra
     # every arm joint whose target moves is named, the fingers (0.1 N) are not
     problems = exc.value.report.problems
     assert len(problems) >= 6 and not any("finger" in p for p in problems)
+
+
+def test_the_audit_reports_its_feasibility(twin, demo_traj):
+    from critmoment.analysis import AnalyzeOptions, analyze
+
+    quick = AnalyzeOptions(n_samples=8, max_moments=1, search=False, verify=None,
+                           map_resolution=0)
+    report = analyze(demo_traj, twin=twin, options=quick)
+    assert report.feasibility is not None and report.feasibility.feasible
+    doc = report.to_json()["feasibility"]
+    assert doc["feasible"] is True and len(doc["joints"]) == 16 and doc["fit_warnings"] == []
