@@ -114,7 +114,7 @@ __all__ = [
     "OthersAt",
     "FailSide",
     "Failure",
-    "SparseSettings",
+    "DecisionSettings",
     "sparse_settings",
     "grip_frames",
     "SparseResult",
@@ -206,8 +206,9 @@ DEFAULT_CREEP_HORIZON = 0
 
 
 @dataclasses.dataclass(frozen=True)
-class SparseSettings:
-    """How a sparse evaluation decides, as the evaluator applies it.
+class DecisionSettings:
+    """How a sparse evaluation decides, as the evaluator applies it (resolved from the
+    evaluator's arguments and the scenario's ``[sparse]`` table, ``scenario.sparse``).
 
     Attributes:
         persistence: how long a contact-FOS excursion must last to count [s].
@@ -233,7 +234,7 @@ class SparseSettings:
 
 def sparse_settings(scenario, *, persistence: float | None = None,
                     slip_tolerance: float | None = None,
-                    creep_horizon: int | None = None) -> SparseSettings:
+                    creep_horizon: int | None = None) -> DecisionSettings:
     """The decision settings: the arguments given, else the scenario's ``[sparse]`` table
     (``scenario.sparse``, when the scenario has one), else the defaults."""
     table = getattr(scenario, "sparse", None)
@@ -241,7 +242,7 @@ def sparse_settings(scenario, *, persistence: float | None = None,
     def pick(value, name, default):
         return value if value is not None else getattr(table, name, default)
 
-    return SparseSettings(
+    return DecisionSettings(
         persistence=pick(persistence, "persistence", DEFAULT_PERSISTENCE),
         slip_tolerance=pick(slip_tolerance, "slip_tolerance", DEFAULT_SLIP_TOLERANCE),
         creep_horizon=pick(creep_horizon, "creep_horizon", DEFAULT_CREEP_HORIZON))
@@ -368,7 +369,7 @@ class SparseResult:
     failure: np.ndarray | None = None
     slip: np.ndarray | None = None
     excursion: np.ndarray | None = None
-    settings: SparseSettings | None = None
+    settings: DecisionSettings | None = None
 
     @property
     def threshold(self) -> float:

@@ -618,14 +618,14 @@ def test_settings_come_from_the_arguments_else_the_scenario_else_the_defaults(tw
     assert engine.persistence_steps == max(1, round(engine.settings.persistence / 0.002))
     mine = SparseEvaluator(demo_recording, twin, persistence=0.05, slip_tolerance=0.01,
                            creep_horizon=30)
-    assert mine.settings == sparse.SparseSettings(0.05, 0.01, 30)
+    assert mine.settings == sparse.DecisionSettings(0.05, 0.01, 30)
     assert mine.persistence_steps == 25
     with pytest.raises(ParameterError, match="persistence"):
-        sparse.SparseSettings(persistence=-1.0)
+        sparse.DecisionSettings(persistence=-1.0)
     with pytest.raises(ParameterError, match="slip_tolerance"):
-        sparse.SparseSettings(slip_tolerance=0.0)
+        sparse.DecisionSettings(slip_tolerance=0.0)
     with pytest.raises(ParameterError, match="creep_horizon"):
-        sparse.SparseSettings(creep_horizon=-2)
+        sparse.DecisionSettings(creep_horizon=-2)
 
 
 def test_creep_horizon_fails_a_creeping_grip_the_force_ratio_passes(tmp_path, scenario,
