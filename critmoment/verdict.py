@@ -811,6 +811,8 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
             region is not None and _is_whole_box(region, box)):
         verdict = Verdict.CONDITIONAL  # the whole box did not pass its own check
     text = region_text(region, box, verdict, check)
+    if verdict is Verdict.CONDITIONAL and region is None and n and failed.all():
+        text = f"no safe region: all {n} samples of the box fail"
     causes = tuple(_causes(evidence.moments, options.threshold))
     if nominal_squeeze:
         causes = (f"the nominal cost exceeds the threshold ({evidence.nominal_cost:.3g} > "
