@@ -1,11 +1,13 @@
 """One audit vs one frequent rollout vs brute-force full rollouts, side by side in one run.
 
-    python benchmarks/bench_analyze.py [--samples 256] [--seed 0] [--threads 0]
+    python benchmarks/bench_analyze.py [--samples 256] [--seed 0] [--threads 0] [--render-only]
 
-Prints the wall time of (a) one audit's computation (``analysis.analyze``, report rendering
-timed separately), (b) one nominal frequent rollout, (c) brute-force full rollouts of the
-whole trajectory for the same parameter samples the verdict uses (batched through
-``mujoco.batch``, all threads), and the ratios. Ends with ``ratio audit/brute-force: R``.
+Prints the wall time of (a) one audit's computation (``analysis.analyze``) and, side by side,
+the rendering of its report (report.json, figures, report.html; ``report.write_report``) for
+each figure set (none, summary: the default, all), (b) one nominal frequent rollout, (c)
+brute-force full rollouts of the whole trajectory for the same parameter samples the verdict
+uses (batched through ``mujoco.batch``, all threads), and the ratios. Ends with
+``ratio audit/brute-force: R``. ``--render-only`` stops after the audit/render table.
 """
 
 import argparse
@@ -24,6 +26,8 @@ def main():
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--threads", type=int, default=0)
     parser.add_argument("--chunk", type=int, default=32, help="simulations per brute-force batch")
+    parser.add_argument("--render-only", action="store_true",
+                        help="only the audit and report rendering times")
     args = parser.parse_args()
     warnings.simplefilter("ignore")
 
@@ -35,10 +39,18 @@ def main():
     t0 = time.perf_counter()
     audit = analysis.analyze(traj, twin=twin, options=opts)
     t_audit = time.perf_counter() - t0
+    t_render = {}
     with tempfile.TemporaryDirectory() as tmp:
-        t0 = time.perf_counter()
-        report.write_report(audit, tmp)
-        t_render = time.perf_counter() - t0
+        for figures in report.Figures:
+            t0 = time.perf_counter()
+            report.write_report(audit, f"{tmp}/{figures.value}", figures=figures)
+            t_render[figures.value] = time.perf_counter() - t0
+    print(f"{'audit (analyze) [s]':>24s} {'render ' + ' / '.join(t_render) + ' [s]':>34s} "
+          f"{'default render / audit':>24s}")
+    print(f"{t_audit:24.3f} {' / '.join(f'{v:.3f}' for v in t_render.values()):>34s} "
+          f"{t_render['summary'] / t_audit:24.2f}")
+    if args.render_only:
+        return
 
     reps = 5
     t0 = time.perf_counter()
@@ -64,7 +76,8 @@ def main():
     print(f"{'audit computation (analyze)':44s} {t_audit:10.3f}")
     for stage, sec in audit.timings.items():
         print(f"{'  ' + stage:44s} {sec:10.3f}")
-    print(f"{'report rendering (json, figures, html)':44s} {t_render:10.3f}")
+    for figures, sec in t_render.items():
+        print(f"{f'report rendering, figures {figures}':44s} {sec:10.3f}")
     print(f"{'one frequent rollout (nominal)':44s} {t_rollout:10.3f}")
     print(f"{f'brute force: {args.samples} full rollouts':44s} {t_brute:10.3f}")
     print(f"audit / frequent rollout: {t_audit / t_rollout:.2f} rollouts")
