@@ -331,3 +331,39 @@ def test_compare_rejects_other_samples(twin, demo_traj):
                     max_moments=1)
     with pytest.raises(ParameterError, match="same samples"):
         val.compare(bf, p)
+
+
+def test_a_validation_without_real_success_or_failure_is_vacuous():
+    mixed = _result([False, True], [False, True])
+    assert not mixed.vacuous and mixed.to_json()["vacuous"] is False
+    assert "VACUOUS" not in mixed.summary_text()
+    for real in ([True, True], [False, False]):
+        r = _result([True, False], real)
+        assert r.vacuous
+        assert json.loads(json.dumps(r.to_json()))["vacuous"] is True
+        assert "VACUOUS" in r.summary_text()
+
+
+def test_predict_decides_as_the_audit_does(twin, demo_traj, scenario):
+    """Validation measures the method itself: the audit's failing samples, sample by sample."""
+    import dataclasses
+
+    from critmoment.analysis import AnalyzeOptions, analyze
+    from critmoment.twin import Twin
+
+    boundary = Twin(scenario.replace(box=scenario.box.with_range("mass", 0.05, 1.5)))
+    options = AnalyzeOptions(n_samples=32, search=False, map_resolution=0, critical_grid=5)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        report = analyze(demo_traj, twin=boundary, options=options)
+        p = val.predict(demo_traj, twin=boundary, samples=report.sweep.samples)
+    assert report.verification["rollouts"] > 0  # the rollouts' outcomes take part
+    np.testing.assert_array_equal(p.failed, report.failed)
+    np.testing.assert_array_equal(p.steps, report.sweep.steps)
+    assert int(p.verified.sum()) == report.verification["rollouts"]
+    strict = dataclasses.replace(options, verify=None)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        plain = analyze(demo_traj, twin=boundary, options=strict)
+        q = val.predict(demo_traj, twin=boundary, samples=plain.sweep.samples, verify=None)
+    np.testing.assert_array_equal(q.failed, plain.failed)
