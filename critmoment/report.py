@@ -470,6 +470,10 @@ def check_output_path(path: str | os.PathLike, *, kind: str = "folder",
         raise OutputError(f"{option} {_short(raw)!r}: expected names of at most {name_max} "
                           f"bytes, got one of {len(os.fsencode(long_parts[0]))} bytes")
     if exists and kind == "folder":
+        cwd = Path(os.path.realpath(os.getcwd()))
+        if cwd == dest or dest in cwd.parents:  # replacing it would pull the floor away
+            raise OutputError(f"{option} {_short(raw)!r}: expected a folder other than the "
+                              f"current working directory or one of its parents")
         try:
             foreign = _foreign_entries(dest)
         except OSError as exc:

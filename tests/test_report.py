@@ -159,3 +159,13 @@ def test_figures_parse():
     assert Figures.parse("ALL") is Figures.ALL
     with pytest.raises(Exception, match="figures: expected one of"):
         Figures.parse("pretty")
+
+
+def test_the_working_directory_is_never_replaced(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(OutputError, match="current working directory"):
+        StagedOutput(".", command="test")
+    (tmp_path / "sub").mkdir()
+    monkeypatch.chdir(tmp_path / "sub")
+    with pytest.raises(OutputError, match="current working directory"):
+        StagedOutput("..", command="test")
