@@ -140,11 +140,11 @@ ROBOTS = {
     "panda_robotiq85": dict(
         arm="robots/panda/robot.xml", gripper="grippers/robotiq_gripper_85.xml",
         base=(-0.56, 0.0, 0.8), joints=tuple(f"joint{i}" for i in range(1, 8)),
-        kp=(600, 600, 600, 600, 250, 150, 50), kv=(50, 50, 50, 50, 20, 15, 5)),
+        kp=(600, 600, 600, 600, 250, 150, 50), kv=(30, 30, 20, 20, 3, 2, 1)),
     "sawyer_rethink": dict(
         arm="robots/sawyer/robot.xml", gripper="grippers/rethink_gripper.xml",
         base=(-0.56, 0.0, 0.8), joints=tuple(f"right_j{i}" for i in range(7)),
-        kp=(600, 600, 400, 400, 150, 150, 50), kv=(50, 50, 40, 40, 15, 15, 5)),
+        kp=(600, 600, 400, 400, 150, 150, 50), kv=(30, 30, 20, 20, 3, 2, 1)),
 }
 
 #: the cube added to the robosuite scenes: half edge [m], mass [kg], where it rests [m]
