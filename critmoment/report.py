@@ -358,9 +358,10 @@ def write_report(report, out: str | Path, *, figures: Figures | str = Figures.SU
                  ) -> dict[str, Path]:
     """Writes report.json, the figures and a self-contained report.html into ``out``.
 
-    The folder is written whole or not at all (:class:`StagedOutput`): a failure leaves
-    a previous report in ``out`` untouched, and ``out`` ends up holding this report's
-    files only.
+    The files are staged in a temporary folder and moved into ``out`` at the end
+    (:class:`StagedOutput`): a failure leaves a previous report in ``out`` untouched, and
+    ``out`` ends up holding this report's files and no file of an earlier one. Other files
+    in ``out`` (e.g. the trajectory) are kept.
 
     Args:
         report: an :class:`~critmoment.analysis.AuditReport`.
@@ -371,11 +372,11 @@ def write_report(report, out: str | Path, *, figures: Figures | str = Figures.SU
         The written paths by name (``json``, ``html`` and one per figure).
 
     Raises:
-        OutputError: ``out`` is a file, lies under a file, is not writable, holds files
-            that are not a critmoment output, or the disk fills.
+        OutputError: ``out`` is a file, lies under a file, is not writable, or the disk
+            fills.
     """
     which = Figures.parse(figures)
-    with StagedOutput(out, command="analyze") as stage:
+    with StagedOutput(out, command="analyze", shared=True) as stage:
         names = write_report_files(report, stage.path, figures=which)
     return {k: stage.destination / v.name for k, v in names.items()}
 
@@ -416,21 +417,21 @@ def _nearest_existing(path: Path) -> Path:
 
 
 def _foreign_entries(folder: Path) -> list[str]:
-    """Entries of ``folder`` that no critmoment command writes."""
-    names = [e.name for e in os.scandir(folder)]
-    if MARKER in names:
-        return []
-    return sorted(n for n in names if n not in _KNOWN_OUTPUTS and not n.endswith(".png"))
+    """Entries of ``folder`` that are not part of its critmoment output."""
+    names = {e.name for e in os.scandir(folder)}
+    ours = _previous_files(folder) | {MARKER}
+    return sorted(names - ours)
 
 
 def check_output_path(path: str | os.PathLike, *, kind: str = "folder",
-                      option: str = "--out") -> Path:
+                      option: str = "--out", shared: bool = False) -> Path:
     """Validates an output path before any work starts.
 
     Args:
         path: the destination folder (``kind="folder"``) or file (``kind="file"``).
         kind: ``"folder"`` or ``"file"``.
         option: how the path was given, for messages.
+        shared: a folder may hold other files (see :class:`StagedOutput`).
 
     Returns:
         The destination as an absolute path (symlinks resolved).
@@ -479,7 +480,7 @@ def check_output_path(path: str | os.PathLike, *, kind: str = "folder",
         except OSError as exc:
             raise OutputError(f"{option} {_short(raw)!r}: cannot list the folder: "
                               f"{exc.strerror or exc}") from None
-        if foreign:
+        if foreign and not shared:
             shown = ", ".join(foreign[:5]) + (" ..." if len(foreign) > 5 else "")
             raise OutputError(
                 f"{option} {_short(raw)!r}: expected an empty folder or one holding an "
@@ -532,6 +533,16 @@ def _exchange(a: Path, b: Path) -> bool:
     raise OSError(err, os.strerror(err), str(b))
 
 
+def _previous_files(folder: Path) -> set[str]:
+    """The files of the critmoment output in ``folder`` (its marker's list, or known names)."""
+    try:
+        listed = json.loads((folder / MARKER).read_text())["files"]
+        return {str(n) for n in listed if "/" not in str(n) and str(n) not in ("", ".", "..")}
+    except (OSError, ValueError, KeyError, TypeError):
+        return {e.name for e in os.scandir(folder) if e.is_file() and (
+            e.name in _KNOWN_OUTPUTS or e.name.endswith(".png"))}
+
+
 class StagedOutput:
     """Builds an output folder (or file) in a temporary place and moves it into position.
 
@@ -547,6 +558,13 @@ class StagedOutput:
     parent folder either way. On an exception it is removed and the destination is left
     as it was.
 
+    With ``shared=True`` a destination folder may also hold files critmoment did not
+    write (e.g. the trajectory beside its report). Those are never touched: the new
+    files are renamed in one by one, replacing same-named ones atomically, then the
+    files of the previous output that the new one lacks are removed, all under the lock
+    on the folder, so concurrent runs still cannot interleave (an interruption during
+    these renames, unlike the swap, can leave some previous files).
+
     Attributes:
         destination: the final path (absolute).
         path: the temporary folder (or, for ``kind="file"``, the temporary file) to
@@ -554,11 +572,12 @@ class StagedOutput:
     """
 
     def __init__(self, destination: str | os.PathLike, *, command: str, kind: str = "folder",
-                 option: str = "--out"):
+                 option: str = "--out", shared: bool = False):
         if kind not in ("folder", "file"):
             raise ParameterError(f"kind: expected 'folder' or 'file', got {kind!r}")
-        self.option, self.kind, self.command = option, kind, command
-        self.destination = check_output_path(destination, kind=kind, option=option)
+        self.option, self.kind, self.command, self.shared = option, kind, command, shared
+        self.destination = check_output_path(destination, kind=kind, option=option,
+                                             shared=shared)
         self._raw = os.fspath(destination)
         self._tmpdir: Path | None = None
         self.path: Path = self.destination
@@ -594,6 +613,17 @@ class StagedOutput:
                 shutil.rmtree(self._tmpdir, ignore_errors=True)
         return False
 
+    def _merge_into(self, dest: Path) -> None:
+        """Renames the staged files into a folder that also holds other files."""
+        new = sorted(e.name for e in os.scandir(self.path) if e.name != MARKER)
+        old = _previous_files(dest) - set(new) - {MARKER}
+        for name in new:
+            os.replace(self.path / name, dest / name)
+        for name in old:
+            with contextlib.suppress(FileNotFoundError):
+                (dest / name).unlink()
+        os.replace(self.path / MARKER, dest / MARKER)
+
     def _commit(self) -> None:
         dest = self.destination
         try:
@@ -606,8 +636,11 @@ class StagedOutput:
                 if self.kind == "file":
                     os.replace(self.path, dest)
                     return
-                check_output_path(dest, kind="folder", option=self.option)
-                if not dest.exists():
+                check_output_path(dest, kind="folder", option=self.option,
+                                  shared=self.shared)
+                if dest.exists() and _foreign_entries(dest):
+                    self._merge_into(dest)
+                elif not dest.exists():
                     os.rename(self.path, dest)
                 elif not _exchange(self.path, dest):
                     aside = Path(tempfile.mkdtemp(prefix=f".{dest.name[:80]}.critmoment-old-",

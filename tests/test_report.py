@@ -169,3 +169,16 @@ def test_the_working_directory_is_never_replaced(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path / "sub")
     with pytest.raises(OutputError, match="current working directory"):
         StagedOutput("..", command="test")
+
+
+def test_write_report_keeps_other_files_beside_the_report(audit, tmp_path):
+    (tmp_path / "traj.npz").write_bytes(b"the user's trajectory")
+    (tmp_path / "notes").mkdir()
+    write_report(audit, tmp_path, figures="all")
+    first = set(_files(tmp_path))
+    assert {"traj.npz", "notes", "report.json", "report.html", MARKER} <= first
+    write_report(audit, tmp_path, figures="none")  # a later report replaces the earlier one
+    assert set(_files(tmp_path)) == {"traj.npz", "notes", "report.json", "report.html", MARKER}
+    assert (tmp_path / "traj.npz").read_bytes() == b"the user's trajectory"
+    with pytest.raises(OutputError, match="other files"):  # strict, as the CLI's --out
+        StagedOutput(tmp_path, command="analyze")
