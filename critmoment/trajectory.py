@@ -1112,8 +1112,12 @@ def _index_column(column: Any, *, what: str) -> np.ndarray:
     raise TrajectoryError(f"{what}: expected an integer column, got type {arr.type}")
 
 
+_LEROBOT_COLUMNS = ("action", "episode_index", "frame_index", "timestamp", "observation.state")
+
+
 def _check_parquet_size(path: Path) -> None:
-    """Checks the values a parquet file declares in its footer against the budget."""
+    """Checks the values of the columns read, as the file's footer declares them, against
+    the budget."""
     import pyarrow.parquet as pq
 
     meta = pq.ParquetFile(path).metadata
@@ -1121,7 +1125,10 @@ def _check_parquet_size(path: Path) -> None:
     for g in range(meta.num_row_groups):
         group = meta.row_group(g)
         for c in range(group.num_columns):
-            values += max(int(group.column(c).num_values), 0)
+            column = group.column(c)
+            top = column.path_in_schema
+            if any(top == name or top.startswith(name + ".") for name in _LEROBOT_COLUMNS):
+                values += max(int(column.num_values), 0)
     budget.check_bytes(8.0 * values, what=f"{_short(path)!r} ({meta.num_rows} rows, "
                                           f"{values} values as float64)")
 
@@ -1283,8 +1290,7 @@ def _load_lerobot_files(
             f"{str(chosen_file)!r}: expected a column 'action' (one fixed-length "
             f"vector per row), found columns {schema.names}"
         )
-    wanted = [c for c in ("action", "episode_index", "frame_index", "timestamp",
-                          "observation.state") if c in schema.names]
+    wanted = [c for c in _LEROBOT_COLUMNS if c in schema.names]
     try:
         table = pq.read_table(chosen_file, columns=wanted)
         if ep is not None:
