@@ -535,7 +535,7 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
                  "too weak for the load; check [limits], the model's forcerange and gear")
         out.append(
             f"the twin cannot reproduce the nominal motion: actuator {e.actuator!r} (joint "
-            f"{e.joint!r}) is at its force limit {e.force_limit:g} {fu} ({e.limit_source}) "
+            f"{e.joint!r}) is at (or above) its force limit {e.force_limit:g} {fu} ({e.limit_source}) "
             f"for {e.saturation_duration:.3g} s from t = {e.saturation_start:.3f} s (largest "
             f"lag {e.max_lag:.3g} {e.unit}); likely cause: {cause}")
     if e.blocked_by:

@@ -190,6 +190,25 @@ def test_strong_servo_holds_with_the_static_error(strong):
     assert entry.saturation_duration == 0.0 and entry.lag_duration == 0.0
 
 
+@pytest.mark.parametrize("limit, saturated", [(1.235, True), (1.26, False)])
+def test_a_static_hold_at_the_limit_saturates(tmp_path, limit, saturated):
+    # holding m·g·L/2 = 1.226 N·m: 99.3 % of 1.235 N·m counts as saturated, 97.3 % of 1.26 not
+    twin = Twin(load_scenario(_scene(tmp_path, axis="0 1 0", limit=limit)))
+    rec = _record(twin, _ramp(0.0))
+    report = check_feasibility(rec, twin, raise_on_failure=False)
+    entry = report.joint("hinge")
+    assert entry.max_lag < 0.01  # it holds: the lag is no problem
+    assert report.feasible is not saturated
+    if saturated:
+        assert entry.saturation_duration > 1.9
+        assert report.problems[0].startswith(
+            f"the twin cannot reproduce the nominal motion: actuator 'servo' (joint 'hinge') is "
+            f"at (or above) its force limit {limit:g} N·m ([limits]) for "
+            f"{entry.saturation_duration:.3g} s")
+    else:  # only the first steps, while the servo takes up the load
+        assert entry.saturation_duration < 0.05 and entry.saturation_start == 0.0
+
+
 def test_lag_tolerance_and_delay_decide(strong):
     rec = _record(strong, _ramp(1.0))
     # a servo follows a ramp late: without a delay allowance the lag is larger
