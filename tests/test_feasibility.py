@@ -206,7 +206,7 @@ def test_a_static_hold_at_the_limit_saturates(tmp_path, limit, saturated):
             f"at (or above) its force limit {limit:g} N·m ([limits]) for "
             f"{entry.saturation_duration:.3g} s")
     else:  # only the first steps, while the servo takes up the load
-        assert entry.saturation_duration < 0.05 and entry.saturation_start == 0.0
+        assert entry.saturation_total < 0.05 and entry.saturation_start < 0.1
 
 
 def test_lag_tolerance_and_delay_decide(strong):
