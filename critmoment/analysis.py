@@ -553,16 +553,18 @@ def decision_options(opt: AnalyzeOptions, threshold: float) -> vd.DecisionOption
 def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Trajectory,
                  twin: Twin, evaluator: sp.SparseEvaluator, steps: np.ndarray,
                  sides: Sequence[str], options: vd.DecisionOptions, nominal_completed: bool,
-                 exhaustive: bool = False, nthread: int = 0, per_edge: int = 5,
-                 worst: int = 4, margin: float = 0.01, max_rounds: int = 4,
+                 exhaustive: bool = False, nthread: int = 0, per_edge: int = 3,
+                 worst: int = 2, margin: float = 0.01, max_rounds: int = 4,
                  reference: NominalReference | None = None) -> vd.RegionCheck:
     """Check a claimed safe region on its corners and edges, and shrink it until it holds.
 
     Each round evaluates the region's corners and edges (:func:`critmoment.verdict.
     region_points`, ``per_edge`` points per edge, 4× denser on edges where the cost comes
-    within ``verify × threshold``) by sparse evaluation at the audit's moments, and decides
+    within ``verify × threshold``, unless a coarse point already fails) by sparse evaluation
+    at the audit's moments, and decides
     the ``worst`` highest-cost points that pass (and those that fail only unlifted) by their
-    own full rollout (:func:`critmoment.groundtruth.brute_force`). When a point fails, the
+    own full rollout (:func:`critmoment.groundtruth.brute_force`) once no point fails the
+    sparse evaluation (before, the region shrinks anyway). When a point fails, the
     region's failing-side faces move in (:func:`critmoment.verdict.shrink_region`: its new
     worst corner is a checked point that passed, ``margin`` prior-quantile units from every
     failing one) and the next round checks the new region.
@@ -601,17 +603,21 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
             break
         pts, edges = vd.region_points(current, box, per_edge=per_edge)
         res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
+        n_sparse += pts.shape[0]
         hot = vd.hot_edges(edges, res.worst_cost(), near=near_cost)
-        if hot:
+        coarse_fails = (res.failed_any & ~res.failed_unlifted_only).any()
+        if hot and not (coarse_fails and rnd < max_rounds):
             pts, edges = vd.region_points(current, box, per_edge=per_edge, dense=hot)
             res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
-        n_sparse += pts.shape[0]
+            n_sparse += pts.shape[0]
         cost = res.worst_cost()
         # sparse evaluation decides every point; the worst points that pass (and those that
         # fail only unlifted) are decided by their own full rollout
         unlifted = res.failed_unlifted_only if options.rolls_unlifted else np.zeros(
             pts.shape[0], bool)
         rolled = unlifted | vd.points_to_roll_out(cost, res.failed_any, unlifted, worst=worst)
+        if (res.failed_any & ~unlifted).any():
+            rolled = np.zeros(pts.shape[0], bool)  # it shrinks anyway: rollouts next round
         outcome = np.zeros(pts.shape[0], bool)
         if rolled.any():
             outcome[rolled] = roll(pts[rolled])
