@@ -3,8 +3,9 @@
 The pipeline, one stage per module::
 
     trajectory -> recording (frequent rollout) -> moments -> dynamics / search
-               -> sparse (evaluation) -> analysis (verdict) -> report
-    validate: the verdicts against brute-force full rollouts
+               -> sparse (evaluation) -> analysis (evidence) -> verdict (decision) -> report
+    groundtruth: full rollouts and their real outcomes (below the audit)
+    validate: the audit's decisions against the ground truth
 
 ``critmoment.analyze(traj, scenario)`` chains the stages; each stage can be called alone.
 """
@@ -18,6 +19,7 @@ from critmoment.exceptions import (
                                    SimulationDivergedError,
                                    TrajectoryError,
 )
+from critmoment.groundtruth import BruteForce, brute_force
 from critmoment.moments import Moment, MomentDetector, MomentLabel, find_moments
 from critmoment.params import UncertaintyBox
 from critmoment.recording import Recording, rollout, simulate
@@ -33,6 +35,7 @@ from critmoment.sparse import (
 from critmoment.trajectory import Trajectory, load_trajectory, save_trajectory
 from critmoment.twin import Signals, Twin
 from critmoment.validation import Outcome, ValidationResult, validate
+from critmoment.verdict import Decision, decide
 
 __version__ = "0.1.0"
 
@@ -69,8 +72,12 @@ __all__ = [
     "save_trajectory",
     "Signals",
     "Twin",
+    "BruteForce",
+    "brute_force",
     "Outcome",
     "ValidationResult",
     "validate",
+    "Decision",
+    "decide",
     "__version__",
 ]
