@@ -24,7 +24,7 @@ import mujoco
 import numpy as np
 
 __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
-           "gripper_gap", "closing_ends", "moves_geoms"]
+           "gripper_gap", "closing_ends", "moves_geoms", "position_target"]
 
 
 class ActuatorKind(enum.Enum):
@@ -289,3 +289,25 @@ def moves_geoms(model: mujoco.MjModel, actuators: Sequence[int], geom_ids: Seque
         per.append(abs(gripper_gap(model, actuators, ctrl_lo, geom_ids)
                        - gripper_gap(model, actuators, ctrl_hi, geom_ids)))
     return abs(spread[1] - spread[0]) > tolerance or max(per) > tolerance
+
+
+def position_target(model: mujoco.MjModel, i: int, ctrl: float) -> float | None:
+    """The joint position a position-like actuator ``i`` pulls towards at ``ctrl``.
+
+    Force = gain·ctrl + b0 + b1·length (+ b2·velocity) vanishes at rest at length
+    (gain·ctrl + b0)/(−b1); the joint position is length / gear. For a plain position
+    servo that is ctrl (gear 1); for a geared or offset ``general`` servo it is not.
+
+    Returns:
+        The target [rad or m], or None for an actuator that does not track a position or
+        does not drive a joint.
+    """
+    if not describe(model, i).kind.tracks_position:
+        return None
+    if int(model.actuator_trntype[i]) not in (int(mujoco.mjtTrn.mjTRN_JOINT),
+                                              int(mujoco.mjtTrn.mjTRN_JOINTINPARENT)):
+        return None
+    gain = float(model.actuator_gainprm[i, 0])
+    b0, b1 = (float(v) for v in model.actuator_biasprm[i, :2])
+    gear = float(model.actuator_gear[i, 0]) or 1.0
+    return (gain * ctrl + b0) / (-b1) / gear

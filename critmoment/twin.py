@@ -26,6 +26,7 @@ from collections.abc import Mapping
 import mujoco
 import numpy as np
 
+from critmoment import actuators as act_info
 from critmoment import safety
 from critmoment.exceptions import ParameterError, ScenarioError, TrajectoryError
 from critmoment.scenario import Scenario
@@ -332,8 +333,9 @@ class Twin:
         """An MjData at the trajectory's initial state, forward-computed.
 
         Args:
-            start: initial joint state in the action convention, (na,); the actuated joints
-                are set to the controls it maps to.
+            start: initial joint state in the action convention, (na,); each joint driven
+                by a position-like actuator starts where that actuator pulls it at the control
+                ``start`` maps to (:func:`critmoment.actuators.position_target`).
             qpos0: full initial qpos, (nq,); overrides ``start``.
             object_pose: object position and quaternion (w, x, y, z), (7,).
             model: the model to make data for (default: the nominal model).
@@ -353,9 +355,9 @@ class Twin:
         elif start is not None:
             ctrl = self.controls(np.asarray(start)[None])[0]
             for a in range(model.nu):
-                if model.actuator_trntype[a] == mujoco.mjtTrn.mjTRN_JOINT:
+                q = act_info.position_target(model, a, ctrl[a])
+                if q is not None:
                     j = model.actuator_trnid[a, 0]
-                    q = ctrl[a]
                     if model.jnt_limited[j]:
                         q = np.clip(q, *model.jnt_range[j])
                     data.qpos[model.jnt_qposadr[j]] = q
