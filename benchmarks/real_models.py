@@ -101,14 +101,71 @@ def trajectory_for(case: Case, scenario: Path, seed: int) -> object:
     return dataclasses.replace(traj, actions=traj.actions[:, cols], start=traj.start[cols])
 
 
-def narrow_box(scenario: Path, out: Path, mass: tuple[float, float]) -> Path:
-    """A copy of ``scenario`` whose mass range is ``mass`` (nominal at its low end)."""
+def transition_box(doc: dict, box: dict) -> tuple[dict, dict]:
+    """A narrow box where the real outcome changes along mass.
+
+    ``m*`` is the mass threshold that best separates the validation's real failures from
+    its successes by the rule "fails iff mass > m*"; the narrow box is mass in
+    [m*/2, 2 m*] (within the original range) over the original friction range.
+
+    Returns:
+        ({name: (low, high)}, {name: nominal}).
+    """
+    per = sorted(doc["per_sample"], key=lambda p: p["values"]["mass"])
+    masses = [p["values"]["mass"] for p in per]
+    failed = [p["real_failed"] for p in per]
+    best, cut = None, masses[len(masses) // 2]
+    for i in range(1, len(per)):
+        errors = sum(failed[:i]) + sum(not f for f in failed[i:])
+        if best is None or errors < best:
+            best, cut = errors, 0.5 * (masses[i - 1] + masses[i])
+    lo, hi = box["mass"]["range"]
+    a, b = max(lo, cut / 2), min(hi, cut * 2)
+    ranges = {"mass": (a, b)}
+    nominal = {"mass": a}
+    for name, spec in box.items():
+        if name != "mass":
+            ranges[name] = tuple(spec["range"])
+            nominal[name] = spec["nominal"]
+    return ranges, nominal
+
+
+def task_only(case_dir: Path, scenario: Path, traj_path: Path, doc: dict, samples: int,
+              seed: int) -> dict:
+    """The same samples judged by the task's own success rule alone (slip in the grip is
+    not a failure by itself), against the audit's predictions of the CLI's validate."""
+    from critmoment import sparse as sp
+    from critmoment.groundtruth import OutcomeCriteria, brute_force
+    from critmoment.scenario import load_scenario
+    from critmoment.trajectory import load_trajectory
+    from critmoment.twin import Twin
+
+    sc = load_scenario(scenario)
+    twin = Twin(sc)
+    points = sp.sweep_samples(sc.box, n=samples, seed=seed)
+    bf = brute_force(load_trajectory(traj_path), twin=twin, samples=points,
+                     criteria=OutcomeCriteria(slip_is_failure=False))
+    real = [bool(f) for f in bf.failed]
+    pred = [p["predicted_failed"] for p in doc["per_sample"]]
+    c = {"true_safe": sum(not r and not p for r, p in zip(real, pred, strict=True)),
+         "false_safe": sum(r and not p for r, p in zip(real, pred, strict=True)),
+         "true_unsafe": sum(r and p for r, p in zip(real, pred, strict=True)),
+         "false_unsafe": sum(p and not r for r, p in zip(real, pred, strict=True))}
+    counts: dict[str, int] = {}
+    for o in bf.outcome:
+        counts[o.value] = counts.get(o.value, 0) + 1
+    return {"confusion": c, "agreement": (c["true_safe"] + c["true_unsafe"]) / len(real),
+            "outcomes": counts}
+
+
+def narrow_box(scenario: Path, out: Path, ranges: dict, nominal: dict) -> Path:
+    """A copy of ``scenario`` with the uncertainty ``ranges`` and ``nominal`` values."""
     text = scenario.read_text()
-    block = re.search(r"\[uncertainty\.mass\][^\[]*", text).group(0)
-    lo, hi = mass
-    new = re.sub(r"range = \[[^\]]*\]", f"range = [{lo:.4g}, {hi:.4g}]", block)
-    new = re.sub(r"nominal = [0-9.eE+-]+", f"nominal = {lo:.4g}", new)
-    text = text.replace(block, new)
+    for name, (lo, hi) in ranges.items():
+        block = re.search(rf"\[uncertainty\.{name}\][^\[]*", text).group(0)
+        new = re.sub(r"range = \[[^\]]*\]", f"range = [{lo:.4g}, {hi:.4g}]", block)
+        new = re.sub(r"nominal = [0-9.eE+-]+", f"nominal = {nominal[name]:.4g}", new)
+        text = text.replace(block, new)
     # the copy sits in another folder: keep the model path absolute
     base = scenario.parent
     text = re.sub(r'mjcf = "([^"]+)"',
@@ -151,7 +208,7 @@ def run_case(case: Case, work: Path, *, quick: bool, samples: int, seed: int) ->
                       "min_fos_motor": summary.get("min_fos_motor"),
                       "error": _last_line(err) if rc else None, "seconds": round(wall, 1)}
     rc, out, err, wall = _cli("analyze", str(traj_path), "--scenario", str(scenario), "--json",
-                              "--samples", str(64 if quick else 256), "--figures", "none")
+                              "--samples", str(64 if quick else 128), "--figures", "none")
     report = _json(out) or {}
     row["analyze"] = {"rc": rc, "verdict": report.get("verdict"),
                       "p_success": report.get("p_success"),
@@ -162,18 +219,9 @@ def run_case(case: Case, work: Path, *, quick: bool, samples: int, seed: int) ->
                       "seconds": round(wall, 1)}
     if quick or rc == 2:
         return row
-    boxes = {"init box": scenario}
-    crit = critical_mass(report)
-    raw = tomllib.loads(scenario.read_text())
-    lo, hi = raw["uncertainty"]["mass"]["range"]
-    if crit is not None and lo < crit < hi:
-        boxes["narrow box"] = narrow_box(scenario, work / "narrow.toml",
-                                         (max(lo, 0.5 * crit), min(hi, 1.5 * crit)))
-    else:
-        boxes["narrow box"] = narrow_box(scenario, work / "narrow.toml",
-                                         (lo, lo + 0.25 * (hi - lo)))
     row["validate"] = {}
-    for label, path in boxes.items():
+    label, path = "init box", scenario
+    while path is not None:
         rc, out, err, wall = _cli("validate", str(traj_path), "--scenario", str(path), "--json",
                                   "--samples", str(samples), "--seed", str(seed))
         doc = _json(out) or {}
@@ -184,8 +232,18 @@ def run_case(case: Case, work: Path, *, quick: bool, samples: int, seed: int) ->
             "confusion": doc.get("confusion"), "false_safe_rate": doc.get("false_safe_rate"),
             "agreement": doc.get("agreement"), "vacuous": doc.get("vacuous"),
             "outcomes": doc.get("outcomes"), "nominal_completed": doc.get("nominal_completed"),
+            "missed": doc.get("missed"),
             "compute_ratio": (doc.get("timings") or {}).get("compute_ratio"),
             "error": _last_line(err) if rc == 2 else None, "seconds": round(wall, 1)}
+        if doc.get("per_sample"):
+            t0 = time.perf_counter()
+            row["validate"][label]["task_only"] = task_only(work, path, traj_path, doc,
+                                                            samples, seed)
+            row["validate"][label]["task_only"]["seconds"] = round(time.perf_counter() - t0, 1)
+        if label != "init box" or not doc.get("per_sample"):
+            break
+        label, path = "narrow box", narrow_box(scenario, work / "narrow.toml",
+                                               *transition_box(doc, box))
     return row
 
 
@@ -231,8 +289,9 @@ def cases(quick: bool) -> list[Case]:
 
 def markdown(rows: list[dict], interbotix: dict) -> str:
     lines = ["| model | contact | init unedited | nominal completes | verdict (P success) | "
-             "box | false safe | false unsafe | agreement | real fail/succ |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "box | false safe | false unsafe | agreement | real fail/succ | "
+             "task rule only: false safe, false unsafe, agreement, fail/succ |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         init = "yes" if r["init"]["rc"] == 0 else f"no: {r['init']['error']}"
         roll = r.get("rollout", {})
@@ -244,16 +303,26 @@ def markdown(rows: list[dict], interbotix: dict) -> str:
         vals = r.get("validate") or {"-": None}
         for label, v in vals.items():
             if v is None:
-                cells = ["-"] * 5
+                cells = ["-"] * 6
             elif v.get("confusion"):
                 c = v["confusion"]
                 o = v.get("outcomes") or {}
                 failed = sum(n for k, n in o.items() if k != "success")
-                cells = [f"{label} mass {v['mass_range']}", str(c["false_safe"]),
+                rng = lambda r: f"{r[0]:.3g}–{r[1]:.3g}"  # noqa: E731
+                cells = [f"{label}: mass {rng(v['mass_range'])} kg, μ "
+                         f"{rng(v['friction_range'])}", str(c["false_safe"]),
                          str(c["false_unsafe"]), f"{v['agreement']:.3f}",
                          f"{failed}/{o.get('success', 0)}"]
+                t = v.get("task_only")
+                if t:
+                    tc, to = t["confusion"], t["outcomes"]
+                    tf = sum(n for k, n in to.items() if k != "success")
+                    cells.append(f"{tc['false_safe']}, {tc['false_unsafe']}, "
+                                 f"{t['agreement']:.3f}, {tf}/{to.get('success', 0)}")
+                else:
+                    cells.append("-")
             else:
-                cells = [label, "-", "-", "-", f"error: {v.get('error')}"]
+                cells = [label, "-", "-", "-", f"error: {v.get('error')}", "-"]
             lines.append(f"| {r['robot']} | {r['contact']} | {init} | {comp} | {verdict} | "
                          + " | ".join(cells) + " |")
     lines.append("")
