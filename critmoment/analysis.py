@@ -515,7 +515,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         worst_rollouts_failed=worst_failed, trend=_trend(curves, box))
     decision = vd.decide(evidence, dopt)
     region_check = None
-    if decision.region_to_check is not None:
+    if decision.region_to_check is not None and steps.size:
         with stage("safe region check"):
             sides = evidence.sides(decision.failed)
             region_check = check_region(decision.region_to_check, trajectory=trajectory,

@@ -803,7 +803,9 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
     region = None
     to_check = None
     if candidate is not None:
-        if check is None:
+        if check is None and not has_moments:
+            region = candidate  # no moment to check it at: nothing in the box can fail
+        elif check is None:
             to_check = candidate
         elif check.holds:
             region = dict(check.region)

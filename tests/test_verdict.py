@@ -259,3 +259,12 @@ def test_decision_options_are_checked():
         vd.DecisionOptions(threshold=0.9, verify=1.5)
     with pytest.raises(ParameterError, match="threshold"):
         vd.DecisionOptions(threshold=float("nan"))
+
+
+def test_without_moments_nothing_fails_and_the_whole_box_is_stated():
+    box = _box()
+    ev = vd.Evidence(box=box, samples=vd.SampleEvidence(sweep=None, nominal_completed=True),
+                     nominal_cost=0.0)
+    d = vd.decide(ev, OPT)
+    assert d.verdict is vd.Verdict.SAFE and d.region_to_check is None
+    assert d.safe_region_text == "safe over the whole box"
