@@ -415,7 +415,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_cost = float(res_all.worst_cost()[0]) if steps.size else 0.0
         res = _select_samples(res_all, slice(1, None))
     dopt = decision_options(opt, threshold)
-    near, unlifted = vd.samples_to_rerun(res if steps.size else None, dopt,
+    near, unlifted = vd.samples_to_rerun(res, dopt,
                                          nominal_completed=rec.completed)
     rerun = near | unlifted
     rerun_failed = np.zeros(len(samples), bool)
@@ -425,7 +425,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         with stage("verification"):
             if rerun.any():
                 rerun_failed[rerun] = roll(samples[rerun])
-    sample_evidence = vd.SampleEvidence(sweep=res if steps.size else None,
+    sample_evidence = vd.SampleEvidence(sweep=res,
                                         nominal_completed=rec.completed, rerun=rerun,
                                         rerun_failed=rerun_failed)
     failed = vd.failing_samples(sample_evidence, dopt)
