@@ -162,7 +162,8 @@ def narrow_box(scenario: Path, out: Path, ranges: dict, nominal: dict) -> Path:
     """A copy of ``scenario`` with the uncertainty ``ranges`` and ``nominal`` values."""
     text = scenario.read_text()
     for name, (lo, hi) in ranges.items():
-        block = re.search(rf"\[uncertainty\.{name}\][^\[]*", text).group(0)
+        block = re.search(rf"^\[uncertainty\.{name}\]\n(?:[^\[\n].*\n|\n)*", text,
+                          re.MULTILINE).group(0)
         new = re.sub(r"range = \[[^\]]*\]", f"range = [{lo:.4g}, {hi:.4g}]", block)
         new = re.sub(r"nominal = [0-9.eE+-]+", f"nominal = {nominal[name]:.4g}", new)
         text = text.replace(block, new)
