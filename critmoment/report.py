@@ -20,6 +20,7 @@ import enum
 import errno
 import html
 import io
+import itertools
 import json
 import os
 import shutil
@@ -223,34 +224,74 @@ def _jsonable(obj):
 
 def plot_curves(report, step: int) -> Figure:
     """FOS and cost against each parameter at one moment (others nominal): thesis Figs. 5–6."""
+    return _curves_figure(report, step)[0]
+
+
+def _curve_data(report, step: int, j: int, name: str) -> tuple:
+    res = report.curves[step][name]
+    return (res.samples[:, j], np.clip(res.fos_grasp[0], 0, 10), np.clip(res.fos_motor[0], 0, 10),
+            res.cost[0], res.cost_contact[0], res.cost_motor[0])
+
+
+def _curves_figure(report, step: int) -> tuple[Figure, list]:
+    """The curves figure of one moment, and per parameter its (axes, lines) to update."""
     box = report.scenario.box
-    curves = report.curves[step]
     # fixed margins: a constrained layout would draw each of these figures twice
     fig = Figure(figsize=(5.2 * box.ndim, 6.4))
     fig.subplots_adjust(left=0.09, right=0.98, top=0.95, bottom=0.08, hspace=0.25,
                         wspace=0.26)
     axes = fig.subplots(2, box.ndim, squeeze=False)
     thr = report.scenario.cost.threshold
+    artists = []
     for j, p in enumerate(box.parameters):
-        res = curves[p.name]
-        x = res.samples[:, j]
+        x, fos_c, fos_m, cost, cost_c, cost_m = _curve_data(report, step, j, p.name)
         ax = axes[0, j]
-        ax.plot(x, np.clip(res.fos_grasp[0], 0, 10), label="FOS contact (grasp)")
-        ax.plot(x, np.clip(res.fos_motor[0], 0, 10), label="FOS motor")
+        top = [ax.plot(x, fos_c, label="FOS contact (grasp)")[0],
+               ax.plot(x, fos_m, label="FOS motor")[0]]
         ax.axhline(1.0, color="k", lw=0.6, ls=":")
         ax.set_ylabel("factor of safety (clipped at 10)")
         ax.set_title(_tex_safe(f"step {step}: FOS vs {p.name}"))
         ax.legend(fontsize="small")
         ax = axes[1, j]
-        ax.plot(x, res.cost[0], color="k", label="cost")
-        ax.plot(x, res.cost_contact[0], ls="--", label="contact term")
-        ax.plot(x, res.cost_motor[0], ls="--", label="motor term")
+        bottom = [ax.plot(x, cost, color="k", label="cost")[0],
+                  ax.plot(x, cost_c, ls="--", label="contact term")[0],
+                  ax.plot(x, cost_m, ls="--", label="motor term")[0]]
         ax.axhline(thr, color="tab:red", lw=0.8, label=f"threshold {thr:g}")
         ax.axvline(p.nominal, color="tab:green", lw=0.8, ls=":", label="nominal")
         ax.set_xlabel(_tex_safe(f"{p.name} [{p.unit}]" if p.unit else p.name))
         ax.set_ylabel("cost")
         ax.legend(fontsize="small")
-    return fig
+        artists.append((axes[0, j], axes[1, j], top + bottom))
+    return fig, artists
+
+
+def _moment_pngs(report) -> Iterator[tuple[str, bytes]]:
+    """One PNG per moment, drawn by updating a single figure (its axes, ticks and legends
+    are made once)."""
+    fig, artists = None, []
+    box = report.scenario.box
+    for mr in report.moments:
+        step = int(mr.moment.step)
+        if fig is None:
+            fig, artists = _curves_figure(report, step)
+            _lighten(fig)
+        else:
+            for j, (p, (top, bottom, lines)) in enumerate(
+                    zip(box.parameters, artists, strict=True)):
+                x, *ys = _curve_data(report, step, j, p.name)
+                for line, y in zip(lines, ys, strict=True):
+                    line.set_data(x, y)
+                top.set_title(_tex_safe(f"step {step}: FOS vs {p.name}"))
+                for ax in (top, bottom):
+                    ax.relim()
+                    ax.autoscale_view()
+        yield f"moment_{step}", _png(fig)
+
+
+def _png(fig: Figure) -> bytes:
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=DPI)
+    return buf.getvalue()
 
 
 def plot_moment_overview(report) -> Figure | None:
@@ -390,11 +431,12 @@ def write_report_files(report, folder: Path, *, figures: Figures = Figures.SUMMA
     paths["json"] = folder / "report.json"
     paths["json"].write_text(json.dumps(doc, indent=2, allow_nan=False))
     images = {}
-    for name, fig in report_figures(report, figures).items():
-        _lighten(fig)
-        buf = io.BytesIO()
-        fig.savefig(buf, format="png", dpi=DPI)
-        data = buf.getvalue()
+    which = Figures.parse(figures)
+    pngs = ((name, _png(_lighten(fig))) for name, fig in report_figures(
+        report, Figures.SUMMARY if which is Figures.ALL else which).items())
+    if which is Figures.ALL:
+        pngs = itertools.chain(pngs, _moment_pngs(report))
+    for name, data in pngs:
         path = folder / f"{name}.png"
         path.write_bytes(data)
         paths[name] = path

@@ -182,3 +182,13 @@ def test_write_report_keeps_other_files_beside_the_report(audit, tmp_path):
     assert (tmp_path / "traj.npz").read_bytes() == b"the user's trajectory"
     with pytest.raises(OutputError, match="other files"):  # strict, as the CLI's --out
         StagedOutput(tmp_path, command="analyze")
+
+
+def test_reused_moment_figure_draws_what_a_fresh_one_draws(audit):
+    """The per-moment PNGs come from one figure whose lines are updated: byte-identical."""
+    reused = dict(report._moment_pngs(audit))
+    assert len(reused) == len(audit.moments) >= 2
+    for mr in audit.moments:
+        step = int(mr.moment.step)
+        fresh = report._png(report._lighten(report.plot_curves(audit, step)))
+        assert reused[f"moment_{step}"] == fresh
