@@ -74,8 +74,8 @@ class AnalyzeOptions:
         nthread: threads for MuJoCo's batch (0: all CPUs).
         map_resolution: cells per axis of the mass × friction cost map, the nearest Sobol
             sample's cost per cell (0 to skip).
-        require_task: a nominal rollout that does not complete the scenario's task (stage 4
-            reached and kept) makes the verdict UNSAFE.
+        require_task: a nominal rollout that does not complete the scenario's task (its
+            success rule, :meth:`critmoment.task.Task.success`) makes the verdict UNSAFE.
         exhaustive: evaluate every Sobol sample at every moment over the whole horizon.
             By default each sample stops at its first failure, as the real run would
             (:meth:`critmoment.sparse.SparseEvaluator.evaluate` with ``first_failure``):
@@ -510,6 +510,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_failed=bool(res_all.failed_any[0]) if steps.size else False,
         nominal_unlifted=bool(res_all.failed_unlifted_only[0]) if steps.size else False,
         nominal_stage=(int(rec.stage.max()), int(rec.stage[-1])),
+        completion_rule=f"needed: {twin.task.describe()}",
         moments=tuple(moment_reports), worst_failed=worst_failed_sparse,
         worst_unlifted=worst_unlifted,
         worst_rollouts_failed=worst_failed, trend=_trend(curves, box))
@@ -751,6 +752,12 @@ def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory) -> dict:
         "trajectory_sha256": input_identity(traj.source)["sha256"],
         "seed": opt.seed,
         "options": dataclasses.asdict(opt),
+        "task": sc.task.to_json(),
+        # each actuator's force limit and where it comes from; None where nothing limits it
+        "limits": {a: {"limit": v if np.isfinite(v) else None,
+                       "source": sc.limit_sources.get(a, "scenario")}
+                   for a, v in sc.limits.items()},
+        "unlimited_actuators": list(sc.unlimited),
     }
 
 

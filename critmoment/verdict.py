@@ -838,7 +838,7 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
     if task_failed:
         reached, final = evidence.nominal_stage
         causes = (f"the task is not completed at the nominal parameters (stage {reached} "
-                  f"reached, final stage {final}, {evidence.completion_rule})",) + causes
+                  f"reached, final stage {final}; {evidence.completion_rule})",) + causes
     return Decision(verdict=verdict, failed=failed, p_success=float(p),
                     p_success_interval=(float(interval[0]), float(interval[1])),
                     safe_region=region, safe_region_text=text, causes=causes,
