@@ -1,5 +1,5 @@
-"""History study: does the drift detector (critmoment.history) catch the false safes that
-come from each sample's own history?
+"""History study: do the drift detector and chained segments (critmoment.history) catch the
+false safes that come from each sample's own history?
 
 For the demo generator's nominal family (``demos.scripted_transfer(seed)``, ``--seeds``) on a
 box whose mass range ends at ``--mass-high`` (1.5 kg: where the issue found false safes in
@@ -7,7 +7,9 @@ box whose mass range ends at ``--mass-high`` (1.5 kg: where the issue found fals
 predicted by the audit's sparse decision with its verification emulated (samples that pass
 with a worst cost >= 0.8 × threshold, or fail only through unlifted failures, take their
 ground-truth outcome; see benchmarks/decision_study.py), then again with the samples the drift
-detector escalates taking their ground-truth outcome too. Prints false safes before/after,
+detector escalates taking their ground-truth outcome too, and with chained segments
+(``history.chained_failures``: every sample predicted safe carried on its own state from the
+first moment through the later ones, its chained failure a predicted failure). Prints false safes before/after,
 the escalated rollouts, and the compute: sparse seconds, drift seconds, and escalated
 rollouts × the brute force's seconds per sample, against brute force.
 
@@ -68,6 +70,8 @@ def main() -> None:
     scales = [float(x) for x in args.scales.split(",")]
     sweep_rows: dict[float, dict] = {}
     trivial = {"esc": 0}
+    chained = {"fs": 0, "fu": 0, "s": 0.0, "seeds_fs": 0, "n_chained": 0, "stepped": 0,
+               "full_steps": 0}
     for seed in seeds_of(args.seeds):
         traj = demos.scripted_transfer(seed, twin=twin)
         t0 = time.perf_counter()
@@ -105,6 +109,20 @@ def main() -> None:
         # the trivial alternative: roll out every sample predicted safe
         everyone = ~before & ~verified
         trivial["esc"] += int(everyone.sum())
+        # chained segments: every sample predicted safe carried on its own state from the
+        # first moment through the later ones; a chained failure predicts a failure
+        t0 = time.perf_counter()
+        chained_pred = before.copy()
+        if everyone.any():
+            chain = history.chained_failures(ev, steps, samples[everyone])
+            chained_pred[everyone] = chain.failed
+            chained["stepped"] += chain.stepped * int(everyone.sum())
+        chained["s"] += time.perf_counter() - t0
+        chained["fs"] += int((~chained_pred & real).sum())
+        chained["fu"] += int((chained_pred & ~real).sum())
+        chained["seeds_fs"] += int((~chained_pred & real).any())
+        chained["n_chained"] += int(everyone.sum())
+        chained["full_steps"] += int(everyone.sum()) * rec.n_steps
         entry = {
             "seed": seed, "real_failures": int(real.sum()),
             "false_safe_before": int((~before & real).sum()),
@@ -152,11 +170,22 @@ def main() -> None:
     cost = cost_before + trivial["esc"] * per_rollout
     print(f"| every predicted safe sample rolled out | 0 | {total['fu_before']} | "
           f"{trivial['esc']} | {cost / total['brute_s']:.3f} |")
+    print()
+    cost = cost_before + chained["s"]
+    print("| chained segments (history.chained_failures) on the samples predicted safe | "
+          "false safes | false unsafes | agreement | seeds with a false safe | samples chained "
+          "| steps per chained sample / full rollout | compute / brute force |")
+    print("|---|---|---|---|---|---|---|---|")
+    print(f"| sparse + verification + chained | {chained['fs']} of {total['real']} | "
+          f"{chained['fu']} | {1 - (chained['fs'] + chained['fu']) / total['n']:.3f} | "
+          f"{chained['seeds_fs']} | {chained['n_chained']} | "
+          f"{chained['stepped'] / max(1, chained['full_steps']):.3f} | "
+          f"{cost / total['brute_s']:.3f} |")
     if args.json:
         with open(args.json, "w") as fh:
             json.dump({"total": total, "detail": detail, "args": vars(args),
                        "scales": {str(k): v for k, v in sweep_rows.items()},
-                       "trivial": trivial}, fh, indent=1)
+                       "trivial": trivial, "chained": chained}, fh, indent=1)
 
 
 if __name__ == "__main__":

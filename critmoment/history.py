@@ -29,7 +29,8 @@ import numpy as np
 from critmoment.exceptions import ParameterError
 from critmoment.sparse import SparseEvaluator, _object_in_grippers
 
-__all__ = ["DriftEstimate", "estimate_drift", "DRIFT_TOLERANCE", "LAG_TOLERANCE"]
+__all__ = ["DriftEstimate", "estimate_drift", "ChainedResult", "chained_failures",
+           "DRIFT_TOLERANCE", "LAG_TOLERANCE"]
 
 #: predicted displacement of the object in its grip that escalates a sample [m]: half the
 #: 3–5 mm off-centre shift that makes the bundled robot's pads collide at the hand-over
@@ -151,3 +152,86 @@ def estimate_drift(evaluator: SparseEvaluator, steps: Any, samples: Any, *, hori
                          predicted_drift=predicted_drift, predicted_lag=predicted_lag,
                          drift_tolerance=float(drift_tolerance),
                          lag_tolerance=float(lag_tolerance), **out)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class ChainedResult:
+    """Each sample carried through the moments on its own state (:func:`chained_failures`).
+
+    Attributes:
+        steps: the moments evaluated, in time order, (m,) int64.
+        samples: the parameter values, (n, k).
+        failure: the sparse decision (``sparse.Failure`` values) at each moment from the
+            sample's own state, (m, n) int8.
+        start: the step the chain starts from (the nominal state there).
+        stepped: physics steps each sample took.
+    """
+
+    steps: np.ndarray
+    samples: np.ndarray
+    failure: np.ndarray
+    start: int
+    stepped: int
+
+    @property
+    def failed(self) -> np.ndarray:
+        """(n,) bool: the sample fails at some moment of its own chain."""
+        return (self.failure > 0).any(axis=0)
+
+
+def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
+                     start: int | None = None) -> ChainedResult:
+    """Carry each sample's own state from one nominal state through every later moment.
+
+    The simulations start from the recorded state at ``start`` (default: the first
+    moment), run the recorded controls with the sample's own parameters, and at each moment
+    (in time order; one whose window overlaps the previous one's is skipped) are decided by
+    the sparse decision over the horizon from the state they reached, not the nominal one.
+    The cost is the stepping from ``start`` to the last moment's horizon, per sample.
+
+    Args:
+        evaluator: the audit's sparse evaluator.
+        steps: moments, physics step indices (m,).
+        samples: parameter values (n, k).
+        start: the step the chain starts from.
+
+    Returns:
+        The :class:`ChainedResult`.
+    """
+    import mujoco
+
+    ev = evaluator
+    samples = ev.check_samples(samples)
+    steps = np.unique(ev.check_steps(steps))
+    first = int(steps[0]) if start is None else int(ev.check_steps([start])[0])
+    steps = steps[steps >= first]
+    h = ev.horizon
+    kept: list[int] = []
+    failures = []
+    out = np.zeros((0, samples.shape[0]), dtype=np.int8)
+    stepped = 0
+    for lo in range(0, samples.shape[0], ev.chunk):
+        chunk = samples[lo:lo + ev.chunk]
+        batch, mu = ev._batch(chunk)
+        batch.state[:] = ev._start_row(first)
+        current = first
+        part, kept = [], []
+        stepped = 0
+        for k in (int(s) for s in steps):
+            if k < current:
+                continue  # overlaps the previous window
+            if k > current:
+                batch.rollout(k - current, control=ev._controls[current:k][None],
+                              control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
+                              record=(mujoco.mjtState.mjSTATE_TIME,))
+                stepped += k - current
+            sim = ev._simulate(batch, k, np.arange(batch.nsim), mu, keep_state=False,
+                               restore=False)
+            part.append(sim.failure)
+            kept.append(k)
+            current = k + h
+            stepped += h
+        failures.append(np.array(part, dtype=np.int8).reshape(len(kept), -1))
+    out = np.concatenate(failures, axis=1) if failures else out
+    return ChainedResult(steps=np.array(kept, dtype=np.int64), samples=samples, failure=out,
+                         start=first, stepped=stepped)

@@ -916,11 +916,14 @@ class SparseEvaluator:
         return out["sensordata"], self._slip(out["xpos"], out["xmat"], k)
 
     def _simulate(self, batch: mujoco.batch.Batch, k: int, run: np.ndarray,
-                  mu: np.ndarray | float, *, keep_state: bool) -> _Simulated:
+                  mu: np.ndarray | float, *, keep_state: bool, restore: bool = True
+                  ) -> _Simulated:
         """Restore step k in the simulations ``run``, step the horizon, follow the ones an
-        open contact excursion or the creep horizon asks for, and decide each."""
+        open contact excursion or the creep horizon asks for, and decide each. Without
+        ``restore`` the simulations go on from their own states (they must stand at step k)
+        and nothing is followed past the horizon, so that all stay at step k + horizon."""
         h, nsim = self.horizon, batch.nsim
-        extra = min(self._extension_steps(), self.n_steps - k - h)
+        extra = min(self._extension_steps(), self.n_steps - k - h) if restore else 0
         nsd = self.twin.nsensordata
         buf = np.zeros((nsim, h + extra, nsd))
         slip = np.zeros((nsim, h + extra))
@@ -930,7 +933,8 @@ class SparseEvaluator:
         state = None
         mu = np.broadcast_to(np.asarray(mu, dtype=np.float64), (nsim,))
         if run.size:
-            batch.state[run] = self._start_row(k)
+            if restore:
+                batch.state[run] = self._start_row(k)
             length[run] = h
             if self.mode is SparseMode.SOLVE:
                 try:

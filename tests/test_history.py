@@ -42,3 +42,30 @@ def test_bad_options_raise(twin, demo_recording, scenario):
         history.estimate_drift(ev, [100], scenario.box.nominal[None], horizon=2)
     with pytest.raises(ParameterError, match="drift_tolerance"):
         history.estimate_drift(ev, [100], scenario.box.nominal[None], drift_tolerance=0.0)
+
+
+def test_a_nominal_chain_is_the_nominal_run(scenario, twin, demo_recording):
+    ev = sparse.SparseEvaluator(demo_recording, twin)
+    steps = np.array(_carry_steps(demo_recording) + [_carry_steps(demo_recording)[0] - 400])
+    samples = np.tile(scenario.box.nominal, (2, 1))
+    samples[1, scenario.box.index("mass")] = 1.0
+    chain = history.chained_failures(ev, steps, samples)
+    np.testing.assert_array_equal(chain.steps, np.sort(steps))
+    assert chain.start == steps.min()
+    assert chain.stepped == steps.max() + ev.horizon - steps.min()
+    # carried on its own state, the nominal sample is the nominal run: the same decision
+    # as restoring the nominal state at every moment
+    plain = ev.evaluate(chain.steps, samples[:1])
+    np.testing.assert_array_equal(chain.failure[:, 0], plain.failure[:, 0])
+    assert chain.failure.shape == (3, 2) and chain.failed.shape == (2,)
+    # the first moment starts from the nominal state for every sample: the plain decision
+    first = ev.evaluate(chain.steps[:1], samples)
+    np.testing.assert_array_equal(chain.failure[0], first.failure[0])
+    heavy = history.chained_failures(ev, steps, _mass(scenario, 10.0))
+    assert heavy.failed[0]  # a 10 kg cube fails in the carry
+
+
+def _mass(scenario, mass):
+    sample = scenario.box.nominal[None].copy()
+    sample[0, scenario.box.index("mass")] = mass
+    return sample
