@@ -633,6 +633,7 @@ class _Frames:
     actuator_norm: np.ndarray
     position: np.ndarray
     q: np.ndarray
+    success: np.ndarray
 
     @classmethod
     def read(cls, twin: Twin, probe: _Probe, sensordata: np.ndarray,
@@ -643,7 +644,7 @@ class _Frames:
                    contact_support=sig.contact_support,
                    actuator_norm=sig.actuator_norm[..., probe.rotational],
                    position=sensordata[..., probe.pos].reshape(c, t, -1, 3),
-                   q=sensordata[..., probe.q])
+                   q=sensordata[..., probe.q], success=twin.success(sig))
 
     def row(self, i: int) -> _Frames:
         return _Frames(**{f.name: getattr(self, f.name)[i] for f in dataclasses.fields(self)})
@@ -663,10 +664,12 @@ def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, 
     slip = grip_slip(frames.position, reference.position, frames.held, nominal_held,
                      counted=alone, projectors=probe.projectors)
     nominal_carried = carried_flags(reference.contact_support, reference.contact_gripper)
+    # the task's own physical success rule decides completion (critmoment.task)
     return classify(dt=dt, stage=frames.stage, contact_gripper=frames.contact_gripper,
                     contact_support=frames.contact_support, nominal_carried=nominal_carried,
                     actuator_norm=frames.actuator_norm, tracking_excess=excess, slip=slip,
-                    diverged=diverged, diverged_step=diverged_step, criteria=criteria)
+                    diverged=diverged, diverged_step=diverged_step, criteria=criteria,
+                    completed=frames.success)
 
 
 def rerun_in_full(traj: Trajectory, *, twin: Twin, samples: np.ndarray, failed: np.ndarray,
