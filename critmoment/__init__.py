@@ -13,13 +13,16 @@ The pipeline, one stage per module::
 from critmoment.analysis import AnalyzeOptions, AuditReport, Verdict, analyze
 from critmoment.exceptions import (
                                    CritmomentError,
+                                   InfeasibleTwinError,
                                    InputFileError,
                                    ParameterError,
                                    ScenarioError,
                                    SimulationDivergedError,
                                    TrajectoryError,
 )
+from critmoment.feasibility import FeasibilityReport, check_feasibility
 from critmoment.groundtruth import BruteForce, brute_force
+from critmoment.modelinfo import init_scenario, inspect_model
 from critmoment.moments import Moment, MomentDetector, MomentLabel, find_moments
 from critmoment.params import UncertaintyBox
 from critmoment.recording import Recording, rollout, simulate
@@ -32,6 +35,7 @@ from critmoment.sparse import (
                                    probability_of_success,
                                    sweep,
 )
+from critmoment.task import TASK_KINDS, Task
 from critmoment.trajectory import Trajectory, load_trajectory, save_trajectory
 from critmoment.twin import Signals, Twin
 from critmoment.validation import Outcome, ValidationResult, validate
@@ -50,6 +54,13 @@ __all__ = [
     "ScenarioError",
     "SimulationDivergedError",
     "TrajectoryError",
+    "InfeasibleTwinError",
+    "FeasibilityReport",
+    "check_feasibility",
+    "init_scenario",
+    "inspect_model",
+    "Task",
+    "TASK_KINDS",
     "Moment",
     "MomentDetector",
     "MomentLabel",

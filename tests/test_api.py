@@ -16,7 +16,9 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover
     import tomli as tomllib
 
-MODULES = ["exceptions", "params", "scenario", "safety", "twin", "recording", "trajectory", "demos"]
+MODULES = ["exceptions", "params", "scenario", "safety", "twin", "recording", "trajectory", "demos",
+           "task", "actuators", "modelinfo", "feasibility", "groundtruth", "verdict", "suite",
+           "panda_demo"]
 
 
 @pytest.mark.parametrize("name", critmoment.__all__)
