@@ -808,7 +808,8 @@ class SparseEvaluator:
                 run = np.flatnonzero(alive) if first_failure else np.arange(batch.nsim)
                 if first_failure:
                     evaluated[i, sl] = alive
-                sim = self._simulate(batch, k, run, mu, keep_state=keep_raw)
+                sim = self._simulate(batch, k, run, mu, keep_state=keep_raw,
+                                     stop_early=first_failure and not keep_raw)
                 buf, at = sim.buf[:, :h], k + np.arange(h)[None, :]
                 if first_failure:
                     # a sample stops at its first failing step (with the flags of real
@@ -916,12 +917,14 @@ class SparseEvaluator:
         return out["sensordata"], self._slip(out["xpos"], out["xmat"], k)
 
     def _simulate(self, batch: mujoco.batch.Batch, k: int, run: np.ndarray,
-                  mu: np.ndarray | float, *, keep_state: bool, restore: bool = True
-                  ) -> _Simulated:
+                  mu: np.ndarray | float, *, keep_state: bool, restore: bool = True,
+                  stop_early: bool = False) -> _Simulated:
         """Restore step k in the simulations ``run``, step the horizon, follow the ones an
         open contact excursion or the creep horizon asks for, and decide each. Without
         ``restore`` the simulations go on from their own states (they must stand at step k)
-        and nothing is followed past the horizon, so that all stay at step k + horizon."""
+        and nothing is followed past the horizon, so that all stay at step k + horizon.
+        With ``stop_early`` the horizon is stepped in blocks of ``persistence`` steps and a
+        simulation whose failure is decided stops (its later rows stay zero)."""
         h, nsim = self.horizon, batch.nsim
         extra = min(self._extension_steps(), self.n_steps - k - h) if restore else 0
         nsd = self.twin.nsensordata
@@ -943,7 +946,18 @@ class SparseEvaluator:
                     raised[exc.ids] = True
                 buf[run, 0] = batch.bind("sensordata")[run]
             else:
-                buf[run, :h], slip[run, :h] = self._roll(batch, k, h, run, raised)
+                block = self.persistence_steps if stop_early else h
+                todo, done = run, 0
+                while todo.size and done < h:
+                    n = min(block, h - done)
+                    buf[todo, done:done + n], slip[todo, done:done + n] = self._roll(
+                        batch, k + done, n, todo, raised)
+                    done += n
+                    length[todo] = done
+                    if done < h:
+                        part = self._decide(buf[:, :done], slip[:, :done], length, mu, k,
+                                            final=False)
+                        todo = todo[~(part.stop & (part.failure > 0))[todo]]
             if keep_state:
                 state = batch.state.copy()
         warned = batch.warning[:, :, 1].copy()

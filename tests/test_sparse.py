@@ -657,3 +657,20 @@ def test_creep_horizon_fails_a_creeping_grip_the_force_ratio_passes(tmp_path, sc
     assert not one_step.failed.any()
     assert creep.failure[0, 1] == sparse.Failure.SLIP and creep.slip[0, 1] > 0.005
     assert creep.failure[0, 0] == sparse.Failure.PASS and creep.slip[0, 0] == 0.0
+
+
+@pytest.mark.parametrize("persistence", [0.0, 0.004])
+def test_first_failure_in_blocks_of_the_persistence_agrees_with_full_evaluation(
+        scenario, twin, demo_recording, persistence):
+    steps = [_handover_step(demo_recording), _lift_step(demo_recording)]
+    samples = sparse.sweep_samples(scenario.box, n=64, seed=7)
+    engine = SparseEvaluator(demo_recording, twin, persistence=persistence)
+    assert engine.persistence_steps < engine.horizon  # stepped in several blocks
+    full = engine.evaluate(steps, samples)
+    ff = engine.evaluate(steps, samples, first_failure=True)
+    assert 0 < full.failed_any.sum() < 64
+    np.testing.assert_array_equal(ff.failed_any, full.failed_any)
+    both = ff.evaluated & ff.failed
+    np.testing.assert_array_equal(ff.failure[both], full.failure[both])
+    passed = ff.evaluated & ~ff.failed
+    np.testing.assert_array_equal(ff.cost[passed], full.cost[passed])
