@@ -597,6 +597,31 @@ _ZIP_METHODS = frozenset({zipfile.ZIP_STORED, zipfile.ZIP_DEFLATED, zipfile.ZIP_
                           zipfile.ZIP_LZMA})
 
 
+def _npy_header(zf: zipfile.ZipFile, info: zipfile.ZipInfo, *,
+                member: str) -> tuple[tuple[int, ...], np.dtype]:
+    """The shape and dtype an npz member's .npy header declares (no data is read)."""
+    try:
+        with zf.open(info) as fh:
+            version = np.lib.format.read_magic(fh)
+            if version == (1, 0):
+                shape, _, dtype = np.lib.format.read_array_header_1_0(fh)
+            elif version == (2, 0):
+                shape, _, dtype = np.lib.format.read_array_header_2_0(fh)
+            else:
+                raise InputFileError(
+                    f"{member}: .npy format version {version}; expected 1.0 or "
+                    f"2.0 as numpy.savez writes for plain arrays"
+                )
+    except CritmomentError:
+        raise
+    except Exception as exc:  # noqa: BLE001 - numpy parses the header as Python literals
+        raise InputFileError(
+            f"{member}: corrupt .npy header (expected a dict with 'descr', "
+            f"'fortran_order' and 'shape'): {type(exc).__name__}: {exc}"
+        ) from None
+    return shape, dtype
+
+
 def _npz_declared_bytes(path: Path) -> None:
     """Checks an npz archive's members from their headers, before numpy reads them.
 
@@ -637,17 +662,7 @@ def _npz_declared_bytes(path: Path) -> None:
             if not info.filename.endswith(".npy"):
                 continue
             budget.check_bytes(info.file_size, what=f"{member} (uncompressed size)")
-            with zf.open(info) as fh:
-                version = np.lib.format.read_magic(fh)
-                if version == (1, 0):
-                    shape, _, dtype = np.lib.format.read_array_header_1_0(fh)
-                elif version == (2, 0):
-                    shape, _, dtype = np.lib.format.read_array_header_2_0(fh)
-                else:
-                    raise InputFileError(
-                        f"{member}: .npy format version {version}; expected 1.0 or "
-                        f"2.0 as numpy.savez writes for plain arrays"
-                    )
+            shape, dtype = _npy_header(zf, info, member=member)
             if dtype.hasobject:
                 raise InputFileError(
                     f"{member} holds Python objects (pickled); expected plain "
@@ -1197,7 +1212,7 @@ def list_episodes(path: str | os.PathLike) -> tuple[Episode, ...]:
                 counts.setdefault(None, []).append((pq.ParquetFile(f).metadata.num_rows, f))
                 continue
             col = pq.read_table(f, columns=["episode_index"]).column("episode_index")
-        except (OSError, pa.ArrowException, MemoryError) as exc:
+        except (OSError, pa.ArrowException, MemoryError, UnicodeDecodeError) as exc:
             raise InputFileError(
                 f"cannot read {_short(f)!r} as parquet: {type(exc).__name__}: {exc}"
             ) from None
@@ -1239,7 +1254,7 @@ def _load_lerobot_files(
                     where.setdefault(int(idx), []).append(f)
             else:
                 whole_file_episode.append(f)
-        except (OSError, pa.ArrowException, MemoryError) as exc:
+        except (OSError, pa.ArrowException, MemoryError, UnicodeDecodeError) as exc:
             raise InputFileError(
                 f"cannot read {_short(f)!r} as parquet (expected a LeRobot episode "
                 f"file with an 'action' column): {type(exc).__name__}: {exc}"
@@ -1297,7 +1312,7 @@ def _load_lerobot_files(
             index = _index_column(table.column("episode_index"),
                                   what=f"{_short(chosen_file)!r} column 'episode_index'")
             table = table.filter(pa.array(index == ep))
-    except (OSError, pa.ArrowException, MemoryError) as exc:
+    except (OSError, pa.ArrowException, MemoryError, UnicodeDecodeError) as exc:
         raise InputFileError(
             f"cannot read {_short(chosen_file)!r} as parquet: {type(exc).__name__}: {exc}"
         ) from None

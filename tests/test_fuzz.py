@@ -782,3 +782,45 @@ def test_dollar_in_file_name(assets, tmp_path, capsys):
     assert main(["rollout", str(path), "--out", str(tmp_path / "r")]) == 0
     assert (tmp_path / "r" / "signals.png").stat().st_size > 1000
     assert "error" not in capsys.readouterr().err
+
+
+# -- class D: seeded byte mutations of valid files -----------------------------------
+@pytest.fixture(scope="module")
+def valid_files(assets, tmp_path_factory):
+    root = tmp_path_factory.mktemp("valid")
+    acts = assets["actions"][:40]
+    np.savez_compressed(root / "v.npz", actions=acts, fps=50.0, object_pose=assets["pose"],
+                        meta=np.array('{"robot": "aloha"}'))
+    with h5py.File(root / "v.hdf5", "w") as f:
+        f.create_dataset("action", data=acts, chunks=(10, 14), compression="gzip")
+        f.create_dataset("observations/qpos", data=acts)
+    pq.write_table(pa.table({"action": [list(map(float, r)) for r in acts],
+                             "episode_index": [0] * 40, "frame_index": list(range(40))}),
+                   root / "v.parquet")
+    return {s: (root / f"v.{s}").read_bytes() for s in ("npz", "hdf5", "parquet")}
+
+
+@pytest.mark.parametrize("suffix", ["npz", "hdf5", "parquet"])
+@pytest.mark.parametrize("seed", range(40))
+def test_mutated_file_loads_or_fails_cleanly(suffix, seed, valid_files, tmp_path):
+    """Random byte changes or truncation: a Trajectory or a CritmomentError, nothing else."""
+    import warnings
+
+    from critmoment.exceptions import CritmomentError
+    from critmoment.trajectory import Trajectory, load_trajectory
+
+    rng = np.random.default_rng(seed)
+    data = bytearray(valid_files[suffix])
+    if seed % 4 == 0:
+        data = data[: int(rng.integers(0, len(data)))]
+    else:
+        for i in rng.integers(0, len(data), size=int(rng.integers(1, 17))):
+            data[int(i)] = int(rng.integers(0, 256))
+    path = tmp_path / f"m.{suffix}"
+    path.write_bytes(bytes(data))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        try:
+            assert isinstance(load_trajectory(path), Trajectory)
+        except CritmomentError as exc:
+            assert str(exc).strip(), "an error without a message"
