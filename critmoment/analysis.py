@@ -22,7 +22,7 @@ from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
-from critmoment import budget
+from critmoment import budget, history
 from critmoment import sparse as sp
 from critmoment import verdict as vd
 from critmoment.exceptions import ParameterError
@@ -74,6 +74,10 @@ class AnalyzeOptions:
         nthread: threads for MuJoCo's batch (0: all CPUs).
         map_resolution: cells per axis of the mass × friction cost map, the nearest Sobol
             sample's cost per cell (0 to skip).
+        chain: carry every sample that passes at the moments without a rollout of its own on
+            its own state through the moments (:func:`critmoment.history.chained_failures`,
+            :func:`critmoment.verdict.samples_to_chain`): the sample's own history (a grip
+            that shifts, a collision that never happens at nominal) decides it.
         require_task: a nominal rollout that does not complete the scenario's task (its
             success rule, :meth:`critmoment.task.Task.success`) makes the verdict UNSAFE.
         exhaustive: evaluate every Sobol sample at every moment over the whole horizon.
@@ -115,6 +119,7 @@ class AnalyzeOptions:
     verify_unlifted: bool = True
     exhaustive: bool = False
     check_feasibility: bool = True  # critmoment.feasibility.preflight on the nominal rollout
+    chain: bool = True
 
     def __post_init__(self):
         if self.n_samples < 8:
@@ -425,9 +430,14 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         with stage("verification"):
             if rerun.any():
                 rerun_failed[rerun] = roll(samples[rerun])
+    chained, chained_failed = np.zeros(len(samples), bool), np.zeros(len(samples), bool)
+    if dopt.chain and steps.size:
+        with stage("chained segments"):
+            chained, chained_failed = chain_samples(evaluator, steps, samples, res, rerun, dopt)
     sample_evidence = vd.SampleEvidence(sweep=res,
                                         nominal_completed=rec.completed, rerun=rerun,
-                                        rerun_failed=rerun_failed)
+                                        rerun_failed=rerun_failed, chained=chained,
+                                        chained_failed=chained_failed)
     failed = vd.failing_samples(sample_evidence, dopt)
     if opt.verify is not None and steps.size:
         verification = {"fraction": float(opt.verify),
@@ -436,7 +446,9 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                         "failed": int(failed[rerun].sum()),
                         "near": int(near.sum()), "near_failed": int(failed[near].sum()),
                         "unlifted": int(unlifted.sum()),
-                        "unlifted_failed": int(failed[unlifted].sum())}
+                        "unlifted_failed": int(failed[unlifted].sum()),
+                        "chained": int(chained.sum()),
+                        "chained_failed": int(chained_failed[chained].sum())}
     with stage("critical values"):
         curves = _curves(evaluator, steps, box, opt.critical_grid) if steps.size else {}
         critical = _critical_values(rec, twin, evaluator, steps, opt.critical_grid)
@@ -548,7 +560,26 @@ def decision_options(opt: AnalyzeOptions, threshold: float) -> vd.DecisionOption
     ``require_task``, ``confidence``) and the scenario's cost threshold."""
     return vd.DecisionOptions(threshold=float(threshold), verify=opt.verify,
                               verify_unlifted=opt.verify_unlifted,
-                              require_task=opt.require_task, confidence=opt.confidence)
+                              require_task=opt.require_task, confidence=opt.confidence,
+                              chain=opt.chain)
+
+
+def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.ndarray,
+                  sweep: sp.SparseResult | None, rerun: np.ndarray,
+                  options: vd.DecisionOptions) -> tuple[np.ndarray, np.ndarray]:
+    """The chained evidence of the decision: which samples were carried on their own state
+    (:func:`critmoment.verdict.samples_to_chain`) and whether they failed there, each (n,)
+    bool. Shared by :func:`analyze` and :func:`critmoment.validation.predict`."""
+    n = samples.shape[0]
+    chained = np.zeros(n, bool)
+    chained_failed = np.zeros(n, bool)
+    if sweep is None or steps.size == 0:
+        return chained, chained_failed
+    chained = vd.samples_to_chain(sweep, rerun, options)
+    if chained.any():
+        chained_failed[chained] = history.chained_failures(evaluator, steps,
+                                                           samples[chained]).failed
+    return chained, chained_failed
 
 
 def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Trajectory,

@@ -31,7 +31,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from critmoment import sparse as sp
-from critmoment.analysis import AnalyzeOptions, audit_moments, decision_options
+from critmoment.analysis import AnalyzeOptions, audit_moments, chain_samples, decision_options
 from critmoment.exceptions import ParameterError
 from critmoment.feasibility import check_fit, preflight
 from critmoment.groundtruth import (
@@ -157,7 +157,7 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
             mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int | None = None,
             envelope: float | None = None, verify: float | None = _AUDIT.verify,
             verify_unlifted: bool = _AUDIT.verify_unlifted, require_task: bool = True,
-            chunk: int = 16, nthread: int = 0) -> Prediction:
+            chain: bool = _AUDIT.chain, chunk: int = 16, nthread: int = 0) -> Prediction:
     """The audit's sparse prediction for parameter samples (the method under test).
 
     Runs what :func:`critmoment.analysis.analyze` runs to decide which samples fail: the
@@ -200,7 +200,7 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     chunk = _check_int("chunk", chunk, 1)
     # the audit's own decision options (AnalyzeOptions validates them as analyze does)
     audit = dataclasses.replace(_AUDIT, verify=verify, verify_unlifted=verify_unlifted,
-                                require_task=require_task)
+                                require_task=require_task, chain=bool(chain))
     dopt = decision_options(audit, twin.scenario.cost.threshold)
     samples = twin.scenario.box.check_samples(samples)
     timings: dict[str, float] = {}
@@ -244,8 +244,14 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
                                              chunk=chunk, nthread=nthread).failed
     if verify is not None:
         timings["verification"] = time.perf_counter() - t3
+    t4 = time.perf_counter()
+    chained, chained_failed = chain_samples(evaluator, steps, samples, res, verified, dopt)
+    if chain:
+        timings["chained segments"] = time.perf_counter() - t4
     failed = failing_samples(SampleEvidence(sweep=res, nominal_completed=nominal_completed,
-                                            rerun=verified, rerun_failed=rerun_failed), dopt)
+                                            rerun=verified, rerun_failed=rerun_failed,
+                                            chained=chained, chained_failed=chained_failed),
+                             dopt)
     return Prediction(samples=samples, moments=moments, steps=steps, envelope_steps=extra,
                       max_moments=max_moments, horizon=h, mode=evaluator.mode, cost=cost_all,
                       cost_moments=cost_moments,
@@ -538,7 +544,8 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
              envelope: float | None = None, verify: float | None = _AUDIT.verify,
              verify_unlifted: bool = _AUDIT.verify_unlifted,
              require_task: bool = True, criteria: OutcomeCriteria = _CRITERIA,
-             chunk: int = 16, nthread: int = 0) -> ValidationResult:
+             chain: bool = _AUDIT.chain, chunk: int = 16, nthread: int = 0
+             ) -> ValidationResult:
     """Check the audit's sparse verdicts against brute-force full rollouts.
 
     Args:
@@ -572,7 +579,7 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
         used_seed = seed
     else:
         samples, used_seed = box.check_samples(samples), None
-    prediction = predict(traj, twin=twin, samples=samples, horizon=horizon, mode=mode,
+    prediction = predict(traj, twin=twin, samples=samples, horizon=horizon, mode=mode, chain=chain,
                          max_moments=max_moments, envelope=envelope, verify=verify,
                          verify_unlifted=verify_unlifted, require_task=require_task,
                          chunk=chunk, nthread=nthread)

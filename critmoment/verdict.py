@@ -53,6 +53,7 @@ __all__ = [
     "Decision",
     "samples_to_rerun",
     "failing_samples",
+    "samples_to_chain",
     "worst_cases_to_rerun",
     "fail_sides",
     "safe_subbox",
@@ -87,6 +88,11 @@ class DecisionOptions:
             decided by their own full rollout too.
         require_task: a nominal run that does not complete the task fails every sample.
         confidence: confidence level of the P(success) interval.
+        chain: every sample that passes at the moments and has no rollout of its own is
+            carried on its own state from the first moment through the later ones
+            (:func:`critmoment.history.chained_failures`); a failure there fails it. This
+            sees what a sample's own history changes (a grip that shifts, a collision that
+            never happens at nominal), which evaluation from the nominal states cannot.
     """
 
     threshold: float
@@ -94,6 +100,7 @@ class DecisionOptions:
     verify_unlifted: bool = True
     require_task: bool = True
     confidence: float = 0.95
+    chain: bool = True
 
     def __post_init__(self):
         if isinstance(self.threshold, bool) or not isinstance(self.threshold, numbers.Real) \
@@ -170,12 +177,17 @@ class SampleEvidence:
         nominal_completed: the nominal run completes the task.
         rerun: which samples have their own full rollout's outcome, (n,) bool, or None.
         rerun_failed: that outcome (the rollout failed), (n,) bool; read where ``rerun``.
+        chained: which samples were carried on their own state through the moments
+            (:func:`samples_to_chain`), (n,) bool, or None.
+        chained_failed: they failed there, (n,) bool; read where ``chained``.
     """
 
     sweep: SparseResult | None
     nominal_completed: bool
     rerun: np.ndarray | None = None
     rerun_failed: np.ndarray | None = None
+    chained: np.ndarray | None = None
+    chained_failed: np.ndarray | None = None
 
     @property
     def n_samples(self) -> int:
@@ -216,7 +228,8 @@ def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.nd
     A sample fails where its sparse evaluation fails at an audited moment
     (``SparseResult.failed``: the cost above the threshold, or diverged); a sample with its
     own full rollout (every sample :func:`samples_to_rerun` names must have one) is decided
-    by that rollout's real outcome instead; with ``require_task`` every sample fails when
+    by that rollout's real outcome instead; a sample that passes with no rollout is decided
+    by its chained evaluation on its own state (:func:`samples_to_chain`); with ``require_task`` every sample fails when
     the nominal run does not complete the task.
 
     Args:
@@ -256,7 +269,29 @@ def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.nd
             f"samples {np.flatnonzero(missing)[:10].tolist()}")
     if rerun.any():
         failed[rerun] = np.asarray(evidence.rerun_failed, dtype=bool)[rerun]
+    if options.chain and sweep is not None and sweep.n_moments > 0:
+        need = samples_to_chain(sweep, rerun, options)
+        chained = (np.zeros(n, bool) if evidence.chained is None
+                   else np.asarray(evidence.chained, dtype=bool))
+        if need.any() and (chained.shape != (n,) or (need & ~chained).any()
+                           or np.shape(evidence.chained_failed) != (n,)):
+            raise ParameterError(
+                f"expected the chained evaluation of every sample that passes without a "
+                f"rollout ({int(need.sum())}), got chained {np.shape(evidence.chained)}")
+        if need.any():
+            failed[need] = np.asarray(evidence.chained_failed, dtype=bool)[need]
     return failed
+
+
+def samples_to_chain(sweep: SparseResult, rerun: np.ndarray, options: DecisionOptions
+                     ) -> np.ndarray:
+    """The samples to carry on their own state through the moments: those that pass at
+    every audited moment and have no rollout of their own, (n,) bool (none without
+    ``options.chain``)."""
+    n = sweep.n_samples
+    if not options.chain or sweep.n_moments == 0:
+        return np.zeros(n, bool)
+    return ~np.asarray(sweep.failed_any, dtype=bool) & ~np.asarray(rerun, dtype=bool)
 
 
 def worst_cases_to_rerun(moments: Sequence[MomentReport], worst_failed: Mapping[int, bool],

@@ -131,8 +131,32 @@ def boundary_reports(twin, demo_traj, scenario):
     boundary = Twin(scenario.replace(box=box))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return {v: analyze(demo_traj, twin=boundary, options=dataclasses.replace(FAST, verify=v))
+        # chain=False: these test the verification alone; chained segments have their own test
+        return {v: analyze(demo_traj, twin=boundary,
+                           options=dataclasses.replace(FAST, verify=v, chain=False))
                 for v in (None, 0.8)}, boundary
+
+
+def test_chained_segments_decide_the_samples_that_pass_without_a_rollout(boundary_reports,
+                                                                         demo_traj):
+    """The samples that pass at the moments with no rollout are carried on their own state;
+    each one the chain fails really fails in its own full rollout (mass <= 1.5 kg box, where
+    nominal-state evaluation misses failures that come from the sample's own history)."""
+    reports, boundary = boundary_reports
+    checked = reports[0.8]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        chained = analyze(demo_traj, twin=boundary, options=dataclasses.replace(FAST, verify=0.8))
+    np.testing.assert_array_equal(chained.sweep.cost, checked.sweep.cost)
+    v = chained.verification
+    assert v["chained"] > 0
+    newly = chained.failed & ~checked.failed
+    assert int(newly.sum()) == v["chained_failed"]
+    if newly.any():
+        own = brute_force(demo_traj, twin=boundary, samples=chained.sweep.samples[newly]).failed
+        assert own.all()  # every chained failure is a real failure
+    # chained segments only add failures
+    assert not (checked.failed & ~chained.failed).any()
 
 
 def test_verification_reruns_the_near_threshold_safes(boundary_reports, demo_traj):

@@ -13,7 +13,8 @@ from critmoment.scenario import CostParams
 from critmoment.sparse import SparseMode, SparseResult
 
 THRESHOLD = 0.9
-OPT = vd.DecisionOptions(threshold=THRESHOLD)
+#: the decision without chained segments (tested on their own below)
+OPT = vd.DecisionOptions(threshold=THRESHOLD, chain=False)
 
 
 def _box(mass_high: float = 1.0) -> UncertaintyBox:
@@ -66,6 +67,25 @@ def _moment(step: int, critical=None, side=None) -> vd.MomentReport:
 # --------------------------------------------------------------------------
 
 
+def test_a_chained_failure_fails_a_sample_that_passes_without_a_rollout():
+    chain = vd.DecisionOptions(threshold=THRESHOLD, chain=True)
+    samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0]])
+    sweep = _sweep([[0.1, 1.5, 0.8, 0.5]], samples)
+    near, _ = vd.samples_to_rerun(sweep, chain, nominal_completed=True)
+    # passing, no rollout: samples 0 and 3 are carried on their own state
+    to_chain = vd.samples_to_chain(sweep, near, chain)
+    assert to_chain.tolist() == [True, False, False, True]
+    base = dict(sweep=sweep, nominal_completed=True, rerun=near,
+                rerun_failed=np.array([False, False, False, False]))
+    with pytest.raises(ParameterError, match="chained evaluation of every sample"):
+        vd.failing_samples(vd.SampleEvidence(**base), chain)
+    ev = vd.SampleEvidence(**base, chained=to_chain,
+                           chained_failed=np.array([False, False, False, True]))
+    # sample 3 fails on its own history; sample 1 fails at the moments; 2 passed its rollout
+    assert vd.failing_samples(ev, chain).tolist() == [False, True, False, True]
+    assert not vd.samples_to_chain(sweep, near, OPT).any()
+
+
 def test_failing_samples_is_the_sparse_failure_unless_a_rollout_decided():
     samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0]])
     sweep = _sweep([[0.1, 1.5, 0.8, 0.5]], samples)
@@ -78,7 +98,7 @@ def test_failing_samples_is_the_sparse_failure_unless_a_rollout_decided():
                            rerun_failed=np.array([False, False, True, False]))
     assert vd.failing_samples(ev, OPT).tolist() == [False, True, True, False]
     # without verification the sparse evaluation alone decides
-    plain = vd.DecisionOptions(threshold=THRESHOLD, verify=None)
+    plain = vd.DecisionOptions(threshold=THRESHOLD, verify=None, chain=False)
     assert vd.failing_samples(vd.SampleEvidence(sweep=sweep, nominal_completed=True),
                               plain).tolist() == [False, True, False, False]
     # a nominal run that fails the task fails every sample, and nothing is re-run
