@@ -510,13 +510,21 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
               "range = [0.2, 1.5]   # sliding friction of the object's contacts (critmoment "
               "gives the object priority)", f"nominal = {_num(mu_nom)}", "",
               "[cost]", "A = 1.0", "B = 1.0", "alpha = 0.7", "beta = 2.0", "threshold = 0.9", "",
-              "[sparse]", "horizon = 10   # physics steps per sparse evaluation", ""]
+              "[sparse]", "horizon = 10   # physics steps per sparse evaluation"]
+    soft = info.cone == "pyramidal" or info.impratio < 2
+    if soft:
+        # a held object creeps through a soft grip while the one-step force ratio looks
+        # fine: measure the slip over half a second instead (critmoment.contactmodel)
+        lines.append("creep_horizon = 250   # soft contacts: slip measured over 0.5 s")
+    lines.append("")
     guesses.append(f"uncertainty box: mass {0.5 * mass:.4g}..{20 * mass:.4g} kg (nominal "
                    f"{mass:.4g}), friction 0.2..1.5 (nominal {mu_nom:g})")
     checks.append("the uncertainty box ranges")
-    if info.cone == "pyramidal" or info.impratio < 2:
+    if soft:
+        guesses.append("creep horizon 250 steps: with soft contacts a grip can creep while "
+                       "its force ratio looks safe")
         checks.append(f"soft contacts (cone {info.cone}, impratio {info.impratio:g}): grips "
-                      "may creep")
+                      "may creep ([sparse] creep_horizon)")
     text = "\n".join(lines)
     if out_path is not None:
         if out_path.exists() and not overwrite:

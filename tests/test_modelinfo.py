@@ -150,6 +150,13 @@ def test_inspect_lists_what_a_scenario_needs(tmp_path):
     assert "split" in info.text()
 
 
+def test_init_measures_creep_over_a_longer_horizon_on_soft_contacts(tmp_path):
+    for cone, impratio, expect in (("pyramidal", 1.0, 250), ("elliptic", 10.0, 0)):
+        path = _write(tmp_path, f"{cone}.xml", cone=cone, impratio=impratio)
+        init_scenario(path, object_body="cube", task="pick_hold", out=tmp_path / f"{cone}.toml")
+        assert load_scenario(tmp_path / f"{cone}.toml").sparse.creep_horizon == expect
+
+
 def test_cli_init_and_inspect(tmp_path, capsys):
     model_path = _write(tmp_path, gripper="jaw")
     assert main(["inspect", str(model_path)]) == 0
