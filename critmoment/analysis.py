@@ -22,7 +22,7 @@ from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
-from critmoment import budget, history
+from critmoment import budget, contactmodel, history
 from critmoment import sparse as sp
 from critmoment import verdict as vd
 from critmoment.exceptions import ParameterError
@@ -179,6 +179,9 @@ class AuditReport:
             (:func:`check_region`), or None when no region was claimed.
         feasibility: the twin's feasibility and the trajectory's fit on the nominal rollout
             (:func:`critmoment.feasibility.preflight`), or None when not checked.
+        contact_model: the contact model's check (:func:`critmoment.contactmodel.
+            check_contact_model`: cone, impratio, noslip, the measured creep of a held object);
+            on a soft model the sweep measures slip over its ``creep_horizon``.
     """
 
     verdict: Verdict
@@ -202,6 +205,7 @@ class AuditReport:
     verification: Mapping | None = None
     region_check: vd.RegionCheck | None = None
     feasibility: FeasibilityReport | None = None
+    contact_model: contactmodel.ContactModelReport | None = None
 
     def passes(self, min_success: float | None = None) -> bool:
         """SAFE, or CONDITIONAL with P(success) ≥ ``min_success`` (the CLI's exit code 0)."""
@@ -410,7 +414,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         rec = rollout(trajectory, twin=twin)
         feasibility = preflight(trajectory, rec, twin) if opt.check_feasibility else None
     with stage("moments"):
-        evaluator = sp.SparseEvaluator(rec, twin, horizon=opt.horizon, nthread=opt.nthread)
+        evaluator, contact = audit_evaluator(rec, twin, horizon=opt.horizon,
+                                             nthread=opt.nthread)
         candidates, steps = audit_moments(rec, twin, evaluator, opt.max_moments)
         chosen = candidates[:steps.size]
     with stage("sweep"):
@@ -552,7 +557,25 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         failure_causes=decision.causes,
         nominal_cost=nominal_cost, recording=rec, sweep=res, curves=curves, cost_map=cost_map,
         scenario=sc, options=opt, timings=timings, manifest=manifest, failed=decision.failed,
-        verification=verification, region_check=region_check, feasibility=feasibility)
+        verification=verification, region_check=region_check, feasibility=feasibility,
+        contact_model=contact)
+
+
+def audit_evaluator(recording: Recording, twin: Twin, *, horizon: int | None = None,
+                    mode: sp.SparseMode = sp.SparseMode.STEP, nthread: int = 0
+                    ) -> tuple[sp.SparseEvaluator, contactmodel.ContactModelReport]:
+    """The audit's sparse evaluator, after checking the contact model.
+
+    On a soft contact model (a held object creeps while the force ratio looks safe,
+    measured by :func:`critmoment.contactmodel.check_contact_model`, which warns) the slip is
+    measured over the report's ``creep_horizon`` unless the scenario sets one. Shared by
+    :func:`analyze` and :func:`critmoment.validation.predict`.
+    """
+    contact = contactmodel.check_contact_model(twin, recording)
+    creep = twin.scenario.sparse.creep_horizon or int(getattr(contact, "creep_horizon", 0) or 0)
+    evaluator = sp.SparseEvaluator(recording, twin, horizon=horizon, mode=mode,
+                                   nthread=nthread, creep_horizon=creep)
+    return evaluator, contact
 
 
 def decision_options(opt: AnalyzeOptions, threshold: float) -> vd.DecisionOptions:

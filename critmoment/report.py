@@ -190,12 +190,24 @@ def report_json(report, *, timings: bool = True) -> dict:
         "verification": _jsonable(report.verification),
         "feasibility": (report.feasibility.to_json()
                         if getattr(report, "feasibility", None) is not None else None),
+        "contact_model": _contact_json(getattr(report, "contact_model", None)),
         "rollout": report.recording.summary(),
         "manifest": _jsonable(report.manifest),
     }
     if timings:
         doc["timings"] = {k: round(float(v), 4) for k, v in report.timings.items()}
     return doc
+
+
+def _contact_json(cm) -> dict | None:
+    """The contact-model check (critmoment.contactmodel) as JSON, or None."""
+    if cm is None:
+        return None
+    return {"summary": cm.summary(), "cone": cm.cone, "impratio": _num(cm.impratio),
+            "noslip_iterations": int(cm.noslip_iterations), "soft": bool(cm.soft),
+            "probe_mass": _num(cm.probe_mass), "creep_rate": _num(cm.creep_rate),
+            "carry_time": _num(cm.carry_time), "creep_horizon": int(cm.creep_horizon),
+            "findings": [str(getattr(f, "message", f)) for f in cm.findings]}
 
 
 def dataclasses_asdict(obj) -> dict:

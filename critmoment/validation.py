@@ -31,7 +31,13 @@ from collections.abc import Mapping
 import numpy as np
 
 from critmoment import sparse as sp
-from critmoment.analysis import AnalyzeOptions, audit_moments, chain_samples, decision_options
+from critmoment.analysis import (
+    AnalyzeOptions,
+    audit_evaluator,
+    audit_moments,
+    chain_samples,
+    decision_options,
+)
 from critmoment.exceptions import ParameterError
 from critmoment.feasibility import check_fit, preflight
 from critmoment.groundtruth import (
@@ -210,7 +216,7 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     t1 = time.perf_counter()
     timings["rollout"] = t1 - t0
     preflight(traj, rec, twin)  # the twin can follow the nominal motion, or exit 2
-    evaluator = sp.SparseEvaluator(rec, twin, horizon=horizon, mode=mode, nthread=nthread)
+    evaluator, _ = audit_evaluator(rec, twin, horizon=horizon, mode=mode, nthread=nthread)
     h = evaluator.horizon
     # the audit's own selection (critmoment.analysis.audit_moments)
     candidates, steps = audit_moments(rec, twin, evaluator, max_moments)

@@ -40,6 +40,20 @@ def test_nominal_demo_is_conditional_with_a_critical_mass(nominal_report, scenar
     assert r.safe_region_text.startswith("safe for mass ≤")
 
 
+def test_the_audit_reports_its_contact_model_and_task(nominal_report):
+    doc = nominal_report.to_json()
+    cm = doc["contact_model"]
+    # the bundled scene is hard (elliptic, impratio 10): a held cube creeps well under the
+    # tolerance, so the sweep keeps its short horizon
+    assert (cm["cone"], cm["impratio"], cm["soft"], cm["creep_horizon"]) == (
+        "elliptic", 10.0, False, 0)
+    assert 0 < cm["creep_rate"] < 1e-3
+    manifest = doc["manifest"]
+    assert manifest["task"]["kind"] == "handover"
+    assert manifest["unlimited_actuators"] == []
+    assert manifest["limits"]["left/waist"] == {"limit": 10.0, "source": "scenario"}
+
+
 def test_narrow_box_is_safe(twin, demo_traj, scenario):
     box = scenario.box.with_range("mass", 0.05, 0.2).with_range("friction", 0.5, 1.5)
     r = analyze(demo_traj, twin=Twin(scenario.replace(box=box)), options=FAST)
