@@ -182,6 +182,11 @@ class AuditReport:
         contact_model: the contact model's check (:func:`critmoment.contactmodel.
             check_contact_model`: cone, impratio, noslip, the measured creep of a held object);
             on a soft model the sweep measures slip over its ``creep_horizon``.
+        load_bound: the analytic motor bound over the whole motion
+            (:func:`critmoment.dynamics.trajectory_load_bound`) at the nominal and the
+            largest mass: per mass the first time [s] a joint saturates (as the ground truth
+            counts it) and which, and the smallest payload any step can take; None without
+            ``search``.
     """
 
     verdict: Verdict
@@ -206,6 +211,7 @@ class AuditReport:
     region_check: vd.RegionCheck | None = None
     feasibility: FeasibilityReport | None = None
     contact_model: contactmodel.ContactModelReport | None = None
+    load_bound: Mapping | None = None
 
     def passes(self, min_success: float | None = None) -> bool:
         """SAFE, or CONDITIONAL with P(success) ≥ ``min_success`` (the CLI's exit code 0)."""
@@ -458,10 +464,12 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         curves = _curves(evaluator, steps, box, opt.critical_grid) if steps.size else {}
         critical = _critical_values(rec, twin, evaluator, steps, opt.critical_grid)
     searches: dict[int, dict] = {}
+    load_bound = None
     analytics: dict[int, dict] = {}
     if opt.search and steps.size:
         with stage("analytic bounds and search"):
             analytics, searches = _search_all(rec, twin, evaluator, steps, opt)
+            load_bound = _load_bound(rec, twin)
     moment_reports = []
     worst_failed_sparse: dict[int, bool] = {}  # per moment: its worst case fails (sparse)
     worst_unlifted: dict[int, bool] = {}  # per failing moment: its worst case is unlifted
@@ -558,7 +566,28 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_cost=nominal_cost, recording=rec, sweep=res, curves=curves, cost_map=cost_map,
         scenario=sc, options=opt, timings=timings, manifest=manifest, failed=decision.failed,
         verification=verification, region_check=region_check, feasibility=feasibility,
-        contact_model=contact)
+        contact_model=contact, load_bound=load_bound)
+
+
+def _load_bound(rec: Recording, twin: Twin) -> dict | None:
+    """The whole-motion analytic motor bound, in words and numbers (see AuditReport)."""
+    from critmoment import dynamics
+
+    try:
+        bound = dynamics.trajectory_load_bound(rec, twin)
+    except ParameterError as exc:
+        return {"error": str(exc)}
+    steps = bound.first_failing_step
+    per_mass = []
+    for i, m in enumerate(bound.masses):
+        k = int(steps[i])
+        per_mass.append({"mass": float(m),
+                         "first_failing_time": float(k * bound.dt) if k >= 0 else None,
+                         "actuator": bound.limiting_at(i, k) if k >= 0 else None,
+                         "min_fos": float(np.min(bound.fos[i]))})
+    finite = bound.critical_mass[np.isfinite(bound.critical_mass)]
+    return {"masses": per_mass,
+            "min_critical_payload": float(finite.min()) if finite.size else None}
 
 
 def audit_evaluator(recording: Recording, twin: Twin, *, horizon: int | None = None,

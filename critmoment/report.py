@@ -191,6 +191,7 @@ def report_json(report, *, timings: bool = True) -> dict:
         "feasibility": (report.feasibility.to_json()
                         if getattr(report, "feasibility", None) is not None else None),
         "contact_model": _contact_json(getattr(report, "contact_model", None)),
+        "load_bound": _jsonable(getattr(report, "load_bound", None)),
         "rollout": report.recording.summary(),
         "manifest": _jsonable(report.manifest),
     }
@@ -381,6 +382,16 @@ def summary_text(report) -> str:
     v = report.verification
     if v is not None:
         lines.append(f"  verification: {_verification_text(v)}")
+    lb = getattr(report, "load_bound", None)
+    if lb and lb.get("masses"):
+        parts = [f"{e['mass']:.3g} kg: {e['actuator']} saturates from t = "
+                 f"{e['first_failing_time']:.2f} s" if e["first_failing_time"] is not None
+                 else f"{e['mass']:.3g} kg: no joint saturates" for e in lb["masses"]]
+        lines.append("  analytic motor bound over the whole motion: " + "; ".join(parts))
+    unlimited = getattr(report.scenario, "unlimited", ())
+    if unlimited:
+        lines.append(f"  no force limit (not in the scenario or the MJCF): "
+                     f"{', '.join(unlimited)}; their motor FOS is not checked")
     for cause in report.failure_causes:
         lines.append(f"  ! {cause}")
     return "\n".join(lines)

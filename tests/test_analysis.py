@@ -50,8 +50,23 @@ def test_the_audit_reports_its_contact_model_and_task(nominal_report):
     assert 0 < cm["creep_rate"] < 1e-3
     manifest = doc["manifest"]
     assert manifest["task"]["kind"] == "handover"
+    # FAST has no search, so no whole-motion bound; see test_the_load_bound_* for it
+    assert doc["load_bound"] is None
     assert manifest["unlimited_actuators"] == []
     assert manifest["limits"]["left/waist"] == {"limit": 10.0, "source": "scenario"}
+
+
+def test_the_load_bound_flags_the_largest_mass_over_the_whole_motion(twin, demo_traj):
+    from critmoment.analysis import _load_bound
+    from critmoment.recording import rollout as run
+
+    lb = _load_bound(run(demo_traj, twin=twin), twin)
+    nominal, heavy = lb["masses"]
+    assert nominal["mass"] == 0.05 and nominal["first_failing_time"] is None
+    # 10 kg saturates a joint while it is carried (after the lift-off, 3.4 s in)
+    assert heavy["mass"] == 10.0 and 3.0 < heavy["first_failing_time"] < 4.0
+    assert heavy["actuator"].startswith("right/")
+    assert 0.05 < lb["min_critical_payload"] < 10.0
 
 
 def test_narrow_box_is_safe(twin, demo_traj, scenario):
