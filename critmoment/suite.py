@@ -94,7 +94,9 @@ def make(family: str, *, seed: int = 0, twin: Twin | None = None,
     if family not in families:
         raise ParameterError(f"unknown trajectory family {family!r} for {scenario}; known: "
                              f"{', '.join(families)}")
-    traj = families[family](int(seed), twin=twin)
+    from critmoment.budget import check_seed
+
+    traj = families[family](check_seed(seed), twin=twin)
     meta = dict(traj.meta)
     meta["family"] = family
     meta["scenario"] = scenario

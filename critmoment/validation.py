@@ -30,6 +30,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from critmoment import budget
 from critmoment import sparse as sp
 from critmoment.analysis import (
     AnalyzeOptions,
@@ -56,7 +57,7 @@ from critmoment.groundtruth import (
 )
 from critmoment.moments import Moment
 from critmoment.recording import Recording, rollout
-from critmoment.trajectory import Trajectory
+from critmoment.trajectory import Trajectory, input_identity
 from critmoment.twin import Twin, carried_flags
 from critmoment.verdict import SampleEvidence, failing_samples, samples_to_rerun
 
@@ -581,6 +582,9 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
     box = twin.scenario.box
     if samples is None:
         n_samples = _check_int("n_samples", n_samples, 1)
+        if seed is not None:
+            seed = budget.check_seed(seed)
+        budget.check_validation(traj, twin, n_samples=n_samples)
         samples = sp.sweep_samples(box, n=n_samples, seed=seed)
         used_seed = seed
     else:
@@ -591,4 +595,6 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
                          chunk=chunk, nthread=nthread)
     brute = brute_force(traj, twin=twin, samples=samples, criteria=criteria, chunk=chunk,
                         nthread=nthread)
-    return compare(brute, prediction, trajectory=traj.source, seed=used_seed)
+    # the file's name, not its path: identical inputs give identical documents
+    return compare(brute, prediction, trajectory=input_identity(traj.source)["name"],
+                   seed=used_seed)
