@@ -24,7 +24,8 @@ import mujoco
 import numpy as np
 
 __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
-           "gripper_gap", "closing_ends", "moves_geoms", "position_target"]
+           "gripper_gap", "closing_ends", "moves_geoms", "position_target", "body_chain",
+           "common_ancestor"]
 
 
 class ActuatorKind(enum.Enum):
@@ -159,23 +160,18 @@ def describe_all(model: mujoco.MjModel) -> tuple[ActuatorInfo, ...]:
     return tuple(describe(model, i) for i in range(model.nu))
 
 
-def _subtree_root(model: mujoco.MjModel, geom_ids: Sequence[int]) -> int:
-    """Deepest body that is an ancestor of every geom's body."""
-    def chain(b):
-        out = [b]
-        while b != 0:
-            b = int(model.body_parentid[b])
-            out.append(b)
-        return out[::-1]
+def body_chain(model: mujoco.MjModel, body: int) -> list[int]:
+    """``body`` and its ancestors up to the world (0), in that order."""
+    chain = [int(body)]
+    while chain[-1] != 0:
+        chain.append(int(model.body_parentid[chain[-1]]))
+    return chain
 
-    chains = [chain(int(model.geom_bodyid[g])) for g in geom_ids]
-    root = 0
-    for level in zip(*chains, strict=False):
-        if all(b == level[0] for b in level):
-            root = level[0]
-        else:
-            break
-    return root
+
+def common_ancestor(model: mujoco.MjModel, bodies: Sequence[int]) -> int:
+    """The deepest body that is ``bodies``' common ancestor (or one of them)."""
+    chains = [body_chain(model, b) for b in bodies]
+    return next(b for b in chains[0] if all(b in c for c in chains[1:]))
 
 
 def gripper_gap(model: mujoco.MjModel, actuators: Sequence[int], ctrl: Sequence[float],
@@ -202,7 +198,7 @@ def gripper_gap(model: mujoco.MjModel, actuators: Sequence[int], ctrl: Sequence[
     d = mujoco.MjData(m)
     if keyframe is not None:
         mujoco.mj_resetDataKeyframe(m, d, keyframe)
-    root = _subtree_root(m, geom_ids)
+    root = common_ancestor(m, [int(m.geom_bodyid[g]) for g in geom_ids])
     inside = np.zeros(m.nbody, bool)
     for b in range(m.nbody):
         a = b

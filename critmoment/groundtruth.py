@@ -54,6 +54,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from critmoment.actuators import common_ancestor
 from critmoment.exceptions import ParameterError
 from critmoment.recording import (
     batched_rollouts,
@@ -466,15 +467,7 @@ class _Probe:
 
 def _gripper_anchor(model: mujoco.MjModel, geoms: Sequence[str]) -> int:
     """The deepest body that is an ancestor of every geom of a gripper (its base)."""
-    chains = []
-    for name in geoms:
-        body = int(model.geom_bodyid[model.geom(name).id])
-        chain = [body]
-        while body != 0:
-            body = int(model.body_parentid[body])
-            chain.append(body)
-        chains.append(chain)
-    return next(b for b in chains[0] if all(b in c for c in chains[1:]))
+    return common_ancestor(model, [int(model.geom_bodyid[model.geom(n).id]) for n in geoms])
 
 
 def _closing_projector(model: mujoco.MjModel, geoms: Sequence[str], anchor: int) -> np.ndarray:

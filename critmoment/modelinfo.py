@@ -163,24 +163,6 @@ def _is_gripper_actuator(model: mujoco.MjModel, info: act_info.ActuatorInfo) -> 
     return any(_GRIPPER_WORDS.search(n or "") for n in names)
 
 
-def _common_ancestor(model: mujoco.MjModel, bodies: Sequence[int]) -> int:
-    def chain(b):
-        out = [b]
-        while b != 0:
-            b = int(model.body_parentid[b])
-            out.append(b)
-        return out[::-1]
-
-    chains = [chain(b) for b in bodies]
-    root = 0
-    for level in zip(*chains, strict=False):
-        if all(b == level[0] for b in level):
-            root = level[0]
-        else:
-            break
-    return root
-
-
 def _short(name: str, taken: set[str]) -> str:
     base = re.sub(r"[^A-Za-z0-9_]+", "_", name).strip("_") or "gripper"
     out, k = base, 2
@@ -201,7 +183,7 @@ def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
         if not moved:
             continue
         # the hand: the body that carries the moving fingers (parent of a lone finger)
-        hand = _common_ancestor(model, moved)
+        hand = act_info.common_ancestor(model, moved)
         if len(moved) == 1:
             hand = int(model.body_parentid[moved[0]])
         groups.setdefault(hand, []).append(info.index)

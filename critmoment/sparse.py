@@ -99,6 +99,7 @@ import mujoco
 import mujoco.batch
 import numpy as np
 
+from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
 from critmoment.params import UncertaintyBox
 from critmoment.scenario import CostParams
@@ -529,15 +530,9 @@ def grip_frames(model: mujoco.MjModel, scenario) -> tuple[np.ndarray, np.ndarray
     mujoco.mj_kinematics(model, data)
     anchors, projectors = [], []
     for gripper in scenario.grippers:
-        chains = []
-        for name in gripper.geoms:
-            body = int(model.geom_bodyid[model.geom(name).id])
-            chain = [body]
-            while body != 0:
-                body = int(model.body_parentid[body])
-                chain.append(body)
-            chains.append(chain)
-        anchor = next(b for b in chains[0] if all(b in c for c in chains[1:]))
+        bodies = [int(model.geom_bodyid[model.geom(name).id]) for name in gripper.geoms]
+        chains = [body_chain(model, b) for b in bodies]
+        anchor = common_ancestor(model, bodies)
         frame = data.xmat[anchor].reshape(3, 3)
         axes = []
         for chain in chains:
