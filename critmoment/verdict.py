@@ -93,6 +93,9 @@ class DecisionOptions:
             (:func:`critmoment.history.chained_failures`); a failure there fails it. This
             sees what a sample's own history changes (a grip that shifts, a collision that
             never happens at nominal), which evaluation from the nominal states cannot.
+        nominal_by_run: with ``verify``, a nominal run that completes the task decides the
+            nominal parameters even where their sparse cost exceeds the threshold (contact
+            chatter of a good grasp); without it only an unlifted squeeze is decided so.
     """
 
     threshold: float
@@ -101,6 +104,7 @@ class DecisionOptions:
     require_task: bool = True
     confidence: float = 0.95
     chain: bool = True
+    nominal_by_run: bool = True
 
     def __post_init__(self):
         if isinstance(self.threshold, bool) or not isinstance(self.threshold, numbers.Real) \
@@ -775,8 +779,13 @@ def _nominal_fails(evidence: Evidence, options: DecisionOptions) -> tuple[bool, 
     se = evidence.samples
     has_moments = se.sweep is not None and se.sweep.n_moments > 0
     task_failed = options.require_task and not se.nominal_completed
-    squeeze = (options.rolls_unlifted and has_moments and evidence.nominal_failed
-               and se.nominal_completed and evidence.nominal_unlifted)
+    # the nominal parameters have their own full run, the recording: where it completes the
+    # task, it decides them (a sparse excursion there is contact chatter, or a squeeze
+    # without a lift, that the real run survived)
+    squeeze = (options.verify is not None and has_moments and evidence.nominal_failed
+               and se.nominal_completed
+               and (evidence.nominal_unlifted or not options.verify_unlifted
+                    or options.nominal_by_run))
     return (evidence.nominal_failed and not squeeze) or task_failed, squeeze, task_failed
 
 
@@ -852,9 +861,11 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
         text = f"no safe region: all {n} samples of the box fail"
     causes = tuple(_causes(evidence.moments, options.threshold))
     if nominal_squeeze:
+        where = ("only where the grip squeezes the object off its support without lifting it"
+                 if evidence.nominal_unlifted else "at a moment")
         causes = (f"the nominal cost exceeds the threshold ({evidence.nominal_cost:.3g} > "
-                  f"{options.threshold:g}) only where the grip squeezes the object off its "
-                  f"support without lifting it; the nominal run completes the task",) + causes
+                  f"{options.threshold:g}) {where}, but the nominal run itself completes the "
+                  f"task, which decides the nominal parameters",) + causes
     elif evidence.nominal_failed:
         causes = (f"fails at the nominal parameters (max cost {evidence.nominal_cost:.3g} > "
                   f"{options.threshold:g})",) + causes

@@ -244,9 +244,15 @@ def test_decide_unsafe_at_nominal_and_safe_needs_the_whole_box_checked():
     box = _box()
     x = _grid(box, 5)
     bad_nominal = _evidence(box, x, _cost(x), nominal_failed=True)
+    # the nominal run completes the task: with nominal_by_run it decides the nominal
+    # parameters; without, the sparse failure at nominal makes the verdict UNSAFE
     d = vd.decide(bad_nominal, OPT)
+    assert d.verdict is not vd.Verdict.UNSAFE
+    assert any("nominal run itself completes the task" in c for c in d.causes)
+    strict = vd.DecisionOptions(threshold=THRESHOLD, chain=False, nominal_by_run=False)
+    d = vd.decide(bad_nominal, strict)
     assert d.verdict is vd.Verdict.UNSAFE and d.region_to_check is None
-    assert any("nominal" in c for c in d.causes)
+    assert any("fails at the nominal parameters" in c for c in d.causes)
     good = _evidence(box, x, np.full(len(x), 0.1))
     d = vd.decide(good, OPT)
     assert d.verdict is vd.Verdict.SAFE and d.p_success == 1.0
