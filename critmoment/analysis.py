@@ -420,7 +420,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         rec = rollout(trajectory, twin=twin)
         feasibility = preflight(trajectory, rec, twin) if opt.check_feasibility else None
     with stage("moments"):
-        evaluator, contact = audit_evaluator(rec, twin, horizon=opt.horizon,
+        evaluator, contact = audit_evaluator(rec, twin, horizon=opt.horizon, chain=opt.chain,
                                              nthread=opt.nthread)
         candidates, steps = audit_moments(rec, twin, evaluator, opt.max_moments)
         chosen = candidates[:steps.size]
@@ -591,17 +591,24 @@ def _load_bound(rec: Recording, twin: Twin) -> dict | None:
 
 
 def audit_evaluator(recording: Recording, twin: Twin, *, horizon: int | None = None,
-                    mode: sp.SparseMode = sp.SparseMode.STEP, nthread: int = 0
+                    mode: sp.SparseMode = sp.SparseMode.STEP, nthread: int = 0,
+                    chain: bool = True
                     ) -> tuple[sp.SparseEvaluator, contactmodel.ContactModelReport]:
     """The audit's sparse evaluator, after checking the contact model.
 
     On a soft contact model (a held object creeps while the force ratio looks safe,
-    measured by :func:`critmoment.contactmodel.check_contact_model`, which warns) the slip is
-    measured over the report's ``creep_horizon`` unless the scenario sets one. Shared by
-    :func:`analyze` and :func:`critmoment.validation.predict`.
+    measured by :func:`critmoment.contactmodel.check_contact_model`, which warns) creep is
+    measured on each sample's own state: with ``chain`` the chained segments watch the
+    object's slip in its grip over the whole hold with the ground truth's rule
+    (:func:`critmoment.history.chained_failures`), so the sweep keeps its short horizon
+    (the scenario's ``creep_horizon``, 0 unless set); without it the sweep measures slip
+    over the report's ``creep_horizon``. Shared by :func:`analyze` and
+    :func:`critmoment.validation.predict`.
     """
     contact = contactmodel.check_contact_model(twin, recording)
-    creep = twin.scenario.sparse.creep_horizon or int(getattr(contact, "creep_horizon", 0) or 0)
+    creep = twin.scenario.sparse.creep_horizon
+    if not chain and not creep:
+        creep = int(getattr(contact, "creep_horizon", 0) or 0)
     evaluator = sp.SparseEvaluator(recording, twin, horizon=horizon, mode=mode,
                                    nthread=nthread, creep_horizon=creep)
     return evaluator, contact

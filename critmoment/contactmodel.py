@@ -137,10 +137,10 @@ class ContactModelReport:
                      f"{self.creep_over_carry * 1e3:.3g} mm over the {self.carry_time:.2g} s "
                      f"carry")
         if self.soft:
-            text += (f"; soft: sparse evaluation measures slip over a "
-                     f"{self.creep_horizon * self.timestep:.3g} s creep horizon "
-                     f"(creep_horizon = {self.creep_horizon}) instead of trusting the one-step "
-                     f"force ratio")
+            text += ("; soft: the one-step force ratio is not trusted, each sample's slip is "
+                     "measured on its own run over the whole hold (chained segments; without "
+                     f"them over a {self.creep_horizon * self.timestep:.3g} s creep horizon, "
+                     f"creep_horizon = {self.creep_horizon})")
         return text
 
 

@@ -34,6 +34,7 @@ from typing import Any
 import numpy as np
 
 from critmoment.exceptions import ParameterError
+from critmoment.groundtruth import OutcomeCriteria
 from critmoment.sparse import SparseEvaluator, _object_in_grippers
 
 __all__ = ["DriftEstimate", "estimate_drift", "ChainedResult", "chained_failures",
@@ -169,9 +170,18 @@ class ChainedResult:
         steps: the moments evaluated, in time order, (m,) int64.
         samples: the parameter values, (n, k).
         failure: the sparse decision (``sparse.Failure`` values) at each moment from the
-            sample's own state, (m, n) int8.
+            sample's own state, (m, n) int8 (−1 where the sample had already failed).
         start: the step the chain starts from (the nominal state there).
-        stepped: physics steps each sample took.
+        end: the step the chain stops at (the last moment's horizon, or the end of the
+            nominal run's hold if later).
+        stepped: physics steps each sample took at most.
+        slip_step: first step of the first slip of the object in its holding gripper over
+            the whole chain (the ground truth's rule, :func:`critmoment.groundtruth.grip_slip`
+            with its tolerance and duration), −1 if none, (n,) int64.
+        drop_step: first step at which the object, where the nominal run carries it, has
+            been out of every gripper for longer than the ground truth's ``drop_time``, −1
+            if none, (n,) int64.
+        max_slip: largest slip over the chain [m], (n,).
     """
 
     steps: np.ndarray
@@ -179,28 +189,120 @@ class ChainedResult:
     failure: np.ndarray
     start: int
     stepped: int
+    end: int = -1
+    slip_step: np.ndarray | None = None
+    drop_step: np.ndarray | None = None
+    max_slip: np.ndarray | None = None
 
     @property
     def failed(self) -> np.ndarray:
-        """(n,) bool: the sample fails at some moment of its own chain."""
-        return (self.failure > 0).any(axis=0)
+        """(n,) bool: the sample fails at some moment of its own chain, or slips or loses
+        the object between them."""
+        out = (self.failure > 0).any(axis=0)
+        for watched in (self.slip_step, self.drop_step):
+            if watched is not None:
+                out = out | (watched >= 0)
+        return out
+
+
+class _Watch:
+    """The ground truth's slip and drop rules, streamed over a chain's own states.
+
+    Slip (as :func:`critmoment.groundtruth.grip_slip`): per gripper, from the first step at
+    which both the sample and the nominal run hold the object with it, the object's
+    displacement in the gripper's frame relative to the nominal run's, the closing axes
+    projected out, counted where the nominal run holds with that gripper alone; a slip is
+    a run of more than ``slip_time`` above ``slip_tolerance``. Drop: the object touched
+    by no gripper where the nominal run carries it, for longer than ``drop_time``.
+    """
+
+    def __init__(self, ev: SparseEvaluator, n: int, criteria: OutcomeCriteria):
+        dt = float(ev.twin.model.opt.timestep)
+        g = len(ev._anchors)
+        self.ev = ev
+        self.found = np.zeros((n, g), bool)
+        self.offset = np.zeros((n, g, 3))
+        self.slip_run = np.zeros(n, np.int64)
+        self.drop_run = np.zeros(n, np.int64)
+        self.slip_need = criteria.steps(criteria.slip_time, dt)
+        self.drop_need = criteria.steps(criteria.drop_time, dt)
+        self.tolerance = float(criteria.slip_tolerance)
+        self.slip_step = np.full(n, -1, np.int64)
+        self.drop_step = np.full(n, -1, np.int64)
+        self.max_slip = np.zeros(n)
+
+    def failed(self) -> np.ndarray:
+        return (self.slip_step >= 0) | (self.drop_step >= 0)
+
+    def __call__(self, k: int, ids: np.ndarray, sensordata: np.ndarray, xpos: np.ndarray,
+                 xmat: np.ndarray) -> None:
+        ev = self.ev
+        ids = np.asarray(ids, dtype=np.int64)
+        c, s = xpos.shape[:2]
+        if c == 0 or s == 0:
+            return
+        touch, support = ev.twin.contact_flags(sensordata)          # (c, s, G), (c, s)
+        held = touch & ~support[..., None]
+        nominal_held = ev._held[k:k + s]                            # (s, G)
+        both = held & nominal_held[None]
+        slip = np.zeros((c, s))
+        if ev._anchors.size:
+            rel = _object_in_grippers(xpos, xmat, ev.twin.object_body_id, ev._anchors)
+            diff = rel - ev._nominal_positions(k, s)[None]           # (c, s, G, 3)
+            found = self.found[ids]
+            first = np.argmax(both, axis=1)                         # (c, G)
+            new = ~found & both.any(axis=1)
+            rows, cols = np.nonzero(new)
+            offset = self.offset[ids]
+            offset[rows, cols] = diff[rows, first[rows, cols], cols]
+            started = found[:, None, :] | (new[:, None, :] & (
+                np.arange(s)[None, :, None] >= first[:, None, :]))
+            moved = np.einsum("gij,csgj->csgi", ev._projectors, diff - offset[:, None])
+            counted = both & started & ev._alone[k:k + s][None]
+            slip = np.where(counted, np.linalg.norm(moved, axis=-1), 0.0).max(axis=-1)
+            self.offset[ids] = offset
+            self.found[ids] = found | new
+        self.max_slip[ids] = np.maximum(self.max_slip[ids], slip.max(axis=1))
+        # lost: touched by no gripper where the nominal run carries it (fallen out of the
+        # grip); an object set down on a support a little early, still in the grip (a
+        # release at the goal), is not a drop, nor is one the grip cannot lift (the
+        # moments' decisions see that)
+        lost = ev._carried[k:k + s][None] & ~touch.any(axis=-1)
+        over = slip > self.tolerance
+        for j in range(s):
+            self.slip_run[ids] = (self.slip_run[ids] + 1) * over[:, j]
+            self.drop_run[ids] = (self.drop_run[ids] + 1) * lost[:, j]
+            for run, need, first_step in ((self.slip_run, self.slip_need, self.slip_step),
+                                          (self.drop_run, self.drop_need, self.drop_step)):
+                hit = ids[(run[ids] >= need) & (first_step[ids] < 0)]
+                first_step[hit] = k + j - need + 1
 
 
 def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
-                     start: int | None = None) -> ChainedResult:
+                     start: int | None = None,
+                     criteria: OutcomeCriteria | None = None,
+                     block: int = 100) -> ChainedResult:
     """Carry each sample's own state from one nominal state through every later moment.
 
     The simulations start from the recorded state at ``start`` (default: the first
     moment), run the recorded controls with the sample's own parameters, and at each moment
     (in time order; one whose window overlaps the previous one's is skipped) are decided by
     the sparse decision over the horizon from the state they reached, not the nominal one.
-    The cost is the stepping from ``start`` to the last moment's horizon, per sample.
+    All along, from ``start`` to the end of the nominal run's hold (or the last moment's
+    horizon, if later), the object's slip in its holding gripper and its loss are watched
+    with the ground truth's own rules and tolerances (``criteria``, default
+    :class:`~critmoment.groundtruth.OutcomeCriteria`): between the moments the object creeps
+    or shifts in a soft or force-limited grip, which no evaluation from a nominal state
+    sees. A sample stops at its first failure. The cost is at most the stepping from
+    ``start`` to that end, per sample.
 
     Args:
         evaluator: the audit's sparse evaluator.
         steps: moments, physics step indices (m,).
         samples: parameter values (n, k).
         start: the step the chain starts from.
+        criteria: the slip and drop tolerances (default: the ground truth's).
+        block: physics steps per batch call between the moments.
 
     Returns:
         The :class:`ChainedResult`.
@@ -212,33 +314,62 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     steps = np.unique(ev.check_steps(steps))
     first = int(steps[0]) if start is None else int(ev.check_steps([start])[0])
     steps = steps[steps >= first]
+    criteria = OutcomeCriteria() if criteria is None else criteria
     h = ev.horizon
-    kept: list[int] = []
-    failures = []
-    out = np.zeros((0, samples.shape[0]), dtype=np.int8)
+    carried = np.flatnonzero(ev._carried)
+    end = max(int(steps[-1]) + h if steps.size else first,
+              int(carried[-1]) + 1 if carried.size else 0)
+    end = min(end, ev.n_steps)
+    n = samples.shape[0]
+    watch = _Watch(ev, n, criteria)
+    kept = [k for i, k in enumerate(int(s) for s in steps)
+            if i == 0 or k >= _window_end(steps[:i], h)]
+    failure = np.full((len(kept), n), -1, dtype=np.int8)
     stepped = 0
-    for lo in range(0, samples.shape[0], ev.chunk):
-        chunk = samples[lo:lo + ev.chunk]
-        batch, mu = ev._batch(chunk)
+    for lo in range(0, n, ev.chunk):
+        rows = np.arange(lo, min(n, lo + ev.chunk))
+        batch, mu = ev._batch(samples[rows])
         batch.state[:] = ev._start_row(first)
-        current = first
-        part, kept = [], []
-        stepped = 0
-        for k in (int(s) for s in steps):
-            if k < current:
-                continue  # overlaps the previous window
-            if k > current:
-                batch.rollout(k - current, control=ev._controls[current:k][None],
-                              control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
-                              record=(mujoco.mjtState.mjSTATE_TIME,))
-                stepped += k - current
-            sim = ev._simulate(batch, k, np.arange(batch.nsim), mu, keep_state=False,
-                               restore=False)
-            part.append(sim.failure)
-            kept.append(k)
-            current = k + h
-            stepped += h
-        failures.append(np.array(part, dtype=np.int8).reshape(len(kept), -1))
-    out = np.concatenate(failures, axis=1) if failures else out
-    return ChainedResult(steps=np.array(kept, dtype=np.int64), samples=samples, failure=out,
-                         start=first, stepped=stepped)
+        alive = np.ones(rows.size, bool)
+        current, taken = first, 0
+        raised = np.zeros(rows.size, bool)
+
+        def step_to(target: int) -> None:
+            nonlocal current, taken
+            while current < target and alive.any():
+                nstep = min(block, target - current)
+                ids = np.flatnonzero(alive)
+                ev._roll(batch, current, nstep, ids, raised,
+                         lambda k, i, sd, xp, xm: watch(k, rows[i], sd, xp, xm))
+                current += nstep
+                taken += nstep
+                alive[raised] = False
+                alive[watch.failed()[rows]] = False
+
+        for j, k in enumerate(kept):
+            step_to(k)
+            if not alive.any():
+                break
+            run = np.flatnonzero(alive)
+            sim = ev._simulate(batch, k, run, mu, keep_state=False, restore=False,
+                               watch=lambda kk, i, sd, xp, xm: watch(kk, rows[i], sd, xp, xm))
+            failure[j, rows[run]] = sim.failure[run]
+            current, taken = k + h, taken + h
+            alive[run[sim.failure[run] > 0]] = False
+            alive[watch.failed()[rows]] = False
+        step_to(end)
+        stepped = max(stepped, taken)
+    return ChainedResult(steps=np.array(kept, dtype=np.int64), samples=samples,
+                         failure=failure, start=first, stepped=stepped, end=end,
+                         slip_step=watch.slip_step, drop_step=watch.drop_step,
+                         max_slip=watch.max_slip)
+
+
+def _window_end(previous: np.ndarray, h: int) -> int:
+    """Where the last kept window before these moments ends (moments closer than the
+    horizon to the previous kept one are skipped)."""
+    end = int(previous[0]) + h
+    for k in (int(s) for s in previous[1:]):
+        if k >= end:
+            end = k + h
+    return end

@@ -663,6 +663,7 @@ class SparseEvaluator:
         self.persistence_steps = max(1, int(round(self.settings.persistence / dt)))
         self._anchors, self._projectors = grip_frames(model, twin.scenario)
         held = sig.contact_gripper & ~sig.contact_support[:, None]
+        self._held = held
         # slip counts where the nominal run holds the object with one gripper alone: an
         # object moves in a gripper that lets go (the release), which is not slip
         self._alone = held & (held.sum(axis=1, keepdims=True) == 1)
@@ -896,9 +897,10 @@ class SparseEvaluator:
         return {name: np.concatenate(v) for name, v in parts.items()}
 
     def _roll(self, batch: mujoco.batch.Batch, k: int, nstep: int, ids: np.ndarray,
-              raised: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+              raised: np.ndarray, watch=None) -> tuple[np.ndarray, np.ndarray]:
         """Step the simulations ``ids`` ``nstep`` steps from recording step k with the
-        recorded controls; (sensordata (c, nstep, nsd), slip (c, nstep) [m])."""
+        recorded controls; (sensordata (c, nstep, nsd), slip (c, nstep) [m]). ``watch``,
+        if given, is called with (k, ids, sensordata, xpos, xmat) of the steps taken."""
         c, model = ids.size, self.twin.model
         out = {"sensordata": np.zeros((c, nstep, model.nsensordata)),
                "xpos": np.zeros((c, nstep, model.nbody, 3)),
@@ -909,17 +911,22 @@ class SparseEvaluator:
                           record=("sensordata", "xpos", "xmat"), ids=ids, out=out)
         except mujoco.batch.SimulationError as exc:
             raised[exc.ids] = True
+        if watch is not None:
+            watch(k, ids, out["sensordata"], out["xpos"], out["xmat"])
         return out["sensordata"], self._slip(out["xpos"], out["xmat"], k)
 
     def _simulate(self, batch: mujoco.batch.Batch, k: int, run: np.ndarray,
                   mu: np.ndarray | float, *, keep_state: bool, restore: bool = True,
-                  stop_early: bool = False) -> _Simulated:
+                  stop_early: bool = False, watch=None) -> _Simulated:
         """Restore step k in the simulations ``run``, step the horizon, follow the ones an
         open contact excursion or the creep horizon asks for, and decide each. Without
         ``restore`` the simulations go on from their own states (they must stand at step k)
-        and nothing is followed past the horizon, so that all stay at step k + horizon.
-        With ``stop_early`` the horizon is stepped in blocks of ``persistence`` steps and a
-        simulation whose failure is decided stops (its later rows stay zero)."""
+        and nothing is followed past the horizon, so that all stay at step k + horizon;
+        their slip, measured here from a restored state, is not decided (``watch``, called
+        with each stepped block's readings and poses, lets the caller measure it on the
+        simulations' own history). With ``stop_early`` the horizon is stepped in blocks of
+        ``persistence`` steps and a simulation whose failure is decided stops (its later
+        rows stay zero)."""
         h, nsim = self.horizon, batch.nsim
         extra = min(self._extension_steps(), self.n_steps - k - h) if restore else 0
         nsd = self.twin.nsensordata
@@ -946,7 +953,7 @@ class SparseEvaluator:
                 while todo.size and done < h:
                     n = min(block, h - done)
                     buf[todo, done:done + n], slip[todo, done:done + n] = self._roll(
-                        batch, k + done, n, todo, raised)
+                        batch, k + done, n, todo, raised, watch)
                     done += n
                     length[todo] = done
                     if done < h:
@@ -955,6 +962,8 @@ class SparseEvaluator:
                         todo = todo[~(part.stop & (part.failure > 0))[todo]]
             if keep_state:
                 state = batch.state.copy()
+        if not restore:
+            slip[:] = 0.0  # measured from a restored state only; the caller watches it
         warned = batch.warning[:, :, 1].copy()
         decided = self._decide(buf, slip, length, mu, k, final=extra == 0)
         follow = run[decided.follow[run] & ~raised[run] & ~(warned[run] > 0).any(axis=1)]

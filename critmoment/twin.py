@@ -455,6 +455,17 @@ class Twin:
     def nsensordata(self) -> int:
         return int(self.model.nsensordata)
 
+    def contact_flags(self, sensordata: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Which grippers and supports the object touches, from ``sensordata``
+        (..., nsensordata): (contact_gripper (..., G) bool, contact_support (...) bool).
+        The contact part of :meth:`signals`, without the forces."""
+        sd = np.asarray(sensordata, dtype=np.float64)
+        lead = sd.shape[:-1]
+        touch = [(sd[..., adr].reshape(lead + (-1, 4))[..., 0] > 0).any(axis=-1)
+                 for adr in self._grip_adr]
+        gripper = (np.stack(touch, axis=-1) if touch else np.zeros(lead + (0,), bool))
+        return gripper, (sd[..., self._support_adr] > 0).any(axis=-1)
+
     def signals(self, sensordata: np.ndarray, mu: np.ndarray | float | None = None, *,
                 carried: np.ndarray | None = None) -> Signals:
         """Safety signals from ``sensordata`` (..., nsensordata).

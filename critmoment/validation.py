@@ -217,7 +217,8 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     t1 = time.perf_counter()
     timings["rollout"] = t1 - t0
     preflight(traj, rec, twin)  # the twin can follow the nominal motion, or exit 2
-    evaluator, _ = audit_evaluator(rec, twin, horizon=horizon, mode=mode, nthread=nthread)
+    evaluator, _ = audit_evaluator(rec, twin, horizon=horizon, mode=mode, nthread=nthread,
+                                   chain=bool(chain))
     h = evaluator.horizon
     # the audit's own selection (critmoment.analysis.audit_moments)
     candidates, steps = audit_moments(rec, twin, evaluator, max_moments)

@@ -13,3 +13,17 @@ def one_actuator_toml(name: str, *, mjcf: str, gripper: str, gripper_geom: str, 
             f'[grippers.{gripper}]\ngeoms = ["{gripper_geom}"]\n[support]\ngeoms = ["{support}"]\n'
             f'[actions]\nconvention = "explicit"\n[[actions.channel]]\nactuators = ["{actuator}"]\n'
             f'{label_line}{task_table}[limits]\n{actuator} = {limit}\n{uncertainty}')
+
+
+def soft_copy(scenario, folder):
+    """A copy of the bundled scenario's folder under ``folder`` whose scene has MuJoCo's
+    default soft friction (pyramidal cone, impratio 1) instead of its elliptic cone with
+    impratio 10; returns the copy's folder."""
+    import shutil
+
+    shutil.copytree(scenario.path.parent, folder)
+    xml = (folder / "scene.xml").read_text()
+    assert 'cone="elliptic" impratio="10"' in xml
+    (folder / "scene.xml").write_text(xml.replace('cone="elliptic" impratio="10"',
+                                                  'cone="pyramidal" impratio="1"'))
+    return folder

@@ -52,7 +52,10 @@ def test_a_nominal_chain_is_the_nominal_run(scenario, twin, demo_recording):
     chain = history.chained_failures(ev, steps, samples)
     np.testing.assert_array_equal(chain.steps, np.sort(steps))
     assert chain.start == steps.min()
-    assert chain.stepped == steps.max() + ev.horizon - steps.min()
+    # the nominal sample never fails, so it runs to the end of the nominal hold
+    assert chain.end == demo_recording.controls.shape[0]
+    assert chain.stepped == chain.end - steps.min()
+    assert chain.slip_step[0] == -1 and chain.drop_step[0] == -1 and chain.max_slip[0] == 0
     # carried on its own state, the nominal sample is the nominal run: the same decision
     # as restoring the nominal state at every moment
     plain = ev.evaluate(chain.steps, samples[:1])
@@ -69,3 +72,55 @@ def _mass(scenario, mass):
     sample = scenario.box.nominal[None].copy()
     sample[0, scenario.box.index("mass")] = mass
     return sample
+
+
+def test_the_chain_watches_slip_and_drops_as_the_ground_truth_does(scenario, twin, demo_traj,
+                                                                    demo_recording):
+    """Started before the grasp, a chain's own run is the sample's full rollout: its
+    measured slip and the step its object is lost agree with the brute force's."""
+    from critmoment import groundtruth
+
+    ev = sparse.SparseEvaluator(demo_recording, twin)
+    sig = demo_recording.signals
+    held = sig.contact_gripper & ~sig.contact_support[:, None]
+    start = int(np.flatnonzero(held.any(axis=1))[0]) - 200
+    samples = np.tile(scenario.box.nominal, (4, 1))
+    samples[:, scenario.box.index("mass")] = [0.05, 0.3, 1.0, 0.6]
+    samples[3, scenario.box.index("friction")] = 0.5
+    chain = history.chained_failures(ev, [start], samples)
+    truth = groundtruth.brute_force(demo_traj, twin=twin, samples=samples).classification
+    np.testing.assert_array_equal(chain.failed, truth.failed)
+    # where neither fails, the same slip to a micrometre
+    np.testing.assert_allclose(chain.max_slip[:2], truth.max_slip[:2], atol=1e-6)
+    # a slippery 0.6 kg cube falls out of the grip: lost in mid-air in both
+    assert chain.drop_step[3] >= 0 and truth.drop_step[3] >= 0
+    # the 1 kg cube slips where the brute force says it does, within a few steps
+    assert abs(chain.slip_step[2] - truth.slip_step[2]) <= 10
+
+
+def test_on_soft_contacts_the_chain_sees_the_creep_the_force_ratio_passes(tmp_path, scenario,
+                                                                         demo_traj):
+    """Pyramidal cone, impratio 1: from the nominal state at a carry step, a 0.45 kg cube
+    held with a force ratio of about 2.7 passes the one-step decision but creeps out of
+    the grip; the chain watches its slip over the rest of the hold and fails it, as its
+    full rollout does, and passes the cubes that really stay."""
+    from critmoment import groundtruth
+    from critmoment.recording import rollout
+    from critmoment.scenario import load_scenario
+    from critmoment.twin import Twin
+    from scenarios import soft_copy
+
+    soft = Twin(load_scenario(soft_copy(scenario, tmp_path / "soft")))
+    rec = rollout(demo_traj, twin=soft)
+    held = rec.signals.contact_gripper[:, 1] & ~rec.signals.contact_support
+    k = int(np.flatnonzero(held)[200])
+    ev = sparse.SparseEvaluator(rec, soft)
+    samples = np.tile(soft.scenario.box.nominal, (4, 1))
+    samples[:, soft.scenario.box.index("mass")] = [0.05, 0.3, 0.45, 0.8]
+    one_step = ev.evaluate([k], samples)
+    assert not one_step.failed.any() and one_step.fos_grasp[0, 2] > 2.5
+    chain = history.chained_failures(ev, [k], samples)
+    truth = groundtruth.brute_force(demo_traj, twin=soft, samples=samples).classification
+    np.testing.assert_array_equal(chain.failed, [False, False, True, True])
+    np.testing.assert_array_equal(chain.failed, truth.failed)
+    assert chain.slip_step[2] > k and chain.max_slip[2] > 0.01

@@ -632,17 +632,10 @@ def test_creep_horizon_fails_a_creeping_grip_the_force_ratio_passes(tmp_path, sc
                                                                       demo_traj):
     """A soft contact model (pyramidal cone, impratio 1): a 0.6 kg cube held with a force
     ratio of about 2 creeps; over the creep horizon its measured slip fails it."""
-    import shutil
-
     from critmoment import contactmodel
+    from scenarios import soft_copy
 
-    folder = tmp_path / "soft"
-    shutil.copytree(scenario.path.parent, folder)
-    xml = (folder / "scene.xml").read_text()
-    assert 'cone="elliptic" impratio="10"' in xml
-    (folder / "scene.xml").write_text(xml.replace('cone="elliptic" impratio="10"',
-                                                  'cone="pyramidal" impratio="1"'))
-    soft = Twin(load_scenario(folder))
+    soft = Twin(load_scenario(soft_copy(scenario, tmp_path / "soft")))
     rec = rollout.rollout(demo_traj, twin=soft)
     with pytest.warns(contactmodel.ContactModelWarning, match="creeps"):
         report = contactmodel.check_contact_model(soft, rec)
