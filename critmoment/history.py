@@ -307,8 +307,6 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     Returns:
         The :class:`ChainedResult`.
     """
-    import mujoco
-
     ev = evaluator
     samples = ev.check_samples(samples)
     steps = np.unique(ev.check_steps(steps))
@@ -328,41 +326,46 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     stepped = 0
     for lo in range(0, n, ev.chunk):
         rows = np.arange(lo, min(n, lo + ev.chunk))
-        batch, mu = ev._batch(samples[rows])
-        batch.state[:] = ev._start_row(first)
-        alive = np.ones(rows.size, bool)
-        current, taken = first, 0
-        raised = np.zeros(rows.size, bool)
-
-        def step_to(target: int) -> None:
-            nonlocal current, taken
-            while current < target and alive.any():
-                nstep = min(block, target - current)
-                ids = np.flatnonzero(alive)
-                ev._roll(batch, current, nstep, ids, raised,
-                         lambda k, i, sd, xp, xm: watch(k, rows[i], sd, xp, xm))
-                current += nstep
-                taken += nstep
-                alive[raised] = False
-                alive[watch.failed()[rows]] = False
-
-        for j, k in enumerate(kept):
-            step_to(k)
-            if not alive.any():
-                break
-            run = np.flatnonzero(alive)
-            sim = ev._simulate(batch, k, run, mu, keep_state=False, restore=False,
-                               watch=lambda kk, i, sd, xp, xm: watch(kk, rows[i], sd, xp, xm))
-            failure[j, rows[run]] = sim.failure[run]
-            current, taken = k + h, taken + h
-            alive[run[sim.failure[run] > 0]] = False
-            alive[watch.failed()[rows]] = False
-        step_to(end)
-        stepped = max(stepped, taken)
+        stepped = max(stepped, _chain_chunk(ev, watch, samples[rows], rows, kept, first, end,
+                                            block, failure))
     return ChainedResult(steps=np.array(kept, dtype=np.int64), samples=samples,
                          failure=failure, start=first, stepped=stepped, end=end,
                          slip_step=watch.slip_step, drop_step=watch.drop_step,
                          max_slip=watch.max_slip)
+
+
+def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: np.ndarray,
+                 kept: list[int], first: int, end: int, block: int,
+                 failure: np.ndarray) -> int:
+    """Run one chunk of samples (``rows`` of the whole) along the chain; fill ``failure``
+    and the watch; the steps taken."""
+    batch, mu = ev._batch(samples)
+    batch.state[:] = ev._start_row(first)
+    alive = np.ones(rows.size, bool)
+    raised = np.zeros(rows.size, bool)
+
+    def watched(k, ids, sensordata, xpos, xmat):
+        watch(k, rows[ids], sensordata, xpos, xmat)
+
+    current = taken = first
+    for j, k in enumerate([*kept, None]):
+        target = end if k is None else k
+        while current < target and alive.any():
+            nstep = min(block, target - current)
+            ev._roll(batch, current, nstep, np.flatnonzero(alive), raised, watched)
+            current += nstep
+            alive &= ~raised & ~watch.failed()[rows]
+        taken = max(taken, current)
+        if k is None or not alive.any():
+            break
+        run = np.flatnonzero(alive)
+        sim = ev._simulate(batch, k, run, mu, keep_state=False, restore=False, watch=watched)
+        failure[j, rows[run]] = sim.failure[run]
+        current = k + ev.horizon
+        taken = max(taken, current)
+        alive[run[sim.failure[run] > 0]] = False
+        alive &= ~watch.failed()[rows]
+    return taken - first
 
 
 def _window_end(previous: np.ndarray, h: int) -> int:

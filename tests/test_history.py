@@ -104,11 +104,12 @@ def test_on_soft_contacts_the_chain_sees_the_creep_the_force_ratio_passes(tmp_pa
     held with a force ratio of about 2.7 passes the one-step decision but creeps out of
     the grip; the chain watches its slip over the rest of the hold and fails it, as its
     full rollout does, and passes the cubes that really stay."""
+    from scenarios import soft_copy
+
     from critmoment import groundtruth
     from critmoment.recording import rollout
     from critmoment.scenario import load_scenario
     from critmoment.twin import Twin
-    from scenarios import soft_copy
 
     soft = Twin(load_scenario(soft_copy(scenario, tmp_path / "soft")))
     rec = rollout(demo_traj, twin=soft)

@@ -632,8 +632,9 @@ def test_creep_horizon_fails_a_creeping_grip_the_force_ratio_passes(tmp_path, sc
                                                                       demo_traj):
     """A soft contact model (pyramidal cone, impratio 1): a 0.6 kg cube held with a force
     ratio of about 2 creeps; over the creep horizon its measured slip fails it."""
-    from critmoment import contactmodel
     from scenarios import soft_copy
+
+    from critmoment import contactmodel
 
     soft = Twin(load_scenario(soft_copy(scenario, tmp_path / "soft")))
     rec = rollout.rollout(demo_traj, twin=soft)
