@@ -668,6 +668,10 @@ class SparseEvaluator:
         # object moves in a gripper that lets go (the release), which is not slip
         self._alone = held & (held.sum(axis=1, keepdims=True) == 1)
         self._nominal_rel = np.full((self._states.shape[0], len(self._anchors), 3), np.nan)
+        self._sensordata = getattr(recording, "sensordata", None)
+        self._completed = bool(getattr(recording, "completed", False))
+        self._trusted: dict[int, bool] = {}
+        self._chatter: bool | None = None
         self._kin_data: mujoco.MjData | None = None
         self._batches: collections.OrderedDict[int, mujoco.batch.Batch] = collections.OrderedDict()
         self._written: dict[int, np.ndarray] = {}
@@ -695,6 +699,56 @@ class SparseEvaluator:
         raise ParameterError(f"state component {spec} is not part of {STATE_SPEC}")
 
     # -- validation ------------------------------------------------------------
+    def contact_trusted(self, steps: Any) -> np.ndarray:
+        """Whether the contact criterion decides at each moment, (m,) bool.
+
+        The force ratio is calibrated against the nominal run: where the nominal parameters'
+        own grip crosses the contact criterion's threshold anywhere in the moment's window
+        (horizon and persistence; its force ratio touches the friction cone: contact chatter
+        of mesh fingers, a soft cone) although the nominal run completes the task, the ratio
+        says nothing about which samples slip there, and the moment is decided by measured
+        slip and the motor criterion alone (the contact term leaves the moment's cost too).
+        The nominal run's readings come from the recording (restoring it is bit-exact), so
+        this costs no simulation.
+        """
+        return np.array([self._contact_trusted(int(k)) for k in self.check_steps(steps)],
+                        dtype=bool)
+
+    def _contact_trusted(self, k: int) -> bool:
+        if k in self._trusted:
+            return self._trusted[k]
+        trusted = True
+        sd = self._sensordata
+        if self._chatter is None:
+            self._chatter = self._nominal_chatter()
+        if self._chatter:
+            trusted = False
+        elif self._completed and sd is not None and self.mode is SparseMode.STEP:
+            length = min(self.horizon + self.persistence_steps - 1, self.n_steps - k)
+            at = k + np.arange(length)
+            cp = self.twin.scenario.cost
+            with np.errstate(over="ignore", invalid="ignore"):
+                sig = self.twin.signals(np.asarray(sd[k:k + length], dtype=np.float64),
+                                        carried=self._carried[at])
+                term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
+            trusted = not bool((term_c > cp.threshold).any())
+        self._trusted[k] = trusted
+        return trusted
+
+    def _nominal_chatter(self) -> bool:
+        """The nominal run completes the task although its grip's force ratio spends, in
+        all, at least ``persistence`` on the contact criterion's threshold where it carries
+        the object: the ratio does not separate a good grip from a slipping one on this
+        model (mesh fingers, a soft cone), so no moment trusts it."""
+        sd = self._sensordata
+        if not self._completed or sd is None:
+            return False
+        cp = self.twin.scenario.cost
+        with np.errstate(over="ignore", invalid="ignore"):
+            sig = self.twin.signals(np.asarray(sd, dtype=np.float64), carried=self._carried)
+            term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
+        return int((self._carried & (term_c > cp.threshold)).sum()) >= self.persistence_steps
+
     def check_steps(self, steps: Any) -> np.ndarray:
         """Validate moments: (m,) int64 in [0, T − horizon]."""
         arr = _as_steps(steps)
@@ -996,6 +1050,8 @@ class SparseEvaluator:
             cp = self.twin.scenario.cost
             term_m = cp.B * np.exp(-cp.beta * (sig.fos_motor - 1.0))
             term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
+            if not self._contact_trusted(k):
+                term_c = np.zeros_like(term_c)  # uncalibrated here: slip and motor decide
             # the flags of real lifts only: lifted steps are a subset of the carried ones
             lifted_c = np.where(self._lifted[at][None], term_c, 0.0)
         valid = np.arange(total)[None, :] < length[:, None]
@@ -1085,13 +1141,17 @@ class SparseEvaluator:
                                carried=self._carried[at])  # leading (nsim, h)
         nsim = buf.shape[0]
         rows = np.arange(nsim)
+        cost = sig.cost
+        if not self._contact_trusted(int(np.asarray(at).flat[0])):
+            with np.errstate(over="ignore", invalid="ignore"):
+                cost = cp.B * np.exp(-cp.beta * (sig.fos_motor - 1.0))
         if self.horizon == 1:
             worst = np.zeros(nsim, dtype=np.int64)
             fos_contact, fos_grasp = sig.fos_contact[:, 0], sig.fos_grasp[:, 0]
             fos_motor, motor_argmax = sig.fos_motor[:, 0], sig.motor_argmax[:, 0]
             object_acc, actuator_norm = sig.object_acc[:, 0], sig.actuator_norm[:, 0]
         else:
-            worst = np.argmax(sig.cost, axis=1)
+            worst = np.argmax(cost, axis=1)
             fos_contact, fos_grasp = sig.fos_contact.min(axis=1), sig.fos_grasp.min(axis=1)
             weakest = np.argmin(sig.fos_motor, axis=1)
             fos_motor = sig.fos_motor[rows, weakest]
@@ -1107,7 +1167,7 @@ class SparseEvaluator:
         values = {
             "fos_contact": fos_contact, "fos_grasp": fos_grasp, "fos_motor": fos_motor,
             "motor_argmax": motor_argmax,
-            "cost": sig.cost[rows, worst], "cost_contact": term_c, "cost_motor": term_m,
+            "cost": cost[rows, worst], "cost_contact": term_c, "cost_motor": term_m,
             "object_acc": object_acc, "actuator_norm": actuator_norm,
             "contact_support": sig.contact_support[rows, worst],
             "contact_gripper": sig.contact_gripper[rows, worst],
