@@ -180,8 +180,11 @@ class AuditReport:
         feasibility: the twin's feasibility and the trajectory's fit on the nominal rollout
             (:func:`critmoment.feasibility.preflight`), or None when not checked.
         contact_model: the contact model's check (:func:`critmoment.contactmodel.
-            check_contact_model`: cone, impratio, noslip, the measured creep of a held object);
-            on a soft model the sweep measures slip over its ``creep_horizon``.
+            check_contact_model`: cone, impratio, noslip, the measured creep of a held object).
+        force_ratio_untrusted: steps of the audited moments where the contact force ratio
+            does not decide, because the nominal grip, whose run completes the task, already
+            sits on the friction cone there (:meth:`critmoment.sparse.SparseEvaluator.
+            contact_trusted`): measured slip and the motor criterion decide them.
         load_bound: the analytic motor bound over the whole motion
             (:func:`critmoment.dynamics.trajectory_load_bound`) at the nominal and the
             largest mass: per mass the first time [s] a joint saturates (as the ground truth
@@ -212,6 +215,7 @@ class AuditReport:
     feasibility: FeasibilityReport | None = None
     contact_model: contactmodel.ContactModelReport | None = None
     load_bound: Mapping | None = None
+    force_ratio_untrusted: tuple[int, ...] = ()
 
     def passes(self, min_success: float | None = None) -> bool:
         """SAFE, or CONDITIONAL with P(success) ≥ ``min_success`` (the CLI's exit code 0)."""
@@ -566,7 +570,9 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_cost=nominal_cost, recording=rec, sweep=res, curves=curves, cost_map=cost_map,
         scenario=sc, options=opt, timings=timings, manifest=manifest, failed=decision.failed,
         verification=verification, region_check=region_check, feasibility=feasibility,
-        contact_model=contact, load_bound=load_bound)
+        contact_model=contact, load_bound=load_bound,
+        force_ratio_untrusted=tuple(int(k) for k, ok in zip(
+            steps, evaluator.contact_trusted(steps), strict=True) if not ok))
 
 
 def _load_bound(rec: Recording, twin: Twin) -> dict | None:

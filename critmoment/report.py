@@ -190,7 +190,8 @@ def report_json(report, *, timings: bool = True) -> dict:
         "verification": _jsonable(report.verification),
         "feasibility": (report.feasibility.to_json()
                         if getattr(report, "feasibility", None) is not None else None),
-        "contact_model": _contact_json(getattr(report, "contact_model", None)),
+        "contact_model": _contact_json(getattr(report, "contact_model", None),
+                                       getattr(report, "force_ratio_untrusted", ())),
         "load_bound": _jsonable(getattr(report, "load_bound", None)),
         "rollout": report.recording.summary(),
         "manifest": _jsonable(report.manifest),
@@ -200,11 +201,13 @@ def report_json(report, *, timings: bool = True) -> dict:
     return doc
 
 
-def _contact_json(cm) -> dict | None:
-    """The contact-model check (critmoment.contactmodel) as JSON, or None."""
+def _contact_json(cm, untrusted=()) -> dict | None:
+    """The contact-model check (critmoment.contactmodel) as JSON, or None; ``untrusted``:
+    the moments where the force ratio does not decide (the nominal grip chatters)."""
     if cm is None:
         return None
-    return {"summary": cm.summary(), "cone": cm.cone, "impratio": _num(cm.impratio),
+    return {"force_ratio_untrusted_at": [int(k) for k in untrusted],
+            "summary": cm.summary(), "cone": cm.cone, "impratio": _num(cm.impratio),
             "noslip_iterations": int(cm.noslip_iterations), "soft": bool(cm.soft),
             "probe_mass": _num(cm.probe_mass), "creep_rate": _num(cm.creep_rate),
             "carry_time": _num(cm.carry_time), "creep_horizon": int(cm.creep_horizon),
@@ -388,6 +391,11 @@ def summary_text(report) -> str:
                  f"{e['first_failing_time']:.2f} s" if e["first_failing_time"] is not None
                  else f"{e['mass']:.3g} kg: no joint saturates" for e in lb["masses"]]
         lines.append("  analytic motor bound over the whole motion: " + "; ".join(parts))
+    untrusted = getattr(report, "force_ratio_untrusted", ())
+    if untrusted:
+        lines.append(f"  contact force ratio not trusted at steps {', '.join(map(str, untrusted))}"
+                     f": the nominal grip sits on the friction cone there although its run "
+                     f"completes (contact chatter); measured slip and motor loads decide")
     unlimited = getattr(report.scenario, "unlimited", ())
     if unlimited:
         lines.append(f"  no force limit (not in the scenario or the MJCF): "

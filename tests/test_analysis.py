@@ -48,6 +48,8 @@ def test_the_audit_reports_its_contact_model_and_task(nominal_report):
     assert (cm["cone"], cm["impratio"], cm["soft"], cm["creep_horizon"]) == (
         "elliptic", 10.0, False, 0)
     assert 0 < cm["creep_rate"] < 1e-3
+    # its nominal grip is far from the friction cone: the force ratio decides everywhere
+    assert cm["force_ratio_untrusted_at"] == [] and not nominal_report.force_ratio_untrusted
     manifest = doc["manifest"]
     assert manifest["task"]["kind"] == "handover"
     # FAST has no search, so no whole-motion bound; see test_the_load_bound_* for it
@@ -390,3 +392,22 @@ def test_huge_mass_range_gives_a_consistent_statement(demo_traj, scenario):
                 else:
                     assert lo >= value, (name, r.safe_region, value)
     assert "≥ 8.5" not in r.safe_region_text
+
+
+def test_the_report_says_where_the_force_ratio_does_not_decide(scenario, demo_traj):
+    """Cost constants that put the nominal grip on the contact threshold all through the
+    carry (a stand-in for chattering mesh fingers): the audit says the force ratio is not
+    trusted at its moments, in report.json and in the summary, and still runs to a
+    verdict."""
+    from critmoment.report import report_json, summary_text
+    from critmoment.scenario import CostParams
+
+    twin = Twin(scenario.replace(cost=CostParams(A=40.0, alpha=0.1)))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = analyze(demo_traj, twin=twin, options=FAST)
+    assert r.force_ratio_untrusted == tuple(int(mr.moment.step) for mr in r.moments) != ()
+    doc = report_json(r)
+    assert doc["contact_model"]["force_ratio_untrusted_at"] == list(r.force_ratio_untrusted)
+    assert "force ratio not trusted" in summary_text(r)
+    assert r.verdict is not Verdict.UNSAFE  # the nominal passes: its run completes

@@ -668,3 +668,31 @@ def test_first_failure_in_blocks_of_the_persistence_agrees_with_full_evaluation(
     np.testing.assert_array_equal(ff.failure[both], full.failure[both])
     passed = ff.evaluated & ~ff.failed
     np.testing.assert_array_equal(ff.cost[passed], full.cost[passed])
+
+
+def test_the_contact_criterion_is_calibrated_against_the_nominal_run(scenario, twin,
+                                                                     demo_traj,
+                                                                     demo_recording):
+    """Where the nominal grip, whose run completes the task, already crosses the contact
+    criterion's threshold (here: cost constants A and alpha that put the bundled nominal grip over
+    it all through the carry), the force ratio cannot tell a good grip from a slipping one:
+    no moment fails by it, the nominal's cost is its motor term, and measured slip decides.
+    On the bundled scene as shipped every moment trusts it."""
+    from critmoment.scenario import CostParams
+
+    steps = [_lift_step(demo_recording), _handover_step(demo_recording)]
+    plain = SparseEvaluator(demo_recording, twin)
+    assert plain.contact_trusted(steps).all()
+    strict = Twin(scenario.replace(cost=CostParams(A=40.0, alpha=0.1)))
+    rec = rollout.rollout(demo_traj, twin=strict)
+    assert rec.completed
+    ev = SparseEvaluator(rec, strict)
+    assert not ev.contact_trusted(steps).any()
+    samples = _mass_samples(strict.scenario, [0.05, 0.3, 3.0])
+    res = ev.evaluate(steps, samples)
+    assert not (res.failure == sparse.Failure.CONTACT).any()
+    np.testing.assert_allclose(res.cost[:, 0], res.cost_motor[:, 0])
+    assert (res.failure[:, 0] == sparse.Failure.PASS).all()  # the nominal passes
+    # the same samples under the shipped constants: the 3 kg cube fails by contact there
+    shipped = plain.evaluate(steps, samples)
+    assert (shipped.failure[:, 2] == sparse.Failure.CONTACT).any()
