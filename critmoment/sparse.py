@@ -704,8 +704,10 @@ class SparseEvaluator:
 
         The force ratio is calibrated against the nominal run: where the nominal parameters'
         own grip crosses the contact criterion's threshold anywhere in the moment's window
-        (horizon and persistence; its force ratio touches the friction cone: contact chatter
-        of mesh fingers, a soft cone) although the nominal run completes the task, the ratio
+        (horizon and persistence) while it carries the object in a real lift (its force
+        ratio touches the friction cone: contact chatter of mesh fingers, a soft cone), or
+        for ``persistence`` in all over the whole motion, although the nominal run
+        completes the task, the ratio
         says nothing about which samples slip there, and the moment is decided by measured
         slip and the motor criterion alone (the contact term leaves the moment's cost too).
         The nominal run's readings come from the recording (restoring it is bit-exact), so
@@ -731,15 +733,17 @@ class SparseEvaluator:
                 sig = self.twin.signals(np.asarray(sd[k:k + length], dtype=np.float64),
                                         carried=self._carried[at])
                 term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
-            trusted = not bool((term_c > cp.threshold).any())
+            trusted = not bool((self._lifted[at] & (term_c > cp.threshold)).any())
         self._trusted[k] = trusted
         return trusted
 
     def _nominal_chatter(self) -> bool:
         """The nominal run completes the task although its grip's force ratio spends, in
         all, at least ``persistence`` on the contact criterion's threshold where it carries
-        the object: the ratio does not separate a good grip from a slipping one on this
-        model (mesh fingers, a soft cone), so no moment trusts it."""
+        the object in a real lift: the ratio does not separate a good grip from a slipping
+        one on this model (mesh fingers, a soft cone), so no moment trusts it. (A squeeze
+        that tips the object off its support without a lift is decided by rollouts, as
+        ever.)"""
         sd = self._sensordata
         if not self._completed or sd is None:
             return False
@@ -747,7 +751,7 @@ class SparseEvaluator:
         with np.errstate(over="ignore", invalid="ignore"):
             sig = self.twin.signals(np.asarray(sd, dtype=np.float64), carried=self._carried)
             term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
-        return int((self._carried & (term_c > cp.threshold)).sum()) >= self.persistence_steps
+        return int((self._lifted & (term_c > cp.threshold)).sum()) >= self.persistence_steps
 
     def check_steps(self, steps: Any) -> np.ndarray:
         """Validate moments: (m,) int64 in [0, T − horizon]."""
