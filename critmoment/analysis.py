@@ -30,9 +30,9 @@ from critmoment.feasibility import FeasibilityReport, check_fit, preflight
 from critmoment.groundtruth import NominalReference, brute_force
 from critmoment.moments import Moment, MomentDetector, MomentLabel
 from critmoment.recording import Recording, model_hash, rollout
-from critmoment.scenario import Scenario, load_scenario
+from critmoment.scenario import Scenario
 from critmoment.trajectory import Trajectory, input_identity
-from critmoment.twin import Twin
+from critmoment.twin import Twin, resolve_twin
 from critmoment.verdict import MomentReport, Verdict, safe_subbox
 
 __all__ = [
@@ -407,8 +407,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     opt = options or AnalyzeOptions()
     if seed is not None:
         opt = dataclasses.replace(opt, seed=int(seed))
-    if twin is None:
-        twin = Twin(scenario if isinstance(scenario, Scenario) else load_scenario(scenario))
+    twin = resolve_twin(scenario, twin)
     sc = twin.scenario
     budget.check_audit(trajectory, twin, opt)  # seed domain, rollout and sweep size
     box = sc.box

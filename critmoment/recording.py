@@ -29,10 +29,10 @@ from critmoment.exceptions import (
     SimulationDivergedError,
     TrajectoryError,
 )
-from critmoment.scenario import Scenario, load_scenario
+from critmoment.scenario import Scenario
 from critmoment.task import Task, TaskEvidence
 from critmoment.trajectory import Trajectory
-from critmoment.twin import STATE_SPEC, Signals, Twin
+from critmoment.twin import STATE_SPEC, Signals, Twin, resolve_twin
 
 __all__ = [
     "Recording",
@@ -444,10 +444,7 @@ def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
     Raises:
         SimulationDivergedError: the physics diverged; the message names the step.
     """
-    if twin is None:
-        if not isinstance(scenario, Scenario):
-            scenario = load_scenario(scenario)
-        twin = Twin(scenario)
+    twin = resolve_twin(scenario, twin)
     controls = prepare_controls(twin, traj, range_policy=range_policy)
     state0 = initial_state(twin, traj)
     out = simulate(twin, state0, controls, record_state=True, nthread=1)

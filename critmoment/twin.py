@@ -518,3 +518,31 @@ class Twin:
                        cost=cost, contact_support=contact_support,
                        contact_gripper=contact_gripper, stage=stage)
 
+
+
+def resolve_twin(scenario=None, twin: Twin | None = None) -> Twin:
+    """The twin a library call runs on: ``twin`` if given, else one built from ``scenario``
+    (a :class:`~critmoment.scenario.Scenario`, a :class:`Twin`, a path to a scenario.toml or
+    its folder, a bundled scenario's name, or None for the bundled default).
+
+    Raises:
+        ScenarioError: ``scenario`` or ``twin`` of another type.
+    """
+    from os import PathLike
+
+    from critmoment.scenario import Scenario, load_scenario
+
+    if twin is not None:
+        if not isinstance(twin, Twin):
+            raise ScenarioError(f"twin: expected a critmoment Twin, got "
+                                f"{type(twin).__name__}")
+        return twin
+    if isinstance(scenario, Twin):
+        return scenario
+    if isinstance(scenario, Scenario):
+        return Twin(scenario)
+    if scenario is None or isinstance(scenario, (str, PathLike)):
+        return Twin(load_scenario(scenario))
+    raise ScenarioError(
+        f"scenario: expected a Scenario, a Twin, a path to a scenario.toml, a bundled "
+        f"scenario's name or None, got {type(scenario).__name__}")

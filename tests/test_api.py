@@ -61,3 +61,17 @@ def test_version_matches_pyproject():
         assert version("critmoment") == critmoment.__version__
     except PackageNotFoundError:
         pass
+
+
+def test_a_twin_or_a_wrong_type_in_the_scenario_position(twin, demo_traj):
+    """rollout(traj, twin) works (the twin is the scenario); anything else that is not a
+    scenario, a path or a name is a ScenarioError, not a TypeError from pathlib."""
+    import critmoment as cm
+    from critmoment.exceptions import ScenarioError
+
+    rec = cm.rollout(demo_traj, twin)
+    assert rec.completed
+    with pytest.raises(ScenarioError, match="expected a Scenario, a Twin"):
+        cm.rollout(demo_traj, 42)
+    with pytest.raises(ScenarioError, match="twin: expected a critmoment Twin"):
+        cm.analyze(demo_traj, twin="aloha")
