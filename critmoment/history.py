@@ -182,6 +182,9 @@ class ChainedResult:
             been out of every gripper for longer than the ground truth's ``drop_time``, −1
             if none, (n,) int64.
         max_slip: largest slip over the chain [m], (n,).
+        motor_step: first step of a saturation of a rotational actuator (the ground truth's
+            ``saturation`` of its force limit for longer than ``motor_time``), −1 if none,
+            (n,) int64.
     """
 
     steps: np.ndarray
@@ -193,20 +196,22 @@ class ChainedResult:
     slip_step: np.ndarray | None = None
     drop_step: np.ndarray | None = None
     max_slip: np.ndarray | None = None
+    motor_step: np.ndarray | None = None
 
     @property
     def failed(self) -> np.ndarray:
-        """(n,) bool: the sample fails at some moment of its own chain, or slips or loses
-        the object between them."""
+        """(n,) bool: the sample fails at some moment of its own chain, or slips, loses
+        the object or saturates a motor between them."""
         out = (self.failure > 0).any(axis=0)
-        for watched in (self.slip_step, self.drop_step):
+        for watched in (self.slip_step, self.drop_step, self.motor_step):
             if watched is not None:
                 out = out | (watched >= 0)
         return out
 
 
 class _Watch:
-    """The ground truth's slip and drop rules, streamed over a chain's own states.
+    """The ground truth's slip, drop and saturation rules, streamed over a chain's own
+    states.
 
     Slip (as :func:`critmoment.groundtruth.grip_slip`): per gripper, from the first step at
     which both the sample and the nominal run hold the object with it, the object's
@@ -214,6 +219,8 @@ class _Watch:
     projected out, counted where the nominal run holds with that gripper alone; a slip is
     a run of more than ``slip_time`` above ``slip_tolerance``. Drop: the object touched
     by no gripper where the nominal run carries it, for longer than ``drop_time``.
+    Saturation: a rotational actuator at ``saturation`` of its force limit for longer than
+    ``motor_time``.
     """
 
     def __init__(self, ev: SparseEvaluator, n: int, criteria: OutcomeCriteria):
@@ -230,9 +237,17 @@ class _Watch:
         self.slip_step = np.full(n, -1, np.int64)
         self.drop_step = np.full(n, -1, np.int64)
         self.max_slip = np.zeros(n)
+        twin = ev.twin
+        rotational = np.flatnonzero(twin.rotational)
+        self.force_adr = twin._force_adr[rotational]
+        self.limits = twin.limits[rotational]
+        self.saturation = float(criteria.saturation)
+        self.motor_need = criteria.steps(criteria.motor_time, dt)
+        self.motor_run = np.zeros((n, rotational.size), np.int64)
+        self.motor_step = np.full(n, -1, np.int64)
 
     def failed(self) -> np.ndarray:
-        return (self.slip_step >= 0) | (self.drop_step >= 0)
+        return (self.slip_step >= 0) | (self.drop_step >= 0) | (self.motor_step >= 0)
 
     def __call__(self, k: int, ids: np.ndarray, sensordata: np.ndarray, xpos: np.ndarray,
                  xmat: np.ndarray) -> None:
@@ -269,9 +284,15 @@ class _Watch:
         # moments' decisions see that)
         lost = ev._carried[k:k + s][None] & ~touch.any(axis=-1)
         over = slip > self.tolerance
+        with np.errstate(invalid="ignore", divide="ignore"):
+            saturated = np.abs(sensordata[..., self.force_adr] / self.limits) >= self.saturation
         for j in range(s):
             self.slip_run[ids] = (self.slip_run[ids] + 1) * over[:, j]
             self.drop_run[ids] = (self.drop_run[ids] + 1) * lost[:, j]
+            self.motor_run[ids] = (self.motor_run[ids] + 1) * saturated[:, j]
+            hit = ids[(self.motor_run[ids] >= self.motor_need).any(axis=1)
+                      & (self.motor_step[ids] < 0)]
+            self.motor_step[hit] = k + j - self.motor_need + 1
             for run, need, first_step in ((self.slip_run, self.slip_need, self.slip_step),
                                           (self.drop_run, self.drop_need, self.drop_step)):
                 hit = ids[(run[ids] >= need) & (first_step[ids] < 0)]
@@ -289,8 +310,9 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     (in time order; one whose window overlaps the previous one's is skipped) are decided by
     the sparse decision over the horizon from the state they reached, not the nominal one.
     All along, from ``start`` to the end of the nominal run's hold (or the last moment's
-    horizon, if later), the object's slip in its holding gripper and its loss are watched
-    with the ground truth's own rules and tolerances (``criteria``, default
+    horizon, if later), the object's slip in its holding gripper, its loss and the
+    saturation of the arm's motors are watched with the ground truth's own rules and
+    tolerances (``criteria``, default
     :class:`~critmoment.groundtruth.OutcomeCriteria`): between the moments the object creeps
     or shifts in a soft or force-limited grip, which no evaluation from a nominal state
     sees. A sample stops at its first failure. The cost is at most the stepping from
@@ -331,7 +353,7 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     return ChainedResult(steps=np.array(kept, dtype=np.int64), samples=samples,
                          failure=failure, start=first, stepped=stepped, end=end,
                          slip_step=watch.slip_step, drop_step=watch.drop_step,
-                         max_slip=watch.max_slip)
+                         max_slip=watch.max_slip, motor_step=watch.motor_step)
 
 
 def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: np.ndarray,

@@ -125,3 +125,32 @@ def test_on_soft_contacts_the_chain_sees_the_creep_the_force_ratio_passes(tmp_pa
     np.testing.assert_array_equal(chain.failed, [False, False, True, True])
     np.testing.assert_array_equal(chain.failed, truth.failed)
     assert chain.slip_step[2] > k and chain.max_slip[2] > 0.01
+
+
+def test_the_chain_watches_motor_saturation_as_the_ground_truth_does(scenario, demo_traj,
+                                                                     demo_recording):
+    """With the right elbow's limit 15 % over the nominal carry's peak, cubes of 0.6 and
+    1 kg saturate it for longer than the ground truth's motor time: the chain finds the
+    same first step as their full rollouts; lighter cubes pass in both."""
+    from critmoment import groundtruth
+    from critmoment.recording import rollout
+    from critmoment.twin import Twin
+
+    sig = demo_recording.signals
+    carry = np.flatnonzero((sig.contact_gripper & ~sig.contact_support[:, None]).any(axis=1))
+    probe = Twin(scenario)
+    i = probe.actuator_names.index("right/elbow")
+    peak = np.abs(np.asarray(sig.actuator_force)[carry, i]).max()
+    limits = {**scenario.limits, "right/elbow": float(1.15 * peak)}
+    twin = Twin(scenario.replace(limits=limits))
+    rec = rollout(demo_traj, twin=twin)
+    assert rec.completed
+    samples = np.tile(scenario.box.nominal, (4, 1))
+    samples[:, scenario.box.index("mass")] = [0.05, 0.4, 0.6, 1.0]
+    samples[:, scenario.box.index("friction")] = 1.5
+    chain = history.chained_failures(sparse.SparseEvaluator(rec, twin), [int(carry[0]) - 200],
+                                     samples)
+    truth = groundtruth.brute_force(demo_traj, twin=twin, samples=samples).classification
+    assert [o.value for o in truth.outcome] == ["success", "success", "motor", "motor"]
+    np.testing.assert_array_equal(chain.motor_step, truth.motor_step)
+    np.testing.assert_array_equal(chain.failed, truth.failed)
