@@ -444,9 +444,13 @@ class _Probe:
             s = spec.add_sensor()
             s.name = f"{_SENSOR_PREFIX}pos:{g.name}"
             s.type = mujoco.mjtSensor.mjSENS_FRAMEPOS
-            s.objtype = mujoco.mjtObj.mjOBJ_BODY
+            # the bodies' own frames (XBODY: xpos/xmat), not their inertial frames (BODY:
+            # xipos/ximat), in which the closing projector below is built; a gripper link
+            # whose inertial frame is rotated (ACT's ViperX: 103 degrees) would otherwise
+            # count the fingers' squeeze as slip and miss slip along another axis
+            s.objtype = mujoco.mjtObj.mjOBJ_XBODY
             s.objname = sc.object_body
-            s.reftype = mujoco.mjtObj.mjOBJ_BODY
+            s.reftype = mujoco.mjtObj.mjOBJ_XBODY
             s.refname = base.body(anchor).name
         self.rotational = np.flatnonzero(twin.rotational)
         for a in self.rotational:

@@ -83,3 +83,46 @@ def test_a_reused_reference_gives_the_same_outcomes(twin, demo_traj):
                                                   again.classification.max_slip]),
                                   whole.classification.max_slip)
     assert whole.outcome[0] is gt.Outcome.SUCCESS and whole.outcome[2] is not gt.Outcome.SUCCESS
+
+
+def test_the_grip_frame_is_the_bodys_own_frame_not_its_inertial_one(scenario, tmp_path):
+    """The ground truth measures the object in each gripper's body frame (xpos/xmat), the
+    frame its closing projector is built in, even where the gripper link's inertial frame
+    is rotated (ACT's ViperX gripper_link: 103 degrees): otherwise the fingers' squeeze
+    counts as slip. Here the bundled gripper links get an inertial frame turned 90 degrees."""
+    import shutil
+
+    import mujoco
+
+    from critmoment.groundtruth import _Probe
+    from critmoment.scenario import load_scenario
+    from critmoment.sparse import _object_in_grippers, grip_frames
+    from critmoment.twin import Twin
+
+    folder = tmp_path / "turned"
+    shutil.copytree(scenario.path.parent, folder)
+    scene = (folder / "scene.xml").read_text()
+    (folder / "scene.xml").write_text(scene.replace('inertiafromgeom="true"',
+                                                    'inertiafromgeom="auto"'))
+    xml = (folder / "vx300s.xml").read_text().replace('inertiafromgeom="true"',
+                                                       'inertiafromgeom="auto"')
+    old = '<body name="gripper_link" pos="0.069744 0 0">'
+    assert old in xml
+    (folder / "vx300s.xml").write_text(xml.replace(old, old + (
+        '<inertial pos="0.035 0 0" quat="0.7071068 0 0.7071068 0" mass="0.3" '
+        'diaginertia="0.0004 0.0003 0.0002"/>')))
+    twin = Twin(load_scenario(folder))
+    probe = _Probe(twin)
+    data = mujoco.MjData(probe.model)
+    mujoco.mj_resetDataKeyframe(probe.model, data, 0) if probe.model.nkey else None
+    data.qpos[:] += 0.05 * np.sin(np.arange(probe.model.nq))  # a pose off the keyframe
+    mujoco.mj_forward(probe.model, data)
+    anchors, _ = grip_frames(twin.model, twin.scenario)
+    rotated = [np.degrees(np.arccos(np.clip((np.trace(data.xmat[a].reshape(3, 3).T
+                                                      @ data.ximat[a].reshape(3, 3)) - 1) / 2,
+                                            -1, 1))) for a in anchors]
+    assert min(rotated) > 45  # the inertial frames really are turned
+    measured = data.sensordata[probe.pos].reshape(-1, 3)
+    expected = _object_in_grippers(data.xpos[None, None], data.xmat[None, None],
+                                   twin.object_body_id, anchors)[0, 0]
+    np.testing.assert_allclose(measured, expected, atol=1e-12)
