@@ -447,7 +447,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     chained, chained_failed = np.zeros(len(samples), bool), np.zeros(len(samples), bool)
     if dopt.chain and steps.size:
         with stage("chained segments"):
-            chained, chained_failed = chain_samples(evaluator, steps, samples, res, rerun, dopt)
+            chained, chained_failed = chain_samples(evaluator, steps, samples, res, rerun, dopt,
+                                                    nominal_completed=rec.completed)
     sample_evidence = vd.SampleEvidence(sweep=res,
                                         nominal_completed=rec.completed, rerun=rerun,
                                         rerun_failed=rerun_failed, chained=chained,
@@ -630,7 +631,8 @@ def decision_options(opt: AnalyzeOptions, threshold: float) -> vd.DecisionOption
 
 def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.ndarray,
                   sweep: sp.SparseResult | None, rerun: np.ndarray,
-                  options: vd.DecisionOptions) -> tuple[np.ndarray, np.ndarray]:
+                  options: vd.DecisionOptions, *, nominal_completed: bool = True
+                  ) -> tuple[np.ndarray, np.ndarray]:
     """The chained evidence of the decision: which samples were carried on their own state
     (:func:`critmoment.verdict.samples_to_chain`) and whether they failed there, each (n,)
     bool. Shared by :func:`analyze` and :func:`critmoment.validation.predict`."""
@@ -639,7 +641,7 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
     chained_failed = np.zeros(n, bool)
     if sweep is None or steps.size == 0:
         return chained, chained_failed
-    chained = vd.samples_to_chain(sweep, rerun, options)
+    chained = vd.samples_to_chain(sweep, rerun, options, nominal_completed=nominal_completed)
     if chained.any():
         chained_failed[chained] = history.chained_failures(evaluator, steps,
                                                            samples[chained]).failed
@@ -660,7 +662,9 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
     at the audit's moments, and decides
     the ``worst`` highest-cost points that pass (and those that fail only unlifted) by their
     own full rollout (:func:`critmoment.groundtruth.brute_force`) once no point fails the
-    sparse evaluation (before, the region shrinks anyway). When a point fails, the
+    sparse evaluation (before, the region shrinks anyway); with ``options.chain`` the other
+    passing points are carried on their own state (:func:`chain_samples`), as the sweep's
+    samples are. When a point fails, the
     region's failing-side faces move in (:func:`critmoment.verdict.shrink_region`: its new
     worst corner is a checked point that passed, ``margin`` prior-quantile units from every
     failing one) and the next round checks the new region.
@@ -690,7 +694,7 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
     near_cost = (options.verify if options.verify is not None else 0.8) * options.threshold
     first = dict(region)
     roll = _Rollouts(trajectory, twin, nthread, reference)
-    n_sparse = n_rollouts = 0
+    n_sparse = n_rollouts = n_chained = 0
     current: dict | None = vd.round_inward(first, box)
     pts = np.zeros((0, box.ndim))
     fails = rolled = np.zeros(0, bool)
@@ -723,13 +727,23 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
             fails[:] = True
         fails[rolled] = outcome[rolled]
         if not fails.any():
+            # the same decision path as the sweep: points that pass without a rollout of
+            # their own are carried on their own state (a soft grip's creep, a shifted grip)
+            chained, chained_failed = chain_samples(evaluator, steps, pts, res, rolled,
+                                                    options,
+                                                    nominal_completed=nominal_completed)
+            fails[chained] = chained_failed[chained]
+            n_chained += int(chained.sum())
+        if not fails.any():
             return vd.RegionCheck(region=current, points=pts, failed=fails, rolled_out=rolled,
                                   rounds=rnd, n_sparse=n_sparse, n_rollouts=n_rollouts,
+                                  n_chained=n_chained,
                                   first_claim=first)
         current = vd.round_inward(vd.shrink_region(current, pts[fails], box, sides,
                                                    margin=margin, passing=pts[~fails]), box)
     return vd.RegionCheck(region=None, points=pts, failed=fails, rolled_out=rolled,
                           rounds=max_rounds, n_sparse=n_sparse, n_rollouts=n_rollouts,
+                          n_chained=n_chained,
                           first_claim=first)
 
 

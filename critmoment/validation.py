@@ -253,7 +253,8 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     if verify is not None:
         timings["verification"] = time.perf_counter() - t3
     t4 = time.perf_counter()
-    chained, chained_failed = chain_samples(evaluator, steps, samples, res, verified, dopt)
+    chained, chained_failed = chain_samples(evaluator, steps, samples, res, verified, dopt,
+                                            nominal_completed=nominal_completed)
     if chain:
         timings["chained segments"] = time.perf_counter() - t4
     failed = failing_samples(SampleEvidence(sweep=res, nominal_completed=nominal_completed,

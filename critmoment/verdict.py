@@ -287,13 +287,15 @@ def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.nd
     return failed
 
 
-def samples_to_chain(sweep: SparseResult, rerun: np.ndarray, options: DecisionOptions
-                     ) -> np.ndarray:
+def samples_to_chain(sweep: SparseResult, rerun: np.ndarray, options: DecisionOptions, *,
+                     nominal_completed: bool = True) -> np.ndarray:
     """The samples to carry on their own state through the moments: those that pass at
     every audited moment and have no rollout of their own, (n,) bool (none without
-    ``options.chain``)."""
+    ``options.chain``, and none when the nominal run does not complete a task the options
+    require: every sample fails then)."""
     n = sweep.n_samples
-    if not options.chain or sweep.n_moments == 0:
+    if not options.chain or sweep.n_moments == 0 or (options.require_task
+                                                     and not nominal_completed):
         return np.zeros(n, bool)
     return ~np.asarray(sweep.failed_any, dtype=bool) & ~np.asarray(rerun, dtype=bool)
 
@@ -663,6 +665,8 @@ class RegionCheck:
         n_sparse: points evaluated by sparse evaluation over every round.
         n_rollouts: full rollouts over every round.
         first_claim: the region first claimed (before any shrinking), or None.
+        n_chained: points carried on their own state through the moments (chained
+            segments) over every round.
     """
 
     region: Mapping[str, tuple[float, float]] | None
@@ -673,6 +677,7 @@ class RegionCheck:
     n_sparse: int
     n_rollouts: int
     first_claim: Mapping[str, tuple[float, float]] | None = None
+    n_chained: int = 0
 
     @property
     def holds(self) -> bool:
@@ -691,7 +696,7 @@ class RegionCheck:
                                  for k, (a, b) in self.first_claim.items()}),
                 "holds": self.holds, "rounds": self.rounds,
                 "points": int(self.points.shape[0]), "sparse": self.n_sparse,
-                "rollouts": self.n_rollouts,
+                "rollouts": self.n_rollouts, "chained": self.n_chained,
                 "rollouts_last_round": int(self.rolled_out.sum())}
 
 
@@ -921,8 +926,11 @@ def region_text(region: Mapping[str, tuple[float, float]] | None, box: Uncertain
         return "no safe region: fails at the nominal parameters"
     evidence = ""
     if check is not None and region is not None:
+        chained = (f", {check.n_chained} of them also on their own run through the moments"
+                   if check.n_chained else "")
         evidence = (f" (checked at {check.n_sparse} points of its corners and edges by sparse "
-                    f"evaluation and by {check.n_rollouts} full rollouts of its worst points)")
+                    f"evaluation{chained}, and by {check.n_rollouts} full rollouts of its worst "
+                    f"points)")
     if region is None:
         if check is not None and check.first_claim is not None:
             return (f"no safe region: every sub-box tried failed its check at its corners and "
