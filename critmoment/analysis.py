@@ -662,9 +662,9 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
     at the audit's moments, and decides
     the ``worst`` highest-cost points that pass (and those that fail only unlifted) by their
     own full rollout (:func:`critmoment.groundtruth.brute_force`) once no point fails the
-    sparse evaluation (before, the region shrinks anyway); with ``options.chain`` the other
-    passing points are carried on their own state (:func:`chain_samples`), as the sweep's
-    samples are. When a point fails, the
+    sparse evaluation (before, the region shrinks anyway); with ``options.chain`` its
+    corners that pass without a rollout are carried on their own state
+    (:func:`chain_samples`), as the sweep's samples are. When a point fails, the
     region's failing-side faces move in (:func:`critmoment.verdict.shrink_region`: its new
     worst corner is a checked point that passed, ``margin`` prior-quantile units from every
     failing one) and the next round checks the new region.
@@ -727,10 +727,15 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
             fails[:] = True
         fails[rolled] = outcome[rolled]
         if not fails.any():
-            # the same decision path as the sweep: points that pass without a rollout of
-            # their own are carried on their own state (a soft grip's creep, a shifted grip)
-            chained, chained_failed = chain_samples(evaluator, steps, pts, res, rolled,
-                                                    options,
+            # the sweep's decision path: the region's corners that pass without a rollout of
+            # their own are carried on their own state (a soft grip's creep, a shifted grip);
+            # the corner at every failing side is the worst combination of the box
+            corner = np.ones(pts.shape[0], bool)
+            for j, name in enumerate(box.names):
+                lo, hi = current[name]
+                corner &= np.isclose(pts[:, j], lo) | np.isclose(pts[:, j], hi)
+            chained, chained_failed = chain_samples(evaluator, steps, pts, res,
+                                                    rolled | ~corner, options,
                                                     nominal_completed=nominal_completed)
             fails[chained] = chained_failed[chained]
             n_chained += int(chained.sum())

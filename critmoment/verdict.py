@@ -665,7 +665,7 @@ class RegionCheck:
         n_sparse: points evaluated by sparse evaluation over every round.
         n_rollouts: full rollouts over every round.
         first_claim: the region first claimed (before any shrinking), or None.
-        n_chained: points carried on their own state through the moments (chained
+        n_chained: corners carried on their own state through the moments (chained
             segments) over every round.
     """
 
@@ -926,7 +926,7 @@ def region_text(region: Mapping[str, tuple[float, float]] | None, box: Uncertain
         return "no safe region: fails at the nominal parameters"
     evidence = ""
     if check is not None and region is not None:
-        chained = (f", {check.n_chained} of them also on their own run through the moments"
+        chained = (f", {check.n_chained} corners also on their own run through the moments"
                    if check.n_chained else "")
         evidence = (f" (checked at {check.n_sparse} points of its corners and edges by sparse "
                     f"evaluation{chained}, and by {check.n_rollouts} full rollouts of its worst "
