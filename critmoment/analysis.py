@@ -445,10 +445,15 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             if rerun.any():
                 rerun_failed[rerun] = roll(samples[rerun])
     chained, chained_failed = np.zeros(len(samples), bool), np.zeros(len(samples), bool)
+    suspect = np.zeros(len(samples), bool)
     if dopt.chain and steps.size:
         with stage("chained segments"):
-            chained, chained_failed = chain_samples(evaluator, steps, samples, res, rerun, dopt,
-                                                    nominal_completed=rec.completed)
+            chained, chained_failed, suspect = chain_samples(
+                evaluator, steps, samples, res, rerun, dopt, nominal_completed=rec.completed)
+            if suspect.any() and opt.verify is not None:
+                # failed only by the force ratio on its own path: its own rollout decides
+                rerun_failed[suspect] = roll(samples[suspect])
+                rerun = rerun | suspect
     sample_evidence = vd.SampleEvidence(sweep=res,
                                         nominal_completed=rec.completed, rerun=rerun,
                                         rerun_failed=rerun_failed, chained=chained,
@@ -463,7 +468,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                         "unlifted": int(unlifted.sum()),
                         "unlifted_failed": int(failed[unlifted].sum()),
                         "chained": int(chained.sum()),
-                        "chained_failed": int(chained_failed[chained].sum())}
+                        "chained_failed": int(chained_failed[chained & ~rerun].sum()),
+                        "chained_rolled_out": int(suspect.sum())}
     with stage("critical values"):
         curves = _curves(evaluator, steps, box, opt.critical_grid) if steps.size else {}
         critical = _critical_values(rec, twin, evaluator, steps, opt.critical_grid)
@@ -632,20 +638,24 @@ def decision_options(opt: AnalyzeOptions, threshold: float) -> vd.DecisionOption
 def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.ndarray,
                   sweep: sp.SparseResult | None, rerun: np.ndarray,
                   options: vd.DecisionOptions, *, nominal_completed: bool = True
-                  ) -> tuple[np.ndarray, np.ndarray]:
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The chained evidence of the decision: which samples were carried on their own state
-    (:func:`critmoment.verdict.samples_to_chain`) and whether they failed there, each (n,)
-    bool. Shared by :func:`analyze` and :func:`critmoment.validation.predict`."""
+    (:func:`critmoment.verdict.samples_to_chain`), whether they failed there, and which of
+    those failed only by the contact force ratio (``ChainedResult.contact_only``: with
+    verification on, their own rollout decides them), each (n,) bool. Shared by
+    :func:`analyze`, :func:`check_region` and :func:`critmoment.validation.predict`."""
     n = samples.shape[0]
     chained = np.zeros(n, bool)
     chained_failed = np.zeros(n, bool)
+    suspect = np.zeros(n, bool)
     if sweep is None or steps.size == 0:
-        return chained, chained_failed
+        return chained, chained_failed, suspect
     chained = vd.samples_to_chain(sweep, rerun, options, nominal_completed=nominal_completed)
     if chained.any():
-        chained_failed[chained] = history.chained_failures(evaluator, steps,
-                                                           samples[chained]).failed
-    return chained, chained_failed
+        result = history.chained_failures(evaluator, steps, samples[chained])
+        chained_failed[chained] = result.failed
+        suspect[chained] = result.contact_only
+    return chained, chained_failed, suspect
 
 
 def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Trajectory,
@@ -734,11 +744,14 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
             for j, name in enumerate(box.names):
                 lo, hi = current[name]
                 corner &= np.isclose(pts[:, j], lo) | np.isclose(pts[:, j], hi)
-            chained, chained_failed = chain_samples(evaluator, steps, pts, res,
-                                                    rolled | ~corner, options,
-                                                    nominal_completed=nominal_completed)
+            chained, chained_failed, suspect = chain_samples(
+                evaluator, steps, pts, res, rolled | ~corner, options,
+                nominal_completed=nominal_completed)
             fails[chained] = chained_failed[chained]
             n_chained += int(chained.sum())
+            if suspect.any() and options.verify is not None:
+                fails[suspect] = roll(pts[suspect])
+                n_rollouts += int(suspect.sum())
         if not fails.any():
             return vd.RegionCheck(region=current, points=pts, failed=fails, rolled_out=rolled,
                                   rounds=rnd, n_sparse=n_sparse, n_rollouts=n_rollouts,

@@ -35,7 +35,7 @@ import numpy as np
 
 from critmoment.exceptions import ParameterError
 from critmoment.groundtruth import OutcomeCriteria
-from critmoment.sparse import SparseEvaluator, _object_in_grippers
+from critmoment.sparse import Failure, SparseEvaluator, _object_in_grippers
 
 __all__ = ["DriftEstimate", "estimate_drift", "ChainedResult", "chained_failures",
            "DRIFT_TOLERANCE", "LAG_TOLERANCE"]
@@ -202,11 +202,27 @@ class ChainedResult:
     def failed(self) -> np.ndarray:
         """(n,) bool: the sample fails at some moment of its own chain, or slips, loses
         the object or saturates a motor between them."""
-        out = (self.failure > 0).any(axis=0)
+        return (self.failure > 0).any(axis=0) | self.watched_failed
+
+    @property
+    def watched_failed(self) -> np.ndarray:
+        """(n,) bool: the watch (the ground truth's slip, drop and saturation rules) fails
+        the sample somewhere along its chain."""
+        out = np.zeros(self.samples.shape[0], bool)
         for watched in (self.slip_step, self.drop_step, self.motor_step):
             if watched is not None:
                 out = out | (watched >= 0)
         return out
+
+    @property
+    def contact_only(self) -> np.ndarray:
+        """(n,) bool: the sample fails only by the contact force ratio at a moment of its
+        chain (its measured slip, the object and the motors pass the watch up to there):
+        a prediction the sample's own rollout should confirm, since on its own path the
+        force ratio can touch the cone without a real slip."""
+        contact = (self.failure == Failure.CONTACT).any(axis=0)
+        other = ((self.failure > 0) & (self.failure != Failure.CONTACT)).any(axis=0)
+        return contact & ~other & ~self.watched_failed
 
 
 class _Watch:

@@ -253,8 +253,14 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     if verify is not None:
         timings["verification"] = time.perf_counter() - t3
     t4 = time.perf_counter()
-    chained, chained_failed = chain_samples(evaluator, steps, samples, res, verified, dopt,
-                                            nominal_completed=nominal_completed)
+    chained, chained_failed, suspect = chain_samples(evaluator, steps, samples, res, verified,
+                                                     dopt, nominal_completed=nominal_completed)
+    if suspect.any() and verify is not None:
+        # the audit's own step: failed only by the force ratio on its own path, its own
+        # rollout decides it
+        rerun_failed[suspect] = brute_force(traj, twin=twin, samples=samples[suspect],
+                                            chunk=chunk, nthread=nthread).failed
+        verified = verified | suspect
     if chain:
         timings["chained segments"] = time.perf_counter() - t4
     failed = failing_samples(SampleEvidence(sweep=res, nominal_completed=nominal_completed,
