@@ -31,6 +31,7 @@ from __future__ import annotations
 import dataclasses
 from typing import Any
 
+import mujoco
 import numpy as np
 
 from critmoment.exceptions import ParameterError
@@ -183,8 +184,9 @@ class ChainedResult:
             if none, (n,) int64.
         max_slip: largest slip over the chain [m], (n,).
         motor_step: first step of a saturation of a rotational actuator (the ground truth's
-            ``saturation`` of its force limit for longer than ``motor_time``), −1 if none,
-            (n,) int64.
+            ``saturation`` of its force limit for longer than ``motor_time``) or of a lost
+            tracking (further from its target than in the nominal run by more than
+            ``tracking_tolerance`` for longer than ``tracking_time``), −1 if none, (n,) int64.
     """
 
     steps: np.ndarray
@@ -236,7 +238,9 @@ class _Watch:
     a run of more than ``slip_time`` above ``slip_tolerance``. Drop: the object touched
     by no gripper where the nominal run carries it, for longer than ``drop_time``.
     Saturation: a rotational actuator at ``saturation`` of its force limit for longer than
-    ``motor_time``.
+    ``motor_time``. Tracking: a rotational actuator further from its target than in the
+    nominal run by more than ``tracking_tolerance`` for longer than ``tracking_time`` (both
+    are the ground truth's MOTOR outcome).
     """
 
     def __init__(self, ev: SparseEvaluator, n: int, criteria: OutcomeCriteria):
@@ -261,12 +265,22 @@ class _Watch:
         self.motor_need = criteria.steps(criteria.motor_time, dt)
         self.motor_run = np.zeros((n, rotational.size), np.int64)
         self.motor_step = np.full(n, -1, np.int64)
+        # tracking: each rotational actuator's position (gear × joint angle, as MuJoCo's
+        # actuator length) against its target, beyond the nominal run's own lag
+        model = twin.model
+        self.act = rotational
+        self.qadr = model.jnt_qposadr[model.actuator_trnid[rotational, 0]]
+        self.gear = model.actuator_gear[rotational, 0]
+        self.qoffset = mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_TIME)
+        self.tracking_tolerance = float(criteria.tracking_tolerance)
+        self.track_need = criteria.steps(criteria.tracking_time, dt)
+        self.track_run = np.zeros((n, rotational.size), np.int64)
 
     def failed(self) -> np.ndarray:
         return (self.slip_step >= 0) | (self.drop_step >= 0) | (self.motor_step >= 0)
 
     def __call__(self, k: int, ids: np.ndarray, sensordata: np.ndarray, xpos: np.ndarray,
-                 xmat: np.ndarray) -> None:
+                 xmat: np.ndarray, qpos: np.ndarray) -> None:
         ev = self.ev
         ids = np.asarray(ids, dtype=np.int64)
         c, s = xpos.shape[:2]
@@ -302,13 +316,22 @@ class _Watch:
         over = slip > self.tolerance
         with np.errstate(invalid="ignore", divide="ignore"):
             saturated = np.abs(sensordata[..., self.force_adr] / self.limits) >= self.saturation
+        target = ev._controls[k:k + s][:, self.act]                          # (s, r)
+        nominal = ev._states[k + 1:k + s + 1, self.qoffset + self.qadr] * self.gear
+        q = qpos[..., self.qadr] * self.gear                                 # (c, s, r)
+        lagging = (np.abs(q - target[None]) - np.abs(nominal - target)[None]
+                   > self.tracking_tolerance)
         for j in range(s):
             self.slip_run[ids] = (self.slip_run[ids] + 1) * over[:, j]
             self.drop_run[ids] = (self.drop_run[ids] + 1) * lost[:, j]
             self.motor_run[ids] = (self.motor_run[ids] + 1) * saturated[:, j]
+            self.track_run[ids] = (self.track_run[ids] + 1) * lagging[:, j]
             hit = ids[(self.motor_run[ids] >= self.motor_need).any(axis=1)
                       & (self.motor_step[ids] < 0)]
             self.motor_step[hit] = k + j - self.motor_need + 1
+            hit = ids[(self.track_run[ids] >= self.track_need).any(axis=1)
+                      & (self.motor_step[ids] < 0)]
+            self.motor_step[hit] = k + j - self.track_need + 1
             for run, need, first_step in ((self.slip_run, self.slip_need, self.slip_step),
                                           (self.drop_run, self.drop_need, self.drop_step)):
                 hit = ids[(run[ids] >= need) & (first_step[ids] < 0)]
@@ -382,8 +405,8 @@ def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: 
     alive = np.ones(rows.size, bool)
     raised = np.zeros(rows.size, bool)
 
-    def watched(k, ids, sensordata, xpos, xmat):
-        watch(k, rows[ids], sensordata, xpos, xmat)
+    def watched(k, ids, sensordata, xpos, xmat, qpos):
+        watch(k, rows[ids], sensordata, xpos, xmat, qpos)
 
     current = taken = first
     for j, k in enumerate([*kept, None]):

@@ -958,19 +958,22 @@ class SparseEvaluator:
               raised: np.ndarray, watch=None) -> tuple[np.ndarray, np.ndarray]:
         """Step the simulations ``ids`` ``nstep`` steps from recording step k with the
         recorded controls; (sensordata (c, nstep, nsd), slip (c, nstep) [m]). ``watch``,
-        if given, is called with (k, ids, sensordata, xpos, xmat) of the steps taken."""
+        if given, is called with (k, ids, sensordata, xpos, xmat, qpos) of the steps taken
+        (each recorded after its step)."""
         c, model = ids.size, self.twin.model
         out = {"sensordata": np.zeros((c, nstep, model.nsensordata)),
                "xpos": np.zeros((c, nstep, model.nbody, 3)),
                "xmat": np.zeros((c, nstep, model.nbody, 9))}
+        if watch is not None:
+            out["qpos"] = np.zeros((c, nstep, model.nq))
         try:
             batch.rollout(nstep, control=self._controls[k:k + nstep][None],
                           control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
-                          record=("sensordata", "xpos", "xmat"), ids=ids, out=out)
+                          record=tuple(out), ids=ids, out=out)
         except mujoco.batch.SimulationError as exc:
             raised[exc.ids] = True
         if watch is not None:
-            watch(k, ids, out["sensordata"], out["xpos"], out["xmat"])
+            watch(k, ids, out["sensordata"], out["xpos"], out["xmat"], out["qpos"])
         return out["sensordata"], self._slip(out["xpos"], out["xmat"], k)
 
     def _simulate(self, batch: mujoco.batch.Batch, k: int, run: np.ndarray,

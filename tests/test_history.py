@@ -173,3 +173,22 @@ def test_contact_only_names_the_chained_samples_a_rollout_should_decide():
     np.testing.assert_array_equal(result.failed, [True, True, True, False, True, False])
     np.testing.assert_array_equal(result.watched_failed, [False, False, True, False, False,
                                                           False])
+
+
+def test_the_chain_watches_tracking_as_the_ground_truth_does(scenario, twin):
+    """Demo seed 8, a 0.196 kg cube at μ 0.78: its grip shifts, the pads collide at the
+    hand-over and the right wrist lags its target, which the brute force calls a motor
+    failure and no moment sees (a false safe before the chain watched tracking)."""
+    from critmoment import demos, groundtruth
+    from critmoment.recording import rollout
+
+    traj = demos.scripted_transfer(8, twin=twin)
+    rec = rollout(traj, twin=twin)
+    held = rec.signals.contact_gripper & ~rec.signals.contact_support[:, None]
+    start = int(np.flatnonzero(held.any(axis=1))[0]) - 200
+    samples = np.array([[0.19594991677440704, 0.7830319359898568], scenario.box.nominal])
+    chain = history.chained_failures(sparse.SparseEvaluator(rec, twin), [start], samples)
+    truth = groundtruth.brute_force(traj, twin=twin, samples=samples).classification
+    assert truth.outcome[0].value == "motor" and truth.slip_step[0] == -1
+    np.testing.assert_array_equal(chain.failed, [True, False])
+    assert abs(chain.motor_step[0] - truth.motor_step[0]) <= 2
