@@ -926,6 +926,7 @@ def payload_regressor(
     tau0 = np.empty((n, pm.nv))
     y_pin = np.zeros((n, pm.nv))
     model, data = pm.model, pm.data
+    rotations = _quat_to_mat(poses[:, 3:])  # once for every row
     for k in range(n):
         tau0[k] = pin.rnea(model, data, q[k], v[k], a[k])
         if jid == 0:
@@ -934,7 +935,7 @@ def payload_regressor(
         vel, acc = pin.Motion(data.v[jid]), pin.Motion(data.a_gf[jid])
         # rnea does not update data.oMi; computeJointJacobians does (and fills data.J)
         pin.computeJointJacobians(model, data, q[k])
-        joint_payload = data.oMi[jid].actInv(_se3(poses[k, :3], poses[k, 3:]))
+        joint_payload = data.oMi[jid].actInv(pin.SE3(rotations[k], poses[k, :3].copy()))
         rot = joint_payload.rotation
         inertia = pin.Inertia(1.0, joint_payload.translation.copy(), rot @ unit @ rot.T)
         wrench = inertia * acc + vel.cross(inertia * vel)
