@@ -204,6 +204,8 @@ class Failure(enum.IntEnum):
 DEFAULT_PERSISTENCE = 0.02
 DEFAULT_SLIP_TOLERANCE = 0.005
 DEFAULT_CREEP_HORIZON = 0
+#: fraction of ``slip_tolerance`` under which a measured slip means the grip has not moved
+SLIP_FLOOR = 0.1
 
 
 @dataclasses.dataclass(frozen=True)
@@ -671,7 +673,7 @@ class SparseEvaluator:
         self._sensordata = getattr(recording, "sensordata", None)
         self._completed = bool(getattr(recording, "completed", False))
         self._trusted: dict[int, bool] = {}
-        self._chatter: bool | None = None
+        self._chatter: int | None = None
         self._kin_data: mujoco.MjData | None = None
         self._batches: collections.OrderedDict[int, mujoco.batch.Batch] = collections.OrderedDict()
         self._written: dict[int, np.ndarray] = {}
@@ -721,9 +723,7 @@ class SparseEvaluator:
             return self._trusted[k]
         trusted = True
         sd = self._sensordata
-        if self._chatter is None:
-            self._chatter = self._nominal_chatter()
-        if self._chatter:
+        if self._nominal_chatter():
             trusted = False
         elif self._completed and sd is not None and self.mode is SparseMode.STEP:
             length = min(self.horizon + self.persistence_steps - 1, self.n_steps - k)
@@ -737,6 +737,13 @@ class SparseEvaluator:
         self._trusted[k] = trusted
         return trusted
 
+    def _nominal_touches(self) -> bool:
+        """The nominal grip's contact term crosses the threshold at some lifted step, though
+        its run completes: on this model a force ratio on the cone does not by itself mean
+        a slip, so a contact failure also needs the grip to have moved (``SLIP_FLOOR``)
+        where that is measured."""
+        return self._lifted_crossings() > 0
+
     def _nominal_chatter(self) -> bool:
         """The nominal run completes the task although its grip's force ratio spends, in
         all, at least ``persistence`` on the contact criterion's threshold where it carries
@@ -744,14 +751,23 @@ class SparseEvaluator:
         one on this model (mesh fingers, a soft cone), so no moment trusts it. (A squeeze
         that tips the object off its support without a lift is decided by rollouts, as
         ever.)"""
-        sd = self._sensordata
-        if not self._completed or sd is None:
-            return False
-        cp = self.twin.scenario.cost
-        with np.errstate(over="ignore", invalid="ignore"):
-            sig = self.twin.signals(np.asarray(sd, dtype=np.float64), carried=self._carried)
-            term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
-        return int((self._lifted & (term_c > cp.threshold)).sum()) >= self.persistence_steps
+        return self._lifted_crossings() >= self.persistence_steps
+
+    def _lifted_crossings(self) -> int:
+        """Lifted steps of a nominal run that completes the task at which its grip's contact
+        term crosses the threshold (0 when it does not complete; cached)."""
+        if self._chatter is None:
+            sd = self._sensordata
+            count = 0
+            if self._completed and sd is not None:
+                cp = self.twin.scenario.cost
+                with np.errstate(over="ignore", invalid="ignore"):
+                    sig = self.twin.signals(np.asarray(sd, dtype=np.float64),
+                                            carried=self._carried)
+                    term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
+                count = int((self._lifted & (term_c > cp.threshold)).sum())
+            self._chatter = count
+        return self._chatter
 
     def check_steps(self, steps: Any) -> np.ndarray:
         """Validate moments: (m,) int64 in [0, T − horizon]."""
@@ -1064,8 +1080,17 @@ class SparseEvaluator:
         valid = np.arange(total)[None, :] < length[:, None]
         in_horizon = np.arange(total)[None, :] < h
         slipped = valid & (slip > self.settings.slip_tolerance)
+        # on a model whose nominal grip touches the cone without slipping, where the
+        # object's slip in a gripper holding it alone is measured and has stayed under a
+        # tenth of the tolerance, the grip has not moved: a force ratio on the cone there
+        # is not a slip (the chained segments and rollouts see what happens later)
+        unmoved = None
+        if self._nominal_touches():
+            unmoved = (self._alone[at].any(axis=-1)[None]
+                       & (np.maximum.accumulate(slip, axis=1)
+                          < SLIP_FLOOR * self.settings.slip_tolerance))
         out = [self._first_failure(term_c, term_m, slipped, valid, in_horizon, length, p,
-                                   final) for term_c in (term_c, lifted_c)]
+                                   final, unmoved) for term_c in (term_c, lifted_c)]
         (failure, _, excursion, follow_c), (stop_kind, stop_step, _, follow_l) = out
         follow = follow_c | follow_l
         if self.settings.creep_horizon > h:
@@ -1075,7 +1100,7 @@ class SparseEvaluator:
 
     def _first_failure(self, term_c: np.ndarray, term_m: np.ndarray, slipped: np.ndarray,
                        valid: np.ndarray, in_horizon: np.ndarray, length: np.ndarray, p: int,
-                       final: bool):
+                       final: bool, unmoved: np.ndarray | None = None):
         """(failure kind, its step, longest excursion [steps], open excursion) (nsim,) of
         per-step cost terms (nsim, L)."""
         nsim, total = term_c.shape
@@ -1089,12 +1114,15 @@ class SparseEvaluator:
         starts_in = (np.arange(total)[None, :] - run + 1) < self.horizon
         counted = excursion & starts_in
         contact = counted & (run >= p)
+        if unmoved is not None:
+            contact &= ~unmoved
         rows = np.arange(nsim)
         last = np.maximum(length - 1, 0)
         open_end = counted[rows, last] & (run[rows, last] < p) & (length > 0)
         if final:
             # no more steps to follow it: an excursion still open counts
-            contact[rows[open_end], last[open_end]] = True
+            ends = open_end if unmoved is None else open_end & ~unmoved[rows, last]
+            contact[rows[ends], last[ends]] = True
         kinds = np.select([motor, contact, slipped],
                           [Failure.MOTOR, Failure.CONTACT, Failure.SLIP], Failure.PASS)
         failing = kinds > 0
