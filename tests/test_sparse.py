@@ -696,3 +696,27 @@ def test_the_contact_criterion_is_calibrated_against_the_nominal_run(scenario, t
     # the same samples under the shipped constants: the 3 kg cube fails by contact there
     shipped = plain.evaluate(steps, samples)
     assert (shipped.failure[:, 2] == sparse.Failure.CONTACT).any()
+
+
+def test_where_the_nominal_grip_touches_the_cone_a_contact_failure_needs_movement(
+        twin, demo_recording):
+    """The bundled Panda's nominal grip crosses the contact threshold at a few lifted steps
+    while its run completes: there a force ratio on the cone without measured slip (under
+    a tenth of the tolerance) is not a failure. A 2 kg cube at μ 1.1 that really succeeds
+    (1.6 mm of slip in its full rollout) failed the sweep by contact before; now it passes
+    and what follows is left to the chain. The bundled ALOHA grip never touches the cone:
+    its decision is unchanged."""
+    import critmoment as cm
+    from critmoment import analysis, panda_demo
+
+    assert not SparseEvaluator(demo_recording, twin)._nominal_touches()
+    panda = Twin(cm.load_scenario("panda_pick_place"))
+    rec = rollout.rollout(panda_demo.make_pick_place(seed=0), twin=panda)
+    ev = SparseEvaluator(rec, panda)
+    assert ev._nominal_touches() and ev.contact_trusted([rec.controls.shape[0] // 2]).all()
+    _, steps = analysis.audit_moments(rec, panda, ev, 8)
+    sample = np.array([[2.008, 1.125]])
+    res = ev.evaluate(steps, sample)
+    assert not res.failed_any[0]
+    assert (res.fos_grasp[:, 0] < 1.2).any()  # the ratio does sit at the cone somewhere
+    assert (res.slip[:, 0] < sparse.SLIP_FLOOR * ev.settings.slip_tolerance).all()
