@@ -187,6 +187,10 @@ class ChainedResult:
             ``saturation`` of its force limit for longer than ``motor_time``) or of a lost
             tracking (further from its target than in the nominal run by more than
             ``tracking_tolerance`` for longer than ``tracking_time``), −1 if none, (n,) int64.
+        diverged_step: the first step of the block between the moments in which the
+            simulation diverged (MuJoCo raised or warned of instability, or a value went
+            non-finite), −1 if none, (n,) int64; a divergence within a moment's window is
+            that moment's ``Failure.DIVERGED``.
     """
 
     steps: np.ndarray
@@ -199,6 +203,7 @@ class ChainedResult:
     drop_step: np.ndarray | None = None
     max_slip: np.ndarray | None = None
     motor_step: np.ndarray | None = None
+    diverged_step: np.ndarray | None = None
 
     @property
     def failed(self) -> np.ndarray:
@@ -208,10 +213,10 @@ class ChainedResult:
 
     @property
     def watched_failed(self) -> np.ndarray:
-        """(n,) bool: the watch (the ground truth's slip, drop and saturation rules) fails
-        the sample somewhere along its chain."""
+        """(n,) bool: the watch (the ground truth's slip, drop, saturation and tracking
+        rules, and divergence) fails the sample somewhere along its chain."""
         out = np.zeros(self.samples.shape[0], bool)
-        for watched in (self.slip_step, self.drop_step, self.motor_step):
+        for watched in (self.slip_step, self.drop_step, self.motor_step, self.diverged_step):
             if watched is not None:
                 out = out | (watched >= 0)
         return out
@@ -249,22 +254,17 @@ class _Watch:
         self.ev = ev
         self.found = np.zeros((n, g), bool)
         self.offset = np.zeros((n, g, 3))
-        self.slip_run = np.zeros(n, np.int64)
-        self.drop_run = np.zeros(n, np.int64)
-        self.slip_need = criteria.steps(criteria.slip_time, dt)
-        self.drop_need = criteria.steps(criteria.drop_time, dt)
         self.tolerance = float(criteria.slip_tolerance)
         self.slip_step = np.full(n, -1, np.int64)
         self.drop_step = np.full(n, -1, np.int64)
+        self.motor_step = np.full(n, -1, np.int64)
+        self.diverged_step = np.full(n, -1, np.int64)
         self.max_slip = np.zeros(n)
         twin = ev.twin
         rotational = np.flatnonzero(twin.rotational)
         self.force_adr = twin._force_adr[rotational]
         self.limits = twin.limits[rotational]
         self.saturation = float(criteria.saturation)
-        self.motor_need = criteria.steps(criteria.motor_time, dt)
-        self.motor_run = np.zeros((n, rotational.size), np.int64)
-        self.motor_step = np.full(n, -1, np.int64)
         # tracking: each rotational actuator's position (gear × joint angle, as MuJoCo's
         # actuator length) against its target, beyond the nominal run's own lag
         model = twin.model
@@ -273,11 +273,21 @@ class _Watch:
         self.gear = model.actuator_gear[rotational, 0]
         self.qoffset = mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_TIME)
         self.tracking_tolerance = float(criteria.tracking_tolerance)
-        self.track_need = criteria.steps(criteria.tracking_time, dt)
-        self.track_run = np.zeros((n, rotational.size), np.int64)
+        # per rule: its running count of steps (n, columns), the steps it must last, and
+        # where its first step goes (saturation and tracking are both the MOTOR outcome)
+        self.rules = {
+            "slip": (np.zeros((n, 1), np.int64), criteria.steps(criteria.slip_time, dt),
+                     self.slip_step),
+            "drop": (np.zeros((n, 1), np.int64), criteria.steps(criteria.drop_time, dt),
+                     self.drop_step),
+            "saturation": (np.zeros((n, rotational.size), np.int64),
+                           criteria.steps(criteria.motor_time, dt), self.motor_step),
+            "tracking": (np.zeros((n, rotational.size), np.int64),
+                         criteria.steps(criteria.tracking_time, dt), self.motor_step)}
 
     def failed(self) -> np.ndarray:
-        return (self.slip_step >= 0) | (self.drop_step >= 0) | (self.motor_step >= 0)
+        return ((self.slip_step >= 0) | (self.drop_step >= 0) | (self.motor_step >= 0)
+                | (self.diverged_step >= 0))
 
     def __call__(self, k: int, ids: np.ndarray, sensordata: np.ndarray, xpos: np.ndarray,
                  xmat: np.ndarray, qpos: np.ndarray) -> None:
@@ -286,6 +296,10 @@ class _Watch:
         c, s = xpos.shape[:2]
         if c == 0 or s == 0:
             return
+        # a simulation that went non-finite without MuJoCo raising has diverged
+        bad = ~(np.isfinite(sensordata).all(axis=-1) & np.isfinite(qpos).all(axis=-1))
+        gone = bad.any(axis=1) & (self.diverged_step[ids] < 0)
+        self.diverged_step[ids[gone]] = k + np.argmax(bad[gone], axis=1)
         touch, support = ev.twin.contact_flags(sensordata)          # (c, s, G), (c, s)
         held = touch & ~support[..., None]
         nominal_held = ev._held[k:k + s]                            # (s, G)
@@ -321,20 +335,12 @@ class _Watch:
         q = qpos[..., self.qadr] * self.gear                                 # (c, s, r)
         lagging = (np.abs(q - target[None]) - np.abs(nominal - target)[None]
                    > self.tracking_tolerance)
+        flags = {"slip": over[..., None], "drop": lost[..., None], "saturation": saturated,
+                 "tracking": lagging}                                 # each (c, s, columns)
         for j in range(s):
-            self.slip_run[ids] = (self.slip_run[ids] + 1) * over[:, j]
-            self.drop_run[ids] = (self.drop_run[ids] + 1) * lost[:, j]
-            self.motor_run[ids] = (self.motor_run[ids] + 1) * saturated[:, j]
-            self.track_run[ids] = (self.track_run[ids] + 1) * lagging[:, j]
-            hit = ids[(self.motor_run[ids] >= self.motor_need).any(axis=1)
-                      & (self.motor_step[ids] < 0)]
-            self.motor_step[hit] = k + j - self.motor_need + 1
-            hit = ids[(self.track_run[ids] >= self.track_need).any(axis=1)
-                      & (self.motor_step[ids] < 0)]
-            self.motor_step[hit] = k + j - self.track_need + 1
-            for run, need, first_step in ((self.slip_run, self.slip_need, self.slip_step),
-                                          (self.drop_run, self.drop_need, self.drop_step)):
-                hit = ids[(run[ids] >= need) & (first_step[ids] < 0)]
+            for name, (run, need, first_step) in self.rules.items():
+                run[ids] = (run[ids] + 1) * flags[name][:, j]
+                hit = ids[(run[ids] >= need).any(axis=1) & (first_step[ids] < 0)]
                 first_step[hit] = k + j - need + 1
 
 
@@ -381,8 +387,10 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     end = min(end, ev.n_steps)
     n = samples.shape[0]
     watch = _Watch(ev, n, criteria)
-    kept = [k for i, k in enumerate(int(s) for s in steps)
-            if i == 0 or k >= _window_end(steps[:i], h)]
+    kept: list[int] = []  # a moment whose window overlaps the previous kept one is skipped
+    for k in (int(s) for s in steps):
+        if not kept or k >= kept[-1] + h:
+            kept.append(k)
     failure = np.full((len(kept), n), -1, dtype=np.int8)
     stepped = 0
     for lo in range(0, n, ev.chunk):
@@ -392,7 +400,8 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     return ChainedResult(steps=np.array(kept, dtype=np.int64), samples=samples,
                          failure=failure, start=first, stepped=stepped, end=end,
                          slip_step=watch.slip_step, drop_step=watch.drop_step,
-                         max_slip=watch.max_slip, motor_step=watch.motor_step)
+                         max_slip=watch.max_slip, motor_step=watch.motor_step,
+                         diverged_step=watch.diverged_step)
 
 
 def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: np.ndarray,
@@ -413,9 +422,15 @@ def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: 
         target = end if k is None else k
         while current < target and alive.any():
             nstep = min(block, target - current)
-            ev._roll(batch, current, nstep, np.flatnonzero(alive), raised, watched)
+            ids = np.flatnonzero(alive)
+            batch.warning[...] = 0
+            ev._roll(batch, current, nstep, ids, raised, watched, measure_slip=False)
+            # MuJoCo raised, or warned of an unstable step (as _simulate counts divergence)
+            gone = ids[(raised[ids] | (batch.warning[ids, :, 1] > 0).any(axis=1))
+                       & (watch.diverged_step[rows[ids]] < 0)]
+            watch.diverged_step[rows[gone]] = current
             current += nstep
-            alive &= ~raised & ~watch.failed()[rows]
+            alive &= ~watch.failed()[rows]
         taken = max(taken, current)
         if k is None or not alive.any():
             break
@@ -428,12 +443,3 @@ def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: 
         alive &= ~watch.failed()[rows]
     return taken - first
 
-
-def _window_end(previous: np.ndarray, h: int) -> int:
-    """Where the last kept window before these moments ends (moments closer than the
-    horizon to the previous kept one are skipped)."""
-    end = int(previous[0]) + h
-    for k in (int(s) for s in previous[1:]):
-        if k >= end:
-            end = k + h
-    return end

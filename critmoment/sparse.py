@@ -672,8 +672,7 @@ class SparseEvaluator:
         self._nominal_rel = np.full((self._states.shape[0], len(self._anchors), 3), np.nan)
         self._sensordata = getattr(recording, "sensordata", None)
         self._completed = bool(getattr(recording, "completed", False))
-        self._trusted: dict[int, bool] = {}
-        self._chatter: int | None = None
+        self._over: np.ndarray | None = None
         self._kin_data: mujoco.MjData | None = None
         self._batches: collections.OrderedDict[int, mujoco.batch.Batch] = collections.OrderedDict()
         self._written: dict[int, np.ndarray] = {}
@@ -719,30 +718,19 @@ class SparseEvaluator:
                         dtype=bool)
 
     def _contact_trusted(self, k: int) -> bool:
-        if k in self._trusted:
-            return self._trusted[k]
-        trusted = True
-        sd = self._sensordata
         if self._nominal_chatter():
-            trusted = False
-        elif self._completed and sd is not None and self.mode is SparseMode.STEP:
-            length = min(self.horizon + self.persistence_steps - 1, self.n_steps - k)
-            at = k + np.arange(length)
-            cp = self.twin.scenario.cost
-            with np.errstate(over="ignore", invalid="ignore"):
-                sig = self.twin.signals(np.asarray(sd[k:k + length], dtype=np.float64),
-                                        carried=self._carried[at])
-                term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
-            trusted = not bool((self._lifted[at] & (term_c > cp.threshold)).any())
-        self._trusted[k] = trusted
-        return trusted
+            return False
+        if self.mode is not SparseMode.STEP:
+            return True
+        length = min(self.horizon + self.persistence_steps - 1, self.n_steps - k)
+        return not bool(self._nominal_over()[k:k + length].any())
 
     def _nominal_touches(self) -> bool:
         """The nominal grip's contact term crosses the threshold at some lifted step, though
         its run completes: on this model a force ratio on the cone does not by itself mean
         a slip, so a contact failure also needs the grip to have moved (``SLIP_FLOOR``)
         where that is measured."""
-        return self._lifted_crossings() > 0
+        return bool(self._nominal_over().any())
 
     def _nominal_chatter(self) -> bool:
         """The nominal run completes the task although its grip's force ratio spends, in
@@ -751,23 +739,24 @@ class SparseEvaluator:
         one on this model (mesh fingers, a soft cone), so no moment trusts it. (A squeeze
         that tips the object off its support without a lift is decided by rollouts, as
         ever.)"""
-        return self._lifted_crossings() >= self.persistence_steps
+        return int(self._nominal_over().sum()) >= self.persistence_steps
 
-    def _lifted_crossings(self) -> int:
-        """Lifted steps of a nominal run that completes the task at which its grip's contact
-        term crosses the threshold (0 when it does not complete; cached)."""
-        if self._chatter is None:
+    def _nominal_over(self) -> np.ndarray:
+        """(T,) bool: the lifted steps of a nominal run that completes the task at which its
+        grip's contact term crosses the threshold (none when it does not complete), read
+        once from the recording."""
+        if self._over is None:
             sd = self._sensordata
-            count = 0
+            over = np.zeros(self.n_steps, bool)
             if self._completed and sd is not None:
                 cp = self.twin.scenario.cost
                 with np.errstate(over="ignore", invalid="ignore"):
                     sig = self.twin.signals(np.asarray(sd, dtype=np.float64),
                                             carried=self._carried)
                     term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
-                count = int((self._lifted & (term_c > cp.threshold)).sum())
-            self._chatter = count
-        return self._chatter
+                over = self._lifted & (term_c > cp.threshold)
+            self._over = over
+        return self._over
 
     def check_steps(self, steps: Any) -> np.ndarray:
         """Validate moments: (m,) int64 in [0, T − horizon]."""
@@ -971,11 +960,13 @@ class SparseEvaluator:
         return {name: np.concatenate(v) for name, v in parts.items()}
 
     def _roll(self, batch: mujoco.batch.Batch, k: int, nstep: int, ids: np.ndarray,
-              raised: np.ndarray, watch=None) -> tuple[np.ndarray, np.ndarray]:
+              raised: np.ndarray, watch=None, measure_slip: bool = True
+              ) -> tuple[np.ndarray, np.ndarray]:
         """Step the simulations ``ids`` ``nstep`` steps from recording step k with the
         recorded controls; (sensordata (c, nstep, nsd), slip (c, nstep) [m]). ``watch``,
         if given, is called with (k, ids, sensordata, xpos, xmat, qpos) of the steps taken
-        (each recorded after its step)."""
+        (each recorded after its step). Without ``measure_slip`` the slip is zero (the
+        caller does not use it)."""
         c, model = ids.size, self.twin.model
         out = {"sensordata": np.zeros((c, nstep, model.nsensordata)),
                "xpos": np.zeros((c, nstep, model.nbody, 3)),
@@ -990,6 +981,8 @@ class SparseEvaluator:
             raised[exc.ids] = True
         if watch is not None:
             watch(k, ids, out["sensordata"], out["xpos"], out["xmat"], out["qpos"])
+        if not measure_slip:
+            return out["sensordata"], np.zeros((c, nstep))
         return out["sensordata"], self._slip(out["xpos"], out["xmat"], k)
 
     def _simulate(self, batch: mujoco.batch.Batch, k: int, run: np.ndarray,
@@ -1030,7 +1023,7 @@ class SparseEvaluator:
                 while todo.size and done < h:
                     n = min(block, h - done)
                     buf[todo, done:done + n], slip[todo, done:done + n] = self._roll(
-                        batch, k + done, n, todo, raised, watch)
+                        batch, k + done, n, todo, raised, watch, measure_slip=restore)
                     done += n
                     length[todo] = done
                     if done < h:
@@ -1039,8 +1032,6 @@ class SparseEvaluator:
                         todo = todo[~(part.stop & (part.failure > 0))[todo]]
             if keep_state:
                 state = batch.state.copy()
-        if not restore:
-            slip[:] = 0.0  # measured from a restored state only; the caller watches it
         warned = batch.warning[:, :, 1].copy()
         decided = self._decide(buf, slip, length, mu, k, final=extra == 0)
         follow = run[decided.follow[run] & ~raised[run] & ~(warned[run] > 0).any(axis=1)]

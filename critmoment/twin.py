@@ -485,18 +485,16 @@ class Twin:
         if mu is None:
             mu = self.object_friction()
         mu = np.asarray(mu, dtype=np.float64)[..., None]
-        fos_c, touch, normals, tangentials = [], [], [], []
+        fos_c, normals, tangentials = [], [], []
         for adr in self._grip_adr:
             block = sd[..., adr].reshape(lead + (-1, 4))  # (..., slots, [found, fn, ft1, ft2])
             normal = block[..., 1]
             tangential = np.hypot(block[..., 2], block[..., 3])
             fos_c.append(safety.contact_fos(normal, tangential, mu))
-            touch.append((block[..., 0] > 0).any(axis=-1))
             normals.append(normal)
             tangentials.append(tangential)
         fos_contact = np.stack(fos_c, axis=-1)
-        contact_gripper = np.stack(touch, axis=-1)
-        contact_support = (sd[..., self._support_adr] > 0).any(axis=-1)
+        contact_gripper, contact_support = self.contact_flags(sd)
         # eq. 12 over every object-gripper contact: a releasing gripper's slip weighs little
         # next to a gripper that holds; the grip only carries the object off its support
         fos_grasp = safety.contact_fos(np.concatenate(normals, axis=-1),

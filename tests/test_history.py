@@ -192,3 +192,23 @@ def test_the_chain_watches_tracking_as_the_ground_truth_does(scenario, twin):
     assert truth.outcome[0].value == "motor" and truth.slip_step[0] == -1
     np.testing.assert_array_equal(chain.failed, [True, False])
     assert abs(chain.motor_step[0] - truth.motor_step[0]) <= 2
+
+
+def test_a_chain_that_goes_non_finite_between_the_moments_fails(twin, demo_recording):
+    """A simulation whose readings turn NaN between the moments, without MuJoCo raising,
+    has diverged: the watch fails it (it would otherwise pass every rule, NaN comparing
+    false)."""
+    from critmoment.groundtruth import OutcomeCriteria
+
+    ev = sparse.SparseEvaluator(demo_recording, twin)
+    watch = history._Watch(ev, 2, OutcomeCriteria())
+    k, s = 1000, 5
+    model = twin.model
+    sd = np.zeros((2, s, model.nsensordata))
+    xpos = np.zeros((2, s, model.nbody, 3))
+    xmat = np.tile(np.eye(3).ravel(), (2, s, model.nbody, 1))
+    qpos = np.tile(demo_recording.states[k + 1:k + s + 1, 1:1 + model.nq], (2, 1, 1))
+    sd[1, 3, 0] = np.nan
+    watch(k, np.array([0, 1]), sd, xpos, xmat, qpos)
+    np.testing.assert_array_equal(watch.diverged_step, [-1, k + 3])
+    np.testing.assert_array_equal(watch.failed(), [False, True])
