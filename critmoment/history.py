@@ -373,6 +373,9 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
 
     Returns:
         The :class:`ChainedResult`.
+
+    Raises:
+        ParameterError: bad steps, samples, criteria or block.
     """
     ev = evaluator
     samples = ev.check_samples(samples)
@@ -380,6 +383,12 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     first = int(steps[0]) if start is None else int(ev.check_steps([start])[0])
     steps = steps[steps >= first]
     criteria = OutcomeCriteria() if criteria is None else criteria
+    if not isinstance(criteria, OutcomeCriteria):
+        raise ParameterError(f"criteria: expected an OutcomeCriteria, got "
+                             f"{type(criteria).__name__}")
+    if isinstance(block, bool) or not isinstance(block, (int, np.integer)) or block < 1:
+        raise ParameterError(f"block: expected an integer >= 1 (physics steps per batch "
+                             f"call), got {block!r}")
     h = ev.horizon
     carried = np.flatnonzero(ev._carried)
     end = max(int(steps[-1]) + h if steps.size else first,

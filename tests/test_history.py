@@ -42,6 +42,11 @@ def test_bad_options_raise(twin, demo_recording, scenario):
         history.estimate_drift(ev, [100], scenario.box.nominal[None], horizon=2)
     with pytest.raises(ParameterError, match="drift_tolerance"):
         history.estimate_drift(ev, [100], scenario.box.nominal[None], drift_tolerance=0.0)
+    for block in (0, -3, 2.5, True):
+        with pytest.raises(ParameterError, match="block: expected an integer >= 1"):
+            history.chained_failures(ev, [100], scenario.box.nominal[None], block=block)
+    with pytest.raises(ParameterError, match="criteria: expected an OutcomeCriteria"):
+        history.chained_failures(ev, [100], scenario.box.nominal[None], criteria={"x": 1})
 
 
 def test_a_nominal_chain_is_the_nominal_run(scenario, twin, demo_recording):
