@@ -337,11 +337,27 @@ class _Watch:
                    > self.tracking_tolerance)
         flags = {"slip": over[..., None], "drop": lost[..., None], "saturation": saturated,
                  "tracking": lagging}                                 # each (c, s, columns)
-        for j in range(s):
-            for name, (run, need, first_step) in self.rules.items():
-                run[ids] = (run[ids] + 1) * flags[name][:, j]
-                hit = ids[(run[ids] >= need).any(axis=1) & (first_step[ids] < 0)]
-                first_step[hit] = k + j - need + 1
+        for name, (run, need, first_step) in self.rules.items():
+            run[ids], first = _runs(run[ids], flags[name], need)
+            hit = (first >= 0) & (first_step[ids] < 0)
+            first_step[ids[hit]] = k + first[hit] - need + 1
+
+
+def _runs(run: np.ndarray, flags: np.ndarray, need: int) -> tuple[np.ndarray, np.ndarray]:
+    """Streamed run lengths: ``run`` (c, r) steps each column has been on before this
+    block, ``flags`` (c, s, r) whether it is on at each step of the block. Returns the run
+    lengths after the block and, per simulation, the first step of the block at which some
+    column's run reaches ``need`` (-1 if none), as counting step by step would."""
+    c, s, _ = flags.shape
+    if s == 0:
+        return run, np.full(c, -1, np.int64)
+    j = np.arange(s)[None, :, None]
+    # the last step at or before j that was off (-1: on since the block began)
+    last_off = np.maximum.accumulate(np.where(flags, -1, j), axis=1)
+    length = np.where(last_off < 0, run[:, None, :] + j + 1, j - last_off)  # (c, s, r)
+    reached = (length >= need).any(axis=2)                                    # (c, s)
+    first = np.where(reached.any(axis=1), np.argmax(reached, axis=1), -1)
+    return length[:, -1, :], first
 
 
 def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,

@@ -137,6 +137,7 @@ _WARNING_NAMES = tuple(mujoco.mjtWarning(i).name for i in range(mujoco.mjtWarnin
 DEFAULT_CHUNK = 4096
 #: bytes of raw sensor readings one chunk may hold for one moment before it is scored
 _MAX_BUFFER_BYTES = 256 * 2**20
+_MEMO_SIZE = 8  # results of recent evaluate calls an evaluator keeps
 
 
 class SparseMode(enum.Enum):
@@ -675,6 +676,7 @@ class SparseEvaluator:
         self._over: np.ndarray | None = None
         self._kin_data: mujoco.MjData | None = None
         self._batches: collections.OrderedDict[int, mujoco.batch.Batch] = collections.OrderedDict()
+        self._memo: collections.OrderedDict[tuple, SparseResult] = collections.OrderedDict()
         self._written: dict[int, np.ndarray] = {}
         self._mu: dict[int, np.ndarray | float] = {}
 
@@ -824,7 +826,8 @@ class SparseEvaluator:
                 the box fails.
 
         Returns:
-            The :class:`SparseResult`.
+            The :class:`SparseResult`. Its arrays are read-only: the evaluator keeps the
+            results of its recent calls and gives the same result to the same call again.
 
         Raises:
             ParameterError: bad steps or samples.
@@ -832,6 +835,28 @@ class SparseEvaluator:
         """
         steps = self.check_steps(steps)
         samples = self.check_samples(samples)
+        if keep_raw:
+            return self._evaluate(steps, samples, keep_raw=True, first_failure=first_failure)
+        # the same call again (the audit's 1-D curves are also the critical values' grid):
+        # the same, immutable result
+        key = (steps.tobytes(), samples.shape, samples.tobytes(), bool(first_failure))
+        res = self._memo.get(key)
+        if res is None:
+            res = self._evaluate(steps.copy(), samples.copy(), keep_raw=False,
+                                 first_failure=first_failure)
+            for f in dataclasses.fields(res):
+                value = getattr(res, f.name)
+                if isinstance(value, np.ndarray):
+                    value.flags.writeable = False
+            self._memo[key] = res
+            while len(self._memo) > _MEMO_SIZE:
+                self._memo.popitem(last=False)
+        else:
+            self._memo.move_to_end(key)
+        return res
+
+    def _evaluate(self, steps: np.ndarray, samples: np.ndarray, *, keep_raw: bool,
+                  first_failure: bool) -> SparseResult:
         twin, h = self.twin, self.horizon
         m, n = steps.shape[0], samples.shape[0]
         ngrip, nu = len(twin.scenario.grippers), twin.model.nu

@@ -217,3 +217,26 @@ def test_a_chain_that_goes_non_finite_between_the_moments_fails(twin, demo_recor
     watch(k, np.array([0, 1]), sd, xpos, xmat, qpos)
     np.testing.assert_array_equal(watch.diverged_step, [-1, k + 3])
     np.testing.assert_array_equal(watch.failed(), [False, True])
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_streamed_run_lengths_equal_counting_step_by_step(seed):
+    """The watch's vectorised run lengths (history._runs) give the run lengths and the first
+    step a run reaches its length that a step-by-step count gives, across block borders."""
+    rng = np.random.default_rng(seed)
+    c, r, need = 4, 3, 5
+    flags = rng.random((c, 40, r)) < 0.8
+    count = np.zeros((c, r), np.int64)
+    first_loop = np.full(c, -1)
+    for j in range(40):
+        count = (count + 1) * flags[:, j]
+        hit = (count >= need).any(axis=1) & (first_loop < 0)
+        first_loop[hit] = j
+    run = np.zeros((c, r), np.int64)
+    first = np.full(c, -1)
+    for lo in range(0, 40, 7):  # uneven blocks
+        run, f = history._runs(run, flags[:, lo:lo + 7], need)
+        new = (f >= 0) & (first < 0)
+        first[new] = lo + f[new]
+    np.testing.assert_array_equal(run, count)
+    np.testing.assert_array_equal(first, first_loop)
