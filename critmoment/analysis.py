@@ -13,6 +13,7 @@ same path :func:`critmoment.validation.predict` measures.
 
 from __future__ import annotations
 
+import concurrent.futures
 import dataclasses
 import logging
 import platform
@@ -168,7 +169,9 @@ class AuditReport:
         cost_map: (axes, cost grid) of the first two parameters at the worst moment, or None.
         scenario: the scenario.
         options: the options.
-        timings: seconds per stage.
+        timings: seconds per stage, in :data:`STAGES` order (wall time; verification and
+            the chained segments run alongside the critical values and the searches,
+            so the stages overlap and sum to more than the audit).
         manifest: versions, model hash, seed and options.
         failed: per Sobol sample of ``sweep``, whether it fails (sparse evaluation at the
             moments, then the verification rollouts), (n,) bool.
@@ -436,24 +439,35 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     dopt = decision_options(opt, threshold)
     near, unlifted = vd.samples_to_rerun(res, dopt,
                                          nominal_completed=rec.completed)
-    rerun = near | unlifted
-    rerun_failed = np.zeros(len(samples), bool)
     roll = _Rollouts(trajectory, twin, opt.nthread)
-    verification = None
-    if opt.verify is not None and steps.size:
-        with stage("verification"):
-            if rerun.any():
-                rerun_failed[rerun] = roll(samples[rerun])
-    chained, chained_failed = np.zeros(len(samples), bool), np.zeros(len(samples), bool)
-    suspect = np.zeros(len(samples), bool)
-    if dopt.chain and steps.size:
+    # the samples' own runs (verification rollouts, chained segments: physics in MuJoCo's
+    # threads) go on in two more threads, the chain on an evaluator of its own, while this
+    # one computes the critical values and the searches (mostly Python): no result depends
+    # on the overlap
+    rerun = near | unlifted
+    verifying = opt.verify is not None and steps.size > 0
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        verified = pool.submit(_verify, stage, roll, samples, rerun, verifying)
+        chain = pool.submit(_chain, stage, evaluator.fork(), steps, samples, res, rerun, dopt,
+                            rec.completed)
+        with stage("critical values"):
+            curves = _curves(evaluator, steps, box, opt.critical_grid) if steps.size else {}
+            critical = _critical_values(rec, twin, evaluator, steps, opt.critical_grid)
+        searches: dict[int, dict] = {}
+        load_bound = None
+        analytics: dict[int, dict] = {}
+        if opt.search and steps.size:
+            with stage("analytic bounds and search"):
+                analytics, searches = _search_all(rec, twin, evaluator, steps, opt)
+                load_bound = _load_bound(rec, twin)
+        rerun_failed = verified.result()
+        chained, chained_failed, suspect = chain.result()
+    if suspect.any() and verifying:
         with stage("chained segments"):
-            chained, chained_failed, suspect = chain_samples(
-                evaluator, steps, samples, res, rerun, dopt, nominal_completed=rec.completed)
-            if suspect.any() and opt.verify is not None:
-                # failed only by the force ratio on its own path: its own rollout decides
-                rerun_failed[suspect] = roll(samples[suspect])
-                rerun = rerun | suspect
+            # failed only by the force ratio on its own path: its own rollout decides
+            rerun_failed[suspect] = roll(samples[suspect])
+            rerun = rerun | suspect
+    verification = None
     sample_evidence = vd.SampleEvidence(sweep=res,
                                         nominal_completed=rec.completed, rerun=rerun,
                                         rerun_failed=rerun_failed, chained=chained,
@@ -470,16 +484,6 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                         "chained": int(chained.sum()),
                         "chained_failed": int(chained_failed[chained & ~rerun].sum()),
                         "chained_rolled_out": int(suspect.sum())}
-    with stage("critical values"):
-        curves = _curves(evaluator, steps, box, opt.critical_grid) if steps.size else {}
-        critical = _critical_values(rec, twin, evaluator, steps, opt.critical_grid)
-    searches: dict[int, dict] = {}
-    load_bound = None
-    analytics: dict[int, dict] = {}
-    if opt.search and steps.size:
-        with stage("analytic bounds and search"):
-            analytics, searches = _search_all(rec, twin, evaluator, steps, opt)
-            load_bound = _load_bound(rec, twin)
     moment_reports = []
     worst_failed_sparse: dict[int, bool] = {}  # per moment: its worst case fails (sparse)
     worst_unlifted: dict[int, bool] = {}  # per failing moment: its worst case is unlifted
@@ -574,11 +578,47 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         safe_region=decision.safe_region, safe_region_text=decision.safe_region_text,
         failure_causes=decision.causes,
         nominal_cost=nominal_cost, recording=rec, sweep=res, curves=curves, cost_map=cost_map,
-        scenario=sc, options=opt, timings=timings, manifest=manifest, failed=decision.failed,
+        scenario=sc, options=opt, timings=_in_order(timings), manifest=manifest, failed=decision.failed,
         verification=verification, region_check=region_check, feasibility=feasibility,
         contact_model=contact, load_bound=load_bound,
         force_ratio_untrusted=tuple(int(k) for k, ok in zip(
             steps, evaluator.contact_trusted(steps), strict=True) if not ok))
+
+
+def _verify(stage, roll: _Rollouts, samples: np.ndarray, rerun: np.ndarray,
+            run: bool) -> np.ndarray:
+    """The real outcomes (failed, (n,) bool) of the samples the sweep cannot decide
+    (``rerun``: near the threshold, unlifted), by their own full rollouts."""
+    failed = np.zeros(len(samples), bool)
+    if run:
+        with stage("verification"):
+            if rerun.any():
+                failed[rerun] = roll(samples[rerun])
+    return failed
+
+
+def _chain(stage, evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.ndarray,
+           sweep: sp.SparseResult, rerun: np.ndarray, dopt: vd.DecisionOptions,
+           nominal_completed: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The chained segments of the samples that pass without a rollout of their own
+    (:func:`chain_samples`)."""
+    n = len(samples)
+    if not (dopt.chain and steps.size):
+        return np.zeros(n, bool), np.zeros(n, bool), np.zeros(n, bool)
+    with stage("chained segments"):
+        return chain_samples(evaluator, steps, samples, sweep, rerun, dopt,
+                             nominal_completed=nominal_completed)
+
+
+#: the stages in the order they start (verification and the chained segments run alongside
+#: the critical values and the searches)
+STAGES = ("rollout", "moments", "sweep", "verification", "chained segments", "critical values",
+          "analytic bounds and search", "safe region check")
+
+
+def _in_order(timings: Mapping[str, float]) -> dict[str, float]:
+    """The stage timings in :data:`STAGES` order, whichever thread finished first."""
+    return {name: timings[name] for name in STAGES if name in timings}
 
 
 def _load_bound(rec: Recording, twin: Twin) -> dict | None:

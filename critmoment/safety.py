@@ -11,7 +11,7 @@ import numpy as np
 
 from critmoment.scenario import CostParams
 
-__all__ = ["contact_fos", "motor_fos", "cost", "task_stage"]
+__all__ = ["contact_fos", "contact_load", "fos_ratio", "motor_fos", "cost", "task_stage"]
 
 
 def contact_fos(normal: np.ndarray, tangential: np.ndarray, mu: np.ndarray | float,
@@ -31,16 +31,26 @@ def contact_fos(normal: np.ndarray, tangential: np.ndarray, mu: np.ndarray | flo
     Returns:
         (...) factor of safety; +inf where there is no contact or no tangential demand.
     """
+    return fos_ratio(*contact_load(normal, tangential, mu, cohesion))
+
+
+def contact_load(normal: np.ndarray, tangential: np.ndarray, mu: np.ndarray | float,
+                 cohesion: np.ndarray | float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """The two sums of eq. 12 over the contacts (last axis): (Σ λn_i, Σ λn_i · λt_i /
+    (c_i + μ_i λn_i)), each (...). Sums over several grippers' contacts add up, and
+    :func:`fos_ratio` of the totals is the FOS of all the contacts together."""
     normal = np.asarray(normal, dtype=np.float64)
     tangential = np.asarray(tangential, dtype=np.float64)
-    mu = np.asarray(mu, dtype=np.float64)
-    capacity = cohesion + mu * normal
+    capacity = cohesion + np.asarray(mu, dtype=np.float64) * normal
     with np.errstate(divide="ignore", invalid="ignore"):
         use = np.where(capacity > 0, normal * tangential / capacity, 0.0)
-        demand = use.sum(axis=-1)
-        total = normal.sum(axis=-1)
-        fos = np.where(demand > 0, total / demand, np.inf)
-    return fos
+    return normal.sum(axis=-1), use.sum(axis=-1)
+
+
+def fos_ratio(total: np.ndarray, demand: np.ndarray) -> np.ndarray:
+    """The contact FOS Σλn / demand from :func:`contact_load`'s sums; +inf without demand."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(demand > 0, total / demand, np.inf)
 
 
 def motor_fos(force: np.ndarray, limit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

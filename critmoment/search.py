@@ -815,52 +815,75 @@ def _smooth_cost(bounds: AnalyticBounds, kappa: float):
     return m, mu, cost
 
 
-def _first_crossing(f, lo: float, hi: float, threshold: float, *, from_high: bool = False
-                    ) -> tuple[float | None, bool]:
-    """First x in [lo, hi] (scanning up, or down with from_high) where f(x) > threshold.
+def _first_crossings(f, lo: float, hi: float, threshold: float, rows: int, *,
+                     from_high: bool = False, split: int = 15
+                     ) -> list[tuple[float | None, bool]]:
+    """Per row r, the first x in [lo, hi] (scanning up, or down with ``from_high``) where
+    f(x)[r] > threshold; ``f`` maps x (rows, p) to the values (rows, p).
 
-    Returns (x refined by Brent, or None if f never exceeds the threshold; fails at the
-    scan's start).
+    A scan of ``_SCAN`` points brackets each crossing; every bracket is then refined at
+    once, ``split`` interior points per round, to 1e-12 relative. Returns, per row, (the
+    crossing, the bracket's failing end: f exceeds the threshold there; or None if f never
+    exceeds it; fails at the scan's start).
     """
-    from scipy.optimize import brentq
-
     if hi <= lo:
-        return (lo if f(np.array([lo]))[0] > threshold else None), False
+        bad = f(np.full((rows, 1), lo))[:, 0] > threshold
+        return [(lo if b else None, False) for b in bad]
     xs = np.linspace(lo, hi, _SCAN)
     if from_high:
         xs = xs[::-1]
-    bad = f(xs) > threshold
-    if not bad.any():
-        return None, False
-    i = int(np.argmax(bad))
-    if i == 0:
-        return float(xs[0]), True
-    a, b = float(xs[i - 1]), float(xs[i])
-    g = lambda x: float(f(np.array([x]))[0]) - threshold  # noqa: E731
-    if g(a) * g(b) > 0:  # pragma: no cover - a jump exactly at a grid point
-        return b, False
-    return float(brentq(g, min(a, b), max(a, b), xtol=1e-12 * max(1.0, abs(b)))), False
+    bad = f(np.tile(xs, (rows, 1))) > threshold
+    first = np.argmax(bad, axis=1)
+    inside = bad.any(axis=1) & (first > 0)
+    a = xs[np.maximum(first - 1, 0)]  # the passing end of each bracket
+    b = xs[first]                     # the failing end
+    fractions = np.arange(1, split + 1) / (split + 1)
+    open_ = inside.copy()
+    while open_.any():
+        pts = a[:, None] + (b - a)[:, None] * fractions[None]        # (rows, split)
+        fails = f(pts) > threshold
+        q = np.where(fails.any(axis=1), np.argmax(fails, axis=1), split)
+        at = np.arange(rows)
+        new_a = np.where(q > 0, pts[at, np.maximum(q - 1, 0)], a)
+        new_b = np.where(q < split, pts[at, np.minimum(q, split - 1)], b)
+        a, b = np.where(open_, new_a, a), np.where(open_, new_b, b)
+        open_ &= np.abs(b - a) > 1e-12 * np.maximum(1.0, np.abs(b))
+    out = []
+    for r in range(rows):
+        if not bad[r].any():
+            out.append((None, False))
+        elif first[r] == 0:
+            out.append((float(xs[0]), True))
+        else:
+            out.append((float(b[r]), False))  # its failing end: f(x) > threshold there
+    return out
 
 
 def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SMOOTHING,
-                        n_boundary: int = 9, max_iter: int = 200) -> AnalyticWorstCase:
+                        n_boundary: int = 9, max_iter: int = 200,
+                        grid: int = 33) -> AnalyticWorstCase:
     """Maximise the analytic cost over the box with IPOPT and trace its failure boundary.
 
     The smooth model: |τ| ≈ sqrt(τ² + ε²), the motor FOS is the reciprocal of a log-sum-exp
     smooth maximum of the joint utilisations |τ_j|/τmax_j (sharpness ``smoothing``; it never
     exceeds the true FOS and is within ln(n)/κ of its reciprocal), the contact FOS is exact
-    (one grasp) or a smooth maximum over grasps. IPOPT starts from every box corner, the
-    nominal point and the centre; the answer is the start whose *exact* closed-form cost is
-    highest. The boundary C(m, μ) = threshold is solved on the exact closed form: for each
-    of ``n_boundary`` friction values a scan of the mass range brackets the first crossing and
-    Brent's method refines it (a 1-D root of a closed form: bracketing cannot miss it, where a
-    local optimiser could stop at the wrong side of a kink of the exact minimum).
+    (one grasp) or a smooth maximum over grasps. The exact closed form is first evaluated
+    on a ``grid`` × ``grid`` lattice of the box (one vectorised call); IPOPT starts from its
+    highest point and from the nominal point; the answer is the candidate (the box corners,
+    the nominal point, the centre, the lattice's highest point, IPOPT's solutions) whose
+    *exact* closed-form cost is highest. The boundary C(m, μ) = threshold is solved on the
+    exact closed form: for each of ``n_boundary`` friction values a scan of the mass range
+    brackets the first crossing and a vectorised multi-point bisection refines every
+    bracket at once to 1e-12 relative (a 1-D root of a closed form: bracketing cannot miss
+    it, where a local optimiser could stop at the wrong side of a kink of the exact
+    minimum).
 
     Args:
         bounds: from :func:`analytic_bounds`.
         smoothing: κ of the smooth maximum (> 0).
         n_boundary: friction values of the boundary (>= 1), evenly spaced over the range.
         max_iter: IPOPT iteration limit per start.
+        grid: lattice points per parameter of the exact cost that seed IPOPT (>= 2).
 
     Returns:
         The :class:`AnalyticWorstCase`.
@@ -870,6 +893,7 @@ def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SM
     smoothing = _check_positive("smoothing", smoothing)
     n_boundary = _check_int("n_boundary", n_boundary, 1)
     max_iter = _check_int("max_iter", max_iter, 1)
+    grid = _check_int("grid", grid, 2)
     (m_lo, m_hi), (f_lo, f_hi) = bounds.mass_range, bounds.friction_range
     lo, hi = np.array([m_lo, f_lo]), np.array([m_hi, f_hi])
     span = np.where(hi > lo, hi - lo, 1.0)
@@ -881,13 +905,22 @@ def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SM
                        {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
                         "ipopt.max_iter": max_iter, "ipopt.tol": 1e-10})
     ub = np.where(hi > lo, 1.0, 0.0)
-    starts = [np.array(c, dtype=float) for c in ((1, 0), (1, 1), (0, 0), (0, 1))]
     nominal = (np.array([bounds.mass_nominal, bounds.friction_nominal]) - lo) / span
-    starts += [nominal, np.full(2, 0.5)]
-    # the starts themselves are candidates too, first, so that a flat cost (nothing depends
-    # on the parameters) reports the heaviest, most slippery corner rather than where IPOPT
-    # happened to stop
-    candidates = [lo + span * np.minimum(s, ub) for s in starts]
+    # the corners, the nominal point and the centre are candidates, first, so that a flat
+    # cost (nothing depends on the parameters) reports the heaviest, most slippery corner
+    # rather than where IPOPT happened to stop; then the exact cost's highest lattice point
+    points = [np.array(c, dtype=float) for c in ((1, 0), (1, 1), (0, 0), (0, 1))]
+    points += [nominal, np.full(2, 0.5)]
+    lattice = np.stack(np.meshgrid(np.linspace(0.0, 1.0, grid), np.linspace(0.0, 1.0, grid),
+                                   indexing="ij"), axis=-1).reshape(-1, 2) * ub
+    on_lattice = lo + span * lattice
+    with np.errstate(invalid="ignore"):
+        exact_lattice = np.nan_to_num(bounds.cost(on_lattice[:, 0], on_lattice[:, 1]),
+                                      nan=-np.inf)
+    top = lattice[int(np.argmax(exact_lattice))]
+    points.append(top)
+    candidates = [lo + span * np.minimum(s, ub) for s in points]
+    starts = [top, nominal]
     status = []
     for s in starts:
         sol = solver(x0=np.minimum(s, ub), lbx=np.zeros(2), ubx=ub)
@@ -906,18 +939,17 @@ def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SM
     term_m = cp.B * math.exp(-cp.beta * (fos_m - 1.0)) if math.isfinite(fos_m) else 0.0
     total = term_c + term_m
 
-    boundary = []
     frictions = (np.linspace(f_lo, f_hi, n_boundary) if n_boundary > 1
                  else np.array([bounds.friction_nominal]))
-    for f in frictions:
-        crit, everywhere = _first_crossing(lambda ms, f=f: bounds.cost(ms, f), m_lo, m_hi,
-                                           cp.threshold)
-        boundary.append(BoundaryPoint(friction=float(f), critical_mass=crit,
-                                      fails_everywhere=everywhere))
-    crit_m, _ = _first_crossing(lambda ms: bounds.cost(ms, bounds.friction_nominal),
-                                m_lo, m_hi, cp.threshold)
-    crit_f, _ = _first_crossing(lambda fs: bounds.cost(bounds.mass_nominal, fs), f_lo, f_hi,
-                                cp.threshold, from_high=True)
+    # the boundary's mass crossings, and last the one at the nominal friction
+    at_friction = np.append(frictions, bounds.friction_nominal)[:, None]
+    crossings = _first_crossings(lambda ms: bounds.cost(ms, at_friction), m_lo, m_hi,
+                                 cp.threshold, at_friction.shape[0])
+    boundary = [BoundaryPoint(friction=float(f), critical_mass=crit, fails_everywhere=everywhere)
+                for f, (crit, everywhere) in zip(frictions, crossings[:-1], strict=True)]
+    crit_m = crossings[-1][0]
+    (crit_f, _), = _first_crossings(lambda fs: bounds.cost(bounds.mass_nominal, fs), f_lo,
+                                    f_hi, cp.threshold, 1, from_high=True)
     return AnalyticWorstCase(
         step=bounds.step, parameters=bounds.parameters_at(m_w, f_w), cost=total,
         fos_motor=fos_m, fos_contact=fos_c,

@@ -86,6 +86,7 @@ estimate with a Wilson interval).
 from __future__ import annotations
 
 import collections
+import copy
 import dataclasses
 import enum
 import logging
@@ -679,6 +680,19 @@ class SparseEvaluator:
         self._memo: collections.OrderedDict[tuple, SparseResult] = collections.OrderedDict()
         self._written: dict[int, np.ndarray] = {}
         self._mu: dict[int, np.ndarray | float] = {}
+
+    def fork(self) -> SparseEvaluator:
+        """An evaluator of the same recording and settings with simulations and caches of
+        its own, for another thread (an evaluator is not safe to share between threads;
+        its results do not depend on which copy computes them)."""
+        self._nominal_over()  # computed once, shared read-only
+        other = copy.copy(self)
+        other._batches = collections.OrderedDict()
+        other._memo = collections.OrderedDict()
+        other._written, other._mu = {}, {}
+        other._kin_data = None
+        other._nominal_rel = self._nominal_rel.copy()
+        return other
 
     def __repr__(self) -> str:
         return (f"SparseEvaluator(steps={self.n_steps}, horizon={self.horizon}, "

@@ -485,20 +485,24 @@ class Twin:
         if mu is None:
             mu = self.object_friction()
         mu = np.asarray(mu, dtype=np.float64)[..., None]
-        fos_c, normals, tangentials = [], [], []
+        # eq. 12 per gripper, and over every object-gripper contact for the grasp: a
+        # releasing gripper's slip weighs little next to a gripper that holds
+        fos_c, totals, demands, touch = [], [], [], []
         for adr in self._grip_adr:
             block = sd[..., adr].reshape(lead + (-1, 4))  # (..., slots, [found, fn, ft1, ft2])
             normal = block[..., 1]
-            tangential = np.hypot(block[..., 2], block[..., 3])
-            fos_c.append(safety.contact_fos(normal, tangential, mu))
-            normals.append(normal)
-            tangentials.append(tangential)
-        fos_contact = np.stack(fos_c, axis=-1)
-        contact_gripper, contact_support = self.contact_flags(sd)
-        # eq. 12 over every object-gripper contact: a releasing gripper's slip weighs little
-        # next to a gripper that holds; the grip only carries the object off its support
-        fos_grasp = safety.contact_fos(np.concatenate(normals, axis=-1),
-                                       np.concatenate(tangentials, axis=-1), mu)
+            total, demand = safety.contact_load(normal, np.hypot(block[..., 2], block[..., 3]),
+                                                mu)
+            fos_c.append(safety.fos_ratio(total, demand))
+            totals.append(total)
+            demands.append(demand)
+            touch.append((block[..., 0] > 0).any(axis=-1))
+        fos_contact = (np.stack(fos_c, axis=-1) if fos_c
+                       else np.zeros(lead + (0,)))
+        contact_gripper = (np.stack(touch, axis=-1) if touch else np.zeros(lead + (0,), bool))
+        contact_support = (sd[..., self._support_adr] > 0).any(axis=-1)
+        # the grip only carries the object off its support
+        fos_grasp = safety.fos_ratio(sum(totals, np.zeros(lead)), sum(demands, np.zeros(lead)))
         if carried is None:
             carried = self.task.must_carry(contact_gripper, contact_support)
         # carried but touched by no gripper: the object is falling (FOS 0, a failure)
