@@ -686,12 +686,13 @@ class SparseEvaluator:
         its own, for another thread (an evaluator is not safe to share between threads;
         its results do not depend on which copy computes them)."""
         self._nominal_over()  # computed once, shared read-only
+        if self._anchors.size:
+            self._nominal_positions(0, self._nominal_rel.shape[0])
         other = copy.copy(self)
         other._batches = collections.OrderedDict()
         other._memo = collections.OrderedDict()
         other._written, other._mu = {}, {}
         other._kin_data = None
-        other._nominal_rel = self._nominal_rel.copy()
         return other
 
     def __repr__(self) -> str:
@@ -1183,11 +1184,16 @@ class SparseEvaluator:
             if self._kin_data is None:
                 self._kin_data = mujoco.MjData(model)
             data = self._kin_data
-            for j in missing:
+            bodies = np.append(self._anchors, self.twin.object_body_id)
+            xpos = np.empty((missing.size, bodies.size, 3))
+            xmat = np.empty((missing.size, bodies.size, 9))
+            for r, j in enumerate(missing):
                 mujoco.mj_setState(model, data, self._states[k + j], STATE_SPEC)
                 mujoco.mj_kinematics(model, data)
-                part[j] = _object_in_grippers(data.xpos[None, None], data.xmat[None, None],
-                                              self.twin.object_body_id, self._anchors)[0, 0]
+                xpos[r] = data.xpos[bodies]
+                xmat[r] = data.xmat[bodies]
+            g = self._anchors.size
+            part[missing] = _object_in_grippers(xpos[None], xmat[None], g, np.arange(g))[0]
         return part
 
     def _score(self, buf: np.ndarray, mu: np.ndarray | float, diverged: np.ndarray,
