@@ -1,16 +1,22 @@
 """One audit vs one frequent rollout vs brute-force full rollouts, side by side in one run.
 
-    python benchmarks/bench_analyze.py [--samples 256] [--seed 0] [--threads 0] [--render-only]
+    python benchmarks/bench_analyze.py [--samples 256] [--seed 0] [--threads 0] [--repeat 3]
+                                       [--render-only]
 
 Prints the wall time of (a) one audit's computation (``analysis.analyze``) and, side by side,
 the rendering of its report (report.json, figures, report.html; ``report.write_report``) for
 each figure set (none, summary: the default, all), (b) one nominal frequent rollout, (c)
 brute-force full rollouts of the whole trajectory for the same parameter samples the verdict
-uses (batched through ``mujoco.batch``, all threads), and the ratios. Ends with
-``ratio audit/brute-force: R``. ``--render-only`` stops after the audit/render table.
+uses (batched through ``mujoco.batch``, all threads), and the ratios. The audit and the
+brute force run ``--repeat`` times, alternating, and the figures are medians (on a shared
+machine one run of either can be 30 % off); the per-repeat ratios are printed too. The
+stages of the audit overlap (``analysis.STAGES``). Ends with ``ratio audit/brute-force: R``
+(median audit over median brute force). ``--render-only`` stops after the audit/render
+table.
 """
 
 import argparse
+import statistics
 import tempfile
 import time
 import warnings
@@ -26,9 +32,13 @@ def main():
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--threads", type=int, default=0)
     parser.add_argument("--chunk", type=int, default=32, help="simulations per brute-force batch")
+    parser.add_argument("--repeat", type=int, default=3,
+                        help="audit and brute-force runs, alternating (medians are reported)")
     parser.add_argument("--render-only", action="store_true",
                         help="only the audit and report rendering times")
     args = parser.parse_args()
+    if args.repeat < 1:
+        parser.error(f"--repeat: expected >= 1, got {args.repeat}")
     warnings.simplefilter("ignore")
 
     twin = cm.Twin(cm.load_scenario())
@@ -61,11 +71,22 @@ def main():
     samples = sparse.sweep_samples(twin.scenario.box, n=args.samples, seed=args.seed)
     controls = prepare_controls(twin, traj)
     state0 = initial_state(twin, traj)
-    t0 = time.perf_counter()
-    for _ in batched_rollouts(twin, state0, controls, samples, chunk=args.chunk,
-                              nthread=args.threads):
-        pass
-    t_brute = time.perf_counter() - t0
+
+    def brute():
+        t0 = time.perf_counter()
+        for _ in batched_rollouts(twin, state0, controls, samples, chunk=args.chunk,
+                                  nthread=args.threads):
+            pass
+        return time.perf_counter() - t0
+
+    audits, brutes, stage_runs = [t_audit], [brute()], [audit.timings]
+    for _ in range(args.repeat - 1):
+        t0 = time.perf_counter()
+        again = analysis.analyze(traj, twin=twin, options=opts)
+        audits.append(time.perf_counter() - t0)
+        stage_runs.append(again.timings)
+        brutes.append(brute())
+    t_audit, t_brute = statistics.median(audits), statistics.median(brutes)
 
     print(f"trajectory: {traj.source}, {controls.shape[0]} physics steps; "
           f"{args.samples} parameter samples; audit verdict {audit.verdict.value}, "
@@ -73,15 +94,18 @@ def main():
           f"horizon {audit.sweep.horizon}; verification: "
           f"{(audit.verification or {}).get('rollouts', 0)} full rollouts")
     print(f"{'what':44s} {'seconds':>10s}")
-    print(f"{'audit computation (analyze)':44s} {t_audit:10.3f}")
-    for stage, sec in audit.timings.items():
+    print(f"{f'audit computation (analyze), median of {len(audits)}':44s} {t_audit:10.3f}")
+    for stage in audit.timings:
+        sec = statistics.median(run.get(stage, 0.0) for run in stage_runs)
         print(f"{'  ' + stage:44s} {sec:10.3f}")
     for figures, sec in t_render.items():
         print(f"{f'report rendering, figures {figures}':44s} {sec:10.3f}")
     print(f"{'one frequent rollout (nominal)':44s} {t_rollout:10.3f}")
-    print(f"{f'brute force: {args.samples} full rollouts':44s} {t_brute:10.3f}")
+    print(f"{f'brute force: {args.samples} full rollouts, median':44s} {t_brute:10.3f}")
     print(f"audit / frequent rollout: {t_audit / t_rollout:.2f} rollouts")
     print(f"brute force / audit: {t_brute / t_audit:.1f}x")
+    print("per repeat (audit s / brute force s = ratio): " + "; ".join(
+        f"{a:.2f} / {b:.2f} = {a / b:.3f}" for a, b in zip(audits, brutes, strict=True)))
     print(f"ratio audit/brute-force: {t_audit / t_brute:.4f}")
 
 
