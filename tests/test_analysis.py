@@ -411,3 +411,39 @@ def test_the_report_says_where_the_force_ratio_does_not_decide(scenario, demo_tr
     assert doc["contact_model"]["force_ratio_untrusted_at"] == list(r.force_ratio_untrusted)
     assert "force ratio not trusted" in summary_text(r)
     assert r.verdict is not Verdict.UNSAFE  # the nominal passes: its run completes
+
+
+def test_threaded_audit_equals_a_sequential_one(twin, demo_traj, nominal_report, monkeypatch):
+    """The verification rollouts and the chained segments run in threads alongside the
+    critical values and the searches; the report is the one a sequential run gives, and the
+    timings are listed in STAGES order."""
+    import concurrent.futures
+
+    from critmoment import analysis
+
+    class Done:
+        def __init__(self, value):
+            self.value = value
+
+        def result(self):
+            return self.value
+
+    class InLine:
+        def __init__(self, **_):
+            pass
+
+        def __enter__(self):
+            return self
+
+        def __exit__(self, *exc):
+            return False
+
+        def submit(self, fn, *args, **kwargs):
+            return Done(fn(*args, **kwargs))
+
+    assert analysis.concurrent.futures.ThreadPoolExecutor is concurrent.futures.ThreadPoolExecutor
+    monkeypatch.setattr(analysis.concurrent.futures, "ThreadPoolExecutor", InLine)
+    sequential = analyze(demo_traj, twin=twin, options=FAST)
+    assert sequential.to_json(timings=False) == nominal_report.to_json(timings=False)
+    order = [analysis.STAGES.index(k) for k in nominal_report.timings]
+    assert order == sorted(order)

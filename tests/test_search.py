@@ -484,3 +484,21 @@ def importlib_find(name):
 def test_public_names_exist():
     for name in search.__all__:
         assert hasattr(search, name), name
+
+
+def test_first_crossings_find_closed_form_roots_in_one_vectorised_bisection():
+    """search._first_crossings: per row the first x where f(x) > threshold (scanning up or
+    down), to 1e-12 relative, on the failing side; None where f never exceeds it; the scan's
+    start where it fails there."""
+    scale = np.array([[1.0], [4.0], [0.01], [100.0]])
+    f = lambda x: scale * x * x  # noqa: E731
+    out = search._first_crossings(f, 0.0, 2.0, 1.0, 4)
+    assert out[2] == (None, False)  # 0.01 x² never exceeds 1 on [0, 2]
+    assert out[3][1] is False and out[3][0] == pytest.approx(0.1, rel=1e-11)
+    for (x, everywhere), s in zip(out[:2], (1.0, 4.0), strict=True):
+        assert not everywhere and x == pytest.approx(1.0 / math.sqrt(s), rel=1e-11)
+        assert s * x * x > 1.0  # the failing end of the bracket
+    down = search._first_crossings(lambda x: 1.0 / np.maximum(x, 1e-9), 0.1, 2.0, 2.0, 1,
+                                   from_high=True)
+    assert down[0][0] == pytest.approx(0.5, rel=1e-11) and 1.0 / down[0][0] > 2.0
+    assert search._first_crossings(lambda x: 0 * x + 5.0, 0.0, 1.0, 1.0, 1) == [(0.0, True)]

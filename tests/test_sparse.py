@@ -720,3 +720,24 @@ def test_where_the_nominal_grip_touches_the_cone_a_contact_failure_needs_movemen
     assert not res.failed_any[0]
     assert (res.fos_grasp[:, 0] < 1.2).any()  # the ratio does sit at the cone somewhere
     assert (res.slip[:, 0] < sparse.SLIP_FLOOR * ev.settings.slip_tolerance).all()
+
+
+def test_repeated_evaluate_returns_the_same_read_only_result(scenario, twin, demo_recording):
+    """An evaluator gives the same call its kept result again (read-only arrays), without
+    freezing the caller's arrays; a fork computes the same result on simulations of its own."""
+    ev = SparseEvaluator(demo_recording, twin)
+    steps = [_lift_step(demo_recording)]
+    samples = sparse.sweep_samples(scenario.box, n=6, seed=1)
+    first = ev.evaluate(steps, samples)
+    assert ev.evaluate(steps, samples) is first
+    assert not first.cost.flags.writeable and not first.samples.flags.writeable
+    assert samples.flags.writeable  # the caller's array is not frozen
+    with pytest.raises(ValueError):
+        first.cost[0, 0] = 0.0
+    assert ev.evaluate(steps, samples, first_failure=True) is not first
+    fork = ev.fork()
+    assert fork._batches is not ev._batches and fork._memo is not ev._memo
+    again = fork.evaluate(steps, samples)
+    assert again is not first
+    np.testing.assert_array_equal(again.cost, first.cost)
+    np.testing.assert_array_equal(again.failure, first.failure)
