@@ -1,7 +1,7 @@
 """One audit vs one frequent rollout vs brute-force full rollouts, side by side in one run.
 
     python benchmarks/bench_analyze.py [--samples 256] [--seed 0] [--threads 0] [--repeat 3]
-                                       [--render-only]
+                                       [--pause 5] [--render-only]
 
 Prints the wall time of (a) one audit's computation (``analysis.analyze``) and, side by side,
 the rendering of its report (report.json, figures, report.html; ``report.write_report``) for
@@ -9,7 +9,9 @@ each figure set (none, summary: the default, all), (b) one nominal frequent roll
 brute-force full rollouts of the whole trajectory for the same parameter samples the verdict
 uses (batched through ``mujoco.batch``, all threads), and the ratios. The audit and the
 brute force run ``--repeat`` times, alternating, and the figures are medians (on a shared
-machine one run of either can be 30 % off); the per-repeat ratios are printed too. The
+machine one run of either can be 30 % off), each timed run after ``--pause`` seconds of rest
+(so that neither starts on cores the other has just loaded for seconds); the per-repeat
+ratios are printed too. The
 stages of the audit overlap (``analysis.STAGES``). Ends with ``ratio audit/brute-force: R``
 (median audit over median brute force). ``--render-only`` stops after the audit/render
 table.
@@ -34,6 +36,8 @@ def main():
     parser.add_argument("--chunk", type=int, default=32, help="simulations per brute-force batch")
     parser.add_argument("--repeat", type=int, default=3,
                         help="audit and brute-force runs, alternating (medians are reported)")
+    parser.add_argument("--pause", type=float, default=5.0,
+                        help="seconds of rest before each timed run")
     parser.add_argument("--render-only", action="store_true",
                         help="only the audit and report rendering times")
     args = parser.parse_args()
@@ -46,6 +50,7 @@ def main():
     opts = analysis.AnalyzeOptions(seed=args.seed, n_samples=args.samples, nthread=args.threads)
     analysis.analyze(traj, twin=twin, options=opts)  # warm-up (imports, first batch)
 
+    time.sleep(args.pause)
     t0 = time.perf_counter()
     audit = analysis.analyze(traj, twin=twin, options=opts)
     t_audit = time.perf_counter() - t0
@@ -73,6 +78,7 @@ def main():
     state0 = initial_state(twin, traj)
 
     def brute():
+        time.sleep(args.pause)
         t0 = time.perf_counter()
         for _ in batched_rollouts(twin, state0, controls, samples, chunk=args.chunk,
                                   nthread=args.threads):
@@ -81,6 +87,7 @@ def main():
 
     audits, brutes, stage_runs = [t_audit], [brute()], [audit.timings]
     for _ in range(args.repeat - 1):
+        time.sleep(args.pause)
         t0 = time.perf_counter()
         again = analysis.analyze(traj, twin=twin, options=opts)
         audits.append(time.perf_counter() - t0)

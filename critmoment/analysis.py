@@ -72,7 +72,8 @@ class AnalyzeOptions:
         critical_grid: grid points per parameter for the critical values.
         confidence: confidence level of the P(success) interval.
         min_success: P(success) at which ``passes`` accepts a non-SAFE verdict.
-        nthread: threads for MuJoCo's batch (0: all CPUs).
+        nthread: threads for MuJoCo's batch (0: all CPUs). With 1 the audit runs in one
+            thread throughout (its own runs do not overlap the other stages).
         map_resolution: cells per axis of the mass × friction cost map, the nearest Sobol
             sample's cost per cell (0 to skip).
         chain: carry every sample that passes at the moments without a rollout of its own on
@@ -446,7 +447,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     # on the overlap
     rerun = near | unlifted
     verifying = opt.verify is not None and steps.size > 0
-    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+    with _pool(opt.nthread) as pool:
         verified = pool.submit(_verify, stage, roll, samples, rerun, verifying)
         chain = pool.submit(_chain, stage, evaluator.fork(), steps, samples, res, rerun, dopt,
                             rec.completed)
@@ -608,6 +609,37 @@ def _chain(stage, evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
     with stage("chained segments"):
         return chain_samples(evaluator, steps, samples, sweep, rerun, dopt,
                              nominal_completed=nominal_completed)
+
+
+class _Done:
+    """A finished call, as a future."""
+
+    def __init__(self, value):
+        self._value = value
+
+    def result(self):
+        return self._value
+
+
+class _InLine:
+    """An executor that runs each call where it is submitted (a one-thread audit)."""
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        return False
+
+    def submit(self, fn, *args, **kwargs):
+        return _Done(fn(*args, **kwargs))
+
+
+def _pool(nthread: int):
+    """Two threads for the samples' own runs, or none when the audit is asked for one
+    thread (``nthread`` 1)."""
+    if nthread == 1:
+        return _InLine()
+    return concurrent.futures.ThreadPoolExecutor(max_workers=2)
 
 
 #: the stages in the order they start (verification and the chained segments run alongside

@@ -413,37 +413,22 @@ def test_the_report_says_where_the_force_ratio_does_not_decide(scenario, demo_tr
     assert r.verdict is not Verdict.UNSAFE  # the nominal passes: its run completes
 
 
-def test_threaded_audit_equals_a_sequential_one(twin, demo_traj, nominal_report, monkeypatch):
+def test_threaded_audit_equals_a_sequential_one(twin, demo_traj, nominal_report):
     """The verification rollouts and the chained segments run in threads alongside the
-    critical values and the searches; the report is the one a sequential run gives, and the
-    timings are listed in STAGES order."""
-    import concurrent.futures
+    critical values and the searches; the report is the one a one-thread audit
+    (``nthread=1``: no overlap, one MuJoCo thread) gives, and the timings are listed in
+    STAGES order."""
+    import dataclasses
 
     from critmoment import analysis
 
-    class Done:
-        def __init__(self, value):
-            self.value = value
-
-        def result(self):
-            return self.value
-
-    class InLine:
-        def __init__(self, **_):
-            pass
-
-        def __enter__(self):
-            return self
-
-        def __exit__(self, *exc):
-            return False
-
-        def submit(self, fn, *args, **kwargs):
-            return Done(fn(*args, **kwargs))
-
-    assert analysis.concurrent.futures.ThreadPoolExecutor is concurrent.futures.ThreadPoolExecutor
-    monkeypatch.setattr(analysis.concurrent.futures, "ThreadPoolExecutor", InLine)
-    sequential = analyze(demo_traj, twin=twin, options=FAST)
-    assert sequential.to_json(timings=False) == nominal_report.to_json(timings=False)
+    assert isinstance(analysis._pool(1), analysis._InLine)
+    sequential = analyze(demo_traj, twin=twin, options=dataclasses.replace(FAST, nthread=1))
+    assert sequential.to_json(timings=False)["verdict"] == nominal_report.verdict.value
+    keep = nominal_report.to_json(timings=False)
+    again = sequential.to_json(timings=False)
+    keep["manifest"]["options"].pop("nthread", None)
+    again["manifest"]["options"].pop("nthread", None)
+    assert again == keep
     order = [analysis.STAGES.index(k) for k in nominal_report.timings]
     assert order == sorted(order)
