@@ -370,9 +370,9 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     moment), run the recorded controls with the sample's own parameters, and at each moment
     (in time order; one whose window overlaps the previous one's is skipped) are decided by
     the sparse decision over the horizon from the state they reached, not the nominal one.
-    All along, from ``start`` to the end of the nominal run's hold (or the last moment's
-    horizon, if later), the object's slip in its holding gripper, its loss and the
-    saturation of the arm's motors are watched with the ground truth's own rules and
+    All along, from ``start`` to the end of the run, the object's slip in its holding
+    gripper, its loss, the saturation and tracking of the arm's motors and the simulation's
+    stability are watched with the ground truth's own rules and
     tolerances (``criteria``, default
     :class:`~critmoment.groundtruth.OutcomeCriteria`): between the moments the object creeps
     or shifts in a soft or force-limited grip, which no evaluation from a nominal state
@@ -406,10 +406,10 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
         raise ParameterError(f"block: expected an integer >= 1 (physics steps per batch "
                              f"call), got {block!r}")
     h = ev.horizon
-    carried = np.flatnonzero(ev._carried)
-    end = max(int(steps[-1]) + h if steps.size else first,
-              int(carried[-1]) + 1 if carried.size else 0)
-    end = min(end, ev.n_steps)
+    # to the end of the run, as the ground truth watches it: after the release the arm
+    # still retreats past an object its own history may have placed elsewhere, and a
+    # simulation can still go unstable
+    end = ev.n_steps
     n = samples.shape[0]
     watch = _Watch(ev, n, criteria)
     kept: list[int] = []  # a moment whose window overlaps the previous kept one is skipped

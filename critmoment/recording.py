@@ -127,6 +127,9 @@ def simulate(twin: Twin, state0: np.ndarray, controls: np.ndarray, *,
     if samples is not None:
         twin.write_parameters(batch, samples)
     batch.state[:] = state0
+    # a reused batch keeps its simulations' warning counters: a simulation that went
+    # unstable in an earlier call would mark the next one in its slot diverged
+    batch.warning[...] = 0
     ctrl = np.broadcast_to(controls, (n, nstep, controls.shape[-1]))
     ctrl = np.ascontiguousarray(ctrl)
     record: list = ["sensordata"]

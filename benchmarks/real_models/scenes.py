@@ -42,7 +42,10 @@ WHEELS = {
         "robosuite/models/assets/grippers/rethink_gripper.xml",
         "robosuite/models/assets/grippers/meshes/robotiq_85_gripper/",
         "robosuite/models/assets/grippers/meshes/rethink_gripper/",
-        "robosuite/models/assets/grippers/obj_meshes/rethink_gripper/")),
+        "robosuite/models/assets/grippers/obj_meshes/rethink_gripper/",
+        "robosuite/models/assets/robots/iiwa/",
+        "robosuite/models/assets/grippers/robotiq_gripper_140.xml",
+        "robosuite/models/assets/grippers/meshes/robotiq_140_gripper/")),
 }
 
 #: the Interbotix vx300s URDF efforts [N·m] (reference/aloha_facts.md)
@@ -145,6 +148,10 @@ ROBOTS = {
         arm="robots/sawyer/robot.xml", gripper="grippers/rethink_gripper.xml",
         base=(-0.56, 0.0, 0.8), joints=tuple(f"right_j{i}" for i in range(7)),
         kp=(600, 600, 400, 400, 150, 150, 50), kv=(30, 30, 20, 20, 3, 2, 1)),
+    "iiwa_robotiq140": dict(
+        arm="robots/iiwa/robot.xml", gripper="grippers/robotiq_gripper_140.xml",
+        base=(-0.56, 0.0, 0.8), joints=tuple(f"joint_{i}" for i in range(1, 8)),
+        kp=(800, 800, 600, 600, 250, 150, 50), kv=(40, 40, 25, 25, 4, 3, 1)),
 }
 
 #: the cube added to the robosuite scenes: half edge [m], mass [kg], where it rests [m]
@@ -183,6 +190,10 @@ def robosuite_scene(robot: str) -> Path:
     arm = mujoco.MjSpec.from_file(str(arm_path))
     _absolute_assets(arm, arm_path.parent)
     grip = mujoco.MjSpec.from_string(_dedup_meshes(grip_path.read_text()))
+    # robosuite merges the gripper's XML into the robot's, whose <compiler angle="radian">
+    # then applies to it; parsed on its own it would be MJCF's default, degrees (a Robotiq
+    # finger range of 0.8 rad would become 0.8 degrees)
+    grip.compiler.degree = False
     _absolute_assets(grip, grip_path.parent)
     hand = arm.body("right_hand")
     frame = hand.add_frame()

@@ -249,6 +249,8 @@ REST = {
     "panda_robotiq85": np.array([0, np.pi / 16, 0, -np.pi / 2 - np.pi / 3, 0, np.pi - 0.2,
                                  np.pi / 4]),
     "sawyer_rethink": np.array([0.0, -1.18, 0.0, 2.18, 0.0, 0.57, 3.3161]),
+    # robosuite's own initial pose of this arm
+    "iiwa_robotiq140": np.array([0.0, 0.650, 0.0, -1.890, 0.0, 0.600, 0.0]),
 }
 
 
