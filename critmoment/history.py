@@ -173,8 +173,7 @@ class ChainedResult:
         failure: the sparse decision (``sparse.Failure`` values) at each moment from the
             sample's own state, (m, n) int8 (−1 where the sample had already failed).
         start: the step the chain starts from (the nominal state there).
-        end: the step the chain stops at (the last moment's horizon, or the end of the
-            nominal run's hold if later).
+        end: the step the chain stops at (the end of the run).
         stepped: physics steps each sample took at most.
         slip_step: first step of the first slip of the object in its holding gripper over
             the whole chain (the ground truth's rule, :func:`critmoment.groundtruth.grip_slip`
