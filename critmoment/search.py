@@ -839,11 +839,11 @@ def _first_crossings(f, lo: float, hi: float, threshold: float, rows: int, *,
     b = xs[first]                     # the failing end
     fractions = np.arange(1, split + 1) / (split + 1)
     open_ = inside.copy()
+    at = np.arange(rows)
     while open_.any():
         pts = a[:, None] + (b - a)[:, None] * fractions[None]        # (rows, split)
         fails = f(pts) > threshold
         q = np.where(fails.any(axis=1), np.argmax(fails, axis=1), split)
-        at = np.arange(rows)
         new_a = np.where(q > 0, pts[at, np.maximum(q - 1, 0)], a)
         new_b = np.where(q < split, pts[at, np.minimum(q, split - 1)], b)
         a, b = np.where(open_, new_a, a), np.where(open_, new_b, b)

@@ -487,20 +487,16 @@ class Twin:
         mu = np.asarray(mu, dtype=np.float64)[..., None]
         # eq. 12 per gripper, and over every object-gripper contact for the grasp: a
         # releasing gripper's slip weighs little next to a gripper that holds
-        fos_c, totals, demands, touch = [], [], [], []
+        fos_c, totals, demands = [], [], []
         for adr in self._grip_adr:
             block = sd[..., adr].reshape(lead + (-1, 4))  # (..., slots, [found, fn, ft1, ft2])
-            normal = block[..., 1]
-            total, demand = safety.contact_load(normal, np.hypot(block[..., 2], block[..., 3]),
-                                                mu)
+            total, demand = safety.contact_load(
+                block[..., 1], np.hypot(block[..., 2], block[..., 3]), mu)
             fos_c.append(safety.fos_ratio(total, demand))
             totals.append(total)
             demands.append(demand)
-            touch.append((block[..., 0] > 0).any(axis=-1))
-        fos_contact = (np.stack(fos_c, axis=-1) if fos_c
-                       else np.zeros(lead + (0,)))
-        contact_gripper = (np.stack(touch, axis=-1) if touch else np.zeros(lead + (0,), bool))
-        contact_support = (sd[..., self._support_adr] > 0).any(axis=-1)
+        fos_contact = np.stack(fos_c, axis=-1)
+        contact_gripper, contact_support = self.contact_flags(sd)
         # the grip only carries the object off its support
         fos_grasp = safety.fos_ratio(sum(totals, np.zeros(lead)), sum(demands, np.zeros(lead)))
         if carried is None:
