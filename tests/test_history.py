@@ -240,3 +240,24 @@ def test_streamed_run_lengths_equal_counting_step_by_step(seed):
         first[new] = lo + f[new]
     np.testing.assert_array_equal(run, count)
     np.testing.assert_array_equal(first, first_loop)
+
+
+def test_the_chain_watches_past_the_release_to_the_end_of_the_run():
+    """The ground truth watches a run to its end; so does the chain. On the bundled Panda
+    the nominal run lets go of the cube 1.2 s before its end: a chain started after the
+    release still steps to the last step, and a motor rule that fires there (saturation at
+    1e-6 of the limit: any loaded joint) is seen after the hold."""
+    import critmoment as cm
+    from critmoment import panda_demo
+    from critmoment.groundtruth import OutcomeCriteria
+
+    twin = cm.Twin(cm.load_scenario("panda_pick_place"))
+    rec = cm.rollout(panda_demo.make_pick_place(0), twin=twin)
+    ev = sparse.SparseEvaluator(rec, twin)
+    last_held = int(np.flatnonzero(ev._carried)[-1])
+    assert last_held < ev.n_steps - 200
+    start = last_held + 50
+    chain = history.chained_failures(ev, [start], twin.scenario.box.nominal[None],
+                                     criteria=OutcomeCriteria(saturation=1e-6))
+    assert chain.end == ev.n_steps
+    assert chain.motor_step[0] > last_held and chain.failed[0]
