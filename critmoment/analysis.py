@@ -842,13 +842,13 @@ class _Rollouts:
     reference run over the calls."""
 
     def __init__(self, trajectory: Trajectory, twin: Twin, nthread: int,
-                 reference: NominalReference | None = None):
+                 reference: NominalReference | None = None, chunk: int = 16):
         self.trajectory, self.twin, self.nthread = trajectory, twin, nthread
-        self.reference = reference
+        self.reference, self.chunk = reference, chunk
 
     def __call__(self, points: np.ndarray) -> np.ndarray:
         bf = brute_force(self.trajectory, twin=self.twin, samples=points, nthread=self.nthread,
-                         reference=self.reference)
+                         reference=self.reference, chunk=self.chunk)
         self.reference = bf.reference
         return bf.failed
 

@@ -37,8 +37,11 @@ import numpy as np
 from critmoment.exceptions import ParameterError
 from critmoment.groundtruth import OutcomeCriteria
 from critmoment.sparse import Failure, SparseEvaluator, _object_in_grippers
+from critmoment.task import TaskEvidence
+from critmoment.twin import STATE_SPEC
 
 __all__ = ["DriftEstimate", "estimate_drift", "ChainedResult", "chained_failures",
+           "chain_start", "NominalOnsets", "ONSET_MARGIN",
            "DRIFT_TOLERANCE", "LAG_TOLERANCE"]
 
 #: predicted displacement of the object in its grip that escalates a sample [m]: half the
@@ -190,6 +193,10 @@ class ChainedResult:
             simulation diverged (MuJoCo raised or warned of instability, or a value went
             non-finite), −1 if none, (n,) int64; a divergence within a moment's window is
             that moment's ``Failure.DIVERGED``.
+        incomplete: the sample passed every moment and the watch to the end of the run,
+            but the task's success rule (:meth:`critmoment.task.Task.success`, over the
+            nominal run's steps before the start and its own after) says it did not complete
+            the task, (n,) bool (the ground truth's ``NOT_COMPLETED``).
     """
 
     steps: np.ndarray
@@ -203,6 +210,7 @@ class ChainedResult:
     max_slip: np.ndarray | None = None
     motor_step: np.ndarray | None = None
     diverged_step: np.ndarray | None = None
+    incomplete: np.ndarray | None = None
 
     @property
     def failed(self) -> np.ndarray:
@@ -213,11 +221,14 @@ class ChainedResult:
     @property
     def watched_failed(self) -> np.ndarray:
         """(n,) bool: the watch (the ground truth's slip, drop, saturation and tracking
-        rules, and divergence) fails the sample somewhere along its chain."""
+        rules, and divergence) fails the sample somewhere along its chain, or it reaches
+        the end of the run without completing the task."""
         out = np.zeros(self.samples.shape[0], bool)
         for watched in (self.slip_step, self.drop_step, self.motor_step, self.diverged_step):
             if watched is not None:
                 out = out | (watched >= 0)
+        if self.incomplete is not None:
+            out = out | self.incomplete
         return out
 
     @property
@@ -247,10 +258,21 @@ class _Watch:
     are the ground truth's MOTOR outcome).
     """
 
-    def __init__(self, ev: SparseEvaluator, n: int, criteria: OutcomeCriteria):
+    def __init__(self, ev: SparseEvaluator, n: int, criteria: OutcomeCriteria,
+                 start: int = 0, end: int | None = None):
         dt = float(ev.twin.model.opt.timestep)
         g = len(ev._anchors)
         self.ev = ev
+        # the task's evidence of each sample's own run from start to end (the nominal
+        # run's before it), for the task's success rule at the end
+        end = ev.n_steps if end is None else end
+        self.start = int(start)
+        length = max(0, int(end) - self.start)
+        ngrip = len(ev.twin.scenario.grippers)
+        self.contact_gripper = np.zeros((n, length, ngrip), bool)
+        self.contact_support = np.zeros((n, length), bool)
+        self.object_pos = np.zeros((n, length, 3))
+        self.object_vel = np.zeros((n, length, 3))
         self.found = np.zeros((n, g), bool)
         self.offset = np.zeros((n, g, 3))
         self.tolerance = float(criteria.slip_tolerance)
@@ -300,6 +322,11 @@ class _Watch:
         gone = bad.any(axis=1) & (self.diverged_step[ids] < 0)
         self.diverged_step[ids[gone]] = k + np.argmax(bad[gone], axis=1)
         touch, support = ev.twin.contact_flags(sensordata)          # (c, s, G), (c, s)
+        rows = slice(k - self.start, k - self.start + s)
+        self.contact_gripper[ids, rows] = touch
+        self.contact_support[ids, rows] = support
+        self.object_pos[ids, rows] = sensordata[..., ev.twin._pos_adr]
+        self.object_vel[ids, rows] = sensordata[..., ev.twin._vel_adr]
         held = touch & ~support[..., None]
         nominal_held = ev._held[k:k + s]                            # (s, G)
         both = held & nominal_held[None]
@@ -342,6 +369,28 @@ class _Watch:
             first_step[ids[hit]] = k + first[hit] - need + 1
 
 
+    def completed(self) -> np.ndarray:
+        """(n,) bool: the task's success rule over each sample's whole run, the nominal
+        run's steps before the start and its own after (meaningful for the samples that
+        reached the end)."""
+        ev = self.ev
+        sig = ev.recording.signals
+        k = self.start
+        n = self.contact_support.shape[0]
+
+        def whole(nominal, own):
+            before = np.broadcast_to(np.asarray(nominal)[:k], (n,) + np.shape(nominal[:k]))
+            return np.concatenate([before, own], axis=1)
+
+        evidence = TaskEvidence(
+            contact_gripper=whole(sig.contact_gripper, self.contact_gripper),
+            contact_support=whole(sig.contact_support, self.contact_support),
+            object_pos=whole(sig.object_pos, self.object_pos),
+            object_vel=whole(sig.object_vel, self.object_vel),
+            dt=float(ev.twin.model.opt.timestep))
+        return np.asarray(ev.twin.task.success(evidence), dtype=bool)
+
+
 def _runs(run: np.ndarray, flags: np.ndarray, need: int) -> tuple[np.ndarray, np.ndarray]:
     """Streamed run lengths: ``run`` (c, r) steps each column has been on before this
     block, ``flags`` (c, s, r) whether it is on at each step of the block. Returns the run
@@ -359,14 +408,120 @@ def _runs(run: np.ndarray, flags: np.ndarray, need: int) -> tuple[np.ndarray, np
     return length[:, -1, :], first
 
 
+#: how long before a parameter's onset the chain starts [s]: 2.5 contact time constants at
+#: MuJoCo's default solref (0.02 s), time for the object to settle on its support under
+#: the sample's own mass before anything touches it
+ONSET_MARGIN = 0.05
+
+
+class NominalOnsets:
+    """The nominal run's contacts and actuator forces, as :meth:`Parameter.onset
+    <critmoment.params.Parameter.onset>` asks for them (:class:`~critmoment.params.
+    NominalContacts`).
+
+    Contacts are found by collision detection on the recorded states, from the first step
+    up to ``limit`` (steps past it count as never touching), once; each query is then a
+    look-up.
+    """
+
+    def __init__(self, evaluator: SparseEvaluator, limit: int):
+        twin = evaluator.twin
+        model = twin.model
+        sc = twin.scenario
+        self.n_steps = evaluator.n_steps
+        self.limit = int(min(max(limit, 0), self.n_steps))
+        self.object_body = int(twin.object_body_id)
+        self.object_geoms = frozenset(int(g) for g in np.flatnonzero(
+            model.geom_bodyid == self.object_body))
+        self.support_geoms = frozenset(int(model.geom(g).id) for g in sc.support_geoms)
+        self._evaluator = evaluator
+        self._ngeom = int(model.ngeom)
+        self._pairs: tuple[np.ndarray, np.ndarray] | None = None
+
+    def _scan(self) -> tuple[np.ndarray, np.ndarray]:
+        """The touching geom pairs (p, 2) up to the limit, and the step of each (p,)."""
+        if self._pairs is None:
+            ev = self._evaluator
+            model = ev.twin.model
+            data = mujoco.MjData(model)
+            pairs, at = [], []
+            for k in range(self.limit + 1):
+                mujoco.mj_setState(model, data, ev._states[k], STATE_SPEC)
+                mujoco.mj_fwdPosition(model, data)
+                n = data.ncon
+                if n:
+                    con = data.contact
+                    touching = con.dist[:n] < con.includemargin[:n]
+                    pairs.append(con.geom[:n][touching])
+                    at.append(np.full(int(touching.sum()), k, np.int64))
+            self._pairs = ((np.concatenate(pairs).astype(np.int64), np.concatenate(at))
+                           if pairs else (np.zeros((0, 2), np.int64), np.zeros(0, np.int64)))
+        return self._pairs
+
+    def first_contact(self, geoms: frozenset[int], exclude: frozenset[int]) -> int:
+        pairs, at = self._scan()
+        own = np.zeros(self._ngeom, bool)
+        own[list(geoms)] = True
+        skip = own.copy()
+        skip[list(exclude)] = True
+        a, b = pairs[:, 0], pairs[:, 1]
+        hit = (own[a] & ~skip[b]) | (own[b] & ~skip[a])
+        return int(at[hit][0]) if hit.any() else self.n_steps
+
+    def first_force(self, actuator: int, level: float) -> int:
+        ev = self._evaluator
+        sd = ev._sensordata
+        if sd is None:
+            return 0
+        force = np.abs(np.asarray(sd)[:, ev.twin._force_adr[actuator]])
+        # sensordata[k] is read after step k, whose force acted from state k
+        reached = np.flatnonzero(force >= level * (1.0 - 1e-9))
+        return int(reached[0]) if reached.size else self.n_steps
+
+
+def chain_start(evaluator: SparseEvaluator, steps: Any) -> int:
+    """The step a sample's own history starts from: ``ONSET_MARGIN`` before the first step
+    at which any uncertain parameter can change the motion (:meth:`Parameter.onset
+    <critmoment.params.Parameter.onset>`: a parameter of the object, once something other
+    than its supports touches it; a force limit, once the nominal force reaches the range's
+    low end; anything else, from the start), and no later than the first moment.
+
+    Starting at the first moment, which change-point detection usually puts at the first
+    touch, restores the nominal state in the middle of the contact's onset; measured on the
+    iiwa + Robotiq 2F-140 (docs/real_models.md), the slip a chain measured from there
+    varied between 5 and 10.3 mm with the start step, against 10.1–10.35 mm from before
+    the touch, where the sample's state still equals the nominal one.
+
+    Args:
+        evaluator: the audit's sparse evaluator.
+        steps: the audited moments (m,), at least one.
+
+    Returns:
+        The start step.
+    """
+    ev = evaluator
+    first = int(np.min(ev.check_steps(steps)))
+    known = ev._chain_starts.get(first)
+    if known is not None:
+        return known
+    twin = ev.twin
+    run = NominalOnsets(ev, first)
+    onset = min((p.onset(i, run) for p, i in zip(twin.scenario.box.parameters,
+                                                  twin._param_ids, strict=True)),
+                default=0)
+    margin = max(ev.horizon, int(np.ceil(ONSET_MARGIN / float(twin.model.opt.timestep))))
+    start = ev._chain_starts[first] = int(max(0, min(first, onset - margin)))
+    return start
+
+
 def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
                      start: int | None = None,
                      criteria: OutcomeCriteria | None = None,
                      block: int = 100) -> ChainedResult:
     """Carry each sample's own state from one nominal state through every later moment.
 
-    The simulations start from the recorded state at ``start`` (default: the first
-    moment), run the recorded controls with the sample's own parameters, and at each moment
+    The simulations start from the recorded state at ``start`` (default:
+    :func:`chain_start`, before the parameters first act), run the recorded controls with the sample's own parameters, and at each moment
     (in time order; one whose window overlaps the previous one's is skipped) are decided by
     the sparse decision over the horizon from the state they reached, not the nominal one.
     All along, from ``start`` to the end of the run, the object's slip in its holding
@@ -382,7 +537,7 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
         evaluator: the audit's sparse evaluator.
         steps: moments, physics step indices (m,).
         samples: parameter values (n, k).
-        start: the step the chain starts from.
+        start: the step the chain starts from (default: :func:`chain_start`).
         criteria: the slip and drop tolerances (default: the ground truth's).
         block: physics steps per batch call between the moments.
 
@@ -395,7 +550,7 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     ev = evaluator
     samples = ev.check_samples(samples)
     steps = np.unique(ev.check_steps(steps))
-    first = int(steps[0]) if start is None else int(ev.check_steps([start])[0])
+    first = chain_start(ev, steps) if start is None else int(ev.check_steps([start])[0])
     steps = steps[steps >= first]
     criteria = OutcomeCriteria() if criteria is None else criteria
     if not isinstance(criteria, OutcomeCriteria):
@@ -410,7 +565,7 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     # simulation can still go unstable
     end = ev.n_steps
     n = samples.shape[0]
-    watch = _Watch(ev, n, criteria)
+    watch = _Watch(ev, n, criteria, first, end)
     kept: list[int] = []  # a moment whose window overlaps the previous kept one is skipped
     for k in (int(s) for s in steps):
         if not kept or k >= kept[-1] + h:
@@ -421,8 +576,13 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
         rows = np.arange(lo, min(n, lo + ev.chunk))
         stepped = max(stepped, _chain_chunk(ev, watch, samples[rows], rows, kept, first, end,
                                             block, failure))
+    # a sample that reached the end of the run, the task's own success rule decides (the
+    # ground truth's NOT_COMPLETED: placed off the goal, not released, still moving)
+    reached = ~(failure > 0).any(axis=0) & ~watch.failed()
+    incomplete = reached & ~watch.completed()
     return ChainedResult(steps=np.array(kept, dtype=np.int64), samples=samples,
                          failure=failure, start=first, stepped=stepped, end=end,
+                         incomplete=incomplete,
                          slip_step=watch.slip_step, drop_step=watch.drop_step,
                          max_slip=watch.max_slip, motor_step=watch.motor_step,
                          diverged_step=watch.diverged_step)

@@ -16,7 +16,7 @@ from __future__ import annotations
 import dataclasses
 import enum
 from collections.abc import Mapping
-from typing import ClassVar
+from typing import ClassVar, Protocol
 
 import mujoco
 import numpy as np
@@ -31,6 +31,7 @@ __all__ = [
     "ComOffsetParameter",
     "ForceLimitParameter",
     "PARAMETER_KINDS",
+    "NominalContacts",
     "UncertaintyBox",
 ]
 
@@ -110,6 +111,19 @@ class Parameter:
         """
         raise NotImplementedError
 
+    def onset(self, index: int, run: NominalContacts) -> int:
+        """The first step of the nominal run at which this parameter can change the motion.
+
+        Up to that step a sample's state equals the nominal run's, so its own history can
+        start from the recorded state there (:func:`critmoment.history.chain_start`). The
+        default, 0, is always right: the parameter acts from the start.
+
+        Args:
+            index: the target's id, from :meth:`resolve`.
+            run: the nominal run's contacts and actuator forces.
+        """
+        return 0
+
     def check(self, values: np.ndarray) -> np.ndarray:
         """Return ``values`` as float64 (n,), raising ParameterError if any is not admissible."""
         values = np.asarray(values, dtype=np.float64).reshape(-1)
@@ -119,6 +133,30 @@ class Parameter:
                 f"parameter {self.name!r}: expected finite values > {self.minimum} {self.unit}, "
                 f"got {values[bad][:5].tolist()}")
         return values
+
+
+class NominalContacts(Protocol):
+    """What :meth:`Parameter.onset` may ask of the nominal run (implemented by
+    :class:`critmoment.history.NominalOnsets`)."""
+
+    #: the object's body id, and the geom ids of its body and of its supports
+    object_body: int
+    object_geoms: frozenset[int]
+    support_geoms: frozenset[int]
+
+    def first_contact(self, geoms: frozenset[int], exclude: frozenset[int]) -> int:
+        """First step at which one of ``geoms`` touches a geom outside ``geoms`` and
+        ``exclude`` (the run's length if never)."""
+
+    def first_force(self, actuator: int, level: float) -> int:
+        """First step at which the actuator's force magnitude reaches ``level`` (the run's
+        length if never)."""
+
+
+def _object_onset(run: NominalContacts, geoms: frozenset[int]) -> int:
+    """A parameter of the object acts once something other than its supports touches it
+    (resting on a support, its mass and friction do not move anything else)."""
+    return run.first_contact(geoms, run.support_geoms)
 
 
 def _resolve(model: mujoco.MjModel, objtype: mujoco.mjtObj, name: str, what: str) -> int:
@@ -145,6 +183,9 @@ class MassParameter(Parameter):
     def resolve(self, model):
         return _resolve(model, mujoco.mjtObj.mjOBJ_BODY, self.target, "body")
 
+    def onset(self, index, run):
+        return _object_onset(run, run.object_geoms) if index == run.object_body else 0
+
     def write(self, index, base, arrays, values):
         scale = values / base.body_mass[index]
         arrays["body_mass"][:, index] = values
@@ -167,6 +208,13 @@ class FrictionParameter(Parameter):
     def resolve(self, model):
         return _resolve(model, mujoco.mjtObj.mjOBJ_GEOM, self.target, "geom")
 
+    def onset(self, index, run):
+        # the object's own geom: once something other than a support touches it; any other
+        # geom (a finger pad): its first contact with anything
+        if index in run.object_geoms:
+            return _object_onset(run, frozenset({index}))
+        return run.first_contact(frozenset({index}), frozenset())
+
     def write(self, index, base, arrays, values):
         arrays["geom_friction"][:, index, 0] = values
 
@@ -181,6 +229,9 @@ class ComOffsetParameter(Parameter):
 
     def resolve(self, model):
         return _resolve(model, mujoco.mjtObj.mjOBJ_BODY, self.target, "body")
+
+    def onset(self, index, run):
+        return _object_onset(run, run.object_geoms) if index == run.object_body else 0
 
     def write(self, index, base, arrays, values):
         arrays["body_ipos"][:, index] = base.body_ipos[index]
@@ -197,6 +248,11 @@ class ForceLimitParameter(Parameter):
 
     def resolve(self, model):
         return _resolve(model, mujoco.mjtObj.mjOBJ_ACTUATOR, self.target, "actuator")
+
+    def onset(self, index, run):
+        # a limit clamps only a force that reaches it: where the nominal force stays below
+        # the range's low end, no value of the range changes it
+        return run.first_force(index, self.low)
 
     def write(self, index, base, arrays, values):
         arrays["actuator_forcerange"][:, index, 0] = -values

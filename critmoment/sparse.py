@@ -678,6 +678,9 @@ class SparseEvaluator:
         self._kin_data: mujoco.MjData | None = None
         self._batches: collections.OrderedDict[int, mujoco.batch.Batch] = collections.OrderedDict()
         self._memo: collections.OrderedDict[tuple, SparseResult] = collections.OrderedDict()
+        #: the chain's start step by first moment (critmoment.history.chain_start), shared
+        #: with forks
+        self._chain_starts: dict[int, int] = {}
         self._written: dict[int, np.ndarray] = {}
         self._mu: dict[int, np.ndarray | float] = {}
 

@@ -34,6 +34,7 @@ from critmoment import budget
 from critmoment import sparse as sp
 from critmoment.analysis import (
     AnalyzeOptions,
+    _Rollouts,
     audit_evaluator,
     audit_moments,
     chain_samples,
@@ -247,9 +248,9 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     near, unlifted = samples_to_rerun(res, dopt, nominal_completed=nominal_completed)
     verified = near | unlifted
     rerun_failed = np.zeros(n, dtype=bool)
+    roll = _Rollouts(traj, twin, nthread, chunk=chunk)  # the audit's, one nominal reference
     if verified.any():
-        rerun_failed[verified] = brute_force(traj, twin=twin, samples=samples[verified],
-                                             chunk=chunk, nthread=nthread).failed
+        rerun_failed[verified] = roll(samples[verified])
     if verify is not None:
         timings["verification"] = time.perf_counter() - t3
     t4 = time.perf_counter()
@@ -258,8 +259,7 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     if suspect.any() and verify is not None:
         # the audit's own step: failed only by the force ratio on its own path, its own
         # rollout decides it
-        rerun_failed[suspect] = brute_force(traj, twin=twin, samples=samples[suspect],
-                                            chunk=chunk, nthread=nthread).failed
+        rerun_failed[suspect] = roll(samples[suspect])
         verified = verified | suspect
     if chain:
         timings["chained segments"] = time.perf_counter() - t4

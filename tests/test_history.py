@@ -125,7 +125,7 @@ def test_on_soft_contacts_the_chain_sees_the_creep_the_force_ratio_passes(tmp_pa
     samples[:, soft.scenario.box.index("mass")] = [0.05, 0.3, 0.45, 0.8]
     one_step = ev.evaluate([k], samples)
     assert not one_step.failed.any() and one_step.fos_grasp[0, 2] > 2.5
-    chain = history.chained_failures(ev, [k], samples)
+    chain = history.chained_failures(ev, [k], samples, start=k)
     truth = groundtruth.brute_force(demo_traj, twin=soft, samples=samples).classification
     np.testing.assert_array_equal(chain.failed, [False, False, True, True])
     np.testing.assert_array_equal(chain.failed, truth.failed)
@@ -258,6 +258,83 @@ def test_the_chain_watches_past_the_release_to_the_end_of_the_run():
     assert last_held < ev.n_steps - 200
     start = last_held + 50
     chain = history.chained_failures(ev, [start], twin.scenario.box.nominal[None],
-                                     criteria=OutcomeCriteria(saturation=1e-6))
+                                     start=start, criteria=OutcomeCriteria(saturation=1e-6))
     assert chain.end == ev.n_steps
     assert chain.motor_step[0] > last_held and chain.failed[0]
+
+
+def test_the_chain_starts_before_the_object_is_first_touched(scenario, twin, demo_recording):
+    """The cube's mass and friction act once something other than the table touches it:
+    the chain starts ONSET_MARGIN (or the horizon, if longer) before the nominal run's
+    first touch, not at a first moment that sits on the touch, where the restored nominal
+    state is mid-way through the contact's onset. A moment before that margin starts it."""
+    import math
+
+    ev = sparse.SparseEvaluator(demo_recording, twin)
+    touch = int(np.flatnonzero(demo_recording.signals.contact_gripper.any(axis=1))[0])
+    margin = max(ev.horizon, math.ceil(history.ONSET_MARGIN / twin.model.opt.timestep))
+    assert history.chain_start(ev, [touch, touch + 300]) == touch - margin
+    assert history.chain_start(ev, [touch + 300, touch - 400]) == touch - 400
+    chain = history.chained_failures(ev, [touch], scenario.box.nominal[None])
+    assert chain.start == touch - margin and not chain.failed[0]
+    # the scan of the recorded states agrees with the touch sensors
+    run = history.NominalOnsets(ev, touch + 10)
+    assert run.first_contact(run.object_geoms, run.support_geoms) == touch
+    # with the table itself it touches from the first steps (it settles from its spawn)
+    assert run.first_contact(run.object_geoms, frozenset()) < 10
+
+
+def test_parameter_onsets_on_the_nominal_run(scenario, twin, demo_recording):
+    """Where each kind of parameter can first change the motion: a force limit once the
+    nominal force reaches the range's low end (never if it stays below), a finger pad's
+    friction at the pad's first contact with anything, the mass of a robot link from the
+    start."""
+    from critmoment.params import ForceLimitParameter, FrictionParameter, MassParameter
+
+    ev = sparse.SparseEvaluator(demo_recording, twin)
+    run = history.NominalOnsets(ev, ev.n_steps)
+    model = twin.model
+    i = twin.actuator_names.index("right/elbow")
+    force = np.abs(np.asarray(demo_recording.signals.actuator_force)[:, i])
+    low = float(np.quantile(force, 0.9))
+    limit = ForceLimitParameter("elbow", "right/elbow", low, 2 * low, 1.5 * low)
+    assert limit.onset(limit.resolve(model), run) == int(np.flatnonzero(force >= low)[0])
+    never = ForceLimitParameter("elbow", "right/elbow", 2 * force.max(), 3 * force.max(),
+                                2 * force.max())
+    assert never.onset(never.resolve(model), run) == ev.n_steps
+    pad = scenario.grippers[0].geoms[0]
+    friction = FrictionParameter("pad", pad, 0.5, 1.5, 1.0)
+    # the left gripper starts closed, its pads pressed on each other
+    assert friction.onset(friction.resolve(model), run) == 0
+    link = MassParameter("link", model.body(model.geom_bodyid[model.geom(pad).id]).name,
+                         0.1, 1.0, 0.5)
+    assert link.onset(link.resolve(model), run) == 0
+
+
+def test_the_chain_applies_the_task_rule_at_the_end_of_the_run():
+    """A sample that passes every moment and the watch to the end is still decided by the
+    task's success rule over its whole run, as the ground truth's NOT_COMPLETED is: with the
+    bundled Panda's goal moved 5 cm away, every sample that keeps its cube is incomplete in
+    the chain and in its full rollout; at the real goal the nominal sample completes."""
+    import dataclasses
+
+    import critmoment as cm
+    from critmoment import groundtruth, panda_demo
+
+    sc = cm.load_scenario("panda_pick_place")
+    traj = panda_demo.make_pick_place(0)
+    samples = np.array([[0.1, 1.0], [0.6, 1.0], [1.5, 0.5]])
+    goal = tuple(np.add(sc.task.goal, (0.05, 0.0, 0.0)))
+    for moved in (False, True):
+        scenario = sc.replace(task=dataclasses.replace(sc.task, goal=goal)) if moved else sc
+        twin = cm.Twin(scenario)
+        rec = cm.rollout(traj, twin=twin)
+        assert rec.completed is not moved
+        ev = sparse.SparseEvaluator(rec, twin)
+        touch = int(np.flatnonzero(rec.signals.contact_gripper.any(axis=1))[0])
+        chain = history.chained_failures(ev, [touch], samples)
+        truth = groundtruth.brute_force(traj, twin=twin, samples=samples).classification
+        not_completed = np.array([o is groundtruth.Outcome.NOT_COMPLETED for o in truth.outcome])
+        np.testing.assert_array_equal(chain.incomplete, not_completed)
+        np.testing.assert_array_equal(chain.failed, truth.failed)
+        assert chain.incomplete[0] is np.bool_(moved)
