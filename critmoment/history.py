@@ -231,16 +231,6 @@ class ChainedResult:
             out = out | self.incomplete
         return out
 
-    @property
-    def contact_only(self) -> np.ndarray:
-        """(n,) bool: the sample fails only by the contact force ratio at a moment of its
-        chain (its measured slip, the object and the motors pass the watch up to there):
-        a prediction the sample's own rollout should confirm, since on its own path the
-        force ratio can touch the cone without a real slip."""
-        contact = (self.failure == Failure.CONTACT).any(axis=0)
-        other = ((self.failure > 0) & (self.failure != Failure.CONTACT)).any(axis=0)
-        return contact & ~other & ~self.watched_failed
-
 
 class _Watch:
     """The ground truth's slip, drop and saturation rules, streamed over a chain's own

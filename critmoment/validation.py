@@ -257,8 +257,7 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     chained, chained_failed, suspect = chain_samples(evaluator, steps, samples, res, verified,
                                                      dopt, nominal_completed=nominal_completed)
     if suspect.any() and verify is not None:
-        # the audit's own step: failed only by the force ratio on its own path, its own
-        # rollout decides it
+        # the audit's own step: failed on its own chain, its own rollout decides it
         rerun_failed[suspect] = roll(samples[suspect])
         verified = verified | suspect
     if chain:

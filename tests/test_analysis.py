@@ -168,24 +168,28 @@ def boundary_reports(twin, demo_traj, scenario):
                 for v in (None, 0.8)}, boundary
 
 
-def test_chained_segments_decide_the_samples_that_pass_without_a_rollout(boundary_reports,
-                                                                         demo_traj):
+def test_chained_segments_decide_the_samples_that_pass_without_a_rollout(boundary_reports):
     """The samples that pass at the moments with no rollout are carried on their own state;
-    each one the chain fails really fails in its own full rollout (mass <= 1.5 kg box, where
-    nominal-state evaluation misses failures that come from the sample's own history)."""
-    reports, boundary = boundary_reports
-    checked = reports[0.8]
+    each one the chain fails is decided by its own full rollout (mass <= 1.5 kg box, demo
+    seed 8, whose cube starts far sideways: nominal-state evaluation misses failures that
+    come from the sample's own history, and the chain fails six samples)."""
+    from critmoment import demos
+
+    _, boundary = boundary_reports
+    traj = demos.scripted_transfer(8, twin=boundary)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        chained = analyze(demo_traj, twin=boundary, options=dataclasses.replace(FAST, verify=0.8))
+        checked, chained = (analyze(traj, twin=boundary,
+                                    options=dataclasses.replace(FAST, verify=0.8, chain=c))
+                            for c in (False, True))
     np.testing.assert_array_equal(chained.sweep.cost, checked.sweep.cost)
     v = chained.verification
-    assert v["chained"] > 0
+    assert v["chained"] > 0 and v["chained_failed"] > 0
+    assert v["chained_rolled_out"] == v["chained_failed"]
     newly = chained.failed & ~checked.failed
-    assert int(newly.sum()) == v["chained_failed"]
-    if newly.any():
-        own = brute_force(demo_traj, twin=boundary, samples=chained.sweep.samples[newly]).failed
-        assert own.all()  # every chained failure is a real failure
+    assert int(newly.sum()) == v["chained_confirmed"] > 0
+    own = brute_force(traj, twin=boundary, samples=chained.sweep.samples[newly]).failed
+    assert own.all()  # every chained failure that stands is a real failure
     # chained segments only add failures
     assert not (checked.failed & ~chained.failed).any()
 

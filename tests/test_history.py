@@ -161,9 +161,9 @@ def test_the_chain_watches_motor_saturation_as_the_ground_truth_does(scenario, d
     np.testing.assert_array_equal(chain.failed, truth.failed)
 
 
-def test_contact_only_names_the_chained_samples_a_rollout_should_decide():
-    """Failed only by the force ratio at a chain moment, nothing watched: a suspect. A slip,
-    a drop, a saturation or another failure code makes the failure the chain's own."""
+def test_a_chained_failure_is_a_moment_failure_or_a_watched_one():
+    """A chained sample fails at a moment of its chain (any failure code) or by the watch
+    (slip, drop, saturation, tracking, divergence)."""
     F = sparse.Failure
     failure = np.array([[F.PASS, F.CONTACT, F.CONTACT, F.PASS, F.MOTOR, F.PASS],
                         [F.CONTACT, -1, -1, F.PASS, -1, F.PASS]], dtype=np.int8)
@@ -174,7 +174,6 @@ def test_contact_only_names_the_chained_samples_a_rollout_should_decide():
                                    failure=failure, start=100, stepped=0, end=300,
                                    slip_step=slip, drop_step=none, motor_step=none,
                                    max_slip=np.zeros(6))
-    np.testing.assert_array_equal(result.contact_only, [True, True, False, False, False, False])
     np.testing.assert_array_equal(result.failed, [True, True, True, False, True, False])
     np.testing.assert_array_equal(result.watched_failed, [False, False, True, False, False,
                                                           False])
