@@ -36,7 +36,7 @@ import numpy as np
 
 from critmoment.exceptions import ParameterError
 from critmoment.groundtruth import OutcomeCriteria
-from critmoment.sparse import Failure, SparseEvaluator, _object_in_grippers
+from critmoment.sparse import SparseEvaluator, _object_in_grippers
 from critmoment.task import TaskEvidence
 from critmoment.twin import STATE_SPEC
 
