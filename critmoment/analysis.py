@@ -723,9 +723,9 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
     ground truth's rules), and it errs on the failing side: its passes are the method's
     claim (validated against brute force), its failures are confirmed by the sample's own
     rollout. Measured on robosuite's Panda + Robotiq 2F-85 with an elliptic cone (narrow
-    box), the chain's two failures the rollouts overturned were motor events 0.4–0.5 s
-    before the end of samples whose full-rollout outcome flips with a 1e-6–1e-4 change of
-    the cube's mass (docs/real_models.md)."""
+    box), the chain's two failures the rollouts overturned were motor events late in the
+    run (steps 3856 and 4120) of samples whose full-rollout outcome flips with a 1e-6–1e-4
+    change of the cube's mass (docs/real_models.md)."""
     n = samples.shape[0]
     chained = np.zeros(n, bool)
     chained_failed = np.zeros(n, bool)
