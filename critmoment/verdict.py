@@ -89,8 +89,9 @@ class DecisionOptions:
         require_task: a nominal run that does not complete the task fails every sample.
         confidence: confidence level of the P(success) interval.
         chain: every sample that passes at the moments and has no rollout of its own is
-            carried on its own state from the first moment through the later ones
-            (:func:`critmoment.history.chained_failures`); a failure there fails it. This
+            carried on its own state from before its parameters first act through every
+            moment to the end of the run (:func:`critmoment.history.chained_failures`); a
+            failure there fails it, unless its own full rollout (with ``verify``) passes it. This
             sees what a sample's own history changes (a grip that shifts, a collision that
             never happens at nominal), which evaluation from the nominal states cannot.
         nominal_by_run: with ``verify``, a nominal run that completes the task decides the
