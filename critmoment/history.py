@@ -197,6 +197,8 @@ class ChainedResult:
             but the task's success rule (:meth:`critmoment.task.Task.success`, over the
             nominal run's steps before the start and its own after) says it did not complete
             the task, (n,) bool (the ground truth's ``NOT_COMPLETED``).
+        release: the first step after the nominal run's last carried one (the end of the
+            run if it never carries the object; −1: unknown, every watched failure is late).
     """
 
     steps: np.ndarray
@@ -211,12 +213,34 @@ class ChainedResult:
     motor_step: np.ndarray | None = None
     diverged_step: np.ndarray | None = None
     incomplete: np.ndarray | None = None
+    release: int = -1
 
     @property
     def failed(self) -> np.ndarray:
         """(n,) bool: the sample fails at some moment of its own chain, or slips, loses
         the object or saturates a motor between them."""
         return (self.failure > 0).any(axis=0) | self.watched_failed
+
+    @property
+    def to_confirm(self) -> np.ndarray:
+        """(n,) bool: failures the sample's own full rollout should decide, where the chain
+        is the weaker evidence: a failure by a moment's sparse decision (its criteria are not
+        the ground truth's: on its own path a force ratio can touch the cone without a real
+        slip), a failure by the watch at or after the step the nominal run releases the
+        object (``release``: from there the sample's path differs from the nominal one by
+        where the object was set down, and a retreating finger's contact with it can turn on
+        a micrometre), and a run that ends with the task incomplete. A slip, a drop or a
+        motor failure during the hold stands: the chain measures them with the ground
+        truth's own rules (started before the grasp, the chain's slip is the full
+        rollout's to a micrometre)."""
+        n = self.samples.shape[0]
+        moment = (self.failure > 0).any(axis=0)
+        late = np.zeros(n, bool)
+        for watched in (self.slip_step, self.drop_step, self.motor_step, self.diverged_step):
+            if watched is not None:
+                late |= watched >= self.release
+        incomplete = np.zeros(n, bool) if self.incomplete is None else self.incomplete
+        return self.failed & (moment | late | incomplete)
 
     @property
     def watched_failed(self) -> np.ndarray:
@@ -379,6 +403,13 @@ class _Watch:
             object_vel=whole(sig.object_vel, self.object_vel),
             dt=float(ev.twin.model.opt.timestep))
         return np.asarray(ev.twin.task.success(evidence), dtype=bool)
+
+
+def _release(ev: SparseEvaluator) -> int:
+    """The first step after the nominal run's last carried step (the run's length if it
+    never carries the object)."""
+    carried = np.flatnonzero(ev._carried)
+    return int(carried[-1]) + 1 if carried.size else int(ev.n_steps)
 
 
 def _runs(run: np.ndarray, flags: np.ndarray, need: int) -> tuple[np.ndarray, np.ndarray]:
@@ -572,7 +603,7 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     incomplete = reached & ~watch.completed()
     return ChainedResult(steps=np.array(kept, dtype=np.int64), samples=samples,
                          failure=failure, start=first, stepped=stepped, end=end,
-                         incomplete=incomplete,
+                         incomplete=incomplete, release=_release(ev),
                          slip_step=watch.slip_step, drop_step=watch.drop_step,
                          max_slip=watch.max_slip, motor_step=watch.motor_step,
                          diverged_step=watch.diverged_step)

@@ -170,9 +170,10 @@ def boundary_reports(twin, demo_traj, scenario):
 
 def test_chained_segments_decide_the_samples_that_pass_without_a_rollout(boundary_reports):
     """The samples that pass at the moments with no rollout are carried on their own state;
-    each one the chain fails is decided by its own full rollout (mass <= 1.5 kg box, demo
-    seed 8, whose cube starts far sideways: nominal-state evaluation misses failures that
-    come from the sample's own history, and the chain fails six samples)."""
+    each failure of the chain stands or, where the chain is the weaker evidence, is decided
+    by its own full rollout (mass <= 1.5 kg box, demo seed 8, whose cube starts far
+    sideways: nominal-state evaluation misses failures that come from the sample's own
+    history, and the chain fails six samples); every failure that stands is real."""
     from critmoment import demos
 
     _, boundary = boundary_reports
@@ -185,9 +186,10 @@ def test_chained_segments_decide_the_samples_that_pass_without_a_rollout(boundar
     np.testing.assert_array_equal(chained.sweep.cost, checked.sweep.cost)
     v = chained.verification
     assert v["chained"] > 0 and v["chained_failed"] > 0
-    assert v["chained_rolled_out"] == v["chained_failed"]
+    assert v["chained_confirmed"] <= v["chained_rolled_out"] <= v["chained_failed"]
     newly = chained.failed & ~checked.failed
-    assert int(newly.sum()) == v["chained_confirmed"] > 0
+    stand = v["chained_failed"] - v["chained_rolled_out"] + v["chained_confirmed"]
+    assert int(newly.sum()) == stand > 0
     own = brute_force(traj, twin=boundary, samples=chained.sweep.samples[newly]).failed
     assert own.all()  # every chained failure that stands is a real failure
     # chained segments only add failures

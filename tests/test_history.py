@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -163,7 +165,9 @@ def test_the_chain_watches_motor_saturation_as_the_ground_truth_does(scenario, d
 
 def test_a_chained_failure_is_a_moment_failure_or_a_watched_one():
     """A chained sample fails at a moment of its chain (any failure code) or by the watch
-    (slip, drop, saturation, tracking, divergence)."""
+    (slip, drop, saturation, tracking, divergence). Its own rollout should decide a failure
+    at a moment, a watched one at or after the nominal release, and an incomplete task; a
+    slip, drop or motor failure during the hold stands."""
     F = sparse.Failure
     failure = np.array([[F.PASS, F.CONTACT, F.CONTACT, F.PASS, F.MOTOR, F.PASS],
                         [F.CONTACT, -1, -1, F.PASS, -1, F.PASS]], dtype=np.int8)
@@ -177,6 +181,25 @@ def test_a_chained_failure_is_a_moment_failure_or_a_watched_one():
     np.testing.assert_array_equal(result.failed, [True, True, True, False, True, False])
     np.testing.assert_array_equal(result.watched_failed, [False, False, True, False, False,
                                                           False])
+    # every failure here comes from a moment (sample 2 also slips): its rollout decides it
+    np.testing.assert_array_equal(dataclasses.replace(result, release=2000).to_confirm,
+                                  result.failed)
+    # only watched failures: a drop in the hold stands, a tracking loss after the release
+    # and an incomplete task go to their rollouts
+    quiet = np.full((1, 4), F.PASS, dtype=np.int8)
+    drop, motor = np.full(4, -1), np.full(4, -1)
+    drop[0], motor[1] = 150, 260
+    watched = history.ChainedResult(steps=np.array([100]), samples=np.zeros((4, 2)),
+                                    failure=quiet, start=100, stepped=0, end=300,
+                                    slip_step=np.full(4, -1), drop_step=drop, motor_step=motor,
+                                    max_slip=np.zeros(4),
+                                    incomplete=np.array([False, False, True, False]),
+                                    release=250)
+    np.testing.assert_array_equal(watched.failed, [True, True, True, False])
+    np.testing.assert_array_equal(watched.to_confirm, [False, True, True, False])
+    # with the release before the drop, the drop goes to its rollout too
+    np.testing.assert_array_equal(dataclasses.replace(watched, release=150).to_confirm,
+                                  [True, True, True, False])
 
 
 def test_the_chain_watches_tracking_as_the_ground_truth_does(scenario, twin):
