@@ -285,8 +285,9 @@ class _Watch:
         ngrip = len(ev.twin.scenario.grippers)
         self.contact_gripper = np.zeros((n, length, ngrip), bool)
         self.contact_support = np.zeros((n, length), bool)
-        self.object_pos = np.zeros((n, length, 3))
-        self.object_vel = np.zeros((n, length, 3))
+        # single precision: 0.1 µm on a metre, far below any task tolerance; half the memory
+        self.object_pos = np.zeros((n, length, 3), np.float32)
+        self.object_vel = np.zeros((n, length, 3), np.float32)
         self.found = np.zeros((n, g), bool)
         self.offset = np.zeros((n, g, 3))
         self.tolerance = float(criteria.slip_tolerance)
@@ -383,26 +384,32 @@ class _Watch:
             first_step[ids[hit]] = k + first[hit] - need + 1
 
 
-    def completed(self) -> np.ndarray:
-        """(n,) bool: the task's success rule over each sample's whole run, the nominal
-        run's steps before the start and its own after (meaningful for the samples that
-        reached the end)."""
+    def completed(self, rows: np.ndarray | None = None, *, block: int = 64) -> np.ndarray:
+        """(r,) bool: the task's success rule over each sample's whole run, the nominal
+        run's steps before the start and its own after, for ``rows`` (default: all;
+        meaningful for the samples that reached the end), ``block`` samples at a time."""
         ev = self.ev
         sig = ev.recording.signals
         k = self.start
-        n = self.contact_support.shape[0]
+        rows = (np.arange(self.contact_support.shape[0]) if rows is None
+                else np.asarray(rows, dtype=np.int64))
+        out = np.zeros(rows.size, bool)
+        for lo in range(0, rows.size, block):
+            ids = rows[lo:lo + block]
 
-        def whole(nominal, own):
-            before = np.broadcast_to(np.asarray(nominal)[:k], (n,) + np.shape(nominal[:k]))
-            return np.concatenate([before, own], axis=1)
+            def whole(nominal, own, ids=ids):
+                before = np.broadcast_to(np.asarray(nominal)[:k],
+                                         (ids.size,) + np.shape(nominal[:k]))
+                return np.concatenate([before, own[ids]], axis=1)
 
-        evidence = TaskEvidence(
-            contact_gripper=whole(sig.contact_gripper, self.contact_gripper),
-            contact_support=whole(sig.contact_support, self.contact_support),
-            object_pos=whole(sig.object_pos, self.object_pos),
-            object_vel=whole(sig.object_vel, self.object_vel),
-            dt=float(ev.twin.model.opt.timestep))
-        return np.asarray(ev.twin.task.success(evidence), dtype=bool)
+            evidence = TaskEvidence(
+                contact_gripper=whole(sig.contact_gripper, self.contact_gripper),
+                contact_support=whole(sig.contact_support, self.contact_support),
+                object_pos=whole(sig.object_pos, self.object_pos),
+                object_vel=whole(sig.object_vel, self.object_vel),
+                dt=float(ev.twin.model.opt.timestep))
+            out[lo:lo + block] = np.asarray(ev.twin.task.success(evidence), dtype=bool)
+        return out
 
 
 def _release(ev: SparseEvaluator) -> int:
@@ -600,7 +607,8 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     # a sample that reached the end of the run, the task's own success rule decides (the
     # ground truth's NOT_COMPLETED: placed off the goal, not released, still moving)
     reached = ~(failure > 0).any(axis=0) & ~watch.failed()
-    incomplete = reached & ~watch.completed()
+    incomplete = np.zeros(n, bool)
+    incomplete[reached] = ~watch.completed(np.flatnonzero(reached))
     return ChainedResult(steps=np.array(kept, dtype=np.int64), samples=samples,
                          failure=failure, start=first, stepped=stepped, end=end,
                          incomplete=incomplete, release=_release(ev),
