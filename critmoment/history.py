@@ -183,7 +183,9 @@ class ChainedResult:
             with its tolerance and duration), −1 if none, (n,) int64.
         drop_step: first step at which the object, where the nominal run carries it, has
             been out of every gripper for longer than the ground truth's ``drop_time``, −1
-            if none, (n,) int64.
+            if none, (n,) int64. As in the ground truth a drop alone fails nothing: the
+            sample steps on to the end (not decided at the later moments), where the task's
+            rule decides it (``incomplete``).
         max_slip: largest slip over the chain [m], (n,).
         motor_step: first step of a saturation of a rotational actuator (the ground truth's
             ``saturation`` of its force limit for longer than ``motor_time``) or of a lost
@@ -229,26 +231,29 @@ class ChainedResult:
         slip), a failure by the watch at or after the step the nominal run releases the
         object (``release``: from there the sample's path differs from the nominal one by
         where the object was set down, and a retreating finger's contact with it can turn on
-        a micrometre), and a run that ends with the task incomplete. A slip, a drop or a
-        motor failure during the hold stands: the chain measures them with the ground
-        truth's own rules (started before the grasp, the chain's slip is the full
-        rollout's to a micrometre)."""
+        a micrometre), and a run that ends with the task incomplete without having dropped
+        its object during the hold (a placement off the goal). A slip or a motor failure
+        during the hold, and an incomplete task after a drop during the hold, stand: the
+        chain measures them with the ground truth's own rules (started before the grasp,
+        the chain's slip is the full rollout's to a micrometre)."""
         n = self.samples.shape[0]
         moment = (self.failure > 0).any(axis=0)
         late = np.zeros(n, bool)
-        for watched in (self.slip_step, self.drop_step, self.motor_step, self.diverged_step):
+        for watched in (self.slip_step, self.motor_step, self.diverged_step):
             if watched is not None:
                 late |= watched >= self.release
         incomplete = np.zeros(n, bool) if self.incomplete is None else self.incomplete
-        return self.failed & (moment | late | incomplete)
+        dropped = (np.zeros(n, bool) if self.drop_step is None
+                   else (self.drop_step >= 0) & (self.drop_step < self.release))
+        return self.failed & (moment | late | (incomplete & ~dropped))
 
     @property
     def watched_failed(self) -> np.ndarray:
-        """(n,) bool: the watch (the ground truth's slip, drop, saturation and tracking
-        rules, and divergence) fails the sample somewhere along its chain, or it reaches
-        the end of the run without completing the task."""
+        """(n,) bool: the watch (the ground truth's slip, saturation and tracking rules, and
+        divergence) fails the sample somewhere along its chain, or it reaches the end of the
+        run without completing the task (a drop fails it so)."""
         out = np.zeros(self.samples.shape[0], bool)
-        for watched in (self.slip_step, self.drop_step, self.motor_step, self.diverged_step):
+        for watched in (self.slip_step, self.motor_step, self.diverged_step):
             if watched is not None:
                 out = out | (watched >= 0)
         if self.incomplete is not None:
@@ -322,8 +327,9 @@ class _Watch:
                          criteria.steps(criteria.tracking_time, dt), self.motor_step)}
 
     def failed(self) -> np.ndarray:
-        return ((self.slip_step >= 0) | (self.drop_step >= 0) | (self.motor_step >= 0)
-                | (self.diverged_step >= 0))
+        """Failed by a rule that fails a run whatever its end (a drop does not: the task's
+        rule at the end decides a run that lost its object)."""
+        return (self.slip_step >= 0) | (self.motor_step >= 0) | (self.diverged_step >= 0)
 
     def __call__(self, k: int, ids: np.ndarray, sensordata: np.ndarray, xpos: np.ndarray,
                  xmat: np.ndarray, qpos: np.ndarray) -> None:
@@ -647,9 +653,22 @@ def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: 
         taken = max(taken, current)
         if k is None or not alive.any():
             break
-        run = np.flatnonzero(alive)
+        # a sample whose object is out of every gripper where the nominal run carries it
+        # is not decided at the moments (its grip has nothing to hold): it steps on to the
+        # end, where the task's rule decides it, as the ground truth counts a drop only in
+        # a run that does not complete the task (the object can be caught again: a cube
+        # that bounces between the grippers at a hand-over)
+        lost = watch.drop_step[rows] >= 0
+        run = np.flatnonzero(alive & ~lost)
         sim = ev._simulate(batch, k, run, mu, keep_state=False, restore=False, watch=watched)
         failure[j, rows[run]] = sim.failure[run]
+        carried = np.flatnonzero(alive & lost)
+        if carried.size:
+            batch.warning[...] = 0
+            ev._roll(batch, k, ev.horizon, carried, raised, watched, measure_slip=False)
+            gone = carried[(raised[carried] | (batch.warning[carried, :, 1] > 0).any(axis=1))
+                           & (watch.diverged_step[rows[carried]] < 0)]
+            watch.diverged_step[rows[gone]] = k
         current = k + ev.horizon
         taken = max(taken, current)
         alive[run[sim.failure[run] > 0]] = False

@@ -327,25 +327,35 @@ def fail_sides(samples: np.ndarray, failed: np.ndarray, box: UncertaintyBox,
     """Per parameter, the side where the motion fails: "above" or "below".
 
     In order: the critical values' sides (``MomentReport.critical_side`` of each moment) by
-    majority; else the sign of ``trend`` (how much the cost grows from the low to the high
-    end of the parameter's 1-D curve with the others at nominal, summed over the moments);
-    else the sign of the rank correlation of the parameter with the samples' failures.
+    majority; else the sign of the rank correlation of the parameter with the samples'
+    failures (the decisions themselves, chained and rolled-out ones included) where it is
+    significant (|ρ| > 2/√n); else the sign of ``trend`` (how much the cost grows from the
+    low to the high end of the parameter's 1-D curve with the others at nominal, summed
+    over the moments); else the sign of the correlation, however weak. The cost's trend
+    comes after the failures themselves: where the cost never crosses the threshold, the
+    failures come from what the cost does not see (a soft grip's slip, watched on each
+    sample's own run), and its slope can point the other way (ACT's scene with an elliptic
+    cone: the motor term grows with friction, the slips that fail come at low friction).
     """
     sides = []
     failed = np.asarray(failed, dtype=np.float64)
+    n = samples.shape[0]
     for j, p in enumerate(box.parameters):
         votes = [cs.get(p.name) for cs in critical_sides]
         above, below = votes.count("above"), votes.count("below")
         if above != below:
             sides.append("above" if above > below else "below")
             continue
+        rank_x = np.argsort(np.argsort(samples[:, j], kind="stable"), kind="stable")
+        corr = (float(np.corrcoef(rank_x, failed)[0, 1])
+                if n > 1 and np.std(failed) > 0 else 0.0)
+        if abs(corr) > 2.0 / np.sqrt(max(n, 1)):
+            sides.append("below" if corr < 0 else "above")
+            continue
         t = None if trend is None else trend.get(p.name)
         if t is not None and np.isfinite(t) and abs(t) > 1e-9:
             sides.append("above" if t > 0 else "below")
             continue
-        rank_x = np.argsort(np.argsort(samples[:, j], kind="stable"), kind="stable")
-        corr = (np.corrcoef(rank_x, failed)[0, 1]
-                if samples.shape[0] > 1 and np.std(failed) > 0 else 0.0)
         sides.append("below" if corr < 0 else "above")
     return sides
 

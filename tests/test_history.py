@@ -184,22 +184,23 @@ def test_a_chained_failure_is_a_moment_failure_or_a_watched_one():
     # every failure here comes from a moment (sample 2 also slips): its rollout decides it
     np.testing.assert_array_equal(dataclasses.replace(result, release=2000).to_confirm,
                                   result.failed)
-    # only watched failures: a drop in the hold stands, a tracking loss after the release
-    # and an incomplete task go to their rollouts
-    quiet = np.full((1, 4), F.PASS, dtype=np.int8)
-    drop, motor = np.full(4, -1), np.full(4, -1)
-    drop[0], motor[1] = 150, 260
-    watched = history.ChainedResult(steps=np.array([100]), samples=np.zeros((4, 2)),
+    # only watched failures: a drop in the hold that leaves the task incomplete stands, a
+    # tracking loss after the release and an incomplete task without a drop go to their
+    # rollouts; a drop whose run completes the task (the object caught again) fails nothing
+    quiet = np.full((1, 5), F.PASS, dtype=np.int8)
+    drop, motor = np.full(5, -1), np.full(5, -1)
+    drop[[0, 4]], motor[1] = 150, 260
+    watched = history.ChainedResult(steps=np.array([100]), samples=np.zeros((5, 2)),
                                     failure=quiet, start=100, stepped=0, end=300,
-                                    slip_step=np.full(4, -1), drop_step=drop, motor_step=motor,
-                                    max_slip=np.zeros(4),
-                                    incomplete=np.array([False, False, True, False]),
+                                    slip_step=np.full(5, -1), drop_step=drop, motor_step=motor,
+                                    max_slip=np.zeros(5),
+                                    incomplete=np.array([True, False, True, False, False]),
                                     release=250)
-    np.testing.assert_array_equal(watched.failed, [True, True, True, False])
-    np.testing.assert_array_equal(watched.to_confirm, [False, True, True, False])
-    # with the release before the drop, the drop goes to its rollout too
+    np.testing.assert_array_equal(watched.failed, [True, True, True, False, False])
+    np.testing.assert_array_equal(watched.to_confirm, [False, True, True, False, False])
+    # with the release before the drop, the dropped run goes to its rollout too
     np.testing.assert_array_equal(dataclasses.replace(watched, release=150).to_confirm,
-                                  [True, True, True, False])
+                                  [True, True, True, False, False])
 
 
 def test_the_chain_watches_tracking_as_the_ground_truth_does(scenario, twin):
@@ -337,7 +338,8 @@ def test_the_chain_applies_the_task_rule_at_the_end_of_the_run():
     """A sample that passes every moment and the watch to the end is still decided by the
     task's success rule over its whole run, as the ground truth's NOT_COMPLETED is: with the
     bundled Panda's goal moved 5 cm away, every sample that keeps its cube is incomplete in
-    the chain and in its full rollout; at the real goal the nominal sample completes."""
+    the chain and in its full rollout; at the real goal the nominal sample completes, and
+    the 1.5 kg cube, dropped, is incomplete in both."""
     import dataclasses
 
     import critmoment as cm
@@ -356,7 +358,8 @@ def test_the_chain_applies_the_task_rule_at_the_end_of_the_run():
         touch = int(np.flatnonzero(rec.signals.contact_gripper.any(axis=1))[0])
         chain = history.chained_failures(ev, [touch], samples)
         truth = groundtruth.brute_force(traj, twin=twin, samples=samples).classification
-        not_completed = np.array([o is groundtruth.Outcome.NOT_COMPLETED for o in truth.outcome])
-        np.testing.assert_array_equal(chain.incomplete, not_completed)
+        # a dropped cube runs on to the end too, where it is incomplete (the ground truth's
+        # DROPPED outcome is an incomplete run with a drop)
+        np.testing.assert_array_equal(chain.incomplete, ~truth.completed)
         np.testing.assert_array_equal(chain.failed, truth.failed)
         assert chain.incomplete[0] is np.bool_(moved)

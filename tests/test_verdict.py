@@ -269,14 +269,20 @@ def test_decide_unsafe_at_nominal_and_safe_needs_the_whole_box_checked():
     assert any("first claimed" in c for c in d.causes)
 
 
-def test_fail_sides_follow_the_critical_values_then_the_failures():
+def test_fail_sides_follow_the_critical_values_then_the_failures_then_the_trend():
     box = _box()
     x = _grid(box, 9)
     failed = _cost(x) > THRESHOLD
     assert vd.fail_sides(x, failed, box) == ["above", "below"]
     votes = [{"mass": "below", "friction": None}]
     assert vd.fail_sides(x, failed, box, votes)[0] == "below"
+    # the failures themselves, where they correlate significantly, come before the cost's
+    # trend (a cost that never crosses the threshold can slope the other way)
     assert vd.fail_sides(x, failed, box, (), {"mass": -1.0, "friction": 2.0}) == [
+        "above", "below"]
+    # where they do not (no failure at all), the trend decides
+    none = np.zeros(len(x), bool)
+    assert vd.fail_sides(x, none, box, (), {"mass": -1.0, "friction": 2.0}) == [
         "below", "above"]
 
 
