@@ -555,17 +555,20 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     """Carry each sample's own state from one nominal state through every later moment.
 
     The simulations start from the recorded state at ``start`` (default:
-    :func:`chain_start`, before the parameters first act), run the recorded controls with the sample's own parameters, and at each moment
-    (in time order; one whose window overlaps the previous one's is skipped) are decided by
-    the sparse decision over the horizon from the state they reached, not the nominal one.
-    All along, from ``start`` to the end of the run, the object's slip in its holding
-    gripper, its loss, the saturation and tracking of the arm's motors and the simulation's
-    stability are watched with the ground truth's own rules and
-    tolerances (``criteria``, default
+    :func:`chain_start`, before the parameters first act), run the recorded controls with
+    the sample's own parameters, and at each moment (in time order; one whose window
+    overlaps the previous one's is skipped) are decided by the sparse decision over the
+    horizon from the state they reached, not the nominal one. All along, from ``start`` to
+    the end of the run, the object's slip in its holding gripper, its loss, the saturation
+    and tracking of the arm's motors and the simulation's stability are watched with the
+    ground truth's own rules and tolerances (``criteria``, default
     :class:`~critmoment.groundtruth.OutcomeCriteria`): between the moments the object creeps
     or shifts in a soft or force-limited grip, which no evaluation from a nominal state
-    sees. A sample stops at its first failure. The cost is at most the stepping from
-    ``start`` to that end, per sample.
+    sees. A sample that reaches the end is decided by the task's success rule over its whole
+    run. A sample stops at its first failure; a drop is not one by itself (as in the ground
+    truth, it fails a run that does not complete the task): a sample that lost its object
+    steps on to the end, undecided at the later moments. The cost is at most the stepping
+    from ``start`` to the end, per sample.
 
     Args:
         evaluator: the audit's sparse evaluator.
