@@ -516,8 +516,8 @@ class NominalOnsets:
 def chain_start(evaluator: SparseEvaluator, steps: Any) -> int:
     """The step a sample's own history starts from: ``ONSET_MARGIN`` before the first step
     at which any uncertain parameter can change the motion (:meth:`Parameter.onset
-    <critmoment.params.Parameter.onset>`: a parameter of the object, once something other
-    than its supports touches it; a force limit, once the nominal force reaches the range's
+    <critmoment.params.Parameter.onset>`: the object's mass and friction, once something
+    other than its supports touches it; a force limit, once the nominal force reaches the range's
     low end; anything else, from the start), and no later than the first moment.
 
     Starting at the first moment, which change-point detection usually puts at the first

@@ -230,8 +230,9 @@ class ComOffsetParameter(Parameter):
     def resolve(self, model):
         return _resolve(model, mujoco.mjtObj.mjOBJ_BODY, self.target, "body")
 
-    def onset(self, index, run):
-        return _object_onset(run, run.object_geoms) if index == run.object_body else 0
+    # onset: the default, from the start. Unlike its mass, an object's centre of mass can
+    # move it on its support before anything touches it (an offset past its footprint tips
+    # it over), so no later step is safe to assume
 
     def write(self, index, base, arrays, values):
         arrays["body_ipos"][:, index] = base.body_ipos[index]

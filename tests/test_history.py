@@ -310,8 +310,8 @@ def test_the_chain_starts_before_the_object_is_first_touched(scenario, twin, dem
 def test_parameter_onsets_on_the_nominal_run(scenario, twin, demo_recording):
     """Where each kind of parameter can first change the motion: a force limit once the
     nominal force reaches the range's low end (never if it stays below), a finger pad's
-    friction at the pad's first contact with anything, the mass of a robot link from the
-    start."""
+    friction at the pad's first contact with anything, the object's mass at its first touch,
+    its centre of mass and the mass of a robot link from the start."""
     from critmoment.params import ForceLimitParameter, FrictionParameter, MassParameter
 
     ev = sparse.SparseEvaluator(demo_recording, twin)
@@ -332,6 +332,16 @@ def test_parameter_onsets_on_the_nominal_run(scenario, twin, demo_recording):
     link = MassParameter("link", model.body(model.geom_bodyid[model.geom(pad).id]).name,
                          0.1, 1.0, 0.5)
     assert link.onset(link.resolve(model), run) == 0
+    # the object's mass acts at the first touch; its centre of mass from the start (an
+    # offset can tip it over on its own)
+    from critmoment.params import ComOffsetParameter
+
+    touch = int(np.flatnonzero(demo_recording.signals.contact_gripper.any(axis=1))[0])
+    body = scenario.object_body
+    mass = MassParameter("m", body, 0.05, 1.0, 0.1)
+    assert mass.onset(mass.resolve(model), run) == touch
+    com = ComOffsetParameter("c", body, -0.01, 0.01, 0.0)
+    assert com.onset(com.resolve(model), run) == 0
 
 
 def test_the_chain_applies_the_task_rule_at_the_end_of_the_run():
