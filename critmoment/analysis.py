@@ -447,15 +447,13 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     # on the overlap
     rerun = near | unlifted
     verifying = opt.verify is not None and steps.size > 0
-    side = evaluator.fork()
-    if opt.nthread != 1:
-        # two physics threads beside this one: one MuJoCo thread each (with all CPUs each,
-        # six threads would share two cores; measured 2.16 -> 2.09 s, medians of 6)
-        roll.nthread = side.nthread = 1
+    # two physics threads beside this one: one MuJoCo thread each (with all CPUs each, six
+    # threads would share two cores; measured 2.16 -> 2.09 s, medians of 6)
+    side = 1 if opt.nthread != 1 else None
     with _pool(opt.nthread) as pool:
-        verified = pool.submit(_verify, stage, roll, samples, rerun, verifying)
-        chain = pool.submit(_chain, stage, side, steps, samples, res, rerun, dopt,
-                            rec.completed)
+        verified = pool.submit(_verify, stage, roll, samples, rerun, verifying, side)
+        chain = pool.submit(_chain, stage, evaluator.fork(side), steps, samples, res, rerun,
+                            dopt, rec.completed)
         with stage("critical values"):
             curves = _curves(evaluator, steps, box, opt.critical_grid) if steps.size else {}
             critical = _critical_values(rec, twin, evaluator, steps, opt.critical_grid)
@@ -468,7 +466,6 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                 load_bound = _load_bound(rec, twin)
         rerun_failed = verified.result()
         chained, chained_failed, suspect = chain.result()
-    roll.nthread = opt.nthread
     if suspect.any() and verifying:
         with stage("chained segments"):
             # failed on its own path (approximately its own run): its own rollout decides
@@ -594,14 +591,15 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
 
 
 def _verify(stage, roll: _Rollouts, samples: np.ndarray, rerun: np.ndarray,
-            run: bool) -> np.ndarray:
+            run: bool, nthread: int | None = None) -> np.ndarray:
     """The real outcomes (failed, (n,) bool) of the samples the sweep cannot decide
-    (``rerun``: near the threshold, unlifted), by their own full rollouts."""
+    (``rerun``: near the threshold, unlifted), by their own full rollouts (``nthread``
+    MuJoCo threads, default the rollouts' own)."""
     failed = np.zeros(len(samples), bool)
     if run:
         with stage("verification"):
             if rerun.any():
-                failed[rerun] = roll(samples[rerun])
+                failed[rerun] = roll(samples[rerun], nthread)
     return failed
 
 
@@ -864,8 +862,9 @@ class _Rollouts:
         self.trajectory, self.twin, self.nthread = trajectory, twin, nthread
         self.reference, self.chunk = reference, chunk
 
-    def __call__(self, points: np.ndarray) -> np.ndarray:
-        bf = brute_force(self.trajectory, twin=self.twin, samples=points, nthread=self.nthread,
+    def __call__(self, points: np.ndarray, nthread: int | None = None) -> np.ndarray:
+        nthread = self.nthread if nthread is None else nthread
+        bf = brute_force(self.trajectory, twin=self.twin, samples=points, nthread=nthread,
                          reference=self.reference, chunk=self.chunk)
         self.reference = bf.reference
         return bf.failed

@@ -503,12 +503,8 @@ class NominalOnsets:
         return int(at[hit][0]) if hit.any() else self.n_steps
 
     def first_force(self, actuator: int, level: float) -> int:
-        ev = self._evaluator
-        sd = ev._sensordata
-        if sd is None:
-            return 0
-        force = np.abs(np.asarray(sd)[:, ev.twin._force_adr[actuator]])
-        # sensordata[k] is read after step k, whose force acted from state k
+        force = np.abs(self._evaluator.recording.signals.actuator_force[:, actuator])
+        # the force read after step k acted from state k
         reached = np.flatnonzero(force >= level * (1.0 - 1e-9))
         return int(reached[0]) if reached.size else self.n_steps
 
@@ -639,18 +635,22 @@ def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: 
     def watched(k, ids, sensordata, xpos, xmat, qpos):
         watch(k, rows[ids], sensordata, xpos, xmat, qpos)
 
+    def step(k, nstep, ids):
+        """Step the simulations ``ids`` ``nstep`` steps from k under the watch; a block in
+        which MuJoCo raised or warned of an unstable step (as _simulate counts divergence)
+        is where they diverged."""
+        batch.warning[...] = 0
+        ev._roll(batch, k, nstep, ids, raised, watched, measure_slip=False)
+        gone = ids[(raised[ids] | (batch.warning[ids, :, 1] > 0).any(axis=1))
+                   & (watch.diverged_step[rows[ids]] < 0)]
+        watch.diverged_step[rows[gone]] = k
+
     current = taken = first
     for j, k in enumerate([*kept, None]):
         target = end if k is None else k
         while current < target and alive.any():
             nstep = min(block, target - current)
-            ids = np.flatnonzero(alive)
-            batch.warning[...] = 0
-            ev._roll(batch, current, nstep, ids, raised, watched, measure_slip=False)
-            # MuJoCo raised, or warned of an unstable step (as _simulate counts divergence)
-            gone = ids[(raised[ids] | (batch.warning[ids, :, 1] > 0).any(axis=1))
-                       & (watch.diverged_step[rows[ids]] < 0)]
-            watch.diverged_step[rows[gone]] = current
+            step(current, nstep, np.flatnonzero(alive))
             current += nstep
             alive &= ~watch.failed()[rows]
         taken = max(taken, current)
@@ -665,13 +665,9 @@ def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: 
         run = np.flatnonzero(alive & ~lost)
         sim = ev._simulate(batch, k, run, mu, keep_state=False, restore=False, watch=watched)
         failure[j, rows[run]] = sim.failure[run]
-        carried = np.flatnonzero(alive & lost)
-        if carried.size:
-            batch.warning[...] = 0
-            ev._roll(batch, k, ev.horizon, carried, raised, watched, measure_slip=False)
-            gone = carried[(raised[carried] | (batch.warning[carried, :, 1] > 0).any(axis=1))
-                           & (watch.diverged_step[rows[carried]] < 0)]
-            watch.diverged_step[rows[gone]] = k
+        dropped = np.flatnonzero(alive & lost)
+        if dropped.size:
+            step(k, ev.horizon, dropped)
         current = k + ev.horizon
         taken = max(taken, current)
         alive[run[sim.failure[run] > 0]] = False

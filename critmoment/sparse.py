@@ -684,10 +684,11 @@ class SparseEvaluator:
         self._written: dict[int, np.ndarray] = {}
         self._mu: dict[int, np.ndarray | float] = {}
 
-    def fork(self) -> SparseEvaluator:
+    def fork(self, nthread: int | None = None) -> SparseEvaluator:
         """An evaluator of the same recording and settings with simulations and caches of
         its own, for another thread (an evaluator is not safe to share between threads;
-        its results do not depend on which copy computes them)."""
+        its results do not depend on which copy computes them), with ``nthread`` MuJoCo
+        threads (default: this one's)."""
         self._nominal_over()  # computed once, shared read-only
         if self._anchors.size:
             self._nominal_positions(0, self._nominal_rel.shape[0])
@@ -696,6 +697,8 @@ class SparseEvaluator:
         other._memo = collections.OrderedDict()
         other._written, other._mu = {}, {}
         other._kin_data = None
+        if nthread is not None:
+            other.nthread = _check_int("nthread", nthread, 0)
         return other
 
     def __repr__(self) -> str:
