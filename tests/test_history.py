@@ -373,3 +373,29 @@ def test_the_chain_applies_the_task_rule_at_the_end_of_the_run():
         np.testing.assert_array_equal(chain.incomplete, ~truth.completed)
         np.testing.assert_array_equal(chain.failed, truth.failed)
         assert chain.incomplete[0] is np.bool_(moved)
+
+
+def test_a_drop_fails_a_chained_sample_only_where_the_task_ends_incomplete():
+    """As in the ground truth, a drop alone fails nothing: with a 2 ms drop time, the
+    bundled Panda's 0.2 kg cube leaves both fingers a few steps before the nominal release
+    (a drop by that rule) and is still placed; the chain records the drop, steps on to the
+    end and passes the sample, as its full rollout does."""
+    import critmoment as cm
+    from critmoment import groundtruth, panda_demo
+    from critmoment.groundtruth import OutcomeCriteria
+
+    twin = cm.Twin(cm.load_scenario("panda_pick_place"))
+    traj = panda_demo.make_pick_place(0)
+    rec = cm.rollout(traj, twin=twin)
+    ev = sparse.SparseEvaluator(rec, twin)
+    touch = int(np.flatnonzero(rec.signals.contact_gripper.any(axis=1))[0])
+    samples = twin.scenario.box.nominal[None].copy()
+    samples[0, twin.scenario.box.index("mass")] = 0.2
+    criteria = OutcomeCriteria(drop_time=0.002)
+    chain = history.chained_failures(ev, [touch], samples, criteria=criteria)
+    truth = groundtruth.brute_force(traj, twin=twin, samples=samples,
+                                    criteria=criteria).classification
+    assert chain.drop_step[0] >= 0 and truth.drop_step[0] >= 0
+    assert truth.outcome[0] is groundtruth.Outcome.SUCCESS
+    assert not chain.incomplete[0] and not chain.failed[0]
+    assert chain.stepped == ev.n_steps - chain.start  # it ran on to the end
