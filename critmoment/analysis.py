@@ -487,8 +487,10 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                         "unlifted_failed": int(failed[unlifted].sum()),
                         "chained": int(chained.sum()),
                         "chained_failed": int(chained_failed[chained].sum()),
-                        "chained_rolled_out": int(suspect.sum()),
-                        "chained_confirmed": int(failed[suspect].sum())}
+                        "chained_rolled_out": int((suspect & chained_failed).sum()),
+                        "chained_confirmed": int(failed[suspect & chained_failed].sum()),
+                        "chained_near": int((suspect & ~chained_failed).sum()),
+                        "chained_near_failed": int(failed[suspect & ~chained_failed].sum())}
     moment_reports = []
     worst_failed_sparse: dict[int, bool] = {}  # per moment: its worst case fails (sparse)
     worst_unlifted: dict[int, bool] = {}  # per failing moment: its worst case is unlifted
@@ -718,9 +720,11 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The chained evidence of the decision: which samples were carried on their own state
     (:func:`critmoment.verdict.samples_to_chain`), whether they failed there, and which of
-    those failures their own full rollout should decide (with verification on:
-    ``ChainedResult.to_confirm``), each (n,) bool. Shared by :func:`analyze`,
-    :func:`check_region` and :func:`critmoment.validation.predict`.
+    them their own full rollout should decide (with verification on: the failures of
+    ``ChainedResult.to_confirm``, and the passes that came within ``options.verify`` of a
+    watched rule's limit, ``ChainedResult.near``, as the sweep's passes near the cost
+    threshold are), each (n,) bool. Shared by :func:`analyze`, :func:`check_region` and
+    :func:`critmoment.validation.predict`.
 
     A chain is the sample's own run only approximately (it starts from the nominal state
     before the parameters act, and applies the sparse decision at the moments on top of the
@@ -743,6 +747,8 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
         result = history.chained_failures(evaluator, steps, samples[chained])
         chained_failed[chained] = result.failed
         suspect[chained] = result.to_confirm
+        if options.verify is not None:
+            suspect[chained] |= result.near(options.verify)
     return chained, chained_failed, suspect
 
 

@@ -41,7 +41,7 @@ from critmoment.task import TaskEvidence
 from critmoment.twin import STATE_SPEC
 
 __all__ = ["DriftEstimate", "estimate_drift", "ChainedResult", "chained_failures",
-           "chain_start", "NominalOnsets", "ONSET_MARGIN",
+           "chain_start", "SustainedLevel", "NominalOnsets", "ONSET_MARGIN",
            "DRIFT_TOLERANCE", "LAG_TOLERANCE"]
 
 #: predicted displacement of the object in its grip that escalates a sample [m]: half the
@@ -201,6 +201,12 @@ class ChainedResult:
             the task, (n,) bool (the ground truth's ``NOT_COMPLETED``).
         release: the first step after the nominal run's last carried one (the end of the
             run if it never carries the object; −1: unknown, every watched failure is late).
+        closest: how close the sample came to failing a watched rule, (n,): per rule (slip,
+            saturation, tracking), the highest level its quantity held for the rule's whole
+            duration, as a fraction of the rule's limit (slip over ``slip_tolerance``,
+            force over ``saturation`` of the limit, extra lag over
+            ``tracking_tolerance``), the largest over the rules; at 1 or above the rule
+            fires (:func:`sustained_level`).
     """
 
     steps: np.ndarray
@@ -216,6 +222,18 @@ class ChainedResult:
     diverged_step: np.ndarray | None = None
     incomplete: np.ndarray | None = None
     release: int = -1
+    closest: np.ndarray | None = None
+
+    def near(self, fraction: float) -> np.ndarray:
+        """(n,) bool: samples that pass their chain but held a watched quantity at or
+        above ``fraction`` of its rule's limit for the rule's duration (``closest``): the
+        chain starts from the nominal state and is the sample's own run only
+        approximately, so a pass that close to a rule is decided, like a sparse pass near
+        the cost threshold, by the sample's own full rollout."""
+        n = self.samples.shape[0]
+        if self.closest is None:
+            return np.zeros(n, bool)
+        return ~self.failed & (self.closest >= fraction)
 
     @property
     def failed(self) -> np.ndarray:
@@ -325,6 +343,9 @@ class _Watch:
                            criteria.steps(criteria.motor_time, dt), self.motor_step),
             "tracking": (np.zeros((n, rotational.size), np.int64),
                          criteria.steps(criteria.tracking_time, dt), self.motor_step)}
+        # per rule, its quantity over its limit, as held for the rule's duration
+        self.levels = {name: SustainedLevel(n, run.shape[1], need)
+                       for name, (run, need, _) in self.rules.items() if name != "drop"}
 
     def failed(self) -> np.ndarray:
         """Failed by a rule that fails a run whatever its end (a drop does not: the task's
@@ -376,19 +397,30 @@ class _Watch:
         lost = ev._carried[k:k + s][None] & ~touch.any(axis=-1)
         over = slip > self.tolerance
         with np.errstate(invalid="ignore", divide="ignore"):
-            saturated = np.abs(sensordata[..., self.force_adr] / self.limits) >= self.saturation
+            load = np.abs(sensordata[..., self.force_adr] / self.limits)
+        saturated = load >= self.saturation
         target = ev._controls[k:k + s][:, self.act]                          # (s, r)
         nominal = ev._states[k + 1:k + s + 1, self.qoffset + self.qadr] * self.gear
         q = qpos[..., self.qadr] * self.gear                                 # (c, s, r)
-        lagging = (np.abs(q - target[None]) - np.abs(nominal - target)[None]
-                   > self.tracking_tolerance)
+        excess = np.abs(q - target[None]) - np.abs(nominal - target)[None]
+        lagging = excess > self.tracking_tolerance
         flags = {"slip": over[..., None], "drop": lost[..., None], "saturation": saturated,
                  "tracking": lagging}                                 # each (c, s, columns)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            ratios = {"slip": (slip / self.tolerance)[..., None],
+                      "saturation": load / self.saturation,
+                      "tracking": excess / self.tracking_tolerance}
+        for name, level in self.levels.items():
+            level.update(ids, np.nan_to_num(ratios[name], nan=np.inf))
         for name, (run, need, first_step) in self.rules.items():
             run[ids], first = _runs(run[ids], flags[name], need)
             hit = (first >= 0) & (first_step[ids] < 0)
             first_step[ids[hit]] = k + first[hit] - need + 1
 
+
+    def closest(self) -> np.ndarray:
+        """(n,) the highest sustained level over the rules (``ChainedResult.closest``)."""
+        return np.max([level.best for level in self.levels.values()], axis=0)
 
     def completed(self, rows: np.ndarray | None = None, *, block: int = 64) -> np.ndarray:
         """(r,) bool: the task's success rule over each sample's whole run, the nominal
@@ -416,6 +448,34 @@ class _Watch:
                 dt=float(ev.twin.model.opt.timestep))
             out[lo:lo + block] = np.asarray(ev.twin.task.success(evidence), dtype=bool)
         return out
+
+
+class SustainedLevel:
+    """The highest level each of n signals (with ``columns`` columns) held for ``need``
+    consecutive steps, streamed over blocks of steps: per sample, the largest over columns
+    and windows of ``need`` steps of the window's smallest value (a rule "above L for
+    ``need`` steps" fires exactly where this level exceeds L).
+
+    Each block's windows start in the previous blocks' last ``need − 1`` steps, which are
+    carried over (as −inf before the first step, so a window is never shorter).
+    """
+
+    def __init__(self, n: int, columns: int, need: int):
+        self.need = max(int(need), 1)
+        self.best = np.full(n, -np.inf)
+        self.tail = np.full((n, self.need - 1, columns), -np.inf)
+
+    def update(self, ids: np.ndarray, values: np.ndarray) -> None:
+        """Stream the values (c, s, columns) of the next s steps of samples ``ids``."""
+        if values.shape[1] == 0:
+            return
+        joined = np.concatenate([self.tail[ids], values], axis=1)  # (c, need-1+s, cols)
+        windows = np.lib.stride_tricks.sliding_window_view(joined, self.need, axis=1)
+        if windows.shape[1]:
+            level = windows.min(axis=-1).max(axis=(1, 2))
+            self.best[ids] = np.maximum(self.best[ids], level)
+        if self.need > 1:
+            self.tail[ids] = joined[:, joined.shape[1] - (self.need - 1):]
 
 
 def _release(ev: SparseEvaluator) -> int:
@@ -619,6 +679,7 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
                          incomplete=incomplete, release=_release(ev),
                          slip_step=watch.slip_step, drop_step=watch.drop_step,
                          max_slip=watch.max_slip, motor_step=watch.motor_step,
+                         closest=watch.closest(),
                          diverged_step=watch.diverged_step)
 
 

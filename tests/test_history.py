@@ -399,3 +399,74 @@ def test_a_drop_fails_a_chained_sample_only_where_the_task_ends_incomplete():
     assert truth.outcome[0] is groundtruth.Outcome.SUCCESS
     assert not chain.incomplete[0] and not chain.failed[0]
     assert chain.stepped == ev.n_steps - chain.start  # it ran on to the end
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_streamed_sustained_level_equals_the_direct_one(seed):
+    """The watch's streamed sustained level (history.SustainedLevel): the highest level a
+    signal held for ``need`` consecutive steps, per sample the largest over columns, equal
+    across uneven block borders to the direct max over windows of the window's min."""
+    rng = np.random.default_rng(seed)
+    c, t, r, need = 3, 50, 4, 6
+    values = rng.normal(size=(c, t, r))
+    windows = np.lib.stride_tricks.sliding_window_view(values, need, axis=1)
+    direct = windows.min(axis=-1).max(axis=(1, 2))
+    level = history.SustainedLevel(c, r, need)
+    ids = np.arange(c)
+    for lo, hi in [(0, 2), (2, 3), (3, 17), (17, 17), (17, 50)]:
+        level.update(ids, values[:, lo:hi])
+    np.testing.assert_allclose(level.best, direct, rtol=0, atol=0)
+    # a signal shorter than the duration never held any level
+    short = history.SustainedLevel(1, 1, need)
+    short.update(np.array([0]), np.ones((1, need - 1, 1)))
+    assert short.best[0] == -np.inf
+
+
+def test_a_chained_pass_close_to_a_rule_goes_to_its_own_rollout(scenario, demo_traj,
+                                                                demo_recording):
+    """With the right elbow's limit 15 % over the nominal carry's peak, the nominal cube's
+    chain passes but holds the arm's motors at about 70 % of their limits for longer than
+    the ground truth's motor time: its closest level is the one computed from the recorded
+    forces (the nominal chain is the nominal run), so it is near just under that level and
+    not just over it, and with verification from there the audit's chained evidence sends
+    it to its own rollout; the 1 kg cube fails (a failure is never near)."""
+    from critmoment import analysis
+    from critmoment import verdict as vd
+    from critmoment.groundtruth import OutcomeCriteria
+    from critmoment.recording import rollout
+    from critmoment.twin import Twin
+
+    sig = demo_recording.signals
+    carry = np.flatnonzero((sig.contact_gripper & ~sig.contact_support[:, None]).any(axis=1))
+    i = Twin(scenario).actuator_names.index("right/elbow")
+    peak = np.abs(np.asarray(sig.actuator_force)[carry, i]).max()
+    twin = Twin(scenario.replace(limits={**scenario.limits, "right/elbow": float(1.15 * peak)}))
+    rec = rollout(demo_traj, twin=twin)
+    samples = np.tile(scenario.box.nominal, (2, 1))
+    samples[1, scenario.box.index("mass")] = 1.0
+    start = int(carry[0]) - 200
+    ev = sparse.SparseEvaluator(rec, twin)
+    chain = history.chained_failures(ev, [start], samples)
+    np.testing.assert_array_equal(chain.failed, [False, True])
+    criteria = OutcomeCriteria()
+    rot = np.flatnonzero(twin.rotational)
+    load = np.abs(np.asarray(rec.signals.actuator_force)[start:, rot] / twin.limits[rot])
+    need = criteria.steps(criteria.motor_time, float(twin.model.opt.timestep))
+    windows = np.lib.stride_tricks.sliding_window_view(load / criteria.saturation, need,
+                                                       axis=0)
+    expected = windows.min(axis=-1).max()
+    assert 0.5 < expected < 0.95
+    np.testing.assert_allclose(chain.closest[0], expected, rtol=1e-12)
+    np.testing.assert_array_equal(chain.near(expected - 0.01), [True, False])
+    np.testing.assert_array_equal(chain.near(expected + 0.01), [False, False])
+    # the decision's chained evidence: the near pass is decided by its rollout
+    sweep = ev.evaluate([start], samples)
+    dopt = vd.DecisionOptions(threshold=scenario.cost.threshold, verify=expected - 0.01)
+    none = np.zeros(2, bool)
+    chained, failed, rolled = analysis.chain_samples(ev, np.array([start]), samples, sweep,
+                                                     none, dopt)
+    assert chained[0] and not failed[0] and rolled[0]
+    for verify in (None, expected + 0.01):
+        off = dataclasses.replace(dopt, verify=verify)
+        assert not analysis.chain_samples(ev, np.array([start]), samples, sweep, none,
+                                          off)[2][0]
