@@ -438,14 +438,14 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_cost = float(res_all.worst_cost()[0]) if steps.size else 0.0
         res = _select_samples(res_all, slice(1, None))
     dopt = decision_options(opt, threshold)
-    near, unlifted = vd.samples_to_rerun(res, dopt,
-                                         nominal_completed=rec.completed)
+    near, unlifted, sticking = vd.samples_to_rerun(res, dopt,
+                                                   nominal_completed=rec.completed)
     roll = _Rollouts(trajectory, twin, opt.nthread)
     # the samples' own runs (verification rollouts, chained segments: physics in MuJoCo's
     # threads) go on in two more threads, the chain on an evaluator of its own, while this
     # one computes the critical values and the searches (mostly Python): no result depends
     # on the overlap
-    rerun = near | unlifted
+    rerun = near | unlifted | sticking
     verifying = opt.verify is not None and steps.size > 0
     # two physics threads beside this one: one MuJoCo thread each (with all CPUs each, six
     # threads would share two cores; measured 2.16 -> 2.09 s, medians of 6)
@@ -485,6 +485,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                         "near": int(near.sum()), "near_failed": int(failed[near].sum()),
                         "unlifted": int(unlifted.sum()),
                         "unlifted_failed": int(failed[unlifted].sum()),
+                        "sticking": int(sticking.sum()),
+                        "sticking_failed": int(failed[sticking].sum()),
                         "chained": int(chained.sum()),
                         "chained_failed": int(chained_failed[chained].sum()),
                         "chained_rolled_out": int((suspect & chained_failed).sum()),
@@ -518,7 +520,9 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         if worst_case and not max_cost <= threshold:
             one = evaluator.evaluate([s], [[worst_case[n] for n in box.names]])
             worst_failed_sparse[s] = bool(one.failed[0, 0])
-            worst_unlifted[s] = bool(one.unlifted_failure[0, 0])
+            # unlifted or sticking: only a rollout can say whether it really fails
+            worst_unlifted[s] = bool(one.unlifted_failure[0, 0] or (
+                dopt.verify_sticking and one.sticking_failure[0, 0]))
             if dominant is None:
                 # only the search's worst case fails here: its own evaluation says why
                 dominant = _dominant(one, 0, one.failed[0])
@@ -817,8 +821,8 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         cost = res.worst_cost()
         # sparse evaluation decides every point; the worst points that pass (and those that
         # fail only unlifted) are decided by their own full rollout
-        unlifted = res.failed_unlifted_only if options.rolls_unlifted else np.zeros(
-            pts.shape[0], bool)
+        unlifted = vd.samples_to_rerun(res, options, nominal_completed=True)
+        unlifted = unlifted.unlifted | unlifted.sticking
         rolled = unlifted | vd.points_to_roll_out(cost, res.failed_any, unlifted, worst=worst)
         if (res.failed_any & ~unlifted).any():
             rolled = np.zeros(pts.shape[0], bool)  # it shrinks anyway: rollouts next round

@@ -208,6 +208,12 @@ DEFAULT_SLIP_TOLERANCE = 0.005
 DEFAULT_CREEP_HORIZON = 0
 #: fraction of ``slip_tolerance`` under which a measured slip means the grip has not moved
 SLIP_FLOOR = 0.1
+#: how far inside an elliptic friction cone the grasp's force ratio must stay (FOS at least
+#: 1 + this over the whole evaluation) for a contact failure to be a *sticking* one: the
+#: grip's friction never reached its limit, the cost crossed the threshold through the
+#: margin alone (a sliding contact sits on the cone, FOS 1 to solver precision; a grasp
+#: whose pads partly slide reads a few per cent above it)
+STICKING_MARGIN = 0.05
 
 
 @dataclasses.dataclass(frozen=True)
@@ -327,7 +333,7 @@ class SparseResult:
         state: integration state after the horizon, (m, n, nstate), when asked for.
         evaluated: which (moment, sample) pairs were evaluated, (m, n) bool, or None when
             all were. Only ``first_failure`` evaluation skips pairs: there a sample's
-            moments after its first failure (other than an unlifted one) are not evaluated
+            moments after its first failure (other than an unlifted or a sticking one) are not evaluated
             (NaN values, False flags, ``stage``, ``worst_step`` and ``motor_argmax`` −1),
             and the moment where it fails is reduced over the steps up to the failing one.
         unlifted_failure: the pair fails, but would not if the object counted as carried
@@ -335,6 +341,13 @@ class SparseResult:
             rises more than 2 mm): a failure only where the grip squeezes the object off its
             support without lifting it, (m, n) bool. The audit decides such samples by
             their own full rollout.
+        sticking_failure: the pair fails by the contact criterion on a model with an
+            elliptic friction cone while the grasp's force ratio stayed at least
+            ``1 + STICKING_MARGIN`` over every step decided: the grip's friction never
+            reached its limit, so the object has not slipped, and the cost crossed the
+            threshold through the margin alone (a grasp that really slips sits on the cone);
+            (m, n) bool. Such a failure does not stop a sample, and a sample that fails only
+            so (``failed_sticking_only``) is decided by its own full rollout.
         failure: why each pair fails (:class:`Failure` values), (m, n) int8; −1 where not
             evaluated. ``failed`` reads it.
         slip: measured slip of the object in its holding gripper relative to the nominal
@@ -371,6 +384,7 @@ class SparseResult:
     state: np.ndarray | None = None
     evaluated: np.ndarray | None = None
     unlifted_failure: np.ndarray | None = None
+    sticking_failure: np.ndarray | None = None
     failure: np.ndarray | None = None
     slip: np.ndarray | None = None
     excursion: np.ndarray | None = None
@@ -414,6 +428,19 @@ class SparseResult:
         if self.unlifted_failure is None:
             return np.zeros(self.n_samples, dtype=bool)
         return self.failed_any & ~(self.failed & ~self.unlifted_failure).any(axis=0)
+
+    @property
+    def failed_sticking_only(self) -> np.ndarray:
+        """(n,) bool: the sample fails, only through unlifted and sticking failures
+        (``sticking_failure``), at least one of them sticking: whether it really fails is
+        for a full rollout to say."""
+        if self.sticking_failure is None:
+            return np.zeros(self.n_samples, dtype=bool)
+        soft = self.sticking_failure
+        if self.unlifted_failure is not None:
+            soft = soft | self.unlifted_failure
+        return (self.failed_any & ~(self.failed & ~soft).any(axis=0)
+                & self.sticking_failure.any(axis=0))
 
     @property
     def failed_any(self) -> np.ndarray:
@@ -570,6 +597,7 @@ class _Decision(NamedTuple):
     stop_step: np.ndarray  # (nsim,) step of that failure within the evaluation, −1
     excursion: np.ndarray  # (nsim,) longest contact excursion [s]
     follow: np.ndarray  # (nsim,) bool: needs steps past the horizon
+    sticking: np.ndarray  # (nsim,) bool: a contact failure inside the cone (STICKING_MARGIN)
 
 
 class _Simulated(NamedTuple):
@@ -583,6 +611,7 @@ class _Simulated(NamedTuple):
     slip: np.ndarray
     excursion: np.ndarray
     state: np.ndarray | None
+    sticking: np.ndarray
 
 
 class SparseEvaluator:
@@ -659,6 +688,8 @@ class SparseEvaluator:
         # carried steps of real lifts (the object rises): a failure only at carried steps
         # outside them (a squeeze that tips the object off its support) is marked
         self._lifted = twin.lifted(self._carried, self._states)
+        # an elliptic cone: a sliding contact's force ratio is 1 (STICKING_MARGIN)
+        self._elliptic = int(twin.model.opt.cone) == int(mujoco.mjtCone.mjCONE_ELLIPTIC)
         self.settings = sparse_settings(twin.scenario, persistence=persistence,
                                         slip_tolerance=slip_tolerance,
                                         creep_horizon=creep_horizon)
@@ -840,7 +871,7 @@ class SparseEvaluator:
             first_failure: stop each sample at its first failure, as the real run would:
                 the moments are evaluated in time order, and a sample that fails at one
                 (:class:`Failure`; with the flags of real lifts) is not evaluated at the
-                later moments (``evaluated`` says which pairs were). An unlifted failure (see ``unlifted_failure``) does not
+                later moments (``evaluated`` says which pairs were). An unlifted or sticking failure (see ``unlifted_failure``, ``sticking_failure``) does not
                 stop it. Which samples fail, and at which moment first, is the same as with
                 full evaluation; the values of a failing pair are those of the steps up to
                 the failure. For a verdict this skips most of the stepping wherever much of
@@ -892,6 +923,7 @@ class SparseEvaluator:
             "contact_gripper": np.empty((m, n, ngrip), bool),
             "stage": np.empty((m, n), np.int8), "worst_step": np.empty((m, n), np.int64),
             "diverged": np.empty((m, n), bool), "unlifted_failure": np.empty((m, n), bool),
+            "sticking_failure": np.empty((m, n), bool),
             "failure": np.empty((m, n), np.int8), "slip": np.empty((m, n)),
             "excursion": np.empty((m, n)),
         }
@@ -927,7 +959,8 @@ class SparseEvaluator:
                 out["failure"][i, sl] = sim.failure
                 out["slip"][i, sl] = sim.slip
                 out["excursion"][i, sl] = sim.excursion
-                out["unlifted_failure"][i, sl] = (sim.failure > 0) & ~sim.stop
+                out["unlifted_failure"][i, sl] = (sim.failure > 0) & ~sim.stop & ~sim.sticking
+                out["sticking_failure"][i, sl] = sim.sticking
                 if keep_raw:
                     raw[i, sl] = sim.buf[:, :h]
                     final[i, sl] = sim.state
@@ -1096,7 +1129,8 @@ class SparseEvaluator:
         return _Simulated(buf=buf, raised=raised, warned=warned, diverged=diverged,
                           failure=failure, stop=stop, stop_step=stop_step,
                           slip=np.where(valid, slip, 0.0).max(axis=1, initial=0.0),
-                          excursion=decided.excursion, state=state)
+                          excursion=decided.excursion, state=state,
+                          sticking=decided.sticking & ~diverged)
 
     def _decide(self, buf: np.ndarray, slip: np.ndarray, length: np.ndarray, mu: np.ndarray,
                 k: int, *, final: bool) -> _Decision:
@@ -1132,8 +1166,19 @@ class SparseEvaluator:
         follow = follow_c | follow_l
         if self.settings.creep_horizon > h:
             follow |= (failure == Failure.PASS) & (length > 0)
-        return _Decision(failure=failure, stop=stop_kind > 0, stop_step=stop_step,
-                         excursion=excursion * self.twin.model.opt.timestep, follow=follow)
+        # on an elliptic cone a sliding contact's force lies on the cone: a contact failure
+        # whose grasp stayed well inside it over every step decided has not slipped; it
+        # does not stop the sample, and alone it is for the sample's own rollout to decide
+        sticking = np.zeros(nsim, bool)
+        if self._elliptic:
+            with np.errstate(invalid="ignore"):
+                inside = np.where(valid, sig.fos_grasp, np.inf).min(axis=1) >= (
+                    1.0 + STICKING_MARGIN)
+            sticking = inside & (failure == Failure.CONTACT) & (stop_kind == Failure.CONTACT)
+        return _Decision(failure=failure, stop=(stop_kind > 0) & ~sticking,
+                         stop_step=stop_step,
+                         excursion=excursion * self.twin.model.opt.timestep, follow=follow,
+                         sticking=sticking)
 
     def _first_failure(self, term_c: np.ndarray, term_m: np.ndarray, slipped: np.ndarray,
                        valid: np.ndarray, in_horizon: np.ndarray, length: np.ndarray, p: int,

@@ -245,8 +245,7 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     nominal_completed = rec.completed
     # the audit's decision path (critmoment.verdict): which samples its own rollouts decide,
     # then which fail
-    near, unlifted = samples_to_rerun(res, dopt, nominal_completed=nominal_completed)
-    verified = near | unlifted
+    verified = samples_to_rerun(res, dopt, nominal_completed=nominal_completed).any
     rerun_failed = np.zeros(n, dtype=bool)
     roll = _Rollouts(traj, twin, nthread, chunk=chunk)  # the audit's, one nominal reference
     if verified.any():

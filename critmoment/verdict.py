@@ -10,9 +10,11 @@ decision. The validation study (:func:`critmoment.validation.predict`) calls the
 The decision path, in order:
 
 1. :func:`samples_to_rerun`: which samples get their own full rollout (those that pass the
-   sparse evaluation with a cost at or above ``verify × threshold``, and those whose only
-   failures are unlifted ones, ``SparseResult.failed_unlifted_only``); none when the
-   nominal run itself fails the task (every sample fails then).
+   sparse evaluation with a cost at or above ``verify × threshold``, those whose only
+   failures are unlifted ones, ``SparseResult.failed_unlifted_only``, and those whose
+   only failures are sticking ones, inside an elliptic friction cone,
+   ``SparseResult.failed_sticking_only``); none when the nominal run itself fails the
+   task (every sample fails then).
 2. :func:`failing_samples`: a sample fails where its sparse evaluation fails at an audited
    moment (``SparseResult.failed``), unless its own rollout decided it; the rollout's real outcome
    decides the re-run samples; every sample fails when the nominal run does not complete
@@ -35,6 +37,7 @@ import enum
 import math
 import numbers
 from collections.abc import Mapping, Sequence
+from typing import NamedTuple
 
 import numpy as np
 
@@ -51,6 +54,7 @@ __all__ = [
     "RegionCheck",
     "Evidence",
     "Decision",
+    "Reruns",
     "samples_to_rerun",
     "failing_samples",
     "samples_to_chain",
@@ -86,6 +90,9 @@ class DecisionOptions:
             above ``verify × threshold`` are decided by their own full rollout.
         verify_unlifted: with ``verify``, samples whose only failures are unlifted ones are
             decided by their own full rollout too.
+        verify_sticking: with ``verify``, samples whose only failures are sticking ones
+            (a contact failure with the grasp inside an elliptic friction cone,
+            ``SparseResult.sticking_failure``) are decided by their own full rollout too.
         require_task: a nominal run that does not complete the task fails every sample.
         confidence: confidence level of the P(success) interval.
         chain: every sample that passes at the moments and has no rollout of its own is
@@ -102,6 +109,7 @@ class DecisionOptions:
     threshold: float
     verify: float | None = 0.8
     verify_unlifted: bool = True
+    verify_sticking: bool = True
     require_task: bool = True
     confidence: float = 0.95
     chain: bool = True
@@ -199,8 +207,22 @@ class SampleEvidence:
         return 0 if self.sweep is None else self.sweep.n_samples
 
 
+class Reruns(NamedTuple):
+    """The samples the sparse evaluation cannot decide (:func:`samples_to_rerun`), each
+    (n,) bool."""
+
+    near: np.ndarray      #: pass with a cost at or above ``verify × threshold``
+    unlifted: np.ndarray  #: fail only unlifted (``SparseResult.failed_unlifted_only``)
+    sticking: np.ndarray  #: fail only sticking (``SparseResult.failed_sticking_only``)
+
+    @property
+    def any(self) -> np.ndarray:
+        """(n,) bool: any of them."""
+        return self.near | self.unlifted | self.sticking
+
+
 def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
-                     nominal_completed: bool) -> tuple[np.ndarray, np.ndarray]:
+                     nominal_completed: bool) -> Reruns:
     """The samples that sparse evaluation cannot decide, to be decided by their own rollout.
 
     Args:
@@ -209,22 +231,24 @@ def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
         nominal_completed: the nominal run completes the task.
 
     Returns:
-        (near, unlifted), each (n,) bool: samples that pass with a cost ≥ ``verify ×
-        threshold``, and samples whose only failures are unlifted ones. Both empty when
-        ``verify`` is None, or when the nominal run fails the task and ``require_task``
-        makes every sample fail.
+        The :class:`Reruns`: samples that pass with a cost ≥ ``verify × threshold``,
+        samples whose only failures are unlifted ones, and samples whose only failures are
+        sticking (and unlifted) ones. All empty when ``verify`` is None, or when the
+        nominal run fails the task and ``require_task`` makes every sample fail.
     """
+    n = 0 if sweep is None else sweep.n_samples
+    none = np.zeros(n, bool)
     if sweep is None or sweep.n_moments == 0:
-        n = 0 if sweep is None else sweep.n_samples
-        return np.zeros(n, bool), np.zeros(n, bool)
-    n = sweep.n_samples
+        return Reruns(none, none.copy(), none.copy())
     if options.verify is None or (options.require_task and not nominal_completed):
-        return np.zeros(n, bool), np.zeros(n, bool)
+        return Reruns(none, none.copy(), none.copy())
     cost = sweep.worst_cost()
     near = ~sweep.failed_any & (cost >= options.verify * options.threshold)
     unlifted = (sweep.failed_unlifted_only.copy() if options.verify_unlifted
-                else np.zeros(n, bool))
-    return near, unlifted
+                else none.copy())
+    sticking = (sweep.failed_sticking_only.copy() if options.verify_sticking
+                else none.copy())
+    return Reruns(near, unlifted, sticking)
 
 
 def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.ndarray:
@@ -255,9 +279,7 @@ def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.nd
         failed = np.array(sweep.failed_any, dtype=bool)
     if options.require_task and not evidence.nominal_completed:
         return np.ones(n, bool)
-    near, unlifted = samples_to_rerun(sweep, options,
-                                      nominal_completed=evidence.nominal_completed)
-    need = near | unlifted
+    need = samples_to_rerun(sweep, options, nominal_completed=evidence.nominal_completed).any
     if evidence.rerun is None:
         rerun = np.zeros(n, bool)
     else:
@@ -776,6 +798,7 @@ class Decision:
             ``evidence.region`` checked it.
         near: samples re-run because their cost was near the threshold, (n,) bool.
         unlifted: samples re-run because they failed only unlifted, (n,) bool.
+        sticking: samples re-run because they failed only sticking, (n,) bool.
     """
 
     verdict: Verdict
@@ -788,6 +811,7 @@ class Decision:
     region_to_check: Mapping[str, tuple[float, float]] | None
     near: np.ndarray
     unlifted: np.ndarray
+    sticking: np.ndarray
 
 
 def _nominal_fails(evidence: Evidence, options: DecisionOptions) -> tuple[bool, bool, bool]:
@@ -834,7 +858,8 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
     se = evidence.samples
     n = se.n_samples
     failed = failing_samples(se, options)
-    near, unlifted = samples_to_rerun(se.sweep, options, nominal_completed=se.nominal_completed)
+    near, unlifted, sticking = samples_to_rerun(se.sweep, options,
+                                                nominal_completed=se.nominal_completed)
     n_fail = int(failed.sum())
     nominal_fails, nominal_squeeze, task_failed = _nominal_fails(evidence, options)
     if n:
@@ -904,7 +929,8 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
     return Decision(verdict=verdict, failed=failed, p_success=float(p),
                     p_success_interval=(float(interval[0]), float(interval[1])),
                     safe_region=region, safe_region_text=text, causes=causes,
-                    region_to_check=to_check, near=near, unlifted=unlifted)
+                    region_to_check=to_check, near=near, unlifted=unlifted,
+                    sticking=sticking)
 
 
 def _is_whole_box(region: Mapping[str, tuple[float, float]], box: UncertaintyBox) -> bool:

@@ -206,14 +206,19 @@ def test_verification_reruns_the_near_threshold_safes(boundary_reports, demo_tra
     threshold = boundary.scenario.cost.threshold
     worst = checked.sweep.cost.max(axis=0)
     near = ~checked.sweep.failed_any & (worst >= 0.8 * threshold)
+    # and the samples that fail only inside the elliptic cone (sticking)
+    stick = checked.sweep.failed_sticking_only
+    rerun = near | stick
     v = checked.verification
-    assert v["rollouts"] == int(near.sum()) > 0
+    assert v["rollouts"] == int(rerun.sum()) and int(near.sum()) > 0
+    assert v["sticking"] == int(stick.sum())
     assert v["cost_from"] == pytest.approx(0.8 * threshold)
-    np.testing.assert_array_equal(checked.failed[~near], plain.failed[~near])
+    np.testing.assert_array_equal(checked.failed[~rerun], plain.failed[~rerun])
     # the verdict of each re-run sample is its own full rollout's real outcome
-    own = brute_force(demo_traj, twin=boundary, samples=checked.sweep.samples[near]).failed
-    np.testing.assert_array_equal(checked.failed[near], own)
-    assert v["failed"] == v["near_failed"] == int(own.sum()) and v["unlifted"] == 0
+    own = brute_force(demo_traj, twin=boundary, samples=checked.sweep.samples[rerun]).failed
+    np.testing.assert_array_equal(checked.failed[rerun], own)
+    assert v["failed"] == v["near_failed"] + v["sticking_failed"] == int(own.sum())
+    assert v["unlifted"] == 0
     assert checked.p_success == pytest.approx(1.0 - checked.failed.mean())
     assert checked.to_json()["verification"] == {k: v[k] for k in v}
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import warnings
 
 import mujoco
 import numpy as np
@@ -741,3 +742,47 @@ def test_repeated_evaluate_returns_the_same_read_only_result(scenario, twin, dem
     assert again is not first
     np.testing.assert_array_equal(again.cost, first.cost)
     np.testing.assert_array_equal(again.failure, first.failure)
+
+
+def test_a_contact_failure_inside_an_elliptic_cone_is_a_sticking_one(scenario, twin):
+    """On the bundled (elliptic) twin, demo seed 3: a contact failure whose grasp force
+    ratio stayed at least 1 + STICKING_MARGIN (the grip's friction never at its limit) is a
+    sticking failure, which does not stop the sample (it is evaluated at the later
+    moments) and, alone, leaves the sample to its own rollout; a contact failure that
+    reached the cone is not one. On a pyramidal cone, where a sliding contact's ratio is
+    not 1, there are none."""
+    from critmoment import analysis, demos
+    from critmoment import verdict as vd
+
+    traj = demos.scripted_transfer(3, twin=twin)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        rec = rollout.rollout(traj, twin=twin)
+    ev = SparseEvaluator(rec, twin)
+    _, steps = analysis.audit_moments(rec, twin, ev, 8)
+    samples = sparse.sweep_samples(scenario.box, n=256, seed=3)
+    res = ev.evaluate(steps, samples, first_failure=True)
+    contact = res.failure == sparse.Failure.CONTACT
+    stick = res.sticking_failure
+    assert stick.any() and (contact & ~stick).any()
+    assert not (stick & ~contact).any()
+    # the horizon's lowest ratio bounds the decided steps' (which include any followed ones)
+    assert (res.fos_grasp[stick] >= 1 + sparse.STICKING_MARGIN).all()
+    assert not (contact & ~stick & (res.fos_grasp >= 1 + 0.2)).any()
+    # a sticking failure does not stop the sample: it reaches every later moment
+    order = np.argsort(steps)
+    for row, j in zip(*np.nonzero(stick), strict=True):
+        later = order[np.flatnonzero(order == row)[0] + 1:]
+        assert res.evaluated[later, j].all()
+    only = res.failed_sticking_only
+    assert only.any()
+    reruns = vd.samples_to_rerun(res, vd.DecisionOptions(threshold=scenario.cost.threshold),
+                                 nominal_completed=rec.completed)
+    np.testing.assert_array_equal(reruns.sticking, only & ~res.failed_unlifted_only)
+    pyramidal = Twin(scenario)
+    pyramidal.model.opt.cone = mujoco.mjtCone.mjCONE_PYRAMIDAL
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        prec = rollout.rollout(traj, twin=pyramidal)
+    pres = SparseEvaluator(prec, pyramidal).evaluate(steps, samples[:64], first_failure=True)
+    assert (pres.failure == sparse.Failure.CONTACT).any() and not pres.sticking_failure.any()

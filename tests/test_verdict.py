@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -23,7 +25,8 @@ def _box(mass_high: float = 1.0) -> UncertaintyBox:
 
 
 def _sweep(cost: np.ndarray, samples: np.ndarray, *, unlifted: np.ndarray | None = None,
-           diverged: np.ndarray | None = None) -> SparseResult:
+           diverged: np.ndarray | None = None,
+           sticking: np.ndarray | None = None) -> SparseResult:
     """A SparseResult of m moments × n samples with the given costs (the rest neutral)."""
     cost = np.atleast_2d(np.asarray(cost, dtype=np.float64))
     m, n = cost.shape
@@ -39,7 +42,8 @@ def _sweep(cost: np.ndarray, samples: np.ndarray, *, unlifted: np.ndarray | None
         contact_support=np.zeros((m, n), bool), contact_gripper=np.ones((m, n, 1), bool),
         stage=np.full((m, n), 4, np.int8), worst_step=np.zeros((m, n), np.int64),
         diverged=diverged,
-        unlifted_failure=np.zeros((m, n), bool) if unlifted is None else unlifted)
+        unlifted_failure=np.zeros((m, n), bool) if unlifted is None else unlifted,
+        sticking_failure=np.zeros((m, n), bool) if sticking is None else sticking)
 
 
 def _grid(box: UncertaintyBox, n: int = 21) -> np.ndarray:
@@ -71,7 +75,7 @@ def test_a_chained_failure_fails_a_sample_that_passes_without_a_rollout():
     chain = vd.DecisionOptions(threshold=THRESHOLD, chain=True)
     samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0]])
     sweep = _sweep([[0.1, 1.5, 0.8, 0.5]], samples)
-    near, _ = vd.samples_to_rerun(sweep, chain, nominal_completed=True)
+    near, *_ = vd.samples_to_rerun(sweep, chain, nominal_completed=True)
     # passing, no rollout: samples 0 and 3 are carried on their own state
     to_chain = vd.samples_to_chain(sweep, near, chain)
     assert to_chain.tolist() == [True, False, False, True]
@@ -89,7 +93,7 @@ def test_a_chained_failure_fails_a_sample_that_passes_without_a_rollout():
 def test_failing_samples_is_the_sparse_failure_unless_a_rollout_decided():
     samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0]])
     sweep = _sweep([[0.1, 1.5, 0.8, 0.5]], samples)
-    near, unlifted = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
+    near, unlifted, _ = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
     assert near.tolist() == [False, False, True, False]  # 0.8 ≥ 0.8 × 0.9, passes
     assert not unlifted.any()
     with pytest.raises(ParameterError, match="own rollout"):
@@ -107,11 +111,38 @@ def test_failing_samples_is_the_sparse_failure_unless_a_rollout_decided():
                               OPT).all()
 
 
+def test_sticking_failures_are_decided_by_rollouts():
+    """A sample whose only failures are sticking ones (or sticking and unlifted) needs its
+    own rollout, which decides it; one that also fails otherwise at some moment fails."""
+    samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0], [0.4, 1.0]])
+    cost = [[1.2, 1.2, 1.2, 1.2, 1.2], [0.1, 1.2, 1.2, 0.1, 1.2]]
+    # 0: sticking once; 1: sticking, then unlifted; 2: sticking twice; 3: unlifted only;
+    # 4: sticking, then a failure of its own
+    stick = np.array([[True, True, True, False, True], [False, False, True, False, False]])
+    unl = np.array([[False, False, False, True, False], [False, True, False, False, False]])
+    sweep = _sweep(cost, samples, unlifted=unl, sticking=stick)
+    np.testing.assert_array_equal(sweep.failed_sticking_only,
+                                  [True, True, True, False, False])
+    near, unlifted, sticking = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
+    assert sticking.tolist() == [True, True, True, False, False] and not near.any()
+    assert unlifted.tolist() == [False, False, False, True, False]
+    with pytest.raises(ParameterError, match="own rollout"):
+        vd.failing_samples(vd.SampleEvidence(sweep=sweep, nominal_completed=True,
+                                             rerun=unlifted, rerun_failed=np.zeros(5, bool)),
+                           OPT)
+    rerun = vd.samples_to_rerun(sweep, OPT, nominal_completed=True).any
+    ev = vd.SampleEvidence(sweep=sweep, nominal_completed=True, rerun=rerun,
+                           rerun_failed=np.array([False, True, False, False, False]))
+    assert vd.failing_samples(ev, OPT).tolist() == [False, True, False, False, True]
+    off = dataclasses.replace(OPT, verify_sticking=False)
+    assert not vd.samples_to_rerun(sweep, off, nominal_completed=True).sticking.any()
+
+
 def test_unlifted_failures_are_decided_by_rollouts():
     samples = np.array([[0.1, 1.0], [0.5, 1.0]])
     unl = np.array([[True, False]])
     sweep = _sweep([[1.2, 1.2]], samples, unlifted=unl)
-    near, unlifted = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
+    near, unlifted, _ = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
     assert unlifted.tolist() == [True, False] and not near.any()
     ev = vd.SampleEvidence(sweep=sweep, nominal_completed=True, rerun=unlifted,
                            rerun_failed=np.zeros(2, bool))
@@ -197,7 +228,7 @@ def test_region_points_cover_corners_and_densified_edges():
 
 def _evidence(box, samples, cost, **kw):
     sweep = _sweep(cost[None], samples)
-    near, _ = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
+    near, *_ = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
     se = vd.SampleEvidence(sweep=sweep, nominal_completed=True, rerun=near,
                            rerun_failed=np.zeros(len(samples), bool))
     return vd.Evidence(box=box, samples=se, nominal_cost=0.1, **kw)
