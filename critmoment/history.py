@@ -33,6 +33,7 @@ from typing import Any
 
 import mujoco
 import numpy as np
+import scipy.ndimage
 
 from critmoment.exceptions import ParameterError
 from critmoment.groundtruth import OutcomeCriteria
@@ -470,10 +471,13 @@ class SustainedLevel:
         if values.shape[1] == 0:
             return
         joined = np.concatenate([self.tail[ids], values], axis=1)  # (c, need-1+s, cols)
-        windows = np.lib.stride_tricks.sliding_window_view(joined, self.need, axis=1)
-        if windows.shape[1]:
-            level = windows.min(axis=-1).max(axis=(1, 2))
-            self.best[ids] = np.maximum(self.best[ids], level)
+        w = self.need
+        # each window's min (van Herk's filter, linear in the steps); the ones whose window
+        # lies inside the block are those from w // 2 to the end less w - w // 2 - 1
+        mins = scipy.ndimage.minimum_filter1d(joined, w, axis=1, mode="nearest")
+        inside = mins[:, w // 2:joined.shape[1] - w + w // 2 + 1]
+        if inside.shape[1]:
+            self.best[ids] = np.maximum(self.best[ids], inside.max(axis=(1, 2)))
         if self.need > 1:
             self.tail[ids] = joined[:, joined.shape[1] - (self.need - 1):]
 
