@@ -821,8 +821,8 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         cost = res.worst_cost()
         # sparse evaluation decides every point; the worst points that pass (and those that
         # fail only unlifted) are decided by their own full rollout
-        unlifted = vd.samples_to_rerun(res, options, nominal_completed=True)
-        unlifted = unlifted.unlifted | unlifted.sticking
+        reruns = vd.samples_to_rerun(res, options, nominal_completed=True)
+        unlifted = reruns.unlifted | reruns.sticking  # failures only a rollout can decide
         rolled = unlifted | vd.points_to_roll_out(cost, res.failed_any, unlifted, worst=worst)
         if (res.failed_any & ~unlifted).any():
             rolled = np.zeros(pts.shape[0], bool)  # it shrinks anyway: rollouts next round

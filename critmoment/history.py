@@ -207,7 +207,7 @@ class ChainedResult:
             duration, as a fraction of the rule's limit (slip over ``slip_tolerance``,
             force over ``saturation`` of the limit, extra lag over
             ``tracking_tolerance``), the largest over the rules; at 1 or above the rule
-            fires (:func:`sustained_level`).
+            fires (:class:`SustainedLevel`).
     """
 
     steps: np.ndarray
