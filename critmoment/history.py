@@ -230,7 +230,15 @@ class ChainedResult:
         above ``fraction`` of its rule's limit for the rule's duration (``closest``): the
         chain starts from the nominal state and is the sample's own run only
         approximately, so a pass that close to a rule is decided, like a sparse pass near
-        the cost threshold, by the sample's own full rollout."""
+        the cost threshold, by the sample's own full rollout.
+
+        Raises:
+            ParameterError: ``fraction`` is not a positive finite number.
+        """
+        if isinstance(fraction, bool) or not isinstance(fraction, (int, float, np.number)) \
+                or not (np.isfinite(fraction) and fraction > 0):
+            raise ParameterError(f"fraction: expected a positive finite fraction of a rule's "
+                                 f"limit, got {fraction!r}")
         n = self.samples.shape[0]
         if self.closest is None:
             return np.zeros(n, bool)

@@ -124,6 +124,11 @@ class DecisionOptions:
                                         or not 0 < self.verify <= 1):
             raise ParameterError(f"verify: expected a fraction of the threshold in (0, 1] or "
                                  f"None, got {self.verify!r}")
+        for name in ("verify_unlifted", "verify_sticking", "require_task", "chain",
+                     "nominal_by_run"):
+            if not isinstance(getattr(self, name), (bool, np.bool_)):
+                raise ParameterError(f"{name}: expected True or False, got "
+                                     f"{getattr(self, name)!r}")
         if not 0 < self.confidence < 1:
             raise ParameterError(f"confidence: expected in (0, 1), got {self.confidence}")
 

@@ -459,6 +459,9 @@ def test_a_chained_pass_close_to_a_rule_goes_to_its_own_rollout(scenario, demo_t
     np.testing.assert_allclose(chain.closest[0], expected, rtol=1e-12)
     np.testing.assert_array_equal(chain.near(expected - 0.01), [True, False])
     np.testing.assert_array_equal(chain.near(expected + 0.01), [False, False])
+    for bad in (0, -0.5, float("nan"), "0.8", True):
+        with pytest.raises(ParameterError, match="fraction"):
+            chain.near(bad)
     # the decision's chained evidence: the near pass is decided by its rollout
     sweep = ev.evaluate([start], samples)
     dopt = vd.DecisionOptions(threshold=scenario.cost.threshold, verify=expected - 0.01)

@@ -136,6 +136,8 @@ def test_sticking_failures_are_decided_by_rollouts():
     assert vd.failing_samples(ev, OPT).tolist() == [False, True, False, False, True]
     off = dataclasses.replace(OPT, verify_sticking=False)
     assert not vd.samples_to_rerun(sweep, off, nominal_completed=True).sticking.any()
+    with pytest.raises(ParameterError, match="verify_sticking: expected True or False"):
+        dataclasses.replace(OPT, verify_sticking="no")
 
 
 def test_unlifted_failures_are_decided_by_rollouts():
