@@ -14,12 +14,14 @@ same path :func:`critmoment.validation.predict` measures.
 from __future__ import annotations
 
 import concurrent.futures
+import contextlib
 import dataclasses
 import logging
 import platform
 import sys
 import time
 from collections.abc import Callable, Mapping, Sequence
+from typing import Any
 
 import numpy as np
 
@@ -47,6 +49,7 @@ __all__ = [
     "safe_subbox",
     "decision_options",
     "check_region",
+    "sample_runs",
     "analyze",
     "REPORT_SCHEMA",
 ]
@@ -438,22 +441,11 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_cost = float(res_all.worst_cost()[0]) if steps.size else 0.0
         res = _select_samples(res_all, slice(1, None))
     dopt = decision_options(opt, threshold)
-    near, unlifted, sticking = vd.samples_to_rerun(res, dopt,
-                                                   nominal_completed=rec.completed)
     roll = _Rollouts(trajectory, twin, opt.nthread)
-    # the samples' own runs (verification rollouts, chained segments: physics in MuJoCo's
-    # threads) go on in two more threads, the chain on an evaluator of its own, while this
-    # one computes the critical values and the searches (mostly Python): no result depends
-    # on the overlap
-    rerun = near | unlifted | sticking
-    verifying = opt.verify is not None and steps.size > 0
-    # two physics threads beside this one: one MuJoCo thread each (with all CPUs each, six
-    # threads would share two cores; measured 2.16 -> 2.09 s, medians of 6)
-    side = 1 if opt.nthread != 1 else None
-    with _pool(opt.nthread) as pool:
-        verified = pool.submit(_verify, stage, roll, samples, rerun, verifying, side)
-        chain = pool.submit(_chain, stage, evaluator.fork(side), steps, samples, res, rerun,
-                            dopt, rec.completed)
+
+    def alongside():
+        # the critical values and the searches (mostly Python) while the samples' own runs
+        # go on in MuJoCo's threads: no result depends on the overlap
         with stage("critical values"):
             curves = _curves(evaluator, steps, box, opt.critical_grid) if steps.size else {}
             critical = _critical_values(rec, twin, evaluator, steps, opt.critical_grid)
@@ -464,35 +456,17 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             with stage("analytic bounds and search"):
                 analytics, searches = _search_all(rec, twin, evaluator, steps, opt)
                 load_bound = _load_bound(rec, twin)
-        rerun_failed = verified.result()
-        chained, chained_failed, suspect = chain.result()
-    if suspect.any() and verifying:
-        with stage("chained segments"):
-            # failed on its own path (approximately its own run): its own rollout decides
-            rerun_failed[suspect] = roll(samples[suspect])
-            rerun = rerun | suspect
+        return curves, critical, searches, load_bound, analytics
+
+    runs, (curves, critical, searches, load_bound, analytics) = sample_runs(
+        evaluator, steps, samples, res, dopt, roll=roll, nominal_completed=rec.completed,
+        nthread=opt.nthread, stage=stage, alongside=alongside)
     verification = None
-    sample_evidence = vd.SampleEvidence(sweep=res,
-                                        nominal_completed=rec.completed, rerun=rerun,
-                                        rerun_failed=rerun_failed, chained=chained,
-                                        chained_failed=chained_failed)
+    sample_evidence = runs.evidence(res, nominal_completed=rec.completed)
     failed = vd.failing_samples(sample_evidence, dopt)
     if opt.verify is not None and steps.size:
         verification = {"fraction": float(opt.verify),
-                        "cost_from": float(opt.verify * threshold),
-                        "rollouts": int(rerun.sum()),
-                        "failed": int(failed[rerun].sum()),
-                        "near": int(near.sum()), "near_failed": int(failed[near].sum()),
-                        "unlifted": int(unlifted.sum()),
-                        "unlifted_failed": int(failed[unlifted].sum()),
-                        "sticking": int(sticking.sum()),
-                        "sticking_failed": int(failed[sticking].sum()),
-                        "chained": int(chained.sum()),
-                        "chained_failed": int(chained_failed[chained].sum()),
-                        "chained_rolled_out": int((suspect & chained_failed).sum()),
-                        "chained_confirmed": int(failed[suspect & chained_failed].sum()),
-                        "chained_near": int((suspect & ~chained_failed).sum()),
-                        "chained_near_failed": int(failed[suspect & ~chained_failed].sum())}
+                        "cost_from": float(opt.verify * threshold), **runs.counts(failed)}
     moment_reports = []
     worst_failed_sparse: dict[int, bool] = {}  # per moment: its worst case fails (sparse)
     worst_unlifted: dict[int, bool] = {}  # per failing moment: its worst case is unlifted
@@ -521,8 +495,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             one = evaluator.evaluate([s], [[worst_case[n] for n in box.names]])
             worst_failed_sparse[s] = bool(one.failed[0, 0])
             # unlifted or sticking: only a rollout can say whether it really fails
-            worst_unlifted[s] = bool(one.unlifted_failure[0, 0] or (
-                dopt.verify_sticking and one.sticking_failure[0, 0]))
+            worst_unlifted[s] = dopt.only_a_rollout_decides(bool(one.unlifted_failure[0, 0]),
+                                                            bool(one.sticking_failure[0, 0]))
             if dominant is None:
                 # only the search's worst case fails here: its own evaluation says why
                 dominant = _dominant(one, 0, one.failed[0])
@@ -596,30 +570,73 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             steps, evaluator.contact_trusted(steps), strict=True) if not ok))
 
 
-def _verify(stage, roll: _Rollouts, samples: np.ndarray, rerun: np.ndarray,
-            run: bool, nthread: int | None = None) -> np.ndarray:
-    """The real outcomes (failed, (n,) bool) of the samples the sweep cannot decide
-    (``rerun``: near the threshold, unlifted), by their own full rollouts (``nthread``
-    MuJoCo threads, default the rollouts' own)."""
-    failed = np.zeros(len(samples), bool)
-    if run:
-        with stage("verification"):
-            if rerun.any():
-                failed[rerun] = roll(samples[rerun], nthread)
-    return failed
+def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.ndarray,
+                sweep: sp.SparseResult | None, options: vd.DecisionOptions, *,
+                roll: Callable[..., np.ndarray], nominal_completed: bool, nthread: int = 0,
+                stage: Callable | None = None,
+                alongside: Callable[[], Any] | None = None) -> tuple[vd.SampleRuns, Any]:
+    """The samples' own runs that complete the sweep's evidence: the one path of
+    :func:`analyze` and :func:`critmoment.validation.predict`.
 
+    The samples the sweep cannot decide (:func:`critmoment.verdict.samples_to_rerun`) get
+    their own full rollout; those that pass without one are chained (:func:`chain_samples`),
+    and the chained samples it names go on to their own full rollout. With ``nthread`` other
+    than 1 the rollouts and the chain run in two threads of their own (one MuJoCo thread
+    each) while ``alongside`` runs in this one.
 
-def _chain(stage, evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.ndarray,
-           sweep: sp.SparseResult, rerun: np.ndarray, dopt: vd.DecisionOptions,
-           nominal_completed: bool) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The chained segments of the samples that pass without a rollout of their own
-    (:func:`chain_samples`)."""
-    n = len(samples)
-    if not (dopt.chain and steps.size):
-        return np.zeros(n, bool), np.zeros(n, bool), np.zeros(n, bool)
-    with stage("chained segments"):
-        return chain_samples(evaluator, steps, samples, sweep, rerun, dopt,
-                             nominal_completed=nominal_completed)
+    Args:
+        evaluator: the audit's sparse evaluator.
+        steps: the audited moments' steps, (m,).
+        samples: the parameter samples, (n, k).
+        sweep: their sparse evaluation at ``steps``, or None without moments.
+        options: the decision options.
+        roll: full rollouts of parameter points, ``roll(points, nthread=None)`` -> failed.
+        nominal_completed: the nominal run completes the task.
+        nthread: threads (0: all CPUs; 1: everything in this thread, in turn).
+        stage: a context-manager factory timing a named stage, or None.
+        alongside: work for this thread meanwhile, or None.
+
+    Returns:
+        The :class:`~critmoment.verdict.SampleRuns` and what ``alongside`` returned.
+    """
+    timer = stage or (lambda name: contextlib.nullcontext())
+    n = samples.shape[0]
+    moments = steps.size > 0 and sweep is not None
+    reruns = vd.samples_to_rerun(sweep, options, nominal_completed=nominal_completed)
+    rerun = reruns.any
+    # two physics threads beside this one: one MuJoCo thread each (with all CPUs each, six
+    # threads would share two cores; measured 2.16 -> 2.09 s, medians of 6)
+    side = 1 if nthread != 1 else None
+
+    def verify():
+        failed = np.zeros(n, bool)
+        if options.verify is not None and moments:
+            with timer("verification"):
+                if rerun.any():
+                    failed[rerun] = roll(samples[rerun], side)
+        return failed
+
+    def chain():
+        if not (options.chain and moments):
+            return np.zeros(n, bool), np.zeros(n, bool), np.zeros(n, bool)
+        with timer("chained segments"):
+            return chain_samples(evaluator.fork(side), steps, samples, sweep, rerun, options,
+                                 nominal_completed=nominal_completed)
+
+    with _pool(nthread) as pool:
+        verified = pool.submit(verify)
+        chained_ = pool.submit(chain)
+        extra = alongside() if alongside is not None else None
+        rerun_failed = verified.result()
+        chained, chained_failed, suspect = chained_.result()
+    if suspect.any() and options.verify is not None:
+        with timer("chained segments"):
+            # failed on its own path (approximately its own run): its own rollout decides
+            rerun_failed[suspect] = roll(samples[suspect])
+    else:
+        suspect = np.zeros(n, bool)
+    return vd.SampleRuns(reruns=reruns, chained=chained, chained_failed=chained_failed,
+                         suspect=suspect, rerun_failed=rerun_failed), extra
 
 
 class _Done:

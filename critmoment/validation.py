@@ -35,10 +35,11 @@ from critmoment import sparse as sp
 from critmoment.analysis import (
     AnalyzeOptions,
     _Rollouts,
+    _Timer,
     audit_evaluator,
     audit_moments,
-    chain_samples,
     decision_options,
+    sample_runs,
 )
 from critmoment.exceptions import ParameterError
 from critmoment.feasibility import check_fit, preflight
@@ -60,7 +61,7 @@ from critmoment.moments import Moment
 from critmoment.recording import Recording, rollout
 from critmoment.trajectory import Trajectory, input_identity
 from critmoment.twin import Twin, carried_flags
-from critmoment.verdict import SampleEvidence, failing_samples, samples_to_rerun
+from critmoment.verdict import failing_samples
 
 __all__ = [
     # the ground truth (critmoment.groundtruth), re-exported for compatibility
@@ -119,6 +120,8 @@ class Prediction:
         seconds: wall time of the sparse method: frequent rollout, moment detection, sparse
             evaluations (and the verification's full rollouts) [s].
         timings: that time per stage [s].
+        runs: how many samples each kind of own run decided, and how many of them fail
+            (:meth:`critmoment.verdict.SampleRuns.counts`).
     """
 
     samples: np.ndarray
@@ -136,6 +139,11 @@ class Prediction:
     require_task: bool
     seconds: float
     timings: Mapping[str, float]
+    runs: Mapping[str, int] = dataclasses.field(default_factory=dict)
+
+
+def _quiet(message: str) -> None:
+    """No progress messages."""
 
 
 def envelope_steps(recording: Recording, *, spacing: float, horizon: int = 1) -> np.ndarray:
@@ -243,34 +251,19 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     t3 = time.perf_counter()
     timings["sparse evaluation"] = t3 - t2
     nominal_completed = rec.completed
-    # the audit's decision path (critmoment.verdict): which samples its own rollouts decide,
-    # then which fail
-    verified = samples_to_rerun(res, dopt, nominal_completed=nominal_completed).any
-    rerun_failed = np.zeros(n, dtype=bool)
+    # the audit's own path (critmoment.analysis.sample_runs): which samples their own
+    # rollouts and chains decide, then which fail (critmoment.verdict.failing_samples)
     roll = _Rollouts(traj, twin, nthread, chunk=chunk)  # the audit's, one nominal reference
-    if verified.any():
-        rerun_failed[verified] = roll(samples[verified])
-    if verify is not None:
-        timings["verification"] = time.perf_counter() - t3
-    t4 = time.perf_counter()
-    chained, chained_failed, suspect = chain_samples(evaluator, steps, samples, res, verified,
-                                                     dopt, nominal_completed=nominal_completed)
-    if suspect.any() and verify is not None:
-        # the audit's own step: failed on its own chain, its own rollout decides it
-        rerun_failed[suspect] = roll(samples[suspect])
-        verified = verified | suspect
-    if chain:
-        timings["chained segments"] = time.perf_counter() - t4
-    failed = failing_samples(SampleEvidence(sweep=res, nominal_completed=nominal_completed,
-                                            rerun=verified, rerun_failed=rerun_failed,
-                                            chained=chained, chained_failed=chained_failed),
-                             dopt)
+    runs, _ = sample_runs(evaluator, steps, samples, res, dopt, roll=roll,
+                          nominal_completed=nominal_completed, nthread=nthread,
+                          stage=lambda name: _Timer(timings, name, _quiet))
+    failed = failing_samples(runs.evidence(res, nominal_completed=nominal_completed), dopt)
     return Prediction(samples=samples, moments=moments, steps=steps, envelope_steps=extra,
                       max_moments=max_moments, horizon=h, mode=evaluator.mode, cost=cost_all,
                       cost_moments=cost_moments,
-                      failed=failed, verified=verified, nominal_completed=nominal_completed,
+                      failed=failed, verified=runs.rerun, nominal_completed=nominal_completed,
                       require_task=bool(require_task), seconds=time.perf_counter() - t0,
-                      timings=timings)
+                      timings=timings, runs=runs.counts(failed))
 
 
 # --------------------------------------------------------------------------
@@ -364,6 +357,10 @@ class ValidationResult:
         missed: the false safes, with where they fail relative to the moments.
         verified: the prediction was decided by the sample's own full rollout, (n,) bool.
         seed: Sobol seed of the samples, or None when the samples were given.
+        runs: how many samples each kind of own run decided (the sweep's near, unlifted
+            and sticking samples; the chained ones, and of those the failures and the near
+            passes sent on to their own rollout), and how many of them fail
+            (:meth:`critmoment.verdict.SampleRuns.counts`).
     """
 
     trajectory: str
@@ -387,6 +384,7 @@ class ValidationResult:
     missed: tuple[MissedFailure, ...]
     verified: np.ndarray
     seed: int | None = None
+    runs: Mapping[str, int] = dataclasses.field(default_factory=dict)
 
     @property
     def n_samples(self) -> int:
@@ -447,6 +445,7 @@ class ValidationResult:
             "moment_steps": [int(s) for s in self.moment_steps],
             "envelope_steps": [int(s) for s in self.envelope_steps],
             "verified": int(self.verified.sum()),
+            "own_runs": dict(self.runs),
             "nominal_completed": self.nominal_completed,
             "criteria": dataclasses.asdict(self.criteria),
             "confusion": self.confusion,
@@ -481,7 +480,10 @@ class ValidationResult:
             f"{[int(s) for s in self.moment_steps]}"
             + (f" + {self.envelope_steps.size} envelope steps" if self.envelope_steps.size else "")
             + (f"; {int(self.verified.sum())} samples verified by full rollouts"
-               if self.verified.any() else ""),
+               if self.verified.any() else "")
+            + (f"; {self.runs['chained']} chained ({self.runs['chained_rolled_out']} "
+               f"failures and {self.runs['chained_near']} near passes of them rolled out)"
+               if self.runs.get("chained") else ""),
             f"real outcomes: {counts}",
             f"confusion: true safe {c['true_safe']}, false safe {c['false_safe']}, true unsafe "
             f"{c['true_unsafe']}, false unsafe {c['false_unsafe']}",
@@ -548,7 +550,8 @@ def compare(brute: BruteForce, prediction: Prediction, *, trajectory: str = "",
         max_moments=prediction.max_moments, dt=dt,
         sparse_seconds=prediction.seconds, brute_force_seconds=brute.seconds,
         nominal_completed=brute.nominal_completed, criteria=brute.classification.criteria,
-        missed=tuple(missed), verified=prediction.verified, seed=seed)
+        missed=tuple(missed), verified=prediction.verified, seed=seed,
+        runs=prediction.runs)
 
 
 def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | None = 0,

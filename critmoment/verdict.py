@@ -55,6 +55,7 @@ __all__ = [
     "Evidence",
     "Decision",
     "Reruns",
+    "SampleRuns",
     "samples_to_rerun",
     "failing_samples",
     "samples_to_chain",
@@ -133,9 +134,16 @@ class DecisionOptions:
             raise ParameterError(f"confidence: expected in (0, 1), got {self.confidence}")
 
     @property
-    def rolls_unlifted(self) -> bool:
-        """Unlifted failures are decided by rollouts."""
-        return self.verify is not None and self.verify_unlifted
+    def rolls_squeezes(self) -> bool:
+        """Some failures that only a rollout can decide (unlifted or sticking ones) are
+        decided by rollouts."""
+        return self.verify is not None and (self.verify_unlifted or self.verify_sticking)
+
+    def only_a_rollout_decides(self, unlifted: bool, sticking: bool) -> bool:
+        """Whether a failure, unlifted and/or sticking (a contact failure inside an
+        elliptic cone), is one that the options decide by its own rollout."""
+        return self.verify is not None and bool(
+            (self.verify_unlifted and unlifted) or (self.verify_sticking and sticking))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -256,6 +264,65 @@ def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
     return Reruns(near, unlifted, sticking)
 
 
+@dataclasses.dataclass(frozen=True, eq=False)
+class SampleRuns:
+    """Which samples the decision took from their own runs, and what those runs said.
+
+    Attributes:
+        reruns: the samples the sweep cannot decide (:func:`samples_to_rerun`), each
+            decided by its own full rollout.
+        chained: the samples carried on their own state (:func:`samples_to_chain`), (n,)
+            bool.
+        chained_failed: they failed there, (n,) bool (read where ``chained``).
+        suspect: chained samples sent on to their own full rollout (a chained failure the
+            chain is the weaker evidence for, or a chained pass near a watched rule's
+            limit), (n,) bool.
+        rerun_failed: the own full rollouts' real outcome (failed), (n,) bool (read where
+            ``rerun``).
+    """
+
+    reruns: Reruns
+    chained: np.ndarray
+    chained_failed: np.ndarray
+    suspect: np.ndarray
+    rerun_failed: np.ndarray
+
+    @property
+    def rerun(self) -> np.ndarray:
+        """(n,) bool: decided by their own full rollout."""
+        return self.reruns.any | self.suspect
+
+    def evidence(self, sweep: SparseResult | None, *,
+                 nominal_completed: bool) -> SampleEvidence:
+        """The :class:`SampleEvidence` of these runs and the sweep they complete."""
+        return SampleEvidence(sweep=sweep, nominal_completed=nominal_completed,
+                              rerun=self.rerun, rerun_failed=self.rerun_failed,
+                              chained=self.chained, chained_failed=self.chained_failed)
+
+    def counts(self, failed: np.ndarray) -> dict[str, int]:
+        """How many samples each kind of own run decided, and how many of them fail
+        (``failed``: the decision, (n,) bool), JSON-able: ``rollouts`` in all, the sweep's
+        ``near``, ``unlifted`` and ``sticking`` samples, the ``chained`` ones, and of
+        those the failures rolled out (``chained_rolled_out``, ``chained_confirmed``) and
+        the near passes rolled out (``chained_near``, ``chained_near_failed``)."""
+        failed = np.asarray(failed, dtype=bool)
+        near, unlifted, sticking = self.reruns
+        rolled_fail = self.suspect & self.chained_failed
+        rolled_near = self.suspect & ~self.chained_failed
+        return {"rollouts": int(self.rerun.sum()), "failed": int(failed[self.rerun].sum()),
+                "near": int(near.sum()), "near_failed": int(failed[near].sum()),
+                "unlifted": int(unlifted.sum()),
+                "unlifted_failed": int(failed[unlifted].sum()),
+                "sticking": int(sticking.sum()),
+                "sticking_failed": int(failed[sticking].sum()),
+                "chained": int(self.chained.sum()),
+                "chained_failed": int(self.chained_failed[self.chained].sum()),
+                "chained_rolled_out": int(rolled_fail.sum()),
+                "chained_confirmed": int(failed[rolled_fail].sum()),
+                "chained_near": int(rolled_near.sum()),
+                "chained_near_failed": int(failed[rolled_near].sum())}
+
+
 def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.ndarray:
     """Which samples fail: the one decision path of ``analyze`` and ``validate``.
 
@@ -333,14 +400,15 @@ def worst_cases_to_rerun(moments: Sequence[MomentReport], worst_failed: Mapping[
                          n_failed: int) -> list[int]:
     """Steps of the moments whose failing worst case must be decided by its own rollout.
 
-    Only when that can change the verdict to SAFE: no sample fails, unlifted failures are
-    decided by rollouts, and every moment whose worst case fails (``worst_failed``, by
-    moment step: its sparse evaluation fails) fails only at a squeeze (``worst_unlifted``).
-    Empty otherwise.
+    Only when that can change the verdict to SAFE: no sample fails, and every moment whose
+    worst case fails (``worst_failed``, by moment step: its sparse evaluation fails) fails
+    only in a way the options decide by a rollout (``worst_unlifted``: an unlifted squeeze
+    with ``verify_unlifted``, a sticking failure with ``verify_sticking``;
+    :meth:`DecisionOptions.only_a_rollout_decides`). Empty otherwise.
     """
     failing = [int(mr.moment.step) for mr in moments
                if worst_failed.get(int(mr.moment.step), False)]
-    if n_failed or not failing or not options.rolls_unlifted:
+    if n_failed or not failing or not options.rolls_squeezes:
         return []
     if not all(worst_unlifted.get(s, False) for s in failing):
         return []
@@ -752,7 +820,9 @@ class Evidence:
         nominal_stage: (highest stage reached, final stage) of the nominal run.
         moments: per audited moment, what was found there.
         worst_failed: per moment step, whether its worst case fails there (sparse).
-        worst_unlifted: per moment step whose worst case fails, whether only unlifted.
+        worst_unlifted: per moment step whose worst case fails, whether only its own
+            rollout decides it (:meth:`DecisionOptions.only_a_rollout_decides`: unlifted
+            or sticking, as the options say).
         worst_rollouts_failed: per moment step whose worst case got its own rollout, its
             real outcome (failed).
         region: the check of the safe region, or None when it was not checked.
@@ -839,7 +909,7 @@ def _worst_cases_pass(evidence: Evidence, options: DecisionOptions) -> bool:
              if evidence.worst_failed.get(int(mr.moment.step), False)]
     if not steps:
         return True
-    if not options.rolls_unlifted or not all(evidence.worst_unlifted.get(s, False)
+    if not options.rolls_squeezes or not all(evidence.worst_unlifted.get(s, False)
                                              for s in steps):
         return False
     return all(s in evidence.worst_rollouts_failed and not evidence.worst_rollouts_failed[s]

@@ -364,6 +364,9 @@ def test_predict_decides_as_the_audit_does(twin, demo_traj, scenario):
     np.testing.assert_array_equal(p.failed, report.failed)
     np.testing.assert_array_equal(p.steps, report.sweep.steps)
     assert int(p.verified.sum()) == report.verification["rollouts"]
+    # the same own runs, counted alike (chained samples and their rollouts included)
+    assert p.runs["chained"] > 0
+    assert p.runs == {k: report.verification[k] for k in p.runs}
     strict = dataclasses.replace(options, verify=None)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")

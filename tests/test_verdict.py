@@ -333,3 +333,29 @@ def test_without_moments_nothing_fails_and_the_whole_box_is_stated():
     d = vd.decide(ev, OPT)
     assert d.verdict is vd.Verdict.SAFE and d.region_to_check is None
     assert d.safe_region_text == "safe over the whole box"
+
+
+def test_worst_case_rollouts_follow_each_switch():
+    """A failing worst case that only its own rollout can decide is rolled out by the switch
+    of its own kind: a sticking one with ``verify_sticking`` even when unlifted failures are
+    not rolled out, an unlifted one only with ``verify_unlifted``."""
+    moments = [_moment(100)]
+    both = vd.DecisionOptions(threshold=THRESHOLD)
+    sticking_only = dataclasses.replace(both, verify_unlifted=False)
+    unlifted_only = dataclasses.replace(both, verify_sticking=False)
+    neither = dataclasses.replace(both, verify_unlifted=False, verify_sticking=False)
+    assert sticking_only.only_a_rollout_decides(False, True)
+    assert not sticking_only.only_a_rollout_decides(True, False)
+    assert unlifted_only.only_a_rollout_decides(True, False)
+    assert not unlifted_only.only_a_rollout_decides(False, True)
+    assert not dataclasses.replace(both, verify=None).only_a_rollout_decides(True, True)
+    for opt, kind, rolled in [(sticking_only, (False, True), True),
+                              (sticking_only, (True, False), False),
+                              (unlifted_only, (True, False), True),
+                              (unlifted_only, (False, True), False),
+                              (neither, (True, True), False)]:
+        worst = {100: opt.only_a_rollout_decides(*kind)}
+        steps = vd.worst_cases_to_rerun(moments, {100: True}, worst, opt, n_failed=0)
+        assert steps == ([100] if rolled else []), (opt, kind)
+    # a failing sample decides the verdict already: no worst-case rollout
+    assert vd.worst_cases_to_rerun(moments, {100: True}, {100: True}, both, n_failed=1) == []
