@@ -188,9 +188,10 @@ class AuditReport:
             (:func:`critmoment.feasibility.preflight`), or None when not checked.
         contact_model: the contact model's check (:func:`critmoment.contactmodel.
             check_contact_model`: cone, impratio, noslip, the measured creep of a held object).
-        force_ratio_untrusted: steps of the audited moments where the contact force ratio
-            does not decide, because the nominal grip, whose run completes the task, already
-            sits on the friction cone there (:meth:`critmoment.sparse.SparseEvaluator.
+        force_ratio_untrusted: steps of the audited moments with a grip on the object where
+            the contact force ratio does not decide, because the nominal grip, whose run
+            completes the task, already sits on the friction cone there (or, in all, for
+            the persistence time over the whole motion) (:meth:`critmoment.sparse.SparseEvaluator.
             contact_trusted`): measured slip and the motor criterion decide them.
         load_bound: the analytic motor bound over the whole motion
             (:func:`critmoment.dynamics.trajectory_load_bound`) at the nominal and the
@@ -566,8 +567,18 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         scenario=sc, options=opt, timings=_in_order(timings), manifest=manifest, failed=decision.failed,
         verification=verification, region_check=region_check, feasibility=feasibility,
         contact_model=contact, load_bound=load_bound,
-        force_ratio_untrusted=tuple(int(k) for k, ok in zip(
-            steps, evaluator.contact_trusted(steps), strict=True) if not ok))
+        force_ratio_untrusted=_untrusted(rec, evaluator, steps))
+
+
+def _untrusted(rec: Recording, evaluator: sp.SparseEvaluator, steps: np.ndarray
+               ) -> tuple[int, ...]:
+    """The audited moments whose contact force ratio does not decide and where a gripper
+    touches the object in the nominal run's window (before the first touch there is no
+    ratio to distrust)."""
+    touched = rec.signals.contact_gripper.any(axis=-1)
+    h = evaluator.horizon + evaluator.persistence_steps
+    return tuple(int(k) for k, ok in zip(steps, evaluator.contact_trusted(steps), strict=True)
+                 if not ok and touched[int(k):int(k) + h].any())
 
 
 def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.ndarray,

@@ -28,6 +28,7 @@ import numpy as np
 
 from critmoment import budget
 from critmoment.exceptions import CritmomentError
+from critmoment.safety import format_fos
 
 __all__ = ["main", "build_parser", "EXIT_OK", "EXIT_UNSAFE", "EXIT_ERROR"]
 
@@ -151,10 +152,9 @@ def cmd_rollout(args) -> int:
                  f"{summary['max_stage']}, final stage {summary['final_stage']} "
                  f"({'completed' if summary['completed'] else 'NOT completed'}); first step "
                  f"per stage {{{firsts}}}")
-    fos_c = summary["min_fos_contact"]
-    _Stdout.emit(f"min FOS contact {fos_c if fos_c is None else f'{fos_c:.3f}'}, min FOS "
-                 f"motor {summary['min_fos_motor']:.3f} ({summary['limiting_actuator']}), "
-                 f"max cost {summary['max_cost']:.3f}")
+    _Stdout.emit(f"min FOS contact {format_fos(summary['min_fos_contact'], '.3f')}, min FOS "
+                 f"motor {format_fos(summary['min_fos_motor'], '.3f')} "
+                 f"({summary['limiting_actuator']}), max cost {summary['max_cost']:.3f}")
     if args.out is not None:
         out = args.out_written
         _Stdout.emit(f"wrote {out / 'recording.npz'}, {out / 'signals.png'}, "

@@ -33,6 +33,7 @@ from matplotlib.figure import Figure
 
 from critmoment.exceptions import OutputError, ParameterError
 from critmoment.moments import Moment, plot_moments
+from critmoment.safety import format_fos
 
 __all__ = ["plot_recording", "moment_json", "figure_png", "Figures", "write_report",
            "StagedOutput", "check_output_path", "MARKER"]
@@ -379,8 +380,8 @@ def summary_text(report) -> str:
                          if v is not None) or "never crosses"
         worst = ", ".join(f"{k}={v:.3g}" for k, v in mr.worst_case.items())
         lines.append(f"  {i}. {m.label.value:12s} step {m.step:5d} (t = {m.time:.2f} s): max cost "
-                     f"{mr.max_cost:.3f} at {worst}; min FOS contact {mr.min_fos_contact:.3g}, "
-                     f"motor {mr.min_fos_motor:.3g}; fails {mr.fail_fraction:.0%} of the box "
+                     f"{mr.max_cost:.3f} at {worst}; min FOS contact {format_fos(mr.min_fos_contact)}, "
+                     f"motor {format_fos(mr.min_fos_motor)}; fails {mr.fail_fraction:.0%} of the box "
                      f"(reached by {mr.reached:.0%}); critical: {crit}")
     v = report.verification
     if v is not None:
@@ -389,7 +390,7 @@ def summary_text(report) -> str:
     if lb and lb.get("masses"):
         parts = [f"{e['mass']:.3g} kg: {e['actuator']} saturates from t = "
                  f"{e['first_failing_time']:.2f} s" if e["first_failing_time"] is not None
-                 else f"{e['mass']:.3g} kg: no joint saturates" for e in lb["masses"]]
+                 else f"{e['mass']:.3g} kg: no rotational motor saturates" for e in lb["masses"]]
         lines.append("  analytic motor bound over the whole motion: " + "; ".join(parts))
     untrusted = getattr(report, "force_ratio_untrusted", ())
     if untrusted:

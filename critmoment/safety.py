@@ -11,7 +11,12 @@ import numpy as np
 
 from critmoment.scenario import CostParams
 
-__all__ = ["contact_fos", "contact_load", "fos_ratio", "motor_fos", "cost", "task_stage"]
+__all__ = ["contact_fos", "contact_load", "fos_ratio", "motor_fos", "cost", "task_stage",
+           "format_fos", "FOS_SHOWN"]
+
+#: factors of safety above this are printed as "> FOS_SHOWN" (a nearly unloaded joint's
+#: ratio, 1e6 or 1e20, says only that it is far from its limit)
+FOS_SHOWN = 1000.0
 
 
 def contact_fos(normal: np.ndarray, tangential: np.ndarray, mu: np.ndarray | float,
@@ -105,3 +110,15 @@ def task_stage(touch_picker: np.ndarray, touch_receiver: np.ndarray,
     stage[touch_receiver] = 3
     stage[touch_receiver & off] = 4
     return stage
+
+
+def format_fos(value: float | None, spec: str = ".3g") -> str:
+    """A factor of safety for people: formatted with ``spec``, "> 1000" above
+    :data:`FOS_SHOWN`, "inf" where unloaded, "n/a" for None or NaN."""
+    if value is None or np.isnan(value):
+        return "n/a"
+    if np.isinf(value):
+        return "inf" if value > 0 else "-inf"
+    if value > FOS_SHOWN:
+        return f"> {FOS_SHOWN:g}"
+    return format(value, spec)

@@ -25,6 +25,7 @@ import dataclasses
 import difflib
 import math
 import sys
+import warnings
 from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -33,7 +34,12 @@ import mujoco
 import numpy as np
 
 from critmoment import actuators as act_info
-from critmoment.exceptions import InputFileError, ParameterError, ScenarioError
+from critmoment.exceptions import (
+    CritmomentWarning,
+    InputFileError,
+    ParameterError,
+    ScenarioError,
+)
 from critmoment.params import (
     PARAMETER_KINDS,
     ForceLimitParameter,
@@ -61,7 +67,12 @@ __all__ = [
     "bundled_scenario_path",
     "BUNDLED_SCENARIOS",
     "unknown_keys_error",
+    "ScenarioWarning",
 ]
+
+class ScenarioWarning(CritmomentWarning):
+    """A scenario that loads but probably does not say what was meant."""
+
 
 #: scenarios shipped with critmoment, by name
 BUNDLED_SCENARIOS = ("aloha_transfer_cube", "panda_pick_place")
@@ -484,6 +495,51 @@ class Scenario:
             return self.keyframe
         return model.key(self.keyframe).id
 
+    def _check_roles(self, model: mujoco.MjModel) -> None:
+        """The object, the grippers and the supports are different geoms: a gripper or a
+        support made of the object's own geoms would make every grip check vacuous."""
+        obj = model.body(self.object_body).id
+
+        def of_object(geom: str) -> bool:
+            body = int(model.geom_bodyid[model.geom(geom).id])
+            while body > 0:
+                if body == obj:
+                    return True
+                body = int(model.body_parentid[body])
+            return False
+
+        for g in self.grippers:
+            mine = [geom for geom in g.geoms if of_object(geom)]
+            if mine:
+                raise ScenarioError(
+                    f"[grippers.{g.name}]: geoms {mine} belong to the object body "
+                    f"{self.object_body!r}; expected the gripper's own finger/pad geoms (a "
+                    f"body = \"...\" above the fingers, not the object)")
+        mine = [geom for geom in self.support_geoms if of_object(geom)]
+        if mine:
+            raise ScenarioError(f"[support]: geoms {mine} belong to the object body "
+                                f"{self.object_body!r}; expected the table, bin or floor geoms")
+        support = set(self.support_geoms)
+        for g in self.grippers:
+            both = sorted(support.intersection(g.geoms))
+            if both:
+                raise ScenarioError(f"[grippers.{g.name}] and [support]: geoms {both} are in "
+                                    f"both; expected a geom to be either a gripper's or a "
+                                    f"support's")
+        for i, a in enumerate(self.grippers):
+            for b in self.grippers[i + 1:]:
+                both = sorted(set(a.geoms).intersection(b.geoms))
+                if both:
+                    raise ScenarioError(f"[grippers.{a.name}] and [grippers.{b.name}]: geoms "
+                                        f"{both} are in both; expected each gripper's own geoms")
+
+    def undriven_actuators(self, model: mujoco.MjModel) -> tuple[str, ...]:
+        """Actuators of ``model`` that no action channel drives (their control stays 0)."""
+        driven = {a for channel in self.actions.channels for a in channel}
+        return tuple(name for i in range(model.nu)
+                     if (name := mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, i)
+                         or "") not in driven)
+
     def validate_names(self, model: mujoco.MjModel) -> None:
         """Check every name against ``model``; raise ScenarioError listing valid names."""
         def names(objtype, count):
@@ -517,9 +573,18 @@ class Scenario:
                 need(geom, geoms, "geom", f"[grippers.{g.name}] geoms")
         for geom in self.support_geoms:
             need(geom, geoms, "geom", "[support] geoms")
-        for channel in self.actions.channels:
+        self._check_roles(model)
+        seen: dict[str, str] = {}
+        for c, (label, channel) in enumerate(zip(self.actions.labels, self.actions.channels,
+                                                 strict=True)):
             for a in channel:
                 need(a, actuators, "actuator", "[actions]")
+                if a in seen:
+                    raise ScenarioError(
+                        f"[actions]: actuator {a!r} is driven by two channels ({seen[a]} and "
+                        f"#{c} {label!r}); expected each actuator in at most one channel (a "
+                        f"repeated name usually means another actuator was meant)")
+                seen[a] = f"#{c} {label!r}"
         for a in self.limits:
             need(a, actuators, "actuator", "[limits]")
         if self.keyframe is not None:
@@ -931,4 +996,11 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         limit_sources=sources, description=str(_get(raw, "description", str, "scenario", "")),
         settle=_get(object_t, "settle", bool, "[object]", True))
     scenario.validate_names(model)
+    idle = scenario.undriven_actuators(model)
+    if idle:
+        warnings.warn(
+            f"[actions]: no channel drives actuator(s) {list(idle)}: their control stays 0 "
+            f"for the whole trajectory (a position actuator then pulls its joint to 0); add "
+            f"them to [[actions.channel]] if the policy commands them", ScenarioWarning,
+            stacklevel=2)
     return scenario

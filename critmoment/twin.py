@@ -21,6 +21,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import types
+import warnings
 from collections.abc import Mapping
 
 import mujoco
@@ -28,7 +29,12 @@ import numpy as np
 
 from critmoment import actuators as act_info
 from critmoment import safety
-from critmoment.exceptions import ParameterError, ScenarioError, TrajectoryError
+from critmoment.exceptions import (
+    CritmomentWarning,
+    ParameterError,
+    ScenarioError,
+    TrajectoryError,
+)
 from critmoment.scenario import Scenario
 from critmoment.task import TaskEvidence
 
@@ -239,6 +245,16 @@ class Twin:
             for i in range(model.nu)])
         if not self.rotational.any():
             raise ScenarioError("expected at least one actuator on a hinge joint, found none")
+        #: actuators on slide joints of the arm (not a gripper's fingers): outside the motor
+        #: checks, which cover rotational actuators only
+        self.unchecked_slides = _arm_slides(model, sc)
+        if self.unchecked_slides:
+            warnings.warn(
+                f"actuator(s) {list(self.unchecked_slides)} drive slide joints of the arm: "
+                f"critmoment's motor checks (motor FOS, the analytic load bound, the ground "
+                f"truth's saturation and tracking rules) cover actuators on hinge joints only, "
+                f"so an overload of these axes shows only through what it does to the object "
+                f"(a drop, a missed goal)", CritmomentWarning, stacklevel=2)
         self.actuator_names = tuple(model.actuator(i).name for i in range(model.nu))
         self.task = sc.task
         # action channels -> actuators
@@ -544,3 +560,33 @@ def resolve_twin(scenario=None, twin: Twin | None = None) -> Twin:
     raise ScenarioError(
         f"scenario: expected a Scenario, a Twin, a path to a scenario.toml, a bundled "
         f"scenario's name or None, got {type(scenario).__name__}")
+
+
+def _arm_slides(model: mujoco.MjModel, scenario: Scenario) -> tuple[str, ...]:
+    """Actuators on slide joints that move the arm rather than a gripper's fingers: driven
+    by a channel that is not a normalised gripper channel, on a joint whose body is not
+    below a gripper's base (the deepest body above all its geoms)."""
+    conv = scenario.actions
+    fingers = {a for c, acts in enumerate(conv.channels) if conv.normalised[c] for a in acts}
+    bases = [act_info.common_ancestor(model, [int(model.geom_bodyid[model.geom(g).id])
+                                              for g in grip.geoms])
+             for grip in scenario.grippers]
+
+    def below_a_base(body: int) -> bool:
+        if any(body == base for base in bases):
+            return False
+        while body > 0:
+            body = int(model.body_parentid[body])
+            if body in bases:
+                return True
+        return False
+
+    out = []
+    for i in range(model.nu):
+        name = model.actuator(i).name
+        j = int(model.actuator_trnid[i, 0])
+        if (model.actuator_trntype[i] == mujoco.mjtTrn.mjTRN_JOINT
+                and model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE and name not in fingers
+                and not below_a_base(int(model.jnt_bodyid[j]))):
+            out.append(name)
+    return tuple(out)

@@ -176,3 +176,26 @@ def test_cli_init_and_inspect(tmp_path, capsys):
                  "--goal", "0.3", "0.2", "0.02", "--out", str(out)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "exists; pass --force" in err[0]
+
+
+def test_a_slide_joint_of_the_arm_is_named_as_outside_the_motor_checks(tmp_path):
+    """The motor checks cover hinge actuators; an arm's slide axis (a lift, a gantry) is named
+    in a warning, a gripper's slide fingers are not."""
+    plain = tmp_path / "plain.xml"
+    plain.write_text(arm_xml(gripper="slides"))
+    init_scenario(plain, object_body="cube", task="pick_hold", out=tmp_path / "plain.toml")
+    assert Twin(load_scenario(tmp_path / "plain.toml")).unchecked_slides == ()
+    xml = arm_xml(gripper="slides")
+    hinge = '<joint name="shoulder" type="hinge" axis="0 0 1" range="-3 3" damping="2"/>'
+    assert xml.count(hinge) == 1 and xml.count("<key qpos=\"0 0 0 0 ") == 1
+    xml = xml.replace(hinge, hinge + '\n<joint name="lift" type="slide" axis="0 0 1" '
+                                     'range="-0.1 0.1" damping="20"/>')
+    xml = xml.replace("<actuator>", '<actuator>\n<position name="lift_act" joint="lift" '
+                                    'kp="2000" kv="100" forcerange="-30 30"/>')
+    xml = xml.replace("<key qpos=\"0 0 0 0 ", "<key qpos=\"0 0 0 0 0 ")
+    lifted = tmp_path / "lift.xml"
+    lifted.write_text(xml)
+    init_scenario(lifted, object_body="cube", task="pick_hold", out=tmp_path / "lift.toml")
+    with pytest.warns(UserWarning, match=r"\['lift_act'\] drive slide joints of the arm"):
+        twin = Twin(load_scenario(tmp_path / "lift.toml"))
+    assert twin.unchecked_slides == ("lift_act",)

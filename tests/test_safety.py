@@ -210,3 +210,16 @@ def test_task_stage_vectorised_truth_table():
     stage2 = task_stage(tiled[..., 0], tiled[..., 1], tiled[..., 2])
     assert stage2.shape == (8, 3)
     np.testing.assert_array_equal(stage2, np.repeat(stage[:, None], 3, axis=1))
+
+
+def test_format_fos_caps_the_ratio_of_an_unloaded_joint():
+    from critmoment.safety import format_fos
+
+    assert format_fos(1.23456) == "1.23"
+    assert format_fos(1.0, ".3f") == "1.000"
+    assert format_fos(999.0) == "999"
+    # a nearly unloaded hinge's ratio (seen: 3.7e6, 5.4e20) says only "far from its limit"
+    assert format_fos(3678315.9, ".3f") == "> 1000"
+    assert format_fos(5.42e20) == "> 1000"
+    assert format_fos(float("inf")) == "inf"
+    assert format_fos(None) == format_fos(float("nan")) == "n/a"

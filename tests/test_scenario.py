@@ -410,3 +410,59 @@ def test_box_check_samples():
         box.check_samples([[1.0, 0.0]])
     with pytest.raises(ParameterError, match="names must be unique"):
         UncertaintyBox((box.parameters[0], box.parameters[0]))
+
+
+def _panda(tmp_path: Path, *pairs: tuple[str, str]) -> Path:
+    """A copy of the bundled Panda scenario (explicit channels) with text replacements."""
+    folder = tmp_path / "panda"
+    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
+    path = folder / "scenario.toml"
+    text = path.read_text()
+    for old, new in pairs:
+        assert text.count(old) == 1, f"{old!r} is not once in the bundled Panda scenario"
+        text = text.replace(old, new, 1)
+    path.write_text(text)
+    return folder
+
+
+def test_an_actuator_in_two_channels_is_a_scenario_error(tmp_path):
+    # a copy-paste slip: joint2 twice, joint3 driven by nothing; it used to load and audit
+    # a motion the policy never commanded (UNSAFE, blaming the object)
+    folder = _panda(tmp_path, ('actuators = ["joint3"]', 'actuators = ["joint2"]'))
+    with pytest.raises(ScenarioError, match=r"'joint2' is driven by two channels \(#1 "
+                                            r"'joint2' and #2 'joint3'\)"):
+        load_scenario(folder)
+
+
+def test_an_actuator_no_channel_drives_is_named_in_a_warning(tmp_path):
+    from critmoment.scenario import ScenarioWarning
+
+    folder = _panda(tmp_path, ('[[actions.channel]]\nactuators = ["joint7"]\nlabel = "joint7"\n',
+                               ""))
+    with pytest.warns(ScenarioWarning, match=r"no channel drives actuator\(s\) \['joint7'\]"):
+        sc = load_scenario(folder)
+    assert sc.actions.width == 7
+    assert sc.undriven_actuators(Twin(sc).model) == ("joint7",)
+
+
+@pytest.mark.parametrize("name", BUNDLED_SCENARIOS)
+def test_bundled_scenarios_drive_every_actuator(name):
+    sc = load_scenario(name)
+    assert sc.undriven_actuators(Twin(sc).model) == ()
+
+
+@pytest.mark.parametrize("old, new, message", [
+    ('geoms = ["left/left_pad", "left/right_pad"]', 'geoms = ["box"]',
+     r"\[grippers.left\]: geoms \['box'\] belong to the object body 'box'"),
+    ('[support]\ngeoms = ["table"]', '[support]\ngeoms = ["table", "box"]',
+     r"\[support\]: geoms \['box'\] belong to the object body"),
+    ('[support]\ngeoms = ["table"]', '[support]\ngeoms = ["table", "left/left_pad"]',
+     r"\[grippers.left\] and \[support\]: geoms \['left/left_pad'\] are in both"),
+    ('geoms = ["right/left_pad", "right/right_pad"]', 'geoms = ["right/left_pad", "left/left_pad"]',
+     r"\[grippers.left\] and \[grippers.right\]: geoms \['left/left_pad'\] are in both"),
+])
+def test_object_grippers_and_supports_are_different_geoms(tmp_path, old, new, message):
+    # a gripper made of the object itself loaded and audited SAFE (contact FOS inf: the
+    # object never touches "its gripper"), exit 0
+    with pytest.raises(ScenarioError, match=message):
+        load_scenario(_toml(tmp_path, (old, new)))
