@@ -57,6 +57,9 @@ log = logging.getLogger(__name__)
 
 #: task kinds whose success needs the object lifted (every kind critmoment knows today)
 _LIFT_TASKS = ("handover", "pick_place", "pick_hold")
+#: share of a lag stretch's largest lag that the servo's velocity damping must explain at
+#: the target's speed for the message to name the damping as the likely cause
+DAMPING_SHARE = 0.5
 
 
 class FitWarning(CritmomentWarning):
@@ -179,6 +182,11 @@ class JointFeasibility:
         blocked_by: the contact (geom pair) that holds the joint back during its lag or
             saturation stretch, or "": the robot pushes against something (itself, the
             object, the support), which is a fact of the motion, not of the twin.
+        target_speed: the target's highest speed over the lag stretch [rad/s or m/s]
+            (0 when there is none).
+        damping_lag: the lag the servo's velocity damping alone gives at that speed, at
+            steady state: (kv + joint damping / gear²) / kp × speed [rad or m] (0 when there
+            is no stretch).
     """
 
     actuator: str
@@ -200,6 +208,8 @@ class JointFeasibility:
     target_span: float
     note: str = ""
     blocked_by: str = ""
+    target_speed: float = 0.0
+    damping_lag: float = 0.0
 
     def to_json(self) -> dict:
         """JSON-able dict (kind as its value, non-finite numbers as None)."""
@@ -360,6 +370,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         is_gripper = a in grippers
         max_lag = max_lag_time = span = float("nan")
         lag_start, lag_len, lag_in_run = 0, 0, 0.0
+        speed = damping_lag = 0.0
         if kind is _Kind.POSITION and int(m.jnt_type[j]) in (
                 int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)):
             gain = m.actuator_gainprm[a, 0]
@@ -374,6 +385,12 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             span = float(np.ptp(target)) if n else 0.0
             lag_start, lag_len = _longest_run(lag > tol)
             lag_in_run = float(lag[lag_start:lag_start + lag_len].max()) if lag_len else 0.0
+            if lag_len and n > 1 and b1 < 0:
+                part = target[lag_start:lag_start + lag_len + 1]
+                speed = float(np.abs(np.diff(part)).max(initial=0.0)) / dt
+                kv = max(0.0, -float(m.actuator_biasprm[a, 2]))
+                damping = float(m.dof_damping[m.jnt_dofadr[j]])
+                damping_lag = (kv + damping / gear ** 2) / (-b1) * speed
         saturated = np.abs(force[:, a]) >= options.saturation_fraction * limit
         sat_start, sat_len = _longest_run(saturated)
         friction = float(m.dof_frictionloss[m.jnt_dofadr[j]])
@@ -383,7 +400,8 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             lag_start=lag_start * dt if lag_len else None, lag_in_run=lag_in_run,
             saturation_duration=sat_len * dt, saturation_start=sat_start * dt if sat_len else None,
             saturation_total=float(saturated.sum()) * dt, force_limit=limit, limit_source=source,
-            frictionloss=friction, target_span=span, note=note)
+            frictionloss=friction, target_span=span, note=note, target_speed=speed,
+            damping_lag=damping_lag)
         stretch = _failing_stretch(entry, tol, abs(gear), options)
         if stretch is not None:
             blocked = _blocking_contact(m, states, *stretch, joint=j)
@@ -518,6 +536,11 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
                      f"({e.limit_source}) for {e.saturation_total:.3g} s in all: too weak "
                      f"for the load (gravity, the object); check [limits], the model's "
                      f"forcerange and gear")
+        elif e.damping_lag >= DAMPING_SHARE * e.lag_in_run:
+            cause = (f"the servo's velocity damping: at the target's speed of up to "
+                     f"{e.target_speed:.3g} {e.unit}/s it trails by about (kv + joint damping) "
+                     f"/ kp × speed = {e.damping_lag:.3g} {e.unit} at steady state; slow the "
+                     f"motion down, or audit a twin whose servo gains match the robot's")
         elif model.jnt_limited[joint]:
             cause = ("the joint is blocked (a contact or its range) or the servo is too "
                      "soft (kp) for the motion; check the model's kp/kv and the trajectory's "

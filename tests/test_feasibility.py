@@ -364,3 +364,25 @@ def test_the_audit_reports_its_feasibility(twin, demo_traj):
     assert report.feasibility is not None and report.feasibility.feasible
     doc = report.to_json()["feasibility"]
     assert doc["feasible"] is True and len(doc["joints"]) == 16 and doc["fit_warnings"] == []
+
+
+def test_a_lag_from_the_servo_damping_is_named_so(tmp_path):
+    """A heavily damped servo (kv/kp = 0.2 s, as a velocity term of -400 with kp 2000) trails
+    a 1.9 rad/s ramp by about 0.2 s × 1.9 rad/s at steady state: the message blames the
+    damping and the speed, not a blocked joint or a soft kp."""
+    kv = 400.0
+    path = _scene(tmp_path, axis="0 0 1", limit=1000.0,
+                  actuator=f'<position name="servo" joint="hinge" kp="{KP}" kv="{kv}" '
+                           f'forcerange="-1000 1000"/>')
+    twin = Twin(load_scenario(path))
+    rec = _record(twin, _ramp(1.9))
+    report = check_feasibility(rec, twin, raise_on_failure=False)
+    entry = report.joint("hinge")
+    # the ramp's slope, and a little more where the cubic spline rounds its corners
+    assert 1.9 <= entry.target_speed <= 1.25 * 1.9
+    # joint damping 1 N·m·s/rad adds to the servo's kv (gear 1)
+    assert entry.damping_lag == pytest.approx((kv + 1.0) / KP * entry.target_speed, rel=1e-9)
+    assert entry.lag_in_run > 0.1
+    with pytest.raises(InfeasibleTwinError, match=r"likely cause: the servo's velocity "
+                                                  r"damping: at the target's speed"):
+        check_feasibility(rec, twin)
