@@ -33,7 +33,7 @@ import numpy as np
 
 from critmoment import actuators as act_info
 from critmoment.exceptions import ScenarioError
-from critmoment.scenario import GENERATED, load_scenario, prepare_spec
+from critmoment.scenario import GENERATED, compile_spec, load_scenario, prepare_spec
 from critmoment.task import TASK_KINDS
 
 __all__ = ["ModelInfo", "GripperGuess", "InitResult", "inspect_model", "init_scenario"]
@@ -210,11 +210,7 @@ def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
 
 
 def _compile(path: Path, **kwargs) -> mujoco.MjModel:
-    spec = prepare_spec(path, **kwargs)
-    try:
-        return spec.compile()
-    except Exception as exc:
-        raise ScenarioError(f"could not compile MJCF {path}: {exc}") from exc
+    return compile_spec(prepare_spec(path, what="model", **kwargs), path)
 
 
 def inspect_model(path: str | Path) -> ModelInfo:

@@ -24,6 +24,7 @@ from __future__ import annotations
 import dataclasses
 import difflib
 import math
+import re
 import sys
 import warnings
 from collections.abc import Iterable, Mapping, Sequence
@@ -67,6 +68,7 @@ __all__ = [
     "bundled_scenario_path",
     "BUNDLED_SCENARIOS",
     "unknown_keys_error",
+    "compile_spec",
     "ScenarioWarning",
 ]
 
@@ -367,8 +369,8 @@ def _gripper_ends(entry, acts, where, model, grippers, keyframe):
         values = value if isinstance(value, list) else [value] * n
         if len(values) != n or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
                                        and math.isfinite(v) for v in values):
-            raise ScenarioError(f"{where} {key}: expected a finite control value (or {n}), got "
-                                f"{value!r}")
+            raise ScenarioError(f"{where} {key}: expected one finite control value, or a list "
+                                f"of one per actuator ({n}: {list(acts)}), got {value!r}")
         return [float(v) for v in values]
 
     if "closed" in entry or "open" in entry:
@@ -485,7 +487,7 @@ class Scenario:
 
     def load_model(self) -> mujoco.MjModel:
         """Compile the scenario's MJCF (without critmoment's sensors)."""
-        return _compile(self.load_spec(), self.mjcf)
+        return compile_spec(self.load_spec(), self.mjcf)
 
     def keyframe_id(self, model: mujoco.MjModel) -> int | None:
         """Id of the keyframe, or None."""
@@ -647,7 +649,8 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
 
 
 def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
-                 friction_geoms: Sequence[str] = ()) -> mujoco.MjSpec:
+                 friction_geoms: Sequence[str] = (),
+                 what: str = "[model] mjcf") -> mujoco.MjSpec:
     """The MJCF as an MjSpec, made ready for critmoment (see the module docstring).
 
     Args:
@@ -655,6 +658,7 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
         object_body: the object's body; when ``friction_geoms`` names any of its geoms,
             the object's geoms get a priority above every other geom.
         friction_geoms: geoms whose friction the uncertainty box varies.
+        what: where the path came from, for messages.
 
     Raises:
         InputFileError: the file is missing or unreadable.
@@ -662,7 +666,11 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
     """
     mjcf = Path(mjcf)
     if not mjcf.is_file():
-        raise InputFileError(f"[model] mjcf: file not found: {mjcf}")
+        raise InputFileError(f"{what}: file not found: {mjcf}")
+    if mjcf.suffix.lower() in (".toml", ".npz", ".hdf5", ".h5", ".parquet", ".json"):
+        raise ScenarioError(f"{what}: expected an MJCF model file (.xml), got {mjcf} (a "
+                            f"{mjcf.suffix} file); a scenario goes to --scenario, a "
+                            f"trajectory to rollout/analyze/validate")
     try:
         spec = mujoco.MjSpec.from_file(str(mjcf))
     except Exception as exc:  # MuJoCo raises ValueError, OSError or its own errors
@@ -695,11 +703,20 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
     return spec
 
 
-def _compile(spec: mujoco.MjSpec, mjcf: Path) -> mujoco.MjModel:
+def compile_spec(spec: mujoco.MjSpec, mjcf: Path) -> mujoco.MjModel:
+    """Compile a spec from :func:`prepare_spec`; a ScenarioError says what failed, and
+    which element of the model a generated name (``critmoment:geom:3``) stands for."""
     try:
         return spec.compile()
     except Exception as exc:
-        raise ScenarioError(f"could not compile MJCF {mjcf}: {exc}") from exc
+        text = str(exc).strip()
+        hint = ""
+        found = re.search(rf"{re.escape(GENERATED)}(geom|actuator):(\d+)", text)
+        if found:
+            hint = (f" ({found.group(0)!r} is critmoment's name for the model's unnamed "
+                    f"{found.group(1)} #{found.group(2)}, in the order of the MJCF)")
+        raise ScenarioError(f"could not compile MJCF {mjcf}: {text}{hint}") from exc
+
 
 
 # ---------------------------------------------------------------------------
@@ -914,7 +931,7 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
     box = UncertaintyBox(tuple(_parameter(n, s) for n, s in unc.items()))
 
     spec = prepare_spec(mjcf, object_body=object_body, friction_geoms=_friction_targets(box))
-    model = _compile(spec, mjcf)
+    model = compile_spec(spec, mjcf)
     object_geom = _object_geom(object_t, model, object_body)
     key_id = None
     if isinstance(keyframe, int) and 0 <= keyframe < model.nkey:

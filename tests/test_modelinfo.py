@@ -199,3 +199,22 @@ def test_a_slide_joint_of_the_arm_is_named_as_outside_the_motor_checks(tmp_path)
     with pytest.warns(UserWarning, match=r"\['lift_act'\] drive slide joints of the arm"):
         twin = Twin(load_scenario(tmp_path / "lift.toml"))
     assert twin.unchecked_slides == ("lift_act",)
+
+
+def test_model_path_mistakes_say_what_was_expected(tmp_path):
+    from critmoment.exceptions import InputFileError
+
+    toml = tmp_path / "scenario.toml"
+    toml.write_text("name = 'x'\n")
+    with pytest.raises(ScenarioError, match=r"model: expected an MJCF model file \(\.xml\), "
+                                            r"got .*scenario\.toml \(a \.toml file\)"):
+        inspect_model(toml)
+    with pytest.raises(InputFileError, match=r"^model: file not found: .*nope\.xml"):
+        inspect_model(tmp_path / "nope.xml")
+    # an unnamed geom that does not compile: the message explains critmoment's name for it
+    broken = tmp_path / "broken.xml"
+    broken.write_text('<mujoco><worldbody><geom type="box" size="0.1 0.1 0.1"/>'
+                      '<geom type="box" size="-1 0.1 0.1"/></worldbody></mujoco>')
+    with pytest.raises(ScenarioError, match=r"'critmoment:geom:1' is critmoment's name for "
+                                            r"the model's unnamed geom #1"):
+        inspect_model(broken)
