@@ -60,6 +60,8 @@ _LIFT_TASKS = ("handover", "pick_place", "pick_hold")
 #: share of a lag stretch's largest lag that the servo's velocity damping must explain at
 #: the target's speed for the message to name the damping as the likely cause
 DAMPING_SHARE = 0.5
+#: penetration of the object into another geom at the start that gets a fit warning [m]
+START_PENETRATION = 0.002
 
 
 class FitWarning(CritmomentWarning):
@@ -652,6 +654,15 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
     sig = recording.signals
     default = ("; the trajectory gives none, so the model's default pose was used"
                if trajectory.object_pose is None and trajectory.qpos0 is None else "")
+    depth, other = _start_penetration(twin, recording.states[0])
+    if depth > START_PENETRATION:
+        out.append(f"the object starts {depth * 1e3:.3g} mm inside {other}: the model pushes "
+                   f"it out at once (which reads as a lift-off); is the object pose right "
+                   f"(--object-pose{default})?")
+    if not np.asarray(sig.contact_support, bool).any():
+        out.append(f"the object never touches its support ([support] geoms) in the nominal "
+                   f"run: is the object pose right (--object-pose{default}), or the "
+                   f"[support] geoms?")
     touched = np.asarray(sig.contact_gripper, bool).any()
     if not touched:
         out.append(f"the nominal run never touches the object: is the object pose right "
@@ -665,6 +676,27 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
     if strict and out:
         raise TrajectoryError(out[0])
     return out
+
+
+def _start_penetration(twin: Twin, state: np.ndarray) -> tuple[float, str]:
+    """The deepest penetration of the object's contacts at ``state`` [m] (0 when none) and
+    the geom it goes into."""
+    model = twin.model
+    data = mujoco.MjData(model)
+    twin.set_state(model, data, state)
+    mujoco.mj_forward(model, data)
+    if data.ncon == 0:
+        return 0.0, ""
+    geoms = np.asarray(data.contact.geom).reshape(-1, 2)[:data.ncon]
+    dist = np.asarray(data.contact.dist)[:data.ncon]
+    mine = model.geom_bodyid[geoms] == twin.object_body_id
+    dist = np.where(mine[:, 0] != mine[:, 1], dist, np.inf)
+    i = int(np.argmin(dist))
+    if not dist[i] < 0:
+        return 0.0, ""
+    g = int(geoms[i, 1] if mine[i, 0] else geoms[i, 0])
+    other = model.geom(g).name or f"geom #{g} of body {model.body(model.geom_bodyid[g]).name!r}"
+    return -float(dist[i]), other
 
 
 def _needs_lift(twin: Twin) -> bool:

@@ -12,6 +12,7 @@ Small scenes are written inline (MJCF + scenario.toml in tmp folders):
 from __future__ import annotations
 
 import json
+import re
 import warnings
 from pathlib import Path
 
@@ -386,3 +387,19 @@ def test_a_lag_from_the_servo_damping_is_named_so(tmp_path):
     with pytest.raises(InfeasibleTwinError, match=r"likely cause: the servo's velocity "
                                                   r"damping: at the target's speed"):
         check_feasibility(rec, twin)
+
+
+def test_an_object_pose_inside_or_off_the_support_gets_a_fit_hint(twin, demo_traj):
+    """A cube started 2 cm into the table is pushed out at once (a fake lift-off), one
+    started beside the table falls to the floor: each is named, neither is an error."""
+    import dataclasses
+
+    pose = np.asarray(demo_traj.object_pose, dtype=float)
+    sunk = dataclasses.replace(demo_traj, object_pose=np.r_[pose[:2], pose[2] - 0.02, pose[3:]])
+    hints = check_fit(sunk, _record(twin, sunk), twin)
+    assert any(re.search(r"the object starts (19\.\d+|20(\.\d+)?) mm inside table", h)
+               for h in hints), hints
+    away = dataclasses.replace(demo_traj, object_pose=np.r_[5.0, 5.0, pose[2:]])
+    hints = check_fit(away, _record(twin, away), twin)
+    assert any("never touches its support" in h for h in hints), hints
+    assert check_fit(demo_traj, _record(twin, demo_traj), twin) == []
