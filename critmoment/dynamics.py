@@ -1201,7 +1201,7 @@ def trajectory_load_bound(recording, twin, *, masses: Sequence[float] | np.ndarr
     qvel_all = states[:, offset + model.nq:offset + model.nq + model.nv]
     qvel = qvel_all[:n_steps]
     qacc = (qvel_all[1:] - qvel_all[:-1]) / dt
-    rot = np.flatnonzero(twin.rotational)
+    rot = np.flatnonzero(twin.motors)
     dofs = model.jnt_dofadr[model.actuator_trnid[rot, 0]]
     gear = model.actuator_gear[rot, 0]
     limits = np.asarray(twin.limits, dtype=float)[rot]

@@ -15,9 +15,11 @@ these outcomes); it imports neither.
 Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
 
 * ``DIVERGED``: the sample's simulation diverged (MuJoCo warning or non-finite readings).
-* ``MOTOR``: a rotational actuator's force stays at its limit (|force| ≥ ``saturation`` ×
-  limit) for longer than ``motor_time``, or a rotational joint lags its target by more than the
-  nominal run does, by over ``tracking_tolerance``, for longer than ``tracking_time`` —
+* ``MOTOR``: a motor-checked actuator's force (``Twin.motors``: rotational ones and the
+  arm's slides) stays at its limit (|force| ≥ ``saturation`` × limit) for longer than
+  ``motor_time``, or its joint lags its target by more than the nominal run does, by over
+  ``tracking_tolerance`` (``tracking_tolerance_slide`` for a slide), for longer than
+  ``tracking_time`` —
   unless this happens only after the object was dropped (then it is a consequence).
 * ``DROPPED``: the task is not completed and, for longer than ``drop_time``, the object is not
   carried (touches the support, or no gripper) at steps where the nominal run carries it; the
@@ -76,6 +78,7 @@ __all__ = [
     "NominalReference",
     "brute_force",
     "rerun_in_full",
+    "tracking_tolerances",
 ]
 
 _SENSOR_PREFIX = "critmoment:validate:"
@@ -107,10 +110,13 @@ class OutcomeCriteria:
         slip_time: how long the displacement must exceed the tolerance to count [s]
             (transients at the hand-over settle within a few tens of ms).
         slip_is_failure: a run that slips but completes the task counts as a failure.
-        saturation: fraction of the force limit at which a rotational actuator is saturated.
+        saturation: fraction of the force limit at which a motor-checked actuator (rotational,
+            or an arm's slide: ``Twin.motors``) is saturated.
         motor_time: how long a saturation must last to count [s].
         tracking_tolerance: how much more than in the nominal run a rotational joint may lag
             its target [rad].
+        tracking_tolerance_slide: the same for an arm's slide joint (a lift, a gantry axis)
+            [m].
         tracking_time: how long a tracking loss must last to count [s].
         drop_time: longest ignored loss of the object where the nominal run carries it [s]
             (the debounce of the drop test).
@@ -124,9 +130,10 @@ class OutcomeCriteria:
     tracking_tolerance: float = 0.1
     tracking_time: float = 0.05
     drop_time: float = 0.02
+    tracking_tolerance_slide: float = 0.01
 
     def __post_init__(self):
-        for name in ("slip_tolerance", "tracking_tolerance"):
+        for name in ("slip_tolerance", "tracking_tolerance", "tracking_tolerance_slide"):
             _check_positive(name, getattr(self, name))
         for name in ("slip_time", "motor_time", "tracking_time", "drop_time"):
             value = getattr(self, name)
@@ -452,7 +459,9 @@ class _Probe:
             s.objname = sc.object_body
             s.reftype = mujoco.mjtObj.mjOBJ_XBODY
             s.refname = base.body(anchor).name
-        self.rotational = np.flatnonzero(twin.rotational)
+        self.rotational = np.flatnonzero(twin.motors)  # the motor-checked actuators
+        #: per column, the actuator's slide flag (its tracking tolerance is in metres)
+        self.slide = np.asarray(twin.slide, bool)[self.rotational]
         for a in self.rotational:
             s = spec.add_sensor()
             s.name = f"{_SENSOR_PREFIX}q:{base.actuator(int(a)).name}"
@@ -651,11 +660,23 @@ class _Frames:
         return self.contact_gripper & ~self.contact_support[..., None]
 
 
+def tracking_tolerances(criteria: OutcomeCriteria, slide: np.ndarray,
+                        unit: float = 1.0) -> np.ndarray:
+    """Per motor-checked actuator column, ``unit`` over its tracking tolerance (hinge:
+    ``tracking_tolerance`` [rad]; slide: ``tracking_tolerance_slide`` [m]), (r,): with
+    ``unit`` 1, a lag times it is the lag in tolerances."""
+    slide = np.asarray(slide, bool)
+    return unit / np.where(slide, criteria.tracking_tolerance_slide,
+                           criteria.tracking_tolerance)
+
+
 def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, probe: _Probe,
                      dt: float, criteria: OutcomeCriteria, diverged: np.ndarray,
                      diverged_step: np.ndarray) -> Classification:
     target = controls[:, probe.rotational]
     excess = np.abs(frames.q - target[None]) - np.abs(reference.q - target)[None]
+    # a slide axis's lag [m] against its own tolerance, in the criteria's one comparison
+    excess = excess * tracking_tolerances(criteria, probe.slide, criteria.tracking_tolerance)
     nominal_held = reference.held
     alone = nominal_held & (nominal_held.sum(axis=-1, keepdims=True) == 1)
     slip = grip_slip(frames.position, reference.position, frames.held, nominal_held,

@@ -36,7 +36,7 @@ import numpy as np
 import scipy.ndimage
 
 from critmoment.exceptions import ParameterError
-from critmoment.groundtruth import OutcomeCriteria
+from critmoment.groundtruth import OutcomeCriteria, tracking_tolerances
 from critmoment.sparse import SparseEvaluator, _object_in_grippers
 from critmoment.task import TaskEvidence
 from critmoment.twin import STATE_SPEC
@@ -131,7 +131,7 @@ def estimate_drift(evaluator: SparseEvaluator, steps: Any, samples: Any, *, hori
     alone = ev._alone
     holder = np.where(alone.any(axis=1), np.argmax(alone, axis=1), -1)
     traced = [int(k) for k in steps if holder[k] >= 0]
-    rot = np.flatnonzero(twin.rotational)
+    rot = np.flatnonzero(twin.motors)
     joints = model.actuator_trnid[rot, 0]
     qadr = model.jnt_qposadr[joints]
     m, n = len(traced), samples.shape[0]
@@ -329,7 +329,7 @@ class _Watch:
         self.diverged_step = np.full(n, -1, np.int64)
         self.max_slip = np.zeros(n)
         twin = ev.twin
-        rotational = np.flatnonzero(twin.rotational)
+        rotational = np.flatnonzero(twin.motors)
         self.force_adr = twin._force_adr[rotational]
         self.limits = twin.limits[rotational]
         self.saturation = float(criteria.saturation)
@@ -340,7 +340,8 @@ class _Watch:
         self.qadr = model.jnt_qposadr[model.actuator_trnid[rotational, 0]]
         self.gear = model.actuator_gear[rotational, 0]
         self.qoffset = mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_TIME)
-        self.tracking_tolerance = float(criteria.tracking_tolerance)
+        # per column [rad or m] (an arm's slide axis has its own tolerance)
+        self.tracking_tolerance = 1.0 / tracking_tolerances(criteria, twin.slide[rotational])
         # per rule: its running count of steps (n, columns), the steps it must last, and
         # where its first step goes (saturation and tracking are both the MOTOR outcome)
         self.rules = {

@@ -390,7 +390,7 @@ def summary_text(report) -> str:
     if lb and lb.get("masses"):
         parts = [f"{e['mass']:.3g} kg: {e['actuator']} saturates from t = "
                  f"{e['first_failing_time']:.2f} s" if e["first_failing_time"] is not None
-                 else f"{e['mass']:.3g} kg: no rotational motor saturates" for e in lb["masses"]]
+                 else f"{e['mass']:.3g} kg: no motor saturates" for e in lb["masses"]]
         lines.append("  analytic motor bound over the whole motion: " + "; ".join(parts))
     untrusted = getattr(report, "force_ratio_untrusted", ())
     if untrusted:

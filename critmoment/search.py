@@ -576,7 +576,7 @@ def analytic_bounds(recording, twin: Twin, step: Any, *,
                              box.nominal[friction_col])
 
     # rotational actuators -> dofs, limits, gears
-    rot = np.flatnonzero(twin.rotational)
+    rot = np.flatnonzero(twin.motors)
     joints = tuple(twin.actuator_names[a] for a in rot)
     dofs = model.jnt_dofadr[model.actuator_trnid[rot, 0]]
     gear = model.actuator_gear[rot, 0]
@@ -1044,7 +1044,7 @@ def _cost_ceiling(twin: Twin) -> float:
     never exceeds B; otherwise only FOS ≥ 0 holds and the bound is B·e^β.
     """
     model, cp = twin.model, twin.scenario.cost
-    rot = np.flatnonzero(twin.rotational)
+    rot = np.flatnonzero(twin.motors)
     limited = model.actuator_forcelimited[rot].astype(bool)
     reach = np.abs(model.actuator_forcerange[rot]).max(axis=1)
     bounded = limited.all() and (reach <= np.asarray(twin.limits)[rot] * (1 + 1e-12)).all()

@@ -21,7 +21,6 @@ from __future__ import annotations
 import copy
 import dataclasses
 import types
-import warnings
 from collections.abc import Mapping
 
 import mujoco
@@ -30,7 +29,6 @@ import numpy as np
 from critmoment import actuators as act_info
 from critmoment import safety
 from critmoment.exceptions import (
-    CritmomentWarning,
     ParameterError,
     ScenarioError,
     TrajectoryError,
@@ -63,7 +61,8 @@ class Signals:
             where the object must be carried (off its support); +inf on the support, 0 when
             it must be carried but no gripper touches it (falling), (...). This is the
             contact FOS the cost uses.
-        fos_motor: motor FOS over rotational actuators, (...).
+        fos_motor: motor FOS over the motor-checked actuators (``Twin.motors``: rotational
+            ones and the arm's slides), (...).
         motor_argmax: index (into the actuators) of the limiting actuator, (...).
         cost: cost (eq. 15) of fos_grasp and fos_motor, (...).
         contact_support: object touches the support, (...) bool.
@@ -245,16 +244,14 @@ class Twin:
             for i in range(model.nu)])
         if not self.rotational.any():
             raise ScenarioError("expected at least one actuator on a hinge joint, found none")
-        #: actuators on slide joints of the arm (not a gripper's fingers): outside the motor
-        #: checks, which cover rotational actuators only
-        self.unchecked_slides = _arm_slides(model, sc)
-        if self.unchecked_slides:
-            warnings.warn(
-                f"actuator(s) {list(self.unchecked_slides)} drive slide joints of the arm: "
-                f"critmoment's motor checks (motor FOS, the analytic load bound, the ground "
-                f"truth's saturation and tracking rules) cover actuators on hinge joints only, "
-                f"so an overload of these axes shows only through what it does to the object "
-                f"(a drop, a missed goal)", CritmomentWarning, stacklevel=2)
+        #: actuators on slide joints of the arm (a lift, a gantry axis; not a gripper's
+        #: fingers): in the motor checks with the rotational ones, their force in N
+        self.arm_slides = _arm_slides(model, sc)
+        slide = set(self.arm_slides)
+        self.slide = np.array([model.actuator(i).name in slide for i in range(model.nu)])
+        #: the actuators the motor checks read (motor FOS, load bounds, the ground truth's
+        #: saturation and tracking rules): rotational ones and the arm's slides
+        self.motors = self.rotational | self.slide
         self.actuator_names = tuple(model.actuator(i).name for i in range(model.nu))
         self.task = sc.task
         # action channels -> actuators
@@ -522,8 +519,8 @@ class Twin:
         fos_grasp = np.where(np.broadcast_to(carried, fos_grasp.shape), held, np.inf)
         acc = sd[..., self._acc_adr] + self.model.opt.gravity
         force = sd[..., self._force_adr]
-        fos_m, arg = safety.motor_fos(force[..., self.rotational], self.limits[self.rotational])
-        rot_ids = np.flatnonzero(self.rotational)
+        fos_m, arg = safety.motor_fos(force[..., self.motors], self.limits[self.motors])
+        rot_ids = np.flatnonzero(self.motors)
         cost = safety.cost(fos_grasp, fos_m, self.scenario.cost)
         pos = sd[..., self._pos_adr]
         stage = self.task.stage(contact_gripper, contact_support, pos)
@@ -563,7 +560,8 @@ def resolve_twin(scenario=None, twin: Twin | None = None) -> Twin:
 
 
 def _arm_slides(model: mujoco.MjModel, scenario: Scenario) -> tuple[str, ...]:
-    """Actuators on slide joints that move the arm rather than a gripper's fingers: driven
+    """Actuators on slide joints that move the arm rather than a gripper's fingers (their
+    force, a grip's squeeze, is limited on purpose and stays out of the motor checks): driven
     by a channel that is not a normalised gripper channel, on a joint whose body is not
     below a gripper's base (the deepest body above all its geoms)."""
     conv = scenario.actions

@@ -126,3 +126,20 @@ def test_the_grip_frame_is_the_bodys_own_frame_not_its_inertial_one(scenario, tm
     expected = _object_in_grippers(data.xpos[None, None], data.xmat[None, None],
                                    twin.object_body_id, anchors)[0, 0]
     np.testing.assert_allclose(measured, expected, atol=1e-12)
+
+
+def test_tracking_tolerances_give_a_slide_axis_its_own_unit():
+    from critmoment.groundtruth import OutcomeCriteria, tracking_tolerances
+
+    c = OutcomeCriteria()
+    slide = np.array([False, True, False])
+    # a lag in tolerances: 0.02 rad on a hinge is a fifth of 0.1 rad, 0.02 m on a slide
+    # twice 0.01 m
+    lag = np.array([0.02, 0.02, 0.2])
+    np.testing.assert_allclose(lag * tracking_tolerances(c, slide), [0.2, 2.0, 2.0])
+    # scaled into the hinge's unit, a hinge lag is untouched, bit for bit
+    scaled = lag * tracking_tolerances(c, slide, c.tracking_tolerance)
+    assert scaled[0] == lag[0] and scaled[2] == lag[2]
+    assert scaled[1] == pytest.approx(0.2)
+    with pytest.raises(ParameterError, match="tracking_tolerance_slide"):
+        OutcomeCriteria(tracking_tolerance_slide=0.0)

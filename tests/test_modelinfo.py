@@ -178,27 +178,40 @@ def test_cli_init_and_inspect(tmp_path, capsys):
     assert len(err) == 1 and "exists; pass --force" in err[0]
 
 
-def test_a_slide_joint_of_the_arm_is_named_as_outside_the_motor_checks(tmp_path):
-    """The motor checks cover hinge actuators; an arm's slide axis (a lift, a gantry) is named
-    in a warning, a gripper's slide fingers are not."""
+def test_an_arm_slide_axis_is_in_the_motor_checks_a_finger_slide_is_not(tmp_path):
+    """A lift axis (slide joint of the arm) carries the arm's weight: its motor FOS in a
+    static hold is limit / (m·g), with m the mass it lifts; the gripper's slide fingers (a
+    force-limited squeeze) stay out of the motor checks."""
     plain = tmp_path / "plain.xml"
     plain.write_text(arm_xml(gripper="slides"))
     init_scenario(plain, object_body="cube", task="pick_hold", out=tmp_path / "plain.toml")
-    assert Twin(load_scenario(tmp_path / "plain.toml")).unchecked_slides == ()
+    assert Twin(load_scenario(tmp_path / "plain.toml")).arm_slides == ()
     xml = arm_xml(gripper="slides")
     hinge = '<joint name="shoulder" type="hinge" axis="0 0 1" range="-3 3" damping="2"/>'
     assert xml.count(hinge) == 1 and xml.count("<key qpos=\"0 0 0 0 ") == 1
     xml = xml.replace(hinge, hinge + '\n<joint name="lift" type="slide" axis="0 0 1" '
                                      'range="-0.1 0.1" damping="20"/>')
-    xml = xml.replace("<actuator>", '<actuator>\n<position name="lift_act" joint="lift" '
-                                    'kp="2000" kv="100" forcerange="-30 30"/>')
+    limit = 30.0
+    xml = xml.replace("<actuator>", f'<actuator>\n<position name="lift_act" joint="lift" '
+                                    f'kp="20000" kv="400" forcerange="-{limit} {limit}"/>')
     xml = xml.replace("<key qpos=\"0 0 0 0 ", "<key qpos=\"0 0 0 0 0 ")
     lifted = tmp_path / "lift.xml"
     lifted.write_text(xml)
     init_scenario(lifted, object_body="cube", task="pick_hold", out=tmp_path / "lift.toml")
-    with pytest.warns(UserWarning, match=r"\['lift_act'\] drive slide joints of the arm"):
-        twin = Twin(load_scenario(tmp_path / "lift.toml"))
-    assert twin.unchecked_slides == ("lift_act",)
+    twin = Twin(load_scenario(tmp_path / "lift.toml"))
+    names = twin.actuator_names
+    assert twin.arm_slides == ("lift_act",)
+    assert [names[i] for i in np.flatnonzero(twin.motors)] == ["lift_act", "shoulder_act",
+                                                                "elbow_act"]
+    conv = twin.scenario.actions
+    actions = np.tile([1.0 if norm else 0.0 for norm in conv.normalised], (100, 1))
+    rec = rollout(Trajectory(actions=actions, fps=50.0, start=actions[0],
+                             object_pose=[0.8, 0.0, 0.02, 1, 0, 0, 0]), twin=twin)
+    base = twin.model.body("base").id
+    weight = twin.model.body_subtreemass[base] * 9.81
+    # both arm hinges turn about the vertical: no gravity load, the lift limits
+    assert rec.signals.fos_motor[-1] == pytest.approx(limit / weight, rel=0.01)
+    assert names[int(rec.signals.motor_argmax[-1])] == "lift_act"
 
 
 def test_model_path_mistakes_say_what_was_expected(tmp_path):
