@@ -352,7 +352,9 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                   for g in obj["geoms"]]
     object_geom = max(geom_sizes)[1]
     if len(obj["geoms"]) > 1:
-        guesses.append(f"object geom {object_geom!r} (the largest of {len(obj['geoms'])})")
+        guesses.append(f"object geom {object_geom!r} (the largest of {len(obj['geoms'])}; "
+                       f"the contacts of all of them count, and the friction parameter sets "
+                       f"all of them)")
     grippers = [g for g in info.grippers]
     if not grippers:
         raise ScenarioError(

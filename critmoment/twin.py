@@ -21,6 +21,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import types
+import warnings
 from collections.abc import Mapping
 
 import mujoco
@@ -29,10 +30,12 @@ import numpy as np
 from critmoment import actuators as act_info
 from critmoment import safety
 from critmoment.exceptions import (
+    CritmomentWarning,
     ParameterError,
     ScenarioError,
     TrajectoryError,
 )
+from critmoment.params import FrictionParameter
 from critmoment.scenario import Scenario
 from critmoment.task import TaskEvidence
 
@@ -158,12 +161,35 @@ class Twin:
         scenario.validate_names(model)
         self._index(model)
         self._param_ids = [p.resolve(model) for p in scenario.box.parameters]
+        #: per parameter, the ids it writes: the friction of one of the object's geoms is the
+        #: object's friction, written to every collision geom of its body
+        self._param_targets = [self._targets(p, i, model)
+                               for p, i in zip(scenario.box.parameters, self._param_ids,
+                                               strict=True)]
         # parameters scale from the MJCF's own values, whatever nominal values are applied
         self._original = types.SimpleNamespace(
             **{f: getattr(model, f).copy() for f in self.parameter_fields()})
         self.write_parameters(model, scenario.box.nominal[None, :])
 
     # -- construction ---------------------------------------------------------
+    def _targets(self, p, index: int, model: mujoco.MjModel) -> tuple[int, ...]:
+        """The ids parameter ``p`` (resolved to ``index``) writes."""
+        if not isinstance(p, FrictionParameter):
+            return (index,)
+        body = int(model.geom_bodyid[index])
+        if body != model.body(self.scenario.object_body).id:
+            return (index,)
+        geoms = tuple(int(g) for g in np.flatnonzero(model.geom_bodyid == body)
+                      if model.geom_contype[g] or model.geom_conaffinity[g])
+        mu = model.geom_friction[list(geoms), 0]
+        if not np.all(mu == mu[0]):
+            each = ", ".join(f"{model.geom(g).name or f'geom #{g}'}: {m:g}"
+                             for g, m in zip(geoms, mu, strict=True))
+            warnings.warn(f"[uncertainty.{p.name}]: the object's collision geoms have different "
+                          f"frictions ({each}); the parameter sets the friction of all of them "
+                          f"(the object's)", CritmomentWarning, stacklevel=3)
+        return geoms
+
     def add_sensors(self, spec: mujoco.MjSpec) -> None:
         """Add the twin's safety sensors to ``spec`` (the scenario's model, as an MjSpec).
 
@@ -182,8 +208,10 @@ class Twin:
             s = spec.add_sensor()
             s.name = name
             s.type = mujoco.mjtSensor.mjSENS_CONTACT
-            s.objtype = mujoco.mjtObj.mjOBJ_GEOM
-            s.objname = sc.object_geom
+            # every geom of the object's body: a compound object (a base and a handle, a
+            # convex decomposition) is gripped and supported by any of them
+            s.objtype = mujoco.mjtObj.mjOBJ_BODY
+            s.objname = sc.object_body
             s.reftype = mujoco.mjtObj.mjOBJ_GEOM
             s.refname = geom
             s.intprm = [data, 0, num]
@@ -302,7 +330,8 @@ class Twin:
         elif arrays is None:
             arrays = {f: target.expand(f) for f in self.parameter_fields()}
         for j, p in enumerate(box.parameters):
-            p.write(self._param_ids[j], self._original, arrays, samples[:, j])
+            for index in self._param_targets[j]:
+                p.write(index, self._original, arrays, samples[:, j])
         if any(p.needs_set_const for p in box.parameters):
             if isinstance(target, mujoco.MjModel):
                 mujoco.mj_setConst(target, mujoco.MjData(target))

@@ -580,3 +580,42 @@ def test_lifted_flags_keep_the_runs_that_rise():
     assert lifted_flags(carried, height, rise=0.02).sum() == 0
     with pytest.raises(ParameterError, match=r"same shape \(T,\), got \(12,\) and \(11,\)"):
         lifted_flags(carried, height[:-1])
+
+
+def test_a_compound_object_is_sensed_and_its_friction_varied_on_every_geom(tmp_path,
+                                                                           demo_traj):
+    """The bundled cube split into two halves (two geoms of one body; [object] geom names the
+    upper one): the lower half's contacts with the table and the grip count too, and the
+    friction parameter sets both halves. (With the named geom alone the cube never touched
+    its support, and a gripped handle was never seen: SAFE over the whole box.)"""
+    import shutil
+    import warnings
+
+    from critmoment.recording import rollout
+    from critmoment.scenario import bundled_scenario_path
+
+    folder = tmp_path / "split"
+    shutil.copytree(bundled_scenario_path().parent, folder)
+    xml = (folder / "scene.xml").read_text()
+    cube = ('<geom name="box" type="box" size="0.02 0.02 0.02" mass="0.05" rgba="0.9 0.1 0.1 1"\n'
+            '            contype="1" conaffinity="1" condim="4" priority="1" '
+            'friction="1 0.005 0.0001"\n            solref="0.01 1"/>')
+    assert xml.count(cube) == 1
+    half = ('<geom name="{n}" type="box" size="0.02 0.02 0.01" pos="0 0 {z}" mass="0.025" '
+            'contype="1" conaffinity="1" condim="4" priority="1" friction="1 0.005 0.0001" '
+            'solref="0.01 1"/>')
+    (folder / "scene.xml").write_text(xml.replace(
+        cube, half.format(n="box", z=0.01) + "\n" + half.format(n="box_base", z=-0.01)))
+    twin = Twin(load_scenario(folder))
+    model = twin.model
+    halves = [model.geom("box").id, model.geom("box_base").id]
+    twin.write_parameters(model, np.array([[0.05, 0.4]]))
+    np.testing.assert_array_equal(model.geom_friction[halves, 0], [0.4, 0.4])
+    twin.write_parameters(model, twin.scenario.box.nominal[None, :])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        rec = rollout(demo_traj, twin=twin)
+    sig = rec.signals
+    # at rest only the lower half touches the table
+    assert sig.contact_support[0]
+    assert rec.completed and sig.contact_gripper.any()
