@@ -496,8 +496,9 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             one = evaluator.evaluate([s], [[worst_case[n] for n in box.names]])
             worst_failed_sparse[s] = bool(one.failed[0, 0])
             # unlifted or sticking: only a rollout can say whether it really fails
-            worst_unlifted[s] = dopt.only_a_rollout_decides(bool(one.unlifted_failure[0, 0]),
-                                                            bool(one.sticking_failure[0, 0]))
+            worst_unlifted[s] = dopt.only_a_rollout_decides(
+                bool(one.unlifted_failure[0, 0]), bool(one.sticking_failure[0, 0]),
+                bool(one.short_slip(dopt.slip_confirm)[0, 0]))
             if dominant is None:
                 # only the search's worst case fails here: its own evaluation says why
                 dominant = _dominant(one, 0, one.failed[0])
@@ -615,9 +616,15 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     moments = steps.size > 0 and sweep is not None
     reruns = vd.samples_to_rerun(sweep, options, nominal_completed=nominal_completed)
     rerun = reruns.any
+    chaining = (options.chain and moments
+                and vd.samples_to_chain(sweep, rerun, options,
+                                        nominal_completed=nominal_completed).any())
     # two physics threads beside this one: one MuJoCo thread each (with all CPUs each, six
-    # threads would share two cores; measured 2.16 -> 2.09 s, medians of 6)
-    side = 1 if nthread != 1 else None
+    # threads would share two cores; measured 2.16 -> 2.09 s, medians of 6); where only one
+    # of them has work, it gets every thread (a validation whose samples are nearly all
+    # rolled out: 62 of 64 rollouts on one core cost 1.68 of brute force)
+    both = bool(rerun.any() and options.verify is not None and chaining)
+    side = 1 if nthread != 1 and both else None
 
     def verify():
         failed = np.zeros(n, bool)
@@ -850,7 +857,8 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         # sparse evaluation decides every point; the worst points that pass (and those that
         # fail only unlifted) are decided by their own full rollout
         reruns = vd.samples_to_rerun(res, options, nominal_completed=True)
-        unlifted = reruns.unlifted | reruns.sticking  # failures only a rollout can decide
+        # failures only a rollout can decide
+        unlifted = reruns.unlifted | reruns.sticking | reruns.slipping
         rolled = unlifted | vd.points_to_roll_out(cost, res.failed_any, unlifted, worst=worst)
         if (res.failed_any & ~unlifted).any():
             rolled = np.zeros(pts.shape[0], bool)  # it shrinks anyway: rollouts next round

@@ -442,6 +442,26 @@ class SparseResult:
         return (self.failed_any & ~(self.failed & ~soft).any(axis=0)
                 & self.sticking_failure.any(axis=0))
 
+    def short_slip(self, limit: float) -> np.ndarray:
+        """(m, n) bool: the pair fails by its measured slip alone (``Failure.SLIP``), and
+        that slip stayed under ``limit`` [m] (the ground truth's slip tolerance): over the
+        horizon it is more than the sparse tolerance, but whether it goes on to a real slip
+        is for the sample's own run to say."""
+        if self.failure is None or self.slip is None:
+            return np.zeros(self.cost.shape, dtype=bool)
+        return (self.failure == Failure.SLIP) & (self.slip < limit)
+
+    def failed_slip_only(self, limit: float) -> np.ndarray:
+        """(n,) bool: the sample fails, only through short slips (:meth:`short_slip`) and
+        unlifted and sticking failures, at least one of them a short slip: whether it
+        really fails is for a full rollout to say."""
+        short = self.short_slip(limit)
+        soft = short.copy()
+        for extra in (self.sticking_failure, self.unlifted_failure):
+            if extra is not None:
+                soft |= extra
+        return self.failed_any & ~(self.failed & ~soft).any(axis=0) & short.any(axis=0)
+
     @property
     def failed_any(self) -> np.ndarray:
         """(n,) bool: the sample fails at one moment or more."""

@@ -94,6 +94,12 @@ class DecisionOptions:
         verify_sticking: with ``verify``, samples whose only failures are sticking ones
             (a contact failure with the grasp inside an elliptic friction cone,
             ``SparseResult.sticking_failure``) are decided by their own full rollout too.
+        verify_slip: with ``verify``, samples whose only failures are measured slips under
+            ``slip_confirm`` (``SparseResult.failed_slip_only``: more than the sparse slip
+            tolerance over the horizon, less than the ground truth's) are decided by their
+            own full rollout too.
+        slip_confirm: the slip a sparse slip failure must reach to stand on its own [m]
+            (the ground truth's ``OutcomeCriteria.slip_tolerance``, 1 cm).
         require_task: a nominal run that does not complete the task fails every sample.
         confidence: confidence level of the P(success) interval.
         chain: every sample that passes at the moments and has no rollout of its own is
@@ -111,6 +117,8 @@ class DecisionOptions:
     verify: float | None = 0.8
     verify_unlifted: bool = True
     verify_sticking: bool = True
+    verify_slip: bool = True
+    slip_confirm: float = 0.01
     require_task: bool = True
     confidence: float = 0.95
     chain: bool = True
@@ -125,7 +133,12 @@ class DecisionOptions:
                                         or not 0 < self.verify <= 1):
             raise ParameterError(f"verify: expected a fraction of the threshold in (0, 1] or "
                                  f"None, got {self.verify!r}")
-        for name in ("verify_unlifted", "verify_sticking", "require_task", "chain",
+        if isinstance(self.slip_confirm, bool) or not isinstance(
+                self.slip_confirm, numbers.Real) or not self.slip_confirm > 0:
+            raise ParameterError(f"slip_confirm: expected a length > 0 m, got "
+                                 f"{self.slip_confirm!r}")
+        for name in ("verify_unlifted", "verify_sticking", "verify_slip", "require_task",
+                     "chain",
                      "nominal_by_run"):
             if not isinstance(getattr(self, name), (bool, np.bool_)):
                 raise ParameterError(f"{name}: expected True or False, got "
@@ -135,15 +148,19 @@ class DecisionOptions:
 
     @property
     def rolls_squeezes(self) -> bool:
-        """Some failures that only a rollout can decide (unlifted or sticking ones) are
-        decided by rollouts."""
-        return self.verify is not None and (self.verify_unlifted or self.verify_sticking)
+        """Some failures that only a rollout can decide (unlifted, sticking or short-slip
+        ones) are decided by rollouts."""
+        return self.verify is not None and (self.verify_unlifted or self.verify_sticking
+                                            or self.verify_slip)
 
-    def only_a_rollout_decides(self, unlifted: bool, sticking: bool) -> bool:
-        """Whether a failure, unlifted and/or sticking (a contact failure inside an
-        elliptic cone), is one that the options decide by its own rollout."""
+    def only_a_rollout_decides(self, unlifted: bool, sticking: bool,
+                               slipping: bool = False) -> bool:
+        """Whether a failure, unlifted, sticking (a contact failure inside an elliptic
+        cone) and/or a short slip (under ``slip_confirm``), is one that the options decide
+        by its own rollout."""
         return self.verify is not None and bool(
-            (self.verify_unlifted and unlifted) or (self.verify_sticking and sticking))
+            (self.verify_unlifted and unlifted) or (self.verify_sticking and sticking)
+            or (self.verify_slip and slipping))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -227,11 +244,12 @@ class Reruns(NamedTuple):
     near: np.ndarray      #: pass with a cost at or above ``verify × threshold``
     unlifted: np.ndarray  #: fail only unlifted (``SparseResult.failed_unlifted_only``)
     sticking: np.ndarray  #: fail only sticking (``SparseResult.failed_sticking_only``)
+    slipping: np.ndarray  #: fail only by short slips (``SparseResult.failed_slip_only``)
 
     @property
     def any(self) -> np.ndarray:
         """(n,) bool: any of them."""
-        return self.near | self.unlifted | self.sticking
+        return self.near | self.unlifted | self.sticking | self.slipping
 
 
 def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
@@ -245,23 +263,26 @@ def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
 
     Returns:
         The :class:`Reruns`: samples that pass with a cost ≥ ``verify × threshold``,
-        samples whose only failures are unlifted ones, and samples whose only failures are
-        sticking (and unlifted) ones. All empty when ``verify`` is None, or when the
+        samples whose only failures are unlifted ones, samples whose only failures are
+        sticking (and unlifted) ones, and samples whose only failures are short slips (and
+        sticking and unlifted ones). All empty when ``verify`` is None, or when the
         nominal run fails the task and ``require_task`` makes every sample fail.
     """
     n = 0 if sweep is None else sweep.n_samples
     none = np.zeros(n, bool)
     if sweep is None or sweep.n_moments == 0:
-        return Reruns(none, none.copy(), none.copy())
+        return Reruns(none, none.copy(), none.copy(), none.copy())
     if options.verify is None or (options.require_task and not nominal_completed):
-        return Reruns(none, none.copy(), none.copy())
+        return Reruns(none, none.copy(), none.copy(), none.copy())
     cost = sweep.worst_cost()
     near = ~sweep.failed_any & (cost >= options.verify * options.threshold)
     unlifted = (sweep.failed_unlifted_only.copy() if options.verify_unlifted
                 else none.copy())
     sticking = (sweep.failed_sticking_only.copy() if options.verify_sticking
                 else none.copy())
-    return Reruns(near, unlifted, sticking)
+    slipping = (sweep.failed_slip_only(options.slip_confirm) & ~sticking & ~unlifted
+                if options.verify_slip else none.copy())
+    return Reruns(near, unlifted, sticking, slipping)
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -306,7 +327,7 @@ class SampleRuns:
         those the failures rolled out (``chained_rolled_out``, ``chained_confirmed``) and
         the near passes rolled out (``chained_near``, ``chained_near_failed``)."""
         failed = np.asarray(failed, dtype=bool)
-        near, unlifted, sticking = self.reruns
+        near, unlifted, sticking, slipping = self.reruns
         rolled_fail = self.suspect & self.chained_failed
         rolled_near = self.suspect & ~self.chained_failed
         return {"rollouts": int(self.rerun.sum()), "failed": int(failed[self.rerun].sum()),
@@ -315,6 +336,8 @@ class SampleRuns:
                 "unlifted_failed": int(failed[unlifted].sum()),
                 "sticking": int(sticking.sum()),
                 "sticking_failed": int(failed[sticking].sum()),
+                "slipping": int(slipping.sum()),
+                "slipping_failed": int(failed[slipping].sum()),
                 "chained": int(self.chained.sum()),
                 "chained_failed": int(self.chained_failed[self.chained].sum()),
                 "chained_rolled_out": int(rolled_fail.sum()),
@@ -874,6 +897,7 @@ class Decision:
         near: samples re-run because their cost was near the threshold, (n,) bool.
         unlifted: samples re-run because they failed only unlifted, (n,) bool.
         sticking: samples re-run because they failed only sticking, (n,) bool.
+        slipping: samples re-run because they failed only by short slips, (n,) bool.
     """
 
     verdict: Verdict
@@ -887,6 +911,7 @@ class Decision:
     near: np.ndarray
     unlifted: np.ndarray
     sticking: np.ndarray
+    slipping: np.ndarray | None = None
 
 
 def _nominal_fails(evidence: Evidence, options: DecisionOptions) -> tuple[bool, bool, bool]:
@@ -933,8 +958,8 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
     se = evidence.samples
     n = se.n_samples
     failed = failing_samples(se, options)
-    near, unlifted, sticking = samples_to_rerun(se.sweep, options,
-                                                nominal_completed=se.nominal_completed)
+    near, unlifted, sticking, slipping = samples_to_rerun(
+        se.sweep, options, nominal_completed=se.nominal_completed)
     n_fail = int(failed.sum())
     nominal_fails, nominal_squeeze, task_failed = _nominal_fails(evidence, options)
     if n:
@@ -1005,7 +1030,7 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
                     p_success_interval=(float(interval[0]), float(interval[1])),
                     safe_region=region, safe_region_text=text, causes=causes,
                     region_to_check=to_check, near=near, unlifted=unlifted,
-                    sticking=sticking)
+                    sticking=sticking, slipping=slipping)
 
 
 def _is_whole_box(region: Mapping[str, tuple[float, float]], box: UncertaintyBox) -> bool:
