@@ -22,14 +22,16 @@ from critmoment.twin import Twin
 BUNDLED = bundled_scenario_path().parent
 
 
-def _copy(tmp_path: Path, edits: dict[str, list[tuple[str, str]]] | None = None) -> Path:
-    """Copy the bundled scenario folder to tmp_path and apply text replacements per file.
+def _copy(tmp_path: Path, edits: dict[str, list[tuple[str, str]]] | None = None,
+          source: Path = BUNDLED) -> Path:
+    """Copy a bundled scenario folder (default ALOHA's) to tmp_path and apply text
+    replacements per file.
 
     Each (old, new) must occur exactly once in the file, so that a test cannot silently stop
     testing what it says when the bundled files change.
     """
     folder = tmp_path / "scn"
-    shutil.copytree(BUNDLED, folder)
+    shutil.copytree(source, folder)
     for name, pairs in (edits or {}).items():
         path = folder / name
         text = path.read_text()
@@ -414,15 +416,8 @@ def test_box_check_samples():
 
 def _panda(tmp_path: Path, *pairs: tuple[str, str]) -> Path:
     """A copy of the bundled Panda scenario (explicit channels) with text replacements."""
-    folder = tmp_path / "panda"
-    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
-    path = folder / "scenario.toml"
-    text = path.read_text()
-    for old, new in pairs:
-        assert text.count(old) == 1, f"{old!r} is not once in the bundled Panda scenario"
-        text = text.replace(old, new, 1)
-    path.write_text(text)
-    return folder
+    return _copy(tmp_path, {"scenario.toml": list(pairs)},
+                 source=bundled_scenario_path("panda_pick_place").parent)
 
 
 def test_an_actuator_in_two_channels_is_a_scenario_error(tmp_path):
