@@ -62,6 +62,8 @@ _LIFT_TASKS = ("handover", "pick_place", "pick_hold")
 DAMPING_SHARE = 0.5
 #: penetration of the object into another geom at the start that gets a fit warning [m]
 START_PENETRATION = 0.002
+#: fall of the object after its last touch by a gripper that gets a fit warning [m]
+RELEASE_HEIGHT = 0.03
 
 
 class FitWarning(CritmomentWarning):
@@ -663,6 +665,11 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
         out.append(f"the object never touches its support ([support] geoms) in the nominal "
                    f"run: is the object pose right (--object-pose{default}), or the "
                    f"[support] geoms?")
+    fall = _release_height(twin, recording)
+    if fall > RELEASE_HEIGHT:
+        out.append(f"the nominal run lets go of the object {fall * 100:.3g} cm above where it "
+                   f"comes to rest: it falls there (a toss, not a place), which the task's "
+                   f"rule may still count as done; is that the motion meant?")
     touched = np.asarray(sig.contact_gripper, bool).any()
     if not touched:
         out.append(f"the nominal run never touches the object: is the object pose right "
@@ -697,6 +704,18 @@ def _start_penetration(twin: Twin, state: np.ndarray) -> tuple[float, str]:
     g = int(geoms[i, 1] if mine[i, 0] else geoms[i, 0])
     other = model.geom(g).name or f"geom #{g} of body {model.body(model.geom_bodyid[g]).name!r}"
     return -float(dist[i]), other
+
+
+def _release_height(twin: Twin, recording: Recording) -> float:
+    """How far the object falls after the last step a gripper touches it [m] (0 when it is
+    never let go, or never touched): its height there over its height at the run's end."""
+    touching = np.asarray(recording.signals.contact_gripper, bool).any(axis=-1)
+    touched = np.flatnonzero(touching)
+    if touched.size == 0 or touched[-1] >= touching.size - 1:
+        return 0.0
+    offset = mujoco.mj_stateSize(twin.model, mujoco.mjtState.mjSTATE_TIME)
+    z = np.asarray(recording.states)[:touching.size, offset + twin.object_qposadr + 2]
+    return float(z[touched[-1]] - z[-1])
 
 
 def _needs_lift(twin: Twin) -> bool:

@@ -403,3 +403,24 @@ def test_an_object_pose_inside_or_off_the_support_gets_a_fit_hint(twin, demo_tra
     hints = check_fit(away, _record(twin, away), twin)
     assert any("never touches its support" in h for h in hints), hints
     assert check_fit(demo_traj, _record(twin, demo_traj), twin) == []
+
+
+def test_a_release_high_above_the_rest_gets_a_fit_hint(twin, demo_recording):
+    """An object let go 14 cm above where it lands (a toss that the task's rule may count
+    as a place; seen on a UR5e) is named; the demo's hand-over, held to the end, is not."""
+    import types
+
+    import mujoco
+
+    assert feasibility._release_height(twin, demo_recording) == 0.0
+    offset = mujoco.mj_stateSize(twin.model, mujoco.mjtState.mjSTATE_TIME)
+    states = np.zeros((10, offset + twin.model.nq))
+    z = offset + twin.object_qposadr + 2
+    states[:, z] = np.r_[np.full(6, 0.16), np.full(4, 0.02)]
+    touch = np.zeros((10, 2), bool)
+    touch[2:6, 0] = True
+    fake = types.SimpleNamespace(states=states,
+                                 signals=types.SimpleNamespace(contact_gripper=touch))
+    assert feasibility._release_height(twin, fake) == pytest.approx(0.14)
+    touch[2:, 0] = True  # held to the end: never let go
+    assert feasibility._release_height(twin, fake) == 0.0
