@@ -56,7 +56,7 @@ def test_a_nominal_chain_is_the_nominal_run(scenario, twin, demo_recording):
     steps = np.array(_carry_steps(demo_recording) + [_carry_steps(demo_recording)[0] - 400])
     samples = np.tile(scenario.box.nominal, (2, 1))
     samples[1, scenario.box.index("mass")] = 1.0
-    chain = history.chained_failures(ev, steps, samples)
+    chain = history.chained_failures(ev, steps, samples, start=None)
     np.testing.assert_array_equal(chain.steps, np.sort(steps))
     assert chain.start == steps.min()
     # the nominal sample never fails, so it runs to the end of the nominal hold
@@ -298,8 +298,10 @@ def test_the_chain_starts_before_the_object_is_first_touched(scenario, twin, dem
     margin = max(ev.horizon, math.ceil(history.ONSET_MARGIN / twin.model.opt.timestep))
     assert history.chain_start(ev, [touch, touch + 300]) == touch - margin
     assert history.chain_start(ev, [touch + 300, touch - 400]) == touch - 400
-    chain = history.chained_failures(ev, [touch], scenario.box.nominal[None])
+    # the cheaper start on request (start=None); by default a chain starts at step 0
+    chain = history.chained_failures(ev, [touch], scenario.box.nominal[None], start=None)
     assert chain.start == touch - margin and not chain.failed[0]
+    assert history.chained_failures(ev, [touch], scenario.box.nominal[None]).start == 0
     # the scan of the recorded states agrees with the touch sensors
     run = history.NominalOnsets(ev, touch + 10)
     assert run.first_contact(run.object_geoms, run.support_geoms) == touch
@@ -473,3 +475,27 @@ def test_a_chained_pass_close_to_a_rule_goes_to_its_own_rollout(scenario, demo_t
         off = dataclasses.replace(dopt, verify=verify)
         assert not analysis.chain_samples(ev, np.array([start]), samples, sweep, none,
                                           off)[2][0]
+
+
+def test_a_chain_from_the_start_is_the_samples_full_rollout(twin, demo_traj, demo_recording):
+    """From step 0 a chain steps the sample's own full run, bit for bit as its brute-force
+    rollout does: the object's largest slip in the grip is the ground truth's to 1e-12 (the
+    cheaper start before the first touch is not exact: the object's mass already sets how
+    it rests, and on a chaotic model that flips outcomes)."""
+    from critmoment.groundtruth import Outcome, brute_force
+
+    ev = sparse.SparseEvaluator(demo_recording, twin)
+    samples = np.array([[0.05, 1.0], [0.6, 0.3], [1.5, 1.0], [3.0, 0.5]])
+    last = demo_recording.n_steps - 2 * ev.horizon
+    chain = history.chained_failures(ev, [last], samples)
+    assert chain.start == 0
+    gt = brute_force(demo_traj, twin=twin, samples=samples).classification
+    assert (gt.max_slip > 0.01).any() and (gt.max_slip > 0).sum() >= 2
+    np.testing.assert_allclose(chain.max_slip, gt.max_slip, rtol=0, atol=1e-12)
+    real = np.array([o is not Outcome.SUCCESS for o in gt.outcome])
+    assert real.any() and not real.all()
+    np.testing.assert_array_equal(chain.failed, real)
+    # the same saturation, counted from the same step (the chain's index is the step after)
+    both = (chain.motor_step >= 0) & (gt.motor_step >= 0)
+    assert both.any()
+    np.testing.assert_array_equal(np.abs(chain.motor_step - gt.motor_step)[both] <= 1, True)
