@@ -701,9 +701,7 @@ def _start_penetration(twin: Twin, state: np.ndarray) -> tuple[float, str]:
     i = int(np.argmin(dist))
     if not dist[i] < 0:
         return 0.0, ""
-    g = int(geoms[i, 1] if mine[i, 0] else geoms[i, 0])
-    other = model.geom(g).name or f"geom #{g} of body {model.body(model.geom_bodyid[g]).name!r}"
-    return -float(dist[i]), other
+    return -float(dist[i]), _geom_name(model, int(geoms[i, 1] if mine[i, 0] else geoms[i, 0]))
 
 
 def _release_height(twin: Twin, recording: Recording) -> float:
@@ -713,8 +711,7 @@ def _release_height(twin: Twin, recording: Recording) -> float:
     touched = np.flatnonzero(touching)
     if touched.size == 0 or touched[-1] >= touching.size - 1:
         return 0.0
-    offset = mujoco.mj_stateSize(twin.model, mujoco.mjtState.mjSTATE_TIME)
-    z = np.asarray(recording.states)[:touching.size, offset + twin.object_qposadr + 2]
+    z = twin.object_height(recording.states[:touching.size])
     return float(z[touched[-1]] - z[-1])
 
 

@@ -459,10 +459,10 @@ class _Probe:
             s.objname = sc.object_body
             s.reftype = mujoco.mjtObj.mjOBJ_XBODY
             s.refname = base.body(anchor).name
-        self.rotational = np.flatnonzero(twin.motors)  # the motor-checked actuators
+        self.motors = np.flatnonzero(twin.motors)  # the motor-checked actuators
         #: per column, the actuator's slide flag (its tracking tolerance is in metres)
-        self.slide = np.asarray(twin.slide, bool)[self.rotational]
-        for a in self.rotational:
+        self.slide = np.asarray(twin.slide, bool)[self.motors]
+        for a in self.motors:
             s = spec.add_sensor()
             s.name = f"{_SENSOR_PREFIX}q:{base.actuator(int(a)).name}"
             s.type = mujoco.mjtSensor.mjSENS_ACTUATORPOS
@@ -473,7 +473,7 @@ class _Probe:
         nsd = twin.nsensordata
         ngrip = len(sc.grippers)
         self.pos = slice(nsd, nsd + 3 * ngrip)
-        self.q = slice(self.pos.stop, self.pos.stop + self.rotational.size)
+        self.q = slice(self.pos.stop, self.pos.stop + self.motors.size)
         self.projectors = np.stack([_closing_projector(base, g.geoms, a)
                                     for g, a in zip(sc.grippers, self.anchors, strict=False)])
 
@@ -648,7 +648,7 @@ class _Frames:
         c, t = sensordata.shape[:2]
         return cls(stage=sig.stage, contact_gripper=sig.contact_gripper,
                    contact_support=sig.contact_support,
-                   actuator_norm=sig.actuator_norm[..., probe.rotational],
+                   actuator_norm=sig.actuator_norm[..., probe.motors],
                    position=sensordata[..., probe.pos].reshape(c, t, -1, 3),
                    q=sensordata[..., probe.q], success=twin.success(sig))
 
@@ -673,7 +673,7 @@ def tracking_tolerances(criteria: OutcomeCriteria, slide: np.ndarray,
 def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, probe: _Probe,
                      dt: float, criteria: OutcomeCriteria, diverged: np.ndarray,
                      diverged_step: np.ndarray) -> Classification:
-    target = controls[:, probe.rotational]
+    target = controls[:, probe.motors]
     excess = np.abs(frames.q - target[None]) - np.abs(reference.q - target)[None]
     # a slide axis's lag [m] against its own tolerance, in the criteria's one comparison
     excess = excess * tracking_tolerances(criteria, probe.slide, criteria.tracking_tolerance)

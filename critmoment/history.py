@@ -298,9 +298,9 @@ class _Watch:
     projected out, counted where the nominal run holds with that gripper alone; a slip is
     a run of more than ``slip_time`` above ``slip_tolerance``. Drop: the object touched
     by no gripper where the nominal run carries it, for longer than ``drop_time``.
-    Saturation: a rotational actuator at ``saturation`` of its force limit for longer than
-    ``motor_time``. Tracking: a rotational actuator further from its target than in the
-    nominal run by more than ``tracking_tolerance`` for longer than ``tracking_time`` (both
+    Saturation: a motor-checked actuator (``Twin.motors``) at ``saturation`` of its force
+    limit for longer than ``motor_time``. Tracking: such an actuator further from its target
+    than in the nominal run by more than ``tracking_tolerance`` for longer than ``tracking_time`` (both
     are the ground truth's MOTOR outcome).
     """
 
@@ -329,19 +329,19 @@ class _Watch:
         self.diverged_step = np.full(n, -1, np.int64)
         self.max_slip = np.zeros(n)
         twin = ev.twin
-        rotational = np.flatnonzero(twin.motors)
-        self.force_adr = twin._force_adr[rotational]
-        self.limits = twin.limits[rotational]
+        motors = np.flatnonzero(twin.motors)
+        self.force_adr = twin._force_adr[motors]
+        self.limits = twin.limits[motors]
         self.saturation = float(criteria.saturation)
-        # tracking: each rotational actuator's position (gear × joint angle, as MuJoCo's
+        # tracking: each motor-checked actuator's position (gear × joint angle, as MuJoCo's
         # actuator length) against its target, beyond the nominal run's own lag
         model = twin.model
-        self.act = rotational
-        self.qadr = model.jnt_qposadr[model.actuator_trnid[rotational, 0]]
-        self.gear = model.actuator_gear[rotational, 0]
+        self.act = motors
+        self.qadr = model.jnt_qposadr[model.actuator_trnid[motors, 0]]
+        self.gear = model.actuator_gear[motors, 0]
         self.qoffset = mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_TIME)
         # per column [rad or m] (an arm's slide axis has its own tolerance)
-        self.tracking_tolerance = 1.0 / tracking_tolerances(criteria, twin.slide[rotational])
+        self.tracking_tolerance = 1.0 / tracking_tolerances(criteria, twin.slide[motors])
         # per rule: its running count of steps (n, columns), the steps it must last, and
         # where its first step goes (saturation and tracking are both the MOTOR outcome)
         self.rules = {
@@ -349,9 +349,9 @@ class _Watch:
                      self.slip_step),
             "drop": (np.zeros((n, 1), np.int64), criteria.steps(criteria.drop_time, dt),
                      self.drop_step),
-            "saturation": (np.zeros((n, rotational.size), np.int64),
+            "saturation": (np.zeros((n, motors.size), np.int64),
                            criteria.steps(criteria.motor_time, dt), self.motor_step),
-            "tracking": (np.zeros((n, rotational.size), np.int64),
+            "tracking": (np.zeros((n, motors.size), np.int64),
                          criteria.steps(criteria.tracking_time, dt), self.motor_step)}
         # per rule, its quantity over its limit, as held for the rule's duration
         self.levels = {name: SustainedLevel(n, run.shape[1], need)

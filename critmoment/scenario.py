@@ -72,6 +72,7 @@ __all__ = [
     "ScenarioWarning",
 ]
 
+
 class ScenarioWarning(CritmomentWarning):
     """A scenario that loads but probably does not say what was meant."""
 
@@ -716,7 +717,6 @@ def compile_spec(spec: mujoco.MjSpec, mjcf: Path) -> mujoco.MjModel:
             hint = (f" ({found.group(0)!r} is critmoment's name for the model's unnamed "
                     f"{found.group(1)} #{found.group(2)}, in the order of the MJCF)")
         raise ScenarioError(f"could not compile MJCF {mjcf}: {text}{hint}") from exc
-
 
 
 # ---------------------------------------------------------------------------

@@ -427,7 +427,7 @@ class SparseResult:
         (``unlifted_failure``): whether it really fails is for a full rollout to say."""
         if self.unlifted_failure is None:
             return np.zeros(self.n_samples, dtype=bool)
-        return self.failed_any & ~(self.failed & ~self.unlifted_failure).any(axis=0)
+        return self._fails_only_through(self.unlifted_failure, self.unlifted_failure)
 
     @property
     def failed_sticking_only(self) -> np.ndarray:
@@ -436,11 +436,7 @@ class SparseResult:
         for a full rollout to say."""
         if self.sticking_failure is None:
             return np.zeros(self.n_samples, dtype=bool)
-        soft = self.sticking_failure
-        if self.unlifted_failure is not None:
-            soft = soft | self.unlifted_failure
-        return (self.failed_any & ~(self.failed & ~soft).any(axis=0)
-                & self.sticking_failure.any(axis=0))
+        return self._fails_only_through(self.sticking_failure, self.sticking_failure)
 
     def short_slip(self, limit: float) -> np.ndarray:
         """(m, n) bool: the pair fails by its measured slip alone (``Failure.SLIP``), and
@@ -456,11 +452,15 @@ class SparseResult:
         unlifted and sticking failures, at least one of them a short slip: whether it
         really fails is for a full rollout to say."""
         short = self.short_slip(limit)
-        soft = short.copy()
-        for extra in (self.sticking_failure, self.unlifted_failure):
-            if extra is not None:
-                soft |= extra
-        return self.failed_any & ~(self.failed & ~soft).any(axis=0) & short.any(axis=0)
+        soft = short if self.sticking_failure is None else short | self.sticking_failure
+        return self._fails_only_through(soft, short)
+
+    def _fails_only_through(self, soft: np.ndarray, needed: np.ndarray) -> np.ndarray:
+        """(n,) bool: the sample fails, every failing pair of it is ``soft`` or unlifted,
+        and at least one is ``needed`` (each (m, n) bool)."""
+        if self.unlifted_failure is not None:
+            soft = soft | self.unlifted_failure
+        return self.failed_any & ~(self.failed & ~soft).any(axis=0) & needed.any(axis=0)
 
     @property
     def failed_any(self) -> np.ndarray:

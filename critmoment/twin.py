@@ -346,10 +346,13 @@ class Twin:
         """:func:`lifted_flags` of ``carried`` (T,), with the object's height read from
         integration states (at least T rows of ``STATE_SPEC``)."""
         carried = np.asarray(carried, dtype=bool)
+        return lifted_flags(carried, self.object_height(states)[:carried.size])
+
+    def object_height(self, states: np.ndarray) -> np.ndarray:
+        """The object's height [m] in integration states (T, nstate) of ``STATE_SPEC``, (T,)."""
         # mjSTATE_INTEGRATION starts with the time, then qpos
         offset = mujoco.mj_stateSize(self.model, mujoco.mjtState.mjSTATE_TIME)
-        height = np.asarray(states)[:carried.size, offset + self.object_qposadr + 2]
-        return lifted_flags(carried, height)
+        return np.asarray(states)[:, offset + self.object_qposadr + 2]
 
     # -- actions and state ------------------------------------------------------------
     def controls(self, actions: np.ndarray) -> np.ndarray:

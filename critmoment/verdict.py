@@ -911,7 +911,7 @@ class Decision:
     near: np.ndarray
     unlifted: np.ndarray
     sticking: np.ndarray
-    slipping: np.ndarray | None = None
+    slipping: np.ndarray
 
 
 def _nominal_fails(evidence: Evidence, options: DecisionOptions) -> tuple[bool, bool, bool]:
