@@ -443,3 +443,22 @@ def test_threaded_audit_equals_a_sequential_one(twin, demo_traj, nominal_report)
     assert again == keep
     order = [analysis.STAGES.index(k) for k in nominal_report.timings]
     assert order == sorted(order)
+
+
+def test_untrusted_force_ratios_are_listed_only_at_moments_with_a_grip():
+    """Where the nominal grip sits on the cone over the whole motion no moment trusts the
+    force ratio, but a moment before the first touch has no ratio to distrust: it is not
+    listed (a gantry's report named steps 13 and 117, long before any contact)."""
+    import types
+
+    from critmoment.analysis import _untrusted
+
+    touch = np.zeros((400, 2), bool)
+    touch[200:300, 0] = True
+    rec = types.SimpleNamespace(signals=types.SimpleNamespace(contact_gripper=touch))
+    ev = types.SimpleNamespace(horizon=10, persistence_steps=10,
+                               contact_trusted=lambda steps: np.zeros(len(steps), bool))
+    # 50: nothing near; 185: its window (20 steps) reaches the touch at 200; 250: gripped
+    assert _untrusted(rec, ev, np.array([50, 185, 250, 350])) == (185, 250)
+    ev.contact_trusted = lambda steps: np.array([False, False, True, False])
+    assert _untrusted(rec, ev, np.array([50, 185, 250, 350])) == (185,)
