@@ -19,6 +19,7 @@ import dataclasses
 import logging
 import platform
 import sys
+import threading
 import time
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
@@ -30,7 +31,7 @@ from critmoment import sparse as sp
 from critmoment import verdict as vd
 from critmoment.exceptions import ParameterError
 from critmoment.feasibility import FeasibilityReport, check_fit, preflight
-from critmoment.groundtruth import NominalReference, brute_force
+from critmoment.groundtruth import NominalReference, brute_force, reference_from_recording
 from critmoment.moments import Moment, MomentDetector, MomentLabel
 from critmoment.recording import Recording, model_hash, rollout
 from critmoment.scenario import Scenario
@@ -442,7 +443,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_cost = float(res_all.worst_cost()[0]) if steps.size else 0.0
         res = _select_samples(res_all, slice(1, None))
     dopt = decision_options(opt, threshold)
-    roll = _Rollouts(trajectory, twin, opt.nthread)
+    roll = _Rollouts(trajectory, twin, opt.nthread, recording=rec)
 
     def alongside():
         # the critical values and the searches (mostly Python) while the samples' own runs
@@ -550,7 +551,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                                         sides=sides, options=dopt,
                                         nominal_completed=rec.completed,
                                         exhaustive=opt.exhaustive, nthread=opt.nthread,
-                                        reference=roll.reference)
+                                        reference=roll.nominal())
         decision = vd.decide(dataclasses.replace(evidence, region=region_check), dopt)
         if verification is not None:
             verification["region"] = region_check.to_json()
@@ -593,8 +594,8 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     The samples the sweep cannot decide (:func:`critmoment.verdict.samples_to_rerun`) get
     their own full rollout; those that pass without one are chained (:func:`chain_samples`),
     and the chained samples it names go on to their own full rollout. With ``nthread`` other
-    than 1 the rollouts and the chain run in two threads of their own (one MuJoCo thread
-    each) while ``alongside`` runs in this one.
+    than 1 the chain and then the rollouts run in a thread of their own (with the
+    evaluator's and ``roll``'s MuJoCo threads) while ``alongside`` runs in this one.
 
     Args:
         evaluator: the audit's sparse evaluator.
@@ -616,37 +617,31 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     moments = steps.size > 0 and sweep is not None
     reruns = vd.samples_to_rerun(sweep, options, nominal_completed=nominal_completed)
     rerun = reruns.any
-    chaining = (options.chain and moments
-                and vd.samples_to_chain(sweep, rerun, options,
-                                        nominal_completed=nominal_completed).any())
-    # two physics threads beside this one: one MuJoCo thread each (with all CPUs each, six
-    # threads would share two cores; measured 2.16 -> 2.09 s, medians of 6); where only one
-    # of them has work, it gets every thread (a validation whose samples are nearly all
-    # rolled out: 62 of 64 rollouts on one core cost 1.68 of brute force)
-    both = bool(rerun.any() and options.verify is not None and chaining)
-    side = 1 if nthread != 1 and both else None
+    # one physics thread beside this one, with all of MuJoCo's threads, running the chain
+    # and then the rollouts: three busy threads on the cores, not five (the chain and the
+    # rollouts each in a thread of its own with all MuJoCo threads: 3.3-4.9 s against
+    # 4.0-5.5 s, and about 1 s more CPU; with one MuJoCo thread each, the chain ran on one
+    # core for its last second while the other idled; 2026-12-03, demo audit)
 
     def verify():
         failed = np.zeros(n, bool)
         if options.verify is not None and moments:
             with timer("verification"):
                 if rerun.any():
-                    failed[rerun] = roll(samples[rerun], side)
+                    failed[rerun] = roll(samples[rerun])
         return failed
 
     def chain():
         if not (options.chain and moments):
             return np.zeros(n, bool), np.zeros(n, bool), np.zeros(n, bool)
         with timer("chained segments"):
-            return chain_samples(evaluator.fork(side), steps, samples, sweep, rerun, options,
+            return chain_samples(evaluator.fork(), steps, samples, sweep, rerun, options,
                                  nominal_completed=nominal_completed)
 
     with _pool(nthread) as pool:
-        verified = pool.submit(verify)
-        chained_ = pool.submit(chain)
+        runs = pool.submit(lambda: (chain(), verify()))
         extra = alongside() if alongside is not None else None
-        rerun_failed = verified.result()
-        chained, chained_failed, suspect = chained_.result()
+        (chained, chained_failed, suspect), rerun_failed = runs.result()
     if suspect.any() and options.verify is not None:
         with timer("chained segments"):
             # failed on its own path (approximately its own run): its own rollout decides
@@ -681,11 +676,11 @@ class _InLine:
 
 
 def _pool(nthread: int):
-    """Two threads for the samples' own runs, or none when the audit is asked for one
-    thread (``nthread`` 1)."""
+    """A thread for the samples' own runs, or none when the audit is asked for one thread
+    (``nthread`` 1)."""
     if nthread == 1:
         return _InLine()
-    return concurrent.futures.ThreadPoolExecutor(max_workers=2)
+    return concurrent.futures.ThreadPoolExecutor(max_workers=1)
 
 
 #: the stages in the order they start (verification and the chained segments run alongside
@@ -805,9 +800,10 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
     at the audit's moments, and decides
     the ``worst`` highest-cost points that pass (and those that fail only unlifted) by their
     own full rollout (:func:`critmoment.groundtruth.brute_force`) once no point fails the
-    sparse evaluation (before, the region shrinks anyway); with ``options.chain`` its
-    corners that pass without a rollout are carried on their own state
-    (:func:`chain_samples`), as the sweep's samples are. When a point fails, the
+    sparse evaluation (before, the region shrinks anyway); with ``options.chain`` its worst
+    corner (every parameter at its failing side in ``sides``), if it passes without a
+    rollout of its own, is carried on its own state (:func:`chain_samples`), as the sweep's
+    samples are. When a point fails, the
     region's failing-side faces move in (:func:`critmoment.verdict.shrink_region`: its new
     worst corner is a checked point that passed, ``margin`` prior-quantile units from every
     failing one) and the next round checks the new region.
@@ -871,15 +867,13 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
             fails[:] = True
         fails[rolled] = outcome[rolled]
         if not fails.any():
-            # the sweep's decision path: the region's corners that pass without a rollout of
-            # their own are carried on their own state (a soft grip's creep, a shifted grip);
-            # the corner at every failing side is the worst combination of the box
-            corner = np.ones(pts.shape[0], bool)
-            for j, name in enumerate(box.names):
-                lo, hi = current[name]
-                corner &= np.isclose(pts[:, j], lo) | np.isclose(pts[:, j], hi)
+            # the sweep's decision path: the region's worst corner (every parameter at its
+            # failing side, the worst combination the region's cuts assume), unless its own
+            # rollout decided it, is carried on its own state (a soft grip's creep, a shifted
+            # grip); one run, where chaining every corner took 2^k
+            worst_corner = _worst_corner(pts, current, box, sides)
             chained, chained_failed, suspect = chain_samples(
-                evaluator, steps, pts, res, rolled | ~corner, options,
+                evaluator, steps, pts, res, rolled | ~worst_corner, options,
                 nominal_completed=nominal_completed)
             fails[chained] = chained_failed[chained]
             n_chained += int(chained.sum())
@@ -899,19 +893,42 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
                           first_claim=first)
 
 
+def _worst_corner(points: np.ndarray, region: Mapping[str, tuple[float, float]], box,
+                  sides: Sequence[str]) -> np.ndarray:
+    """(n,) bool: the points at the region's corner where every parameter sits at its
+    failing side ("above": its high bound; "below": its low bound)."""
+    at = np.ones(points.shape[0], bool)
+    for j, (name, side) in enumerate(zip(box.names, sides, strict=True)):
+        lo, hi = region[name]
+        at &= np.isclose(points[:, j], hi if side == "above" else lo)
+    return at
+
+
 class _Rollouts:
     """Full rollouts of parameter points (their real outcome: failed), sharing one nominal
-    reference run over the calls."""
+    reference over the calls: read from ``recording`` (the frequent rollout, the brute
+    force's nominal run to the bit: :func:`critmoment.groundtruth.reference_from_recording`)
+    when given, else run by the first call."""
 
     def __init__(self, trajectory: Trajectory, twin: Twin, nthread: int,
-                 reference: NominalReference | None = None, chunk: int = 16):
+                 reference: NominalReference | None = None, chunk: int = 16,
+                 recording: Recording | None = None):
         self.trajectory, self.twin, self.nthread = trajectory, twin, nthread
-        self.reference, self.chunk = reference, chunk
+        self.reference, self.chunk, self.recording = reference, chunk, recording
+        self._lock = threading.Lock()
+
+    def nominal(self) -> NominalReference | None:
+        """The nominal reference, read from the recording on first use (None without one
+        until a call has run it)."""
+        with self._lock:
+            if self.reference is None and self.recording is not None:
+                self.reference = reference_from_recording(self.recording, self.twin)
+            return self.reference
 
     def __call__(self, points: np.ndarray, nthread: int | None = None) -> np.ndarray:
         nthread = self.nthread if nthread is None else nthread
         bf = brute_force(self.trajectory, twin=self.twin, samples=points, nthread=nthread,
-                         reference=self.reference, chunk=self.chunk)
+                         reference=self.nominal(), chunk=self.chunk)
         self.reference = bf.reference
         return bf.failed
 

@@ -64,6 +64,7 @@ from critmoment.recording import (
     initial_state,
     prepare_controls,
 )
+from critmoment.task import TaskEvidence
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin, carried_flags
 
@@ -605,9 +606,9 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
                                                                   samples])
     frames_ref = None if reference is None else reference.frames
     parts, diverged = [], []
-    for _, out, mu in batched_rollouts(twin, state0, controls, everything, model=probe.model,
+    for _, out, _mu in batched_rollouts(twin, state0, controls, everything, model=probe.model,
                                        chunk=chunk, nthread=nthread):
-        frames = _Frames.read(twin, probe, out["sensordata"], mu)
+        frames = _Frames.read(twin, probe, out["sensordata"])
         if frames_ref is None:
             frames_ref = frames.row(0)
         parts.append(_classify_frames(frames, frames_ref, controls, probe, dt, criteria,
@@ -629,6 +630,63 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
                       dt=dt, seconds=time.perf_counter() - t_start, reference=reference)
 
 
+def reference_from_recording(recording, twin: Twin,
+                             criteria: OutcomeCriteria = OutcomeCriteria()) -> NominalReference:
+    """The nominal run of :func:`brute_force`, read from the frequent rollout instead of run
+    again: the recording is that run (the same model, initial state and controls; sensors do
+    not act on the dynamics), so its sensor readings are the brute force's to the bit, and
+    the extra sensors of :class:`_Probe` (position sensors: the object in each gripper's
+    frame, the actuators' positions) are computed from its recorded positions, step k's
+    readings from the state that starts step k, as ``mj_step`` reads them.
+
+    Args:
+        recording: the frequent rollout (:func:`critmoment.recording.rollout`) of the
+            trajectory, at the box's nominal parameters.
+        twin: its twin.
+        criteria: the outcome tolerances (for the nominal run's own completion).
+
+    Returns:
+        The :class:`NominalReference`, to pass to :func:`brute_force`.
+
+    Raises:
+        ParameterError: the recording is not at the box's nominal parameters or has no
+            steps.
+    """
+    box = twin.scenario.box
+    nominal = np.asarray(recording.nominal, dtype=np.float64)
+    if nominal.shape != box.nominal.shape or not np.array_equal(nominal, box.nominal):
+        raise ParameterError(f"recording: expected a run at the box's nominal parameters "
+                             f"{box.nominal.tolist()}, got {nominal.tolist()}")
+    sd = np.asarray(recording.sensordata, dtype=np.float64)
+    n = sd.shape[0]
+    if n == 0 or sd.shape[1] != twin.nsensordata:
+        raise ParameterError(f"recording: expected (T >= 1, {twin.nsensordata}) sensor "
+                             f"readings, got {sd.shape}")
+    probe = _Probe(twin)
+    model = probe.model
+    data = mujoco.MjData(model)
+    offset = mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_TIME)  # time, then qpos
+    qpos = np.asarray(recording.states, dtype=np.float64)[:n, offset:offset + model.nq]
+    extra = np.empty((n, model.nsensordata - twin.nsensordata))
+    for k in range(n):
+        data.qpos[:] = qpos[k]
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_comPos(model, data)
+        mujoco.mj_tendon(model, data)
+        mujoco.mj_transmission(model, data)
+        mujoco.mj_sensorPos(model, data)
+        extra[k] = data.sensordata[twin.nsensordata:]
+    full = np.concatenate([sd, extra], axis=1)[None]
+    frames = _Frames.read(twin, probe, full)
+    controls = np.asarray(recording.controls, dtype=np.float64)
+    dt = float(twin.model.opt.timestep)
+    ref = frames.row(0)
+    own = _classify_frames(frames, ref, controls, probe, dt, criteria, np.zeros(1, bool),
+                           np.full(1, -1, np.int64))
+    return NominalReference(frames=ref, completed=bool(own.completed[0]), n_steps=n,
+                            nominal=box.nominal.copy())
+
+
 @dataclasses.dataclass(frozen=True)
 class _Frames:
     """What the classification reads from a chunk of full rollouts (leading (c, T))."""
@@ -642,15 +700,21 @@ class _Frames:
     success: np.ndarray
 
     @classmethod
-    def read(cls, twin: Twin, probe: _Probe, sensordata: np.ndarray,
-             mu: np.ndarray) -> _Frames:
-        sig = twin.signals(sensordata[..., :twin.nsensordata], mu=mu[:, None])
+    def read(cls, twin: Twin, probe: _Probe, sensordata: np.ndarray) -> _Frames:
+        # the outcome reads contacts, positions and forces, not the contact loads of
+        # Twin.signals (the audit's cost): those were two thirds of its time here
+        sd = sensordata[..., :twin.nsensordata]
+        gripper, support = twin.contact_flags(sd)
+        pos, vel = sd[..., twin._pos_adr], sd[..., twin._vel_adr]
         c, t = sensordata.shape[:2]
-        return cls(stage=sig.stage, contact_gripper=sig.contact_gripper,
-                   contact_support=sig.contact_support,
-                   actuator_norm=sig.actuator_norm[..., probe.motors],
+        evidence = TaskEvidence(contact_gripper=gripper, contact_support=support,
+                                object_pos=pos, object_vel=vel, dt=float(twin.model.opt.timestep))
+        return cls(stage=twin.task.stage(gripper, support, pos), contact_gripper=gripper,
+                   contact_support=support,
+                   actuator_norm=sd[..., twin._force_ids[probe.motors]]
+                   / twin.limits[probe.motors],
                    position=sensordata[..., probe.pos].reshape(c, t, -1, 3),
-                   q=sensordata[..., probe.q], success=twin.success(sig))
+                   q=sensordata[..., probe.q], success=twin.task.success(evidence))
 
     def row(self, i: int) -> _Frames:
         return _Frames(**{f.name: getattr(self, f.name)[i] for f in dataclasses.fields(self)})

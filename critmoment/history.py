@@ -330,7 +330,7 @@ class _Watch:
         self.max_slip = np.zeros(n)
         twin = ev.twin
         motors = np.flatnonzero(twin.motors)
-        self.force_adr = twin._force_adr[motors]
+        self.force_adr = twin._force_ids[motors]
         self.limits = twin.limits[motors]
         self.saturation = float(criteria.saturation)
         # tracking: each motor-checked actuator's position (gear × joint angle, as MuJoCo's

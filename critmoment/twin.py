@@ -260,6 +260,12 @@ class Twin:
         self._vel_adr = np.arange(a, a + 3)
         self._force_adr = np.array([adr(_sensor_name("force", model.actuator(i).name))[0]
                                     for i in range(model.nu)])
+        # contiguous addresses read as slices: views, where an index array copies (signals
+        # of whole rollouts, (n, T, nsensordata), were a third of a brute force's Python)
+        self._force_ids = self._force_adr  # per actuator, to pick some
+        self._grip_adr = [_as_slice(a) for a in self._grip_adr]
+        for name in ("_support_adr", "_acc_adr", "_pos_adr", "_vel_adr", "_force_adr"):
+            setattr(self, name, _as_slice(getattr(self, name)))
         self.object_body_id = model.body(sc.object_body).id
         self.object_geom_id = model.geom(sc.object_geom).id
         self.object_qposadr = int(model.jnt_qposadr[model.body_jntadr[self.object_body_id]])
@@ -550,17 +556,26 @@ class Twin:
         held = np.where(contact_gripper.any(axis=-1), fos_grasp, 0.0)
         fos_grasp = np.where(np.broadcast_to(carried, fos_grasp.shape), held, np.inf)
         acc = sd[..., self._acc_adr] + self.model.opt.gravity
-        force = sd[..., self._force_adr]
+        force = sd[..., self._force_adr].copy()  # the signals own their arrays
         fos_m, arg = safety.motor_fos(force[..., self.motors], self.limits[self.motors])
         rot_ids = np.flatnonzero(self.motors)
         cost = safety.cost(fos_grasp, fos_m, self.scenario.cost)
-        pos = sd[..., self._pos_adr]
+        pos = sd[..., self._pos_adr].copy()
         stage = self.task.stage(contact_gripper, contact_support, pos)
-        return Signals(object_pos=pos, object_vel=sd[..., self._vel_adr],object_acc=acc, actuator_force=force, actuator_norm=force / self.limits,
+        return Signals(object_pos=pos, object_vel=sd[..., self._vel_adr].copy(), object_acc=acc, actuator_force=force, actuator_norm=force / self.limits,
                        fos_contact=fos_contact, fos_grasp=fos_grasp, fos_motor=fos_m, motor_argmax=rot_ids[arg],
                        cost=cost, contact_support=contact_support,
                        contact_gripper=contact_gripper, stage=stage)
 
+
+
+def _as_slice(index: np.ndarray) -> np.ndarray | slice:
+    """``index`` as a slice when its entries are consecutive (reading through it gives the
+    same values as a view), else unchanged."""
+    index = np.asarray(index, dtype=np.int64)
+    if index.size and np.array_equal(index, np.arange(index[0], index[0] + index.size)):
+        return slice(int(index[0]), int(index[0]) + index.size)
+    return index
 
 
 def resolve_twin(scenario=None, twin: Twin | None = None) -> Twin:

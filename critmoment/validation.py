@@ -253,7 +253,8 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     nominal_completed = rec.completed
     # the audit's own path (critmoment.analysis.sample_runs): which samples their own
     # rollouts and chains decide, then which fail (critmoment.verdict.failing_samples)
-    roll = _Rollouts(traj, twin, nthread, chunk=chunk)  # the audit's, one nominal reference
+    # the audit's, its nominal reference read from the frequent rollout
+    roll = _Rollouts(traj, twin, nthread, chunk=chunk, recording=rec)
     runs, _ = sample_runs(evaluator, steps, samples, res, dopt, roll=roll,
                           nominal_completed=nominal_completed, nthread=nthread,
                           stage=lambda name: _Timer(timings, name, _quiet))

@@ -794,8 +794,8 @@ class RegionCheck:
         n_sparse: points evaluated by sparse evaluation over every round.
         n_rollouts: full rollouts over every round.
         first_claim: the region first claimed (before any shrinking), or None.
-        n_chained: corners carried on their own state through the moments (chained
-            segments) over every round.
+        n_chained: worst corners (every parameter at its failing side) carried on their
+            own state through the moments (chained segments) over every round.
     """
 
     region: Mapping[str, tuple[float, float]] | None
@@ -1063,8 +1063,11 @@ def region_text(region: Mapping[str, tuple[float, float]] | None, box: Uncertain
         return "no safe region: fails at the nominal parameters"
     evidence = ""
     if check is not None and region is not None:
-        chained = (f", {check.n_chained} corners also on their own run through the moments"
-                   if check.n_chained else "")
+        chained = ("" if not check.n_chained else
+                   ", its worst corner also on its own run through the moments"
+                   if check.n_chained == 1 else
+                   f", {check.n_chained} worst corners (one per round) also on their own run "
+                   f"through the moments")
         evidence = (f" (checked at {check.n_sparse} points of its corners and edges by sparse "
                     f"evaluation{chained}, and by {check.n_rollouts} full rollouts of its worst "
                     f"points)")

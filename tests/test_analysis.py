@@ -372,6 +372,20 @@ def test_demo_safe_region_holds_under_full_rollouts(twin, demo_traj):
     assert failing.size == 0, f"the stated region fails at {failing}"
 
 
+def test_the_region_check_chains_only_its_worst_corner(twin):
+    """Every parameter at its failing side picks one corner of the region's checked points
+    (mass fails above, friction below: heavy and slippery), not the other 2^k - 1."""
+    from critmoment import verdict as vd
+
+    box = twin.scenario.box
+    region = {"mass": (0.05, 0.4), "friction": (0.7, 1.5)}
+    pts, _ = vd.region_points(region, box, per_edge=3)
+    worst = analysis._worst_corner(pts, region, box, ["above", "below"])
+    np.testing.assert_array_equal(pts[worst], [[0.4, 0.7]])
+    best = analysis._worst_corner(pts, region, box, ["below", "above"])
+    np.testing.assert_array_equal(pts[best], [[0.05, 1.5]])
+
+
 def test_eight_samples_that_all_fail_state_no_region(twin, demo_traj):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")

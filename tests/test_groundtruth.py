@@ -85,6 +85,33 @@ def test_a_reused_reference_gives_the_same_outcomes(twin, demo_traj):
     assert whole.outcome[0] is gt.Outcome.SUCCESS and whole.outcome[2] is not gt.Outcome.SUCCESS
 
 
+def test_the_reference_read_from_the_recording_is_the_brute_forces_own(twin, demo_traj,
+                                                                      demo_recording):
+    """The frequent rollout is the brute force's nominal run: the reference read from it
+    (no run) equals the one brute_force runs, field by field, to the bit, and so do the
+    outcomes classified against it."""
+    import dataclasses
+
+    samples = np.array([[0.1, 1.0], [3.0, 1.0]])
+    ran = gt.brute_force(demo_traj, twin=twin, samples=samples)
+    read = gt.reference_from_recording(demo_recording, twin)
+    assert read.completed == ran.reference.completed and read.n_steps == ran.reference.n_steps
+    for field in dataclasses.fields(read.frames):
+        np.testing.assert_array_equal(getattr(read.frames, field.name),
+                                      getattr(ran.reference.frames, field.name))
+    again = gt.brute_force(demo_traj, twin=twin, samples=samples, reference=read)
+    assert again.outcome == ran.outcome
+    np.testing.assert_array_equal(again.classification.max_slip, ran.classification.max_slip)
+
+
+def test_a_reference_needs_the_nominal_parameters(twin, demo_recording):
+    import dataclasses
+
+    off = dataclasses.replace(demo_recording, nominal=demo_recording.nominal * 2)
+    with pytest.raises(ParameterError, match="nominal parameters"):
+        gt.reference_from_recording(off, twin)
+
+
 def test_the_grip_frame_is_the_bodys_own_frame_not_its_inertial_one(scenario, tmp_path):
     """The ground truth measures the object in each gripper's body frame (xpos/xmat), the
     frame its closing projector is built in, even where the gripper link's inertial frame
