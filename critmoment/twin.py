@@ -260,10 +260,10 @@ class Twin:
         self._vel_adr = np.arange(a, a + 3)
         self._force_adr = np.array([adr(_sensor_name("force", model.actuator(i).name))[0]
                                     for i in range(model.nu)])
-        # contiguous addresses read as slices: views, where an index array copies (signals
-        # of whole rollouts, (n, T, nsensordata), were a third of a brute force's Python)
+        # contiguous addresses read as slices: views, where an index array copies (the grip
+        # blocks stay index arrays: their sums over contacts round by memory layout, and a
+        # contiguous copy keeps the signals what they were to the bit)
         self._force_ids = self._force_adr  # per actuator, to pick some
-        self._grip_adr = [_as_slice(a) for a in self._grip_adr]
         for name in ("_support_adr", "_acc_adr", "_pos_adr", "_vel_adr", "_force_adr"):
             setattr(self, name, _as_slice(getattr(self, name)))
         self.object_body_id = model.body(sc.object_body).id
