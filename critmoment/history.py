@@ -255,8 +255,8 @@ class ChainedResult:
         """(n,) bool: failures the sample's own full rollout should decide, where the chain
         is the weaker evidence: a failure by a moment's sparse decision (its criteria are not
         the ground truth's: on its own path a force ratio can touch the cone without a real
-        slip), a failure by the watch at or after the step the nominal run releases the
-        object (``release``: from there the sample's path differs from the nominal one by
+        slip), a failure by the watch (its first) at or after the step the nominal run
+        releases the object (``release``: from there the sample's path differs from the nominal one by
         where the object was set down, and a retreating finger's contact with it can turn on
         a micrometre), and a run that ends with the task incomplete without having dropped
         its object during the hold (a placement off the goal). A slip or a motor failure
@@ -265,10 +265,13 @@ class ChainedResult:
         the chain's slip is the full rollout's to a micrometre)."""
         n = self.samples.shape[0]
         moment = (self.failure > 0).any(axis=0)
-        late = np.zeros(n, bool)
+        # the watch's first failure, the one that stopped the sample (what its rules saw
+        # after it, up to the end of that block of steps, depends on the block's length)
+        first = np.full(n, np.iinfo(np.int64).max)
         for watched in (self.slip_step, self.motor_step, self.diverged_step):
             if watched is not None:
-                late |= watched >= self.release
+                first = np.where(watched >= 0, np.minimum(first, watched), first)
+        late = (first < np.iinfo(np.int64).max) & (first >= self.release)
         incomplete = np.zeros(n, bool) if self.incomplete is None else self.incomplete
         dropped = (np.zeros(n, bool) if self.drop_step is None
                    else (self.drop_step >= 0) & (self.drop_step < self.release))
@@ -620,7 +623,7 @@ def chain_start(evaluator: SparseEvaluator, steps: Any) -> int:
 def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
                      start: int | None = 0,
                      criteria: OutcomeCriteria | None = None,
-                     block: int = 100) -> ChainedResult:
+                     block: int = 400) -> ChainedResult:
     """Carry each sample's own state from one nominal state through every later moment.
 
     The simulations start from the recorded state at ``start`` (default 0, the run's own
@@ -650,7 +653,10 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
         samples: parameter values (n, k).
         start: the step the chain starts from (default 0; None: :func:`chain_start`).
         criteria: the slip and drop tolerances (default: the ground truth's).
-        block: physics steps per batch call between the moments.
+        block: physics steps per batch call between the moments (default 400: a quarter
+            of the calls, and of the hand-overs of Python's lock to the thread that makes
+            them, that 100 took; a failed sample stops at the end of its block, a divergence
+            MuJoCo warns of is dated to its block's first step).
 
     Returns:
         The :class:`ChainedResult`.

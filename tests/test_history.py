@@ -499,3 +499,32 @@ def test_a_chain_from_the_start_is_the_samples_full_rollout(twin, demo_traj, dem
     both = (chain.motor_step >= 0) & (gt.motor_step >= 0)
     assert both.any()
     np.testing.assert_array_equal(np.abs(chain.motor_step - gt.motor_step)[both] <= 1, True)
+
+
+def test_the_first_watched_failure_decides_whether_a_rollout_confirms_it():
+    """A slip during the hold stands even if the sample's motor rule also fires after the
+    release before its block of steps ends (what the rules see after the first failure
+    depends on the block's length); a first failure after the release goes to a rollout."""
+    F = sparse.Failure
+    quiet = np.full((1, 2), F.PASS, dtype=np.int8)
+    result = history.ChainedResult(steps=np.array([100]), samples=np.zeros((2, 2)),
+                                   failure=quiet, start=0, stepped=0, end=400,
+                                   slip_step=np.array([200, 300]),
+                                   drop_step=np.full(2, -1),
+                                   motor_step=np.array([260, -1]), max_slip=np.zeros(2),
+                                   incomplete=np.zeros(2, bool), release=250)
+    np.testing.assert_array_equal(result.failed, [True, True])
+    np.testing.assert_array_equal(result.to_confirm, [False, True])
+
+
+def test_the_chains_decisions_do_not_depend_on_its_block_length(twin, demo_recording):
+    ev = sparse.SparseEvaluator(demo_recording, twin)
+    samples = np.array([[0.05, 1.0], [0.6, 0.3], [3.0, 0.5], [8.0, 1.4]])
+    steps = [1946, 2290, 3406]
+    runs = [history.chained_failures(ev, steps, samples, block=b) for b in (100, 400, 1000)]
+    for other in runs[1:]:
+        np.testing.assert_array_equal(other.failure, runs[0].failure)
+        np.testing.assert_array_equal(other.failed, runs[0].failed)
+        np.testing.assert_array_equal(other.to_confirm, runs[0].to_confirm)
+        np.testing.assert_array_equal(other.near(0.8), runs[0].near(0.8))
+    assert runs[0].failed.any() and not runs[0].failed.all()
