@@ -595,7 +595,8 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     their own full rollout; those that pass without one are chained (:func:`chain_samples`),
     and the chained samples it names go on to their own full rollout. With ``nthread`` other
     than 1 the chain and then the rollouts run in a thread of their own (with the
-    evaluator's and ``roll``'s MuJoCo threads) while ``alongside`` runs in this one.
+    evaluator's and ``roll``'s MuJoCo threads) while ``alongside`` runs in this one, which
+    then takes the rollouts if that thread has not started them.
 
     Args:
         evaluator: the audit's sparse evaluator.
@@ -618,10 +619,11 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     reruns = vd.samples_to_rerun(sweep, options, nominal_completed=nominal_completed)
     rerun = reruns.any
     # one physics thread beside this one, with all of MuJoCo's threads, running the chain
-    # and then the rollouts: three busy threads on the cores, not five (the chain and the
-    # rollouts each in a thread of its own with all MuJoCo threads: 3.3-4.9 s against
-    # 4.0-5.5 s, and about 1 s more CPU; with one MuJoCo thread each, the chain ran on one
-    # core for its last second while the other idled; 2026-12-03, demo audit)
+    # and then the rollouts, unless this thread, done with ``alongside``, has taken them:
+    # three busy threads on the cores, not five (the chain and the rollouts each in a
+    # thread of its own with all MuJoCo threads: 3.3-4.9 s against 4.0-5.5 s, and about 1 s
+    # more CPU; with one MuJoCo thread each, the chain ran on one core for its last second
+    # while the other idled; 2026-12-03, demo audit)
 
     def verify():
         failed = np.zeros(n, bool)
@@ -638,10 +640,13 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
             return chain_samples(evaluator.fork(), steps, samples, sweep, rerun, options,
                                  nominal_completed=nominal_completed)
 
+    verifying = _Once(verify)
     with _pool(nthread) as pool:
-        runs = pool.submit(lambda: (chain(), verify()))
+        runs = pool.submit(lambda: (chain(), verifying.run()))
         extra = alongside() if alongside is not None else None
-        (chained, chained_failed, suspect), rerun_failed = runs.result()
+        verifying.run()  # this thread takes the rollouts if the chain still runs
+        chained, chained_failed, suspect = runs.result()[0]
+        rerun_failed = verifying.result()
     if suspect.any() and options.verify is not None:
         with timer("chained segments"):
             # failed on its own path (approximately its own run): its own rollout decides
@@ -650,6 +655,34 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
         suspect = np.zeros(n, bool)
     return vd.SampleRuns(reruns=reruns, chained=chained, chained_failed=chained_failed,
                          suspect=suspect, rerun_failed=rerun_failed), extra
+
+
+class _Once:
+    """A call that runs once, in whichever thread asks first; ``result`` waits for it."""
+
+    def __init__(self, fn: Callable[[], Any]):
+        self._fn, self._lock, self._started = fn, threading.Lock(), False
+        self._done = threading.Event()
+        self._value: Any = None
+        self._error: BaseException | None = None
+
+    def run(self) -> None:
+        with self._lock:
+            if self._started:
+                return
+            self._started = True
+        try:
+            self._value = self._fn()
+        except BaseException as exc:  # re-raised by result(), in the thread that waits
+            self._error = exc
+        finally:
+            self._done.set()
+
+    def result(self) -> Any:
+        self._done.wait()
+        if self._error is not None:
+            raise self._error
+        return self._value
 
 
 class _Done:
