@@ -641,11 +641,17 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
                                  nominal_completed=nominal_completed)
 
     verifying = _Once(verify)
+
+    def physics():
+        out = chain()
+        verifying.run()
+        return out
+
     with _pool(nthread) as pool:
-        runs = pool.submit(lambda: (chain(), verifying.run()))
+        chaining = pool.submit(physics)
         extra = alongside() if alongside is not None else None
         verifying.run()  # this thread takes the rollouts if the chain still runs
-        chained, chained_failed, suspect = runs.result()[0]
+        chained, chained_failed, suspect = chaining.result()
         rerun_failed = verifying.result()
     if suspect.any() and options.verify is not None:
         with timer("chained segments"):

@@ -64,7 +64,6 @@ from critmoment.recording import (
     initial_state,
     prepare_controls,
 )
-from critmoment.task import TaskEvidence
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin, carried_flags
 
@@ -665,8 +664,7 @@ def reference_from_recording(recording, twin: Twin,
     probe = _Probe(twin)
     model = probe.model
     data = mujoco.MjData(model)
-    offset = mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_TIME)  # time, then qpos
-    qpos = np.asarray(recording.states, dtype=np.float64)[:n, offset:offset + model.nq]
+    qpos = twin.qpos(np.asarray(recording.states, dtype=np.float64)[:n])
     extra = np.empty((n, model.nsensordata - twin.nsensordata))
     for k in range(n):
         data.qpos[:] = qpos[k]
@@ -707,8 +705,7 @@ class _Frames:
         gripper, support = twin.contact_flags(sd)
         pos, vel = sd[..., twin._pos_adr], sd[..., twin._vel_adr]
         c, t = sensordata.shape[:2]
-        evidence = TaskEvidence(contact_gripper=gripper, contact_support=support,
-                                object_pos=pos, object_vel=vel, dt=float(twin.model.opt.timestep))
+        evidence = twin.task_evidence(gripper, support, pos, vel)
         return cls(stage=twin.task.stage(gripper, support, pos), contact_gripper=gripper,
                    contact_support=support,
                    actuator_norm=sd[..., twin._force_ids[probe.motors]]

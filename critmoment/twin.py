@@ -356,9 +356,14 @@ class Twin:
 
     def object_height(self, states: np.ndarray) -> np.ndarray:
         """The object's height [m] in integration states (T, nstate) of ``STATE_SPEC``, (T,)."""
+        return self.qpos(states)[:, self.object_qposadr + 2]
+
+    def qpos(self, states: np.ndarray) -> np.ndarray:
+        """The positions in integration states (T, nstate) of ``STATE_SPEC``, (T, nq) (a
+        view)."""
         # mjSTATE_INTEGRATION starts with the time, then qpos
         offset = mujoco.mj_stateSize(self.model, mujoco.mjtState.mjSTATE_TIME)
-        return np.asarray(states)[:, offset + self.object_qposadr + 2]
+        return np.asarray(states)[:, offset:offset + self.model.nq]
 
     # -- actions and state ------------------------------------------------------------
     def controls(self, actions: np.ndarray) -> np.ndarray:
@@ -437,9 +442,15 @@ class Twin:
 
     def evidence(self, signals: Signals) -> TaskEvidence:
         """The task's evidence of signals with leading shape (..., T)."""
-        return TaskEvidence(contact_gripper=signals.contact_gripper,
-                            contact_support=signals.contact_support,
-                            object_pos=signals.object_pos, object_vel=signals.object_vel,
+        return self.task_evidence(signals.contact_gripper, signals.contact_support,
+                                  signals.object_pos, signals.object_vel)
+
+    def task_evidence(self, contact_gripper: np.ndarray, contact_support: np.ndarray,
+                      object_pos: np.ndarray, object_vel: np.ndarray) -> TaskEvidence:
+        """The task's evidence of contact flags and the object's motion, leading shape
+        (..., T), in this twin's time step."""
+        return TaskEvidence(contact_gripper=contact_gripper, contact_support=contact_support,
+                            object_pos=object_pos, object_vel=object_vel,
                             dt=float(self.model.opt.timestep))
 
     def success(self, signals: Signals) -> np.ndarray:
