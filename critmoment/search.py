@@ -72,8 +72,8 @@ import importlib.util
 import math
 import numbers
 import warnings
-from collections.abc import Mapping, Sequence
-from typing import Any
+from collections.abc import Generator, Mapping, Sequence
+from typing import TYPE_CHECKING, Any
 
 import mujoco
 import numpy as np
@@ -83,6 +83,9 @@ from critmoment.exceptions import ParameterError
 from critmoment.params import FrictionParameter, MassParameter, Prior, UncertaintyBox
 from critmoment.scenario import CostParams
 from critmoment.twin import Twin
+
+if TYPE_CHECKING:
+    from critmoment.sparse import SparseResult
 
 __all__ = [
     "SearchMethod",
@@ -1139,6 +1142,19 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
     Raises:
         ParameterError: bad steps, options or box; CMAES without the ``cmaes`` package.
     """
+    return run_searches(evaluator, [_search(
+        evaluator, steps, box, method=method, n_trials=n_trials, batch_size=batch_size,
+        seed=seed, enqueue_corners=enqueue_corners, stop_at_ceiling=stop_at_ceiling,
+        patience=patience)])[0]
+
+
+def _search(evaluator, steps: Any, box: UncertaintyBox | None, *, method: SearchMethod,
+            n_trials: int, batch_size: int, seed: int, enqueue_corners: bool,
+            stop_at_ceiling: bool, patience: int | None
+            ) -> Generator[tuple[np.ndarray, np.ndarray], SparseResult, SearchResult]:
+    """:func:`search_worst_case` as a generator: it yields each batch of asked samples as
+    (steps, samples) to evaluate, is sent their :class:`SparseResult`, and returns the
+    :class:`SearchResult` (:func:`run_searches` drives it)."""
     method = _check_method(method)
     n_trials = _check_int("n_trials", n_trials, 1)
     batch_size = _check_int("batch_size", batch_size, 1)
@@ -1153,51 +1169,52 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
     patience = None if patience is None else _check_int("patience", patience, 1)
 
     names = box.names
-    with _quiet_optuna() as optuna:
-        from optuna.distributions import FloatDistribution
+    import optuna
+    from optuna.distributions import FloatDistribution
 
-        dists = {p.name: FloatDistribution(p.low, p.high, log=p.prior is Prior.LOGUNIFORM)
-                 for p in box.parameters}
-        study = optuna.create_study(direction="maximize",
-                                    sampler=_sampler(optuna, method, seed, batch_size))
-        queued = []
-        if enqueue_corners:
-            for row in np.vstack([box.corners(), box.nominal[None]]):
-                if not any(np.array_equal(row, q) for q in queued):
-                    queued.append(row)
-            queued = queued[:n_trials]
-            for row in queued:
-                study.enqueue_trial({n: float(v) for n, v in zip(names, row, strict=False)})
-        history: list[SearchTrial] = []
-        stopped: str | None = None
-        batch = 0
-        best, since = -np.inf, 0
-        while len(history) < n_trials and not stopped:
-            size = min(batch_size, n_trials - len(history))
-            trials = [study.ask(dists) for _ in range(size)]
-            samples = np.array([[t.params[n] for n in names] for t in trials], dtype=np.float64)
-            samples = np.clip(samples, box.low, box.high)
-            res = evaluator.evaluate(steps_arr, samples)
-            per_moment = res.cost  # (m, size)
-            costs = per_moment.max(axis=0)
-            for i, t in enumerate(trials):
-                value = float(costs[i])
-                study.tell(t, min(value, _DIVERGED_COST))
-                history.append(SearchTrial(
-                    number=len(history), batch=batch,
-                    parameters={n: float(v) for n, v in zip(names, samples[i], strict=False)}, cost=value,
-                    cost_per_moment=tuple(float(c) for c in per_moment[:, i]),
-                    enqueued=len(history) < len(queued)))
-            batch += 1
-            top = max(h.cost for h in history)
-            progress = batch == 1 or top > best + PATIENCE_RTOL * abs(best)
-            since = 0 if progress else since + 1
-            best = top
-            if len(history) < n_trials:
-                if ceiling is not None and best >= ceiling * (1 - 1e-12):
-                    stopped = "ceiling"
-                elif patience is not None and since >= patience:
-                    stopped = "patience"
+    # Optuna is quiet in the caller's _quiet_optuna (searches run interleaved)
+    dists = {p.name: FloatDistribution(p.low, p.high, log=p.prior is Prior.LOGUNIFORM)
+             for p in box.parameters}
+    study = optuna.create_study(direction="maximize",
+                                sampler=_sampler(optuna, method, seed, batch_size))
+    queued = []
+    if enqueue_corners:
+        for row in np.vstack([box.corners(), box.nominal[None]]):
+            if not any(np.array_equal(row, q) for q in queued):
+                queued.append(row)
+        queued = queued[:n_trials]
+        for row in queued:
+            study.enqueue_trial({n: float(v) for n, v in zip(names, row, strict=False)})
+    history: list[SearchTrial] = []
+    stopped: str | None = None
+    batch = 0
+    best, since = -np.inf, 0
+    while len(history) < n_trials and not stopped:
+        size = min(batch_size, n_trials - len(history))
+        trials = [study.ask(dists) for _ in range(size)]
+        samples = np.array([[t.params[n] for n in names] for t in trials], dtype=np.float64)
+        samples = np.clip(samples, box.low, box.high)
+        res = yield steps_arr, samples
+        per_moment = res.cost  # (m, size)
+        costs = per_moment.max(axis=0)
+        for i, t in enumerate(trials):
+            value = float(costs[i])
+            study.tell(t, min(value, _DIVERGED_COST))
+            history.append(SearchTrial(
+                number=len(history), batch=batch,
+                parameters={n: float(v) for n, v in zip(names, samples[i], strict=False)}, cost=value,
+                cost_per_moment=tuple(float(c) for c in per_moment[:, i]),
+                enqueued=len(history) < len(queued)))
+        batch += 1
+        top = max(h.cost for h in history)
+        progress = batch == 1 or top > best + PATIENCE_RTOL * abs(best)
+        since = 0 if progress else since + 1
+        best = top
+        if len(history) < n_trials:
+            if ceiling is not None and best >= ceiling * (1 - 1e-12):
+                stopped = "ceiling"
+            elif patience is not None and since >= patience:
+                stopped = "patience"
     costs = np.array([h.cost for h in history])
     first = int(np.argmax(costs))  # argmax returns the first of equal maxima
     worst = history[first]
@@ -1207,6 +1224,40 @@ def search_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = None, 
         worst_cost_per_moment=worst.cost_per_moment, evaluations_to_worst=first + 1,
         stopped_early=stopped is not None, ceiling=ceiling, seed=seed, history=tuple(history),
         stop_reason=stopped)
+
+
+def run_searches(evaluator, searches: Sequence[Generator]) -> list[SearchResult]:
+    """Run Optuna searches side by side: each round, the batches that every search still
+    running asks for are evaluated together (``evaluator.evaluate_many``: one batch call
+    for the searches of all moments, not one per search). Each search asks and is told
+    exactly as alone, so its result is the same.
+
+    Args:
+        evaluator: the sparse evaluator.
+        searches: :func:`_search` generators.
+
+    Returns:
+        Their :class:`SearchResult`, in order.
+    """
+    results: list[SearchResult | None] = [None] * len(searches)
+    pending: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+
+    def advance(i, value=None):
+        try:
+            pending[i] = searches[i].send(value)
+        except StopIteration as stop:
+            pending.pop(i, None)
+            results[i] = stop.value
+
+    with _quiet_optuna():
+        for i in range(len(searches)):
+            advance(i)
+        while pending:
+            order = list(pending)
+            answers = evaluator.evaluate_many([pending[i] for i in order])
+            for i, res in zip(order, answers, strict=True):
+                advance(i, res)
+    return results
 
 
 # --------------------------------------------------------------------------
@@ -1468,6 +1519,15 @@ def verify(evaluator, step: Any, analytic: AnalyticWorstCase | AnalyticBounds,
     Raises:
         ParameterError: bad step, or analytic bounds of another step.
     """
+    k, bounds, points, samples = _points_to_verify(evaluator, step, analytic, search,
+                                                   include_nominal)
+    return _verification(evaluator, k, bounds, points, evaluator.evaluate([k], samples))
+
+
+def _points_to_verify(evaluator, step: Any, analytic: AnalyticWorstCase | AnalyticBounds,
+                      search: SearchResult | None, include_nominal: bool):
+    """:func:`verify`'s checks and points: (step, bounds, [(source, parameters)], samples
+    (p, k))."""
     k = _step_of(step)
     evaluator.check_steps([k])
     if isinstance(analytic, AnalyticWorstCase):
@@ -1500,7 +1560,14 @@ def verify(evaluator, step: Any, analytic: AnalyticWorstCase | AnalyticBounds,
         raise ParameterError("verify: expected at least one point to check (an "
                              "AnalyticWorstCase, a SearchResult or include_nominal=True)")
     samples = np.array([[p[n] for n in box.names] for _, p in points], dtype=np.float64)
-    res = evaluator.evaluate([k], samples)
+    return k, bounds, points, samples
+
+
+def _verification(evaluator, k: int, bounds: AnalyticBounds,
+                  points: list[tuple[str, dict[str, float]]], res: SparseResult
+                  ) -> Verification:
+    """:func:`verify`'s comparison of the analytic model with the sparse evaluation ``res``
+    of ``points`` at moment k."""
     checked = []
     for i, (source, params) in enumerate(points):
         m, f = bounds.point_of(params)
@@ -1561,15 +1628,38 @@ def audit_moment(evaluator, step: Any, *, pin_model: dyn.PinocchioModel | None =
         worst case, worst cost) and ``verification``. Non-finite numbers are None (a
         critical mass of None: the limit is never reached).
     """
-    k = _step_of(step)
-    evaluator.check_steps([k])
-    bounds = analytic_bounds(evaluator.recording, evaluator.twin, k, pin_model=pin_model)
-    worst = analytic_worst_case(bounds, smoothing=smoothing)
-    found = search_worst_case(evaluator, [k], method=method, n_trials=n_trials,
-                              batch_size=batch_size, seed=seed, patience=patience)
-    check = verify(evaluator, k, worst, found)
-    analytic = bounds.summary()
-    analytic["worst_case"] = worst.summary()
-    return {"step": k, "time": bounds.time, "horizon": int(evaluator.horizon),
-            "analytic": analytic, "search": found.summary(),
-            "verification": check.summary()}
+    return audit_moments(evaluator, [step], pin_model=pin_model, method=method,
+                         n_trials=n_trials, batch_size=batch_size, seed=seed,
+                         smoothing=smoothing, patience=patience)[0]
+
+
+def audit_moments(evaluator, steps: Sequence[Any], *,
+                  pin_model: dyn.PinocchioModel | None = None,
+                  method: SearchMethod = SearchMethod.TPE, n_trials: int = 48,
+                  batch_size: int = 8, seed: int = 0, smoothing: float = DEFAULT_SMOOTHING,
+                  patience: int | None = None) -> list[dict]:
+    """:func:`audit_moment` at each of several moments, their searches side by side
+    (:func:`run_searches`) and their verifications in one ``evaluate_many`` call: the same
+    results as one call per moment, in fewer and fuller batches."""
+    ks = [_step_of(step) for step in steps]
+    evaluator.check_steps(ks)
+    if pin_model is None and ks:
+        pin_model = dyn.from_mujoco(evaluator.twin.model)
+    bounds = [analytic_bounds(evaluator.recording, evaluator.twin, k, pin_model=pin_model)
+              for k in ks]
+    worsts = [analytic_worst_case(b, smoothing=smoothing) for b in bounds]
+    found = run_searches(evaluator, [_search(
+        evaluator, [k], None, method=method, n_trials=n_trials, batch_size=batch_size,
+        seed=seed, enqueue_corners=True, stop_at_ceiling=True, patience=patience)
+        for k in ks])
+    checks = [_points_to_verify(evaluator, k, w, f, True)
+              for k, w, f in zip(ks, worsts, found, strict=True)]
+    answers = evaluator.evaluate_many([([k], samples) for k, _, _, samples in checks])
+    out = []
+    for (k, b, points, _), worst, f, res in zip(checks, worsts, found, answers, strict=True):
+        analytic = b.summary()
+        analytic["worst_case"] = worst.summary()
+        out.append({"step": k, "time": b.time, "horizon": int(evaluator.horizon),
+                    "analytic": analytic, "search": f.summary(),
+                    "verification": _verification(evaluator, k, b, points, res).summary()})
+    return out

@@ -93,7 +93,7 @@ import logging
 import math
 import numbers
 import warnings
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any, NamedTuple
 
 import mujoco
@@ -139,6 +139,8 @@ DEFAULT_CHUNK = 4096
 #: bytes of raw sensor readings one chunk may hold for one moment before it is scored
 _MAX_BUFFER_BYTES = 256 * 2**20
 _MEMO_SIZE = 8  # results of recent evaluate calls an evaluator keeps
+#: most simulations of one batch that steps (moment, sample) pairs, each from its own moment
+_PAIR_CHUNK = 512
 
 
 class SparseMode(enum.Enum):
@@ -727,13 +729,17 @@ class SparseEvaluator:
         self._completed = bool(getattr(recording, "completed", False))
         self._over: np.ndarray | None = None
         self._kin_data: mujoco.MjData | None = None
-        self._batches: collections.OrderedDict[int, mujoco.batch.Batch] = collections.OrderedDict()
+        self._batches: collections.OrderedDict[tuple[int, int], mujoco.batch.Batch] = (
+            collections.OrderedDict())
+        #: None, or a callable that says whether another thread steps beside this one now
+        #: (then batches use one MuJoCo thread); results do not depend on it
+        self.busy: Callable[[], bool] | None = None
         self._memo: collections.OrderedDict[tuple, SparseResult] = collections.OrderedDict()
         #: the chain's start step by first moment (critmoment.history.chain_start), shared
         #: with forks
         self._chain_starts: dict[int, int] = {}
-        self._written: dict[int, np.ndarray] = {}
-        self._mu: dict[int, np.ndarray | float] = {}
+        self._written: dict[tuple[int, int], np.ndarray] = {}
+        self._mu: dict[tuple[int, int], np.ndarray | float] = {}
 
     def fork(self, nthread: int | None = None) -> SparseEvaluator:
         """An evaluator of the same recording and settings with simulations and caches of
@@ -748,6 +754,7 @@ class SparseEvaluator:
         other._memo = collections.OrderedDict()
         other._written, other._mu = {}, {}
         other._kin_data = None
+        other.busy = None
         if nthread is not None:
             other.nthread = _check_int("nthread", nthread, 0)
         return other
@@ -854,29 +861,33 @@ class SparseEvaluator:
 
     # -- batches -----------------------------------------------------------------
     def _batch(self, samples: np.ndarray) -> tuple[mujoco.batch.Batch, np.ndarray | float]:
-        """A batch with ``samples`` written (cached), and the object friction per simulation."""
+        """A batch with ``samples`` written (cached), and the object friction per simulation.
+        While :attr:`busy` says another thread steps beside this one, the batch has one
+        MuJoCo thread (the cores are taken: more threads only contend for them)."""
         n = samples.shape[0]
-        batch = self._batches.get(n)
+        threads = 1 if self.busy is not None and self.busy() else self.nthread
+        key = (n, threads)
+        batch = self._batches.get(key)
         if batch is None:
-            batch = mujoco.batch.Batch(self.twin.model, n, nthread=self.nthread)
+            batch = mujoco.batch.Batch(self.twin.model, n, nthread=threads)
             if self.mode is SparseMode.SOLVE:
                 # a field bound after a call reads zero until the next call: bind it first
                 batch.bind("sensordata")
-            self._batches[n] = batch
+            self._batches[key] = batch
             while len(self._batches) > 4:
                 old, _ = self._batches.popitem(last=False)
                 self._written.pop(old, None)
                 self._mu.pop(old, None)
         else:
-            self._batches.move_to_end(n)
-        written = self._written.get(n)
+            self._batches.move_to_end(key)
+        written = self._written.get(key)
         if written is None or not np.array_equal(written, samples):
             self.twin.write_parameters(batch, samples)
             friction = batch.expanded("geom_friction")
-            self._mu[n] = (friction[:, self.twin.object_geom_id, 0].copy() if friction is not None
-                           else self.twin.object_friction())
-            self._written[n] = samples.copy()
-        return batch, self._mu[n]
+            self._mu[key] = (friction[:, self.twin.object_geom_id, 0].copy()
+                             if friction is not None else self.twin.object_friction())
+            self._written[key] = samples.copy()
+        return batch, self._mu[key]
 
     # -- evaluation ----------------------------------------------------------------
     def evaluate(self, steps: Any, samples: Any, *, keep_raw: bool = False,
@@ -909,44 +920,126 @@ class SparseEvaluator:
         samples = self.check_samples(samples)
         if keep_raw:
             return self._evaluate(steps, samples, keep_raw=True, first_failure=first_failure)
-        # the same call again (the audit's 1-D curves are also the critical values' grid):
-        # the same, immutable result
-        key = (steps.tobytes(), samples.shape, samples.tobytes(), bool(first_failure))
+        if not first_failure:
+            return self.evaluate_many([(steps, samples)])[0]
+        key = (steps.tobytes(), samples.shape, samples.tobytes(), True)
         res = self._memo.get(key)
         if res is None:
-            res = self._evaluate(steps.copy(), samples.copy(), keep_raw=False,
-                                 first_failure=first_failure)
-            for f in dataclasses.fields(res):
-                value = getattr(res, f.name)
-                if isinstance(value, np.ndarray):
-                    value.flags.writeable = False
-            self._memo[key] = res
-            while len(self._memo) > _MEMO_SIZE:
-                self._memo.popitem(last=False)
+            res = self._remember(key, self._evaluate(steps.copy(), samples.copy(),
+                                                     keep_raw=False, first_failure=True))
         else:
             self._memo.move_to_end(key)
         return res
+
+    def evaluate_many(self, requests: Sequence[tuple[Any, Any]]) -> list[SparseResult]:
+        """Several :meth:`evaluate` calls (without ``keep_raw`` or ``first_failure``) in one:
+        every (moment, sample) pair of every request is stepped in the same batches, each
+        simulation from its own moment, so that many small calls (a few samples at one
+        moment each: the searches' batches, the critical values' bisection) cost one batch
+        call and one scoring, not one each. The results are those of the separate calls.
+
+        Args:
+            requests: (steps, samples) pairs, as :meth:`evaluate` takes them.
+
+        Returns:
+            One :class:`SparseResult` per request, in order.
+
+        Raises:
+            ParameterError: bad steps or samples.
+            SimulationDivergedError: a sample diverged and the policy is RAISE.
+        """
+        checked = [(self.check_steps(st), self.check_samples(sa)) for st, sa in requests]
+        keys = [(st.tobytes(), sa.shape, sa.tobytes(), False) for st, sa in checked]
+        todo: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
+        for key, (st, sa) in zip(keys, checked, strict=True):
+            if key in self._memo:
+                self._memo.move_to_end(key)
+            elif key not in todo:
+                todo[key] = (st.copy(), sa.copy())
+        if todo:
+            # the same call again (the audit's 1-D curves are also the critical values'
+            # grid): the same, immutable result
+            for key, res in zip(todo, self._evaluate_grids(list(todo.values())), strict=True):
+                self._remember(key, res)
+        # a result made here may have been dropped from the memo by later ones of this call
+        done = {key: self._memo[key] for key in keys if key in self._memo}
+        missing = [k for k in keys if k not in done]
+        if missing:  # pragma: no cover - more requests than the memo holds
+            for key, res in zip(missing, self._evaluate_grids([todo[k] for k in missing]),
+                                strict=True):
+                done[key] = res
+        return [done[key] for key in keys]
+
+    def _remember(self, key: tuple, res: SparseResult) -> SparseResult:
+        """Keep ``res`` (made immutable) as the result of the call ``key``."""
+        for f in dataclasses.fields(res):
+            value = getattr(res, f.name)
+            if isinstance(value, np.ndarray):
+                value.flags.writeable = False
+        self._memo[key] = res
+        while len(self._memo) > _MEMO_SIZE:
+            self._memo.popitem(last=False)
+        return res
+
+    def _evaluate_grids(self, grids: list[tuple[np.ndarray, np.ndarray]]
+                        ) -> list[SparseResult]:
+        """Every sample at every moment of each (steps, samples) grid, all pairs of all
+        grids stepped together (in batches of at most ``chunk`` simulations)."""
+        h = self.horizon
+        ks = np.concatenate([np.repeat(st, sa.shape[0]) for st, sa in grids])
+        xs = np.concatenate([np.tile(sa, (st.shape[0], 1)) for st, sa in grids])
+        pairs, raised, warned = self._evaluate_pairs(ks, xs)
+        results, start = [], 0
+        for steps, samples in grids:
+            m, n = steps.shape[0], samples.shape[0]
+            sl = slice(start, start + m * n)
+            out = {name: value[sl].reshape((m, n) + value.shape[1:])
+                   for name, value in pairs.items()}
+            for i in range(m):
+                diverged = out["diverged"][i]
+                if diverged.any():
+                    rows = slice(sl.start + i * n, sl.start + (i + 1) * n)
+                    self._on_divergence(int(steps[i]), samples, 0, diverged, raised[rows],
+                                        warned[rows])
+            start = sl.stop
+            results.append(SparseResult(
+                steps=steps, samples=samples, parameter_names=self.box.names,
+                gripper_names=self.twin.scenario.gripper_names,
+                actuator_names=self.twin.actuator_names, horizon=h, mode=self.mode,
+                cost_params=self.twin.scenario.cost, sensordata=None, state=None,
+                evaluated=None, settings=self.settings, **out))
+        return results
+
+    def _evaluate_pairs(self, ks: np.ndarray, samples: np.ndarray
+                        ) -> tuple[dict[str, np.ndarray], np.ndarray, np.ndarray]:
+        """Sample p at moment ks[p], for every p: the per-pair values of a
+        :class:`SparseResult` ((P, ...) each), and which pairs MuJoCo raised or warned for."""
+        h, nsd = self.horizon, self.twin.nsensordata
+        total = ks.shape[0]
+        out = {name: value[0] for name, value in self._outputs(1, total).items()}
+        raised = np.zeros(total, bool)
+        warned = np.zeros((total, len(_WARNING_NAMES)), np.int64)
+        length = h + self._extension_steps()
+        chunk = max(1, min(self.chunk, _PAIR_CHUNK, _MAX_BUFFER_BYTES // (8 * length * nsd)))
+        chunk = -(-total // -(-total // chunk))  # equal batches: two sizes at most
+        for start in range(0, total, chunk):
+            sl = slice(start, min(total, start + chunk))
+            batch, mu = self._batch(samples[sl])
+            k = ks[sl]
+            sim = self._simulate(batch, k, np.arange(batch.nsim), mu, keep_state=False)
+            view = {name: value[None, sl] for name, value in out.items()}
+            self._score(sim.buf[:, :h], mu, sim.diverged, view, 0, slice(None),
+                        at=k[:, None] + np.arange(h)[None, :])
+            self._flags(view, 0, slice(None), sim)
+            raised[sl], warned[sl] = sim.raised, sim.warned
+        return out, raised, warned
 
     def _evaluate(self, steps: np.ndarray, samples: np.ndarray, *, keep_raw: bool,
                   first_failure: bool) -> SparseResult:
         twin, h = self.twin, self.horizon
         m, n = steps.shape[0], samples.shape[0]
-        ngrip, nu = len(twin.scenario.grippers), twin.model.nu
         nsd = twin.nsensordata
-        out = {
-            "fos_contact": np.empty((m, n, ngrip)), "fos_grasp": np.empty((m, n)),
-            "fos_motor": np.empty((m, n)),
-            "motor_argmax": np.empty((m, n), np.int64), "cost": np.empty((m, n)),
-            "cost_contact": np.empty((m, n)), "cost_motor": np.empty((m, n)),
-            "object_acc": np.empty((m, n, 3)), "actuator_norm": np.empty((m, n, nu)),
-            "contact_support": np.empty((m, n), bool),
-            "contact_gripper": np.empty((m, n, ngrip), bool),
-            "stage": np.empty((m, n), np.int8), "worst_step": np.empty((m, n), np.int64),
-            "diverged": np.empty((m, n), bool), "unlifted_failure": np.empty((m, n), bool),
-            "sticking_failure": np.empty((m, n), bool),
-            "failure": np.empty((m, n), np.int8), "slip": np.empty((m, n)),
-            "excursion": np.empty((m, n)),
-        }
+        out = self._outputs(m, n)
         raw = np.empty((m, n, h, nsd)) if keep_raw else None
         final = np.empty((m, n, self._states.shape[1])) if keep_raw else None
         evaluated = np.ones((m, n), bool) if first_failure else None
@@ -976,11 +1069,7 @@ class SparseEvaluator:
                     buf = np.take_along_axis(buf, last[:, :, None], axis=1)
                     at = k + last
                 self._score(buf, mu, sim.diverged, out, i, sl, at=at)
-                out["failure"][i, sl] = sim.failure
-                out["slip"][i, sl] = sim.slip
-                out["excursion"][i, sl] = sim.excursion
-                out["unlifted_failure"][i, sl] = (sim.failure > 0) & ~sim.stop & ~sim.sticking
-                out["sticking_failure"][i, sl] = sim.sticking
+                self._flags(out, i, sl, sim)
                 if keep_raw:
                     raw[i, sl] = sim.buf[:, :h]
                     final[i, sl] = sim.state
@@ -997,6 +1086,33 @@ class SparseEvaluator:
             gripper_names=twin.scenario.gripper_names, actuator_names=twin.actuator_names,
             horizon=h, mode=self.mode, cost_params=twin.scenario.cost, sensordata=raw,
             state=final, evaluated=evaluated, settings=self.settings, **out)
+
+    def _outputs(self, m: int, n: int) -> dict[str, np.ndarray]:
+        """The per-pair arrays of a :class:`SparseResult` of m moments × n samples, empty."""
+        ngrip, nu = len(self.twin.scenario.grippers), self.twin.model.nu
+        return {
+            "fos_contact": np.empty((m, n, ngrip)), "fos_grasp": np.empty((m, n)),
+            "fos_motor": np.empty((m, n)),
+            "motor_argmax": np.empty((m, n), np.int64), "cost": np.empty((m, n)),
+            "cost_contact": np.empty((m, n)), "cost_motor": np.empty((m, n)),
+            "object_acc": np.empty((m, n, 3)), "actuator_norm": np.empty((m, n, nu)),
+            "contact_support": np.empty((m, n), bool),
+            "contact_gripper": np.empty((m, n, ngrip), bool),
+            "stage": np.empty((m, n), np.int8), "worst_step": np.empty((m, n), np.int64),
+            "diverged": np.empty((m, n), bool), "unlifted_failure": np.empty((m, n), bool),
+            "sticking_failure": np.empty((m, n), bool),
+            "failure": np.empty((m, n), np.int8), "slip": np.empty((m, n)),
+            "excursion": np.empty((m, n)),
+        }
+
+    @staticmethod
+    def _flags(out: dict[str, np.ndarray], i: int, sl: slice, sim: _Simulated) -> None:
+        """A simulation's decision into out[...][i, sl]."""
+        out["failure"][i, sl] = sim.failure
+        out["slip"][i, sl] = sim.slip
+        out["excursion"][i, sl] = sim.excursion
+        out["unlifted_failure"][i, sl] = (sim.failure > 0) & ~sim.stop & ~sim.sticking
+        out["sticking_failure"][i, sl] = sim.sticking
 
     @staticmethod
     def _unevaluated(out: dict[str, np.ndarray], i: int, sl: slice, skip: np.ndarray) -> None:
@@ -1018,6 +1134,17 @@ class SparseEvaluator:
         row = self._states[k].copy()
         row[self._ctrl] = self._controls[k]
         return row
+
+    def _start_rows(self, ks: np.ndarray) -> np.ndarray:
+        """:meth:`_start_row` of each step in ``ks`` (c,), (c, nstate)."""
+        rows = self._states[ks]
+        rows[:, self._ctrl] = self._controls[ks]
+        return rows
+
+    def _trusted_at(self, ks: np.ndarray) -> np.ndarray:
+        """:meth:`_contact_trusted` of each step in ``ks``, (c,) bool."""
+        known = {int(k): self._contact_trusted(int(k)) for k in np.unique(ks)}
+        return np.array([known[int(k)] for k in ks], dtype=bool)
 
     def _extension_steps(self) -> int:
         """Most steps past the horizon one evaluation may take: to follow a contact
@@ -1061,19 +1188,24 @@ class SparseEvaluator:
     def _roll(self, batch: mujoco.batch.Batch, k: int, nstep: int, ids: np.ndarray,
               raised: np.ndarray, watch=None, measure_slip: bool = True
               ) -> tuple[np.ndarray, np.ndarray]:
-        """Step the simulations ``ids`` ``nstep`` steps from recording step k with the
-        recorded controls; (sensordata (c, nstep, nsd), slip (c, nstep) [m]). ``watch``,
+        """Step the simulations ``ids`` ``nstep`` steps from recording step k (an int, or
+        one per simulation, (c,)) with the recorded controls; (sensordata (c, nstep, nsd),
+        slip (c, nstep) [m]). ``watch``,
         if given, is called with (k, ids, sensordata, xpos, xmat, qpos) of the steps taken
         (each recorded after its step). Without ``measure_slip`` the slip is zero (the
         caller does not use it)."""
         c, model = ids.size, self.twin.model
+        if np.ndim(k):  # a start step per simulation, (c,)
+            control = self._controls[np.asarray(k)[:, None] + np.arange(nstep)]
+        else:
+            control = self._controls[k:k + nstep][None]
         out = {"sensordata": np.zeros((c, nstep, model.nsensordata)),
                "xpos": np.zeros((c, nstep, model.nbody, 3)),
                "xmat": np.zeros((c, nstep, model.nbody, 9))}
         if watch is not None:
             out["qpos"] = np.zeros((c, nstep, model.nq))
         try:
-            batch.rollout(nstep, control=self._controls[k:k + nstep][None],
+            batch.rollout(nstep, control=control,
                           control_spec=int(mujoco.mjtState.mjSTATE_CTRL),
                           record=tuple(out), ids=ids, out=out)
         except mujoco.batch.SimulationError as exc:
@@ -1095,9 +1227,17 @@ class SparseEvaluator:
         with each stepped block's readings and poses, lets the caller measure it on the
         simulations' own history). With ``stop_early`` the horizon is stepped in blocks of
         ``persistence`` steps and a simulation whose failure is decided stops (its later
-        rows stay zero)."""
+        rows stay zero). ``k`` may also be one step per simulation of the batch (nsim,),
+        restored: each simulation is then decided at its own step, as alone."""
         h, nsim = self.horizon, batch.nsim
-        extra = min(self._extension_steps(), self.n_steps - k - h) if restore else 0
+        per_sim = np.ndim(k) > 0  # a start step per simulation (restored), (nsim,)
+        if per_sim:
+            k = np.asarray(k, dtype=np.int64)
+            extras = np.minimum(self._extension_steps(), self.n_steps - k - h)
+            extra = int(extras[run].max(initial=0))
+        else:
+            extra = min(self._extension_steps(), self.n_steps - k - h) if restore else 0
+            extras = np.full(nsim, extra)
         nsd = self.twin.nsensordata
         buf = np.zeros((nsim, h + extra, nsd))
         slip = np.zeros((nsim, h + extra))
@@ -1108,7 +1248,7 @@ class SparseEvaluator:
         mu = np.broadcast_to(np.asarray(mu, dtype=np.float64), (nsim,))
         if run.size:
             if restore:
-                batch.state[run] = self._start_row(k)
+                batch.state[run] = self._start_rows(k[run]) if per_sim else self._start_row(k)
             length[run] = h
             if self.mode is SparseMode.SOLVE:
                 try:
@@ -1122,7 +1262,8 @@ class SparseEvaluator:
                 while todo.size and done < h:
                     n = min(block, h - done)
                     buf[todo, done:done + n], slip[todo, done:done + n] = self._roll(
-                        batch, k + done, n, todo, raised, watch, measure_slip=restore)
+                        batch, (k[todo] if per_sim else k) + done, n, todo, raised, watch,
+                        measure_slip=restore)
                     done += n
                     length[todo] = done
                     if done < h:
@@ -1132,11 +1273,17 @@ class SparseEvaluator:
             if keep_state:
                 state = batch.state.copy()
         warned = batch.warning[:, :, 1].copy()
-        decided = self._decide(buf, slip, length, mu, k, final=extra == 0)
-        follow = run[decided.follow[run] & ~raised[run] & ~(warned[run] > 0).any(axis=1)]
+        decided = self._decide(buf, slip, length, mu, k,
+                               final=extras == 0 if per_sim else extra == 0)
+        follow = run[decided.follow[run] & ~raised[run] & ~(warned[run] > 0).any(axis=1)
+                     & (extras[run] > 0)]
         if follow.size and extra:
-            buf[follow, h:], slip[follow, h:] = self._roll(batch, k + h, extra, follow, raised)
-            length[follow] = h + extra
+            # the simulations followed take their own extra steps (fewer near the end)
+            for e in np.unique(extras[follow]):
+                part = follow[extras[follow] == e]
+                buf[part, h:h + e], slip[part, h:h + e] = self._roll(
+                    batch, (k[part] if per_sim else k) + h, int(e), part, raised)
+                length[part] = h + e
             warned = batch.warning[:, :, 1].copy()
             decided = self._decide(buf, slip, length, mu, k, final=True)
         # rows never stepped are zero, hence finite
@@ -1155,19 +1302,26 @@ class SparseEvaluator:
     def _decide(self, buf: np.ndarray, slip: np.ndarray, length: np.ndarray, mu: np.ndarray,
                 k: int, *, final: bool) -> _Decision:
         """Decide every simulation from its readings (nsim, L, nsd) of steps k .. k+L−1, of
-        which the first ``length`` were taken; ``final``: no more steps can be taken."""
+        which the first ``length`` were taken; ``final``: no more steps can be taken. ``k``
+        and ``final`` may also be given per simulation, (nsim,)."""
         nsim, total, _ = buf.shape
         h, p = self.horizon, self.persistence_steps
-        at = k + np.arange(total)
+        if np.ndim(k):  # a step per simulation: (nsim, total) (rows past the run unused)
+            at = np.minimum(np.asarray(k)[:, None] + np.arange(total), self.n_steps - 1)
+        else:
+            at = (k + np.arange(total))[None]
         with np.errstate(over="ignore", invalid="ignore"):
-            sig = self.twin.signals(buf, mu=mu[:, None], carried=self._carried[at][None])
+            sig = self.twin.signals(buf, mu=mu[:, None], carried=self._carried[at])
             cp = self.twin.scenario.cost
             term_m = cp.B * np.exp(-cp.beta * (sig.fos_motor - 1.0))
             term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
-            if not self._contact_trusted(k):
-                term_c = np.zeros_like(term_c)  # uncalibrated here: slip and motor decide
+            # uncalibrated where the contact is not trusted: slip and motor decide
+            if np.ndim(k):
+                term_c = np.where(self._trusted_at(k)[:, None], term_c, 0.0)
+            elif not self._contact_trusted(k):
+                term_c = np.zeros_like(term_c)
             # the flags of real lifts only: lifted steps are a subset of the carried ones
-            lifted_c = np.where(self._lifted[at][None], term_c, 0.0)
+            lifted_c = np.where(self._lifted[at], term_c, 0.0)
         valid = np.arange(total)[None, :] < length[:, None]
         in_horizon = np.arange(total)[None, :] < h
         slipped = valid & (slip > self.settings.slip_tolerance)
@@ -1177,7 +1331,7 @@ class SparseEvaluator:
         # is not a slip (the chained segments and rollouts see what happens later)
         unmoved = None
         if self._nominal_touches():
-            unmoved = (self._alone[at].any(axis=-1)[None]
+            unmoved = (self._alone[at].any(axis=-1)
                        & (np.maximum.accumulate(slip, axis=1)
                           < SLIP_FLOOR * self.settings.slip_tolerance))
         out = [self._first_failure(term_c, term_m, slipped, valid, in_horizon, length, p,
@@ -1221,9 +1375,12 @@ class SparseEvaluator:
         rows = np.arange(nsim)
         last = np.maximum(length - 1, 0)
         open_end = counted[rows, last] & (run[rows, last] < p) & (length > 0)
-        if final:
+        final = np.broadcast_to(np.asarray(final, dtype=bool), (nsim,))
+        if final.any():
             # no more steps to follow it: an excursion still open counts
-            ends = open_end if unmoved is None else open_end & ~unmoved[rows, last]
+            ends = open_end & final
+            if unmoved is not None:
+                ends &= ~unmoved[rows, last]
             contact[rows[ends], last[ends]] = True
         kinds = np.select([motor, contact, slipped],
                           [Failure.MOTOR, Failure.CONTACT, Failure.SLIP], Failure.PASS)
@@ -1231,25 +1388,40 @@ class SparseEvaluator:
         step = np.where(failing.any(axis=1), np.argmax(failing, axis=1), -1)
         kind = np.where(step >= 0, kinds[rows, np.maximum(step, 0)], Failure.PASS)
         longest = np.where(counted, run, 0).max(axis=1, initial=0)
-        follow = open_end & (step < 0) & (not final)
+        follow = open_end & (step < 0) & ~final
         return kind.astype(np.int8), step, longest, follow
 
     def _slip(self, xpos: np.ndarray, xmat: np.ndarray, k: int) -> np.ndarray:
-        """Slip (c, s) [m] of recorded poses (c, s, nbody, 3 | 9) of steps k .. k+s−1."""
+        """Slip (c, s) [m] of recorded poses (c, s, nbody, 3 | 9) of steps k .. k+s−1 (k an
+        int, or one per simulation, (c,))."""
         c, s = xpos.shape[:2]
         if not self._anchors.size:
             return np.zeros((c, s))
         rel = _object_in_grippers(xpos, xmat, self.twin.object_body_id, self._anchors)
-        nominal = self._nominal_positions(k, s)  # (s, G, 3)
-        diff = np.einsum("gij,csgj->csgi", self._projectors, rel - nominal[None])
+        if np.ndim(k):  # a start step per simulation, (c,)
+            at = np.asarray(k)[:, None] + np.arange(s)
+            nominal, alone = self._nominal_at(at), self._alone[at]  # (c, s, G, 3), (c, s, G)
+        else:
+            nominal, alone = self._nominal_positions(k, s)[None], self._alone[k:k + s][None]
+        diff = np.einsum("gij,csgj->csgi", self._projectors, rel - nominal)
         disp = np.linalg.norm(diff, axis=-1)
-        return np.where(self._alone[k:k + s][None], disp, 0.0).max(axis=-1)
+        return np.where(alone, disp, 0.0).max(axis=-1)
 
     def _nominal_positions(self, k: int, s: int) -> np.ndarray:
         """The nominal run's object position in each gripper's frame (s, G, 3) [m] at the
         start of steps k .. k+s−1 (kinematics of the recorded states, cached)."""
         part = self._nominal_rel[k:k + s]
-        missing = np.flatnonzero(np.isnan(part[:, 0, 0]))
+        self._fill_nominal(k + np.flatnonzero(np.isnan(part[:, 0, 0])))
+        return part
+
+    def _nominal_at(self, at: np.ndarray) -> np.ndarray:
+        """:meth:`_nominal_positions` at the steps ``at`` (any shape), ``at.shape + (G, 3)``."""
+        rows = np.unique(at)
+        self._fill_nominal(rows[np.isnan(self._nominal_rel[rows, 0, 0])])
+        return self._nominal_rel[at]
+
+    def _fill_nominal(self, missing: np.ndarray) -> None:
+        """Compute the cached nominal positions of the steps ``missing``."""
         if missing.size:
             model = self.twin.model
             if self._kin_data is None:
@@ -1259,13 +1431,13 @@ class SparseEvaluator:
             xpos = np.empty((missing.size, bodies.size, 3))
             xmat = np.empty((missing.size, bodies.size, 9))
             for r, j in enumerate(missing):
-                mujoco.mj_setState(model, data, self._states[k + j], STATE_SPEC)
+                mujoco.mj_setState(model, data, self._states[j], STATE_SPEC)
                 mujoco.mj_kinematics(model, data)
                 xpos[r] = data.xpos[bodies]
                 xmat[r] = data.xmat[bodies]
             g = self._anchors.size
-            part[missing] = _object_in_grippers(xpos[None], xmat[None], g, np.arange(g))[0]
-        return part
+            self._nominal_rel[missing] = _object_in_grippers(xpos[None], xmat[None], g,
+                                                             np.arange(g))[0]
 
     def _score(self, buf: np.ndarray, mu: np.ndarray | float, diverged: np.ndarray,
                out: dict[str, np.ndarray], i: int, sl: slice, *, at: np.ndarray) -> None:
@@ -1284,9 +1456,11 @@ class SparseEvaluator:
         nsim = buf.shape[0]
         rows = np.arange(nsim)
         cost = sig.cost
-        if not self._contact_trusted(int(np.asarray(at).flat[0])):
+        trusted = self._trusted_at(np.asarray(at)[:, 0])  # per row of at: (1,) or (nsim,)
+        if not trusted.all():
             with np.errstate(over="ignore", invalid="ignore"):
-                cost = cp.B * np.exp(-cp.beta * (sig.fos_motor - 1.0))
+                motor = cp.B * np.exp(-cp.beta * (sig.fos_motor - 1.0))
+            cost = np.where(trusted[:, None], cost, motor)
         if self.horizon == 1:
             worst = np.zeros(nsim, dtype=np.int64)
             fos_contact, fos_grasp = sig.fos_contact[:, 0], sig.fos_grasp[:, 0]
@@ -1709,12 +1883,16 @@ def _refine(engine: SparseEvaluator, steps: np.ndarray, brackets: list[_Bracket]
         by_moment: dict[int, list[_Bracket]] = {}
         for b in open_:
             by_moment.setdefault(b.i, []).append(b)
+        rounds = []
         for i, group in by_moment.items():
             samples = np.repeat(np.stack([b.base for b in group]), split, axis=0)
             points = np.array([b.lo + (b.hi - b.lo) * fractions for b in group])  # (nb, split)
             cols = np.repeat([b.j for b in group], split)
             samples[np.arange(samples.shape[0]), cols] = points.reshape(-1)
-            res = engine.evaluate(steps[i:i + 1], samples)
+            rounds.append((group, points, (steps[i:i + 1], samples)))
+        # every moment's points of this round in one batch call
+        answers = engine.evaluate_many([request for _, _, request in rounds])
+        for (group, points, _), res in zip(rounds, answers, strict=True):
             fail = res.fails(criterion, limit=limit)[0].reshape(len(group), split)
             dominant = res.dominant[0].reshape(len(group), split)
             for b, f, pts, terms in zip(group, fail, points, dominant, strict=False):

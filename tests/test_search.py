@@ -502,3 +502,22 @@ def test_first_crossings_find_closed_form_roots_in_one_vectorised_bisection():
                                    from_high=True)
     assert down[0][0] == pytest.approx(0.5, rel=1e-11) and 1.0 / down[0][0] > 2.0
     assert search._first_crossings(lambda x: 0 * x + 5.0, 0.0, 1.0, 1.0, 1) == [(0.0, True)]
+
+
+def test_searches_side_by_side_equal_each_alone(contact_engine, moments):
+    # run_searches evaluates the batches of every running search in one call: each search
+    # asks and is told as alone, so its result is the same, whichever stops first
+    lift, hand = moments
+    kwargs = dict(n_trials=24, batch_size=6, seed=2, enqueue_corners=True,
+                  stop_at_ceiling=True)
+    alone = [search.search_worst_case(contact_engine, [k], **kwargs, patience=p)
+             for k, p in ((lift, None), (hand, 1))]
+    together = search.run_searches(contact_engine, [
+        search._search(contact_engine, [lift], None, method=search.SearchMethod.TPE,
+                       patience=None, **kwargs),
+        search._search(contact_engine, [hand], None, method=search.SearchMethod.TPE,
+                       patience=1, **kwargs)])
+    assert together == alone
+    one = search.audit_moment(contact_engine, hand, n_trials=16, seed=1)
+    both = search.audit_moments(contact_engine, [lift, hand], n_trials=16, seed=1)
+    assert both[1] == one and both[0]["step"] == lift

@@ -786,3 +786,29 @@ def test_a_contact_failure_inside_an_elliptic_cone_is_a_sticking_one(scenario, t
         prec = rollout.rollout(traj, twin=pyramidal)
     pres = SparseEvaluator(prec, pyramidal).evaluate(steps, samples[:64], first_failure=True)
     assert (pres.failure == sparse.Failure.CONTACT).any() and not pres.sticking_failure.any()
+
+
+def test_pairs_stepped_together_equal_each_moment_alone(scenario, twin, demo_recording):
+    # evaluate (no raw readings) steps every (moment, sample) pair in one batch, each from
+    # its own moment; keep_raw steps one moment at a time: the same values, to the bit,
+    # including a moment whose follow-up steps the end of the recording cuts short
+    rec = demo_recording
+    ev = SparseEvaluator(rec, twin, nthread=2)
+    last = rec.n_steps - ev.horizon
+    steps = [_lift_step(rec), _handover_step(rec), last - 3, last]
+    samples = sparse.sweep_samples(scenario.box, n=9, seed=5)
+    together = ev.evaluate(steps, samples)
+    alone = SparseEvaluator(rec, twin, nthread=1).evaluate(steps, samples, keep_raw=True)
+    for f in dataclasses.fields(together):
+        if f.name in ("sensordata", "state"):
+            continue
+        a, b = getattr(together, f.name), getattr(alone, f.name)
+        if isinstance(a, np.ndarray):
+            assert np.array_equal(a, b, equal_nan=a.dtype.kind == "f"), f.name
+    # several requests in one call: each equals its own call
+    other = samples[:4] * np.array([1.0, 0.9])
+    many = ev.evaluate_many([(steps[:2], other), (steps[2:], samples)])
+    one = SparseEvaluator(rec, twin).evaluate(steps[:2], other)
+    assert np.array_equal(many[0].cost, one.cost)
+    assert np.array_equal(many[1].cost, together.cost[2:])
+    assert many[1].failure.tolist() == together.failure[2:].tolist()
