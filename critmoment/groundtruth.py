@@ -49,7 +49,9 @@ import dataclasses
 import enum
 import math
 import numbers
+import threading
 import time
+import weakref
 from collections.abc import Sequence
 from typing import Any
 
@@ -433,6 +435,20 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
 # --------------------------------------------------------------------------
 
 
+_PROBES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_PROBES_LOCK = threading.Lock()
+
+
+def _probe_of(twin: Twin) -> _Probe:
+    """The twin's :class:`_Probe`, compiled once per twin (its model is only read: each
+    batch steps a copy of it)."""
+    with _PROBES_LOCK:
+        probe = _PROBES.get(twin)
+        if probe is None:
+            probe = _PROBES[twin] = _Probe(twin)
+        return probe
+
+
 class _Probe:
     """The twin's model with extra sensors for the brute force, and how to read them.
 
@@ -590,7 +606,7 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
         raise ParameterError(f"samples: expected at least one row of {box.names}, got none")
     chunk = _check_int("chunk", chunk, 1)
     nthread = _check_int("nthread", nthread, 0)
-    probe = _Probe(twin)
+    probe = _probe_of(twin)
     controls = prepare_controls(twin, traj)
     state0 = initial_state(twin, traj)
     dt = float(twin.model.opt.timestep)
@@ -661,7 +677,7 @@ def reference_from_recording(recording, twin: Twin,
     if n == 0 or sd.shape[1] != twin.nsensordata:
         raise ParameterError(f"recording: expected (T >= 1, {twin.nsensordata}) sensor "
                              f"readings, got {sd.shape}")
-    probe = _Probe(twin)
+    probe = _probe_of(twin)
     model = probe.model
     data = mujoco.MjData(model)
     qpos = twin.qpos(np.asarray(recording.states, dtype=np.float64)[:n])
