@@ -620,24 +620,20 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     moments = steps.size > 0 and sweep is not None
     reruns = vd.samples_to_rerun(sweep, options, nominal_completed=nominal_completed)
     rerun = reruns.any
-    # one physics thread beside this one runs the chain (with all of MuJoCo's threads) and
-    # then the rollouts; this thread, done with ``alongside``, shares the rollouts: one
-    # sample at a time each, one MuJoCo thread each, so that both cores step to the last
-    # one (five rollouts in one batch on two threads left a core idle for a third of them,
-    # and alone in its thread the batch waited for this one to finish ``alongside``;
-    # 2026-12-03, demo audit)
-    rerun_failed = np.zeros(n, bool)
-    todo = list(np.flatnonzero(rerun)) if options.verify is not None and moments else []
-    lock = threading.Lock()
+    # one physics thread beside this one, with all of MuJoCo's threads, running the chain
+    # and then the rollouts, unless this thread, done with ``alongside``, has taken them:
+    # three busy threads on the cores, not five (the chain and the rollouts each in a
+    # thread of its own with all MuJoCo threads: 3.3-4.9 s against 4.0-5.5 s, and about 1 s
+    # more CPU; with one MuJoCo thread each, the chain ran on one core for its last second
+    # while the other idled; 2026-12-03, demo audit)
 
     def verify():
-        with timer("verification"):
-            while True:
-                with lock:
-                    if not todo:
-                        return
-                    i = todo.pop(0)
-                rerun_failed[i] = roll(samples[i:i + 1], nthread=1)[0]
+        failed = np.zeros(n, bool)
+        if options.verify is not None and moments:
+            with timer("verification"):
+                if rerun.any():
+                    failed[rerun] = roll(samples[rerun])
+        return failed
 
     def chain():
         if not (options.chain and moments):
@@ -646,9 +642,11 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
             return chain_samples(evaluator.fork(), steps, samples, sweep, rerun, options,
                                  nominal_completed=nominal_completed)
 
+    verifying = _Once(verify)
+
     def physics():
         out = chain()
-        verify()
+        verifying.run()
         return out
 
     with _pool(nthread) as pool:
@@ -662,8 +660,9 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
             extra = alongside() if alongside is not None else None
         finally:
             evaluator.busy = None
-        verify()  # this thread shares the rollouts the physics thread has not taken
+        verifying.run()  # this thread takes the rollouts if the chain still runs
         chained, chained_failed, suspect = chaining.result()
+        rerun_failed = verifying.result()
     if suspect.any() and options.verify is not None:
         with timer("chained segments"):
             # failed on its own path (approximately its own run): its own rollout decides
@@ -672,6 +671,34 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
         suspect = np.zeros(n, bool)
     return vd.SampleRuns(reruns=reruns, chained=chained, chained_failed=chained_failed,
                          suspect=suspect, rerun_failed=rerun_failed), extra
+
+
+class _Once:
+    """A call that runs once, in whichever thread asks first; ``result`` waits for it."""
+
+    def __init__(self, fn: Callable[[], Any]):
+        self._fn, self._lock, self._started = fn, threading.Lock(), False
+        self._done = threading.Event()
+        self._value: Any = None
+        self._error: BaseException | None = None
+
+    def run(self) -> None:
+        with self._lock:
+            if self._started:
+                return
+            self._started = True
+        try:
+            self._value = self._fn()
+        except BaseException as exc:  # re-raised by result(), in the thread that waits
+            self._error = exc
+        finally:
+            self._done.set()
+
+    def result(self) -> Any:
+        self._done.wait()
+        if self._error is not None:
+            raise self._error
+        return self._value
 
 
 class _Done:
