@@ -474,19 +474,17 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     moment_reports = []
     worst_failed_sparse: dict[int, bool] = {}  # per moment: its worst case fails (sparse)
     worst_unlifted: dict[int, bool] = {}  # per failing moment: its worst case is unlifted
+    worst_cases = [_worst_case(res, row, searches.get(int(steps[row])), box)
+                   for row in range(len(chosen))]
+    # the failing worst cases, evaluated again alone (one batch call for all moments)
+    failing = [row for row, (case, cost, _) in enumerate(worst_cases)
+               if case and not cost <= threshold]
+    again = dict(zip(failing, evaluator.evaluate_many(
+        [([int(steps[row])], [[worst_cases[row][0][n] for n in box.names]])
+         for row in failing]), strict=True))
     for row, m in enumerate(chosen):
         s = int(steps[row])
-        cost = res.cost[row]
-        here = ~np.isnan(cost)  # the samples evaluated at this moment (inf: diverged)
-        worst_case, max_cost, motor = {}, float("nan"), None
-        if here.any():
-            worst = int(np.argmax(np.where(here, np.where(np.isinf(cost), 1e9, cost), -np.inf)))
-            worst_case = dict(zip(box.names, map(float, res.samples[worst]), strict=False))
-            max_cost, motor = float(cost[worst]), int(res.motor_argmax[row, worst])
-        sr = searches.get(s)
-        if sr is not None and sr.get("worst_cost") is not None and not (
-                sr["worst_cost"] <= max_cost):
-            worst_case, max_cost = dict(sr["worst_case"]), float(sr["worst_cost"])
+        worst_case, max_cost, motor = worst_cases[row]
         crit = {name: critical[s][name].value for name in box.names}
         side = {name: (None if critical[s][name].direction is None
                        else critical[s][name].direction.value) for name in box.names}
@@ -495,8 +493,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         if dominant is None:
             dominant = next((d for c in curves[s].values()
                              if (d := _dominant(c, 0, c.failed[0])) is not None), None)
-        if worst_case and not max_cost <= threshold:
-            one = evaluator.evaluate([s], [[worst_case[n] for n in box.names]])
+        if row in again:
+            one = again[row]
             worst_failed_sparse[s] = bool(one.failed[0, 0])
             # unlifted or sticking: only a rollout can say whether it really fails
             worst_unlifted[s] = dopt.only_a_rollout_decides(
@@ -521,7 +519,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             critical=crit, critical_side=side, dominant=dominant,
             limiting_actuator=twin.actuator_names[motor],
             fail_fraction=float(fails_here.mean()), analytic=analytics.get(s),
-            search=searches.get(s), reached=float(here.mean()), squeeze=bool(squeeze)))
+            search=searches.get(s), reached=float((~np.isnan(res.cost[row])).mean()),
+            squeeze=bool(squeeze)))
     # the failing worst cases that only a rollout can decide (squeezes)
     worst_failed: dict[int, bool] = {}
     rerun_steps = vd.worst_cases_to_rerun(moment_reports, worst_failed_sparse, worst_unlifted,
@@ -572,6 +571,24 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         verification=verification, region_check=region_check, feasibility=feasibility,
         contact_model=contact, load_bound=load_bound,
         force_ratio_untrusted=_untrusted(rec, evaluator, steps))
+
+
+def _worst_case(res: sp.SparseResult, row: int, search: Mapping | None, box
+                ) -> tuple[dict[str, float], float, int | None]:
+    """A moment's worst case: the sweep's costliest sample there, or the search's worst
+    case when it costs more; (parameters by name, cost, the sweep's limiting actuator or
+    None)."""
+    cost = res.cost[row]
+    here = ~np.isnan(cost)  # the samples evaluated at this moment (inf: diverged)
+    worst_case, max_cost, motor = {}, float("nan"), None
+    if here.any():
+        worst = int(np.argmax(np.where(here, np.where(np.isinf(cost), 1e9, cost), -np.inf)))
+        worst_case = dict(zip(box.names, map(float, res.samples[worst]), strict=False))
+        max_cost, motor = float(cost[worst]), int(res.motor_argmax[row, worst])
+    if search is not None and search.get("worst_cost") is not None and not (
+            search["worst_cost"] <= max_cost):
+        worst_case, max_cost = dict(search["worst_case"]), float(search["worst_cost"])
+    return worst_case, max_cost, motor
 
 
 def _untrusted(rec: Recording, evaluator: sp.SparseEvaluator, steps: np.ndarray

@@ -86,12 +86,14 @@ estimate with a Wilson interval).
 from __future__ import annotations
 
 import collections
+import concurrent.futures
 import copy
 import dataclasses
 import enum
 import logging
 import math
 import numbers
+import os
 import warnings
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any, NamedTuple
@@ -141,6 +143,8 @@ _MAX_BUFFER_BYTES = 256 * 2**20
 _MEMO_SIZE = 8  # results of recent evaluate calls an evaluator keeps
 #: most simulations of one batch that steps (moment, sample) pairs, each from its own moment
 _PAIR_CHUNK = 512
+#: fewest samples per thread of a first-failure evaluation shared out between threads
+_SPLIT_LEAST = 16
 
 
 class SparseMode(enum.Enum):
@@ -636,6 +640,22 @@ class _Simulated(NamedTuple):
     sticking: np.ndarray
 
 
+def _join_samples(parts: Sequence[SparseResult]) -> SparseResult:
+    """Results of the same moments for consecutive groups of samples, as one result."""
+    head = parts[0]
+    m = head.n_moments
+    fields = {}
+    for f in dataclasses.fields(head):
+        value = getattr(head, f.name)
+        if f.name == "samples":
+            value = np.concatenate([p.samples for p in parts])
+        elif (isinstance(value, np.ndarray) and f.name != "steps" and value.ndim >= 2
+              and value.shape[0] == m):
+            value = np.concatenate([getattr(p, f.name) for p in parts], axis=1)
+        fields[f.name] = value
+    return SparseResult(**fields)
+
+
 class SparseEvaluator:
     """Reusable sparse-evaluation engine for one recording and twin.
 
@@ -741,13 +761,15 @@ class SparseEvaluator:
         self._written: dict[tuple[int, int], np.ndarray] = {}
         self._mu: dict[tuple[int, int], np.ndarray | float] = {}
 
-    def fork(self, nthread: int | None = None) -> SparseEvaluator:
+    def fork(self, nthread: int | None = None, *, prefill: bool = True) -> SparseEvaluator:
         """An evaluator of the same recording and settings with simulations and caches of
         its own, for another thread (an evaluator is not safe to share between threads;
         its results do not depend on which copy computes them), with ``nthread`` MuJoCo
-        threads (default: this one's)."""
+        threads (default: this one's). The nominal positions the evaluations compare with
+        are computed for every step first, unless ``prefill`` is False (then the copies
+        fill the shared cache as they go, writing the same values)."""
         self._nominal_over()  # computed once, shared read-only
-        if self._anchors.size:
+        if self._anchors.size and prefill:
             self._nominal_positions(0, self._nominal_rel.shape[0])
         other = copy.copy(self)
         other._batches = collections.OrderedDict()
@@ -925,8 +947,7 @@ class SparseEvaluator:
         key = (steps.tobytes(), samples.shape, samples.tobytes(), True)
         res = self._memo.get(key)
         if res is None:
-            res = self._remember(key, self._evaluate(steps.copy(), samples.copy(),
-                                                     keep_raw=False, first_failure=True))
+            res = self._remember(key, self._first_failures(steps.copy(), samples.copy()))
         else:
             self._memo.move_to_end(key)
         return res
@@ -969,6 +990,29 @@ class SparseEvaluator:
                                 strict=True):
                 done[key] = res
         return [done[key] for key in keys]
+
+    def _first_failures(self, steps: np.ndarray, samples: np.ndarray) -> SparseResult:
+        """First-failure evaluation, with the samples shared out to one Python thread per
+        CPU (each stepping its part on one MuJoCo thread): between the moments a thread
+        decides its samples in Python while the others step, where one batch on all MuJoCo
+        threads left them idle (each sample's evaluation is its own: the result is the
+        same)."""
+        n = samples.shape[0]
+        threads = 1 if self.busy is not None and self.busy() else (
+            self.nthread or os.cpu_count() or 1)
+        parts = min(threads, n // _SPLIT_LEAST)
+        if parts <= 1:
+            return self._evaluate(steps, samples, keep_raw=False, first_failure=True)
+        rows = np.array_split(np.arange(n), parts)
+        forks = [self.fork(nthread=1, prefill=False) for _ in rows]
+        with concurrent.futures.ThreadPoolExecutor(max_workers=parts - 1) as pool:
+            later = [pool.submit(f._evaluate, steps, samples[r], keep_raw=False,
+                                 first_failure=True, offset=int(r[0]))
+                     for f, r in zip(forks[1:], rows[1:], strict=True)]
+            first = forks[0]._evaluate(steps, samples[rows[0]], keep_raw=False,
+                                       first_failure=True)
+            results = [first] + [f.result() for f in later]
+        return _join_samples(results)
 
     def _remember(self, key: tuple, res: SparseResult) -> SparseResult:
         """Keep ``res`` (made immutable) as the result of the call ``key``."""
@@ -1035,7 +1079,7 @@ class SparseEvaluator:
         return out, raised, warned
 
     def _evaluate(self, steps: np.ndarray, samples: np.ndarray, *, keep_raw: bool,
-                  first_failure: bool) -> SparseResult:
+                  first_failure: bool, offset: int = 0) -> SparseResult:
         twin, h = self.twin, self.horizon
         m, n = steps.shape[0], samples.shape[0]
         nsd = twin.nsensordata
@@ -1079,7 +1123,7 @@ class SparseEvaluator:
                     self._unevaluated(out, i, sl, ~alive)
                     alive &= ~sim.stop
                 if diverged.any():
-                    self._on_divergence(k, samples[sl], start, diverged, sim.raised,
+                    self._on_divergence(k, samples[sl], offset + start, diverged, sim.raised,
                                         sim.warned)
         return SparseResult(
             steps=steps, samples=samples, parameter_names=self.box.names,

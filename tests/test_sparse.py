@@ -6,6 +6,7 @@ Run with ``-s`` to see the critical values found on the demo (reported by the pr
 from __future__ import annotations
 
 import dataclasses
+import logging
 import math
 import warnings
 
@@ -812,3 +813,30 @@ def test_pairs_stepped_together_equal_each_moment_alone(scenario, twin, demo_rec
     assert np.array_equal(many[0].cost, one.cost)
     assert np.array_equal(many[1].cost, together.cost[2:])
     assert many[1].failure.tolist() == together.failure[2:].tolist()
+
+
+def test_first_failure_shared_out_between_threads_equals_one_thread(scenario, twin,
+                                                                   demo_recording, tiny,
+                                                                   caplog):
+    # with several threads the samples of a first-failure evaluation are shared out (one
+    # Python thread and one MuJoCo thread each): the same result as one thread, to the bit
+    rec = demo_recording
+    steps = [_lift_step(rec), _handover_step(rec)]
+    samples = sparse.sweep_samples(scenario.box, n=40, seed=7)
+    split = SparseEvaluator(rec, twin, nthread=2).evaluate(steps, samples, first_failure=True)
+    whole = SparseEvaluator(rec, twin, nthread=1).evaluate(steps, samples, first_failure=True)
+    for f in dataclasses.fields(whole):
+        a, b = getattr(split, f.name), getattr(whole, f.name)
+        if isinstance(a, np.ndarray):
+            assert np.array_equal(a, b, equal_nan=a.dtype.kind == "f"), f.name
+    # a divergence in the second thread's part names the sample by its row in the call
+    t, recording = tiny
+    states = recording.states.copy()
+    states[0, 1 + t.model.nq] = 1e12
+    bad = dataclasses.replace(recording, states=states)
+    caplog.set_level(logging.WARNING, logger="critmoment")
+    res = SparseEvaluator(bad, t, nthread=2).evaluate(
+        [0], _mass_samples(t.scenario, np.linspace(0.05, 1.0, 40)), first_failure=True)
+    assert res.diverged.all()
+    said = " ".join(r.getMessage() for r in caplog.records)
+    assert "sample 0 " in said and "sample 20 " in said
