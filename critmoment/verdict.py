@@ -504,6 +504,23 @@ def _cut_of_region(box: UncertaintyBox, region: Mapping[str, tuple[float, float]
     return np.where(np.array(sides) == "above", u_hi, 1.0 - u_lo)
 
 
+def _blocked_grid(inside_bad: np.ndarray, cands: Sequence[np.ndarray],
+                  margin: float) -> np.ndarray:
+    """For the grid of two-parameter cuts ``cands[0] × cands[1]`` (row-major), whether a bad
+    point lies inside the box up to each cut: per first cut, the lowest second coordinate
+    among the bad points inside it in the first, compared with each second cut (the same
+    comparisons as point by point, in O(grid + points · first cuts))."""
+    if margin > 0:
+        t0, t1 = (c + margin * (1 - 1e-9) for c in cands)
+        first = inside_bad[None, :, 0] <= t0[:, None]
+    else:
+        t0, t1 = cands
+        first = inside_bad[None, :, 0] < t0[:, None]
+    low = np.where(first, inside_bad[None, :, 1], np.inf).min(axis=1, initial=np.inf)
+    grid = low[:, None] <= t1[None, :] if margin > 0 else low[:, None] < t1[None, :]
+    return grid.reshape(-1)
+
+
 def _best_cut(bad: np.ndarray, a: np.ndarray, b: np.ndarray, margin: float,
               extra: np.ndarray | None = None) -> np.ndarray | None:
     """The upper cuts c (a < c ≤ b) of the largest box [a, c] (oriented unit coordinates)
@@ -537,7 +554,7 @@ def _best_cut(bad: np.ndarray, a: np.ndarray, b: np.ndarray, margin: float,
         grids = np.meshgrid(*cands, indexing="ij")
         cuts = np.stack([g.reshape(-1) for g in grids], axis=1)
         vol = np.prod(cuts - a, axis=1)
-        vol[blocked(cuts)] = -1.0
+        vol[_blocked_grid(inside_bad, cands, margin) if k == 2 else blocked(cuts)] = -1.0
         i = int(np.argmax(vol))
         return cuts[i] if vol[i] > 0 else None
     cut = b.copy()

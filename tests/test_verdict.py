@@ -399,3 +399,22 @@ def test_slip_confirm_is_the_ground_truths_slip_tolerance():
     from critmoment.groundtruth import OutcomeCriteria
 
     assert vd.DecisionOptions(threshold=0.9).slip_confirm == OutcomeCriteria().slip_tolerance
+
+
+def test_blocked_grid_equals_the_point_by_point_test():
+    # the two-parameter fast path of the safe sub-box search gives the same cuts as
+    # comparing every bad point with every cut
+    rng = np.random.default_rng(0)
+    for margin in (0.0, 0.01):
+        bad = rng.random((200, 2))
+        bad[:20] = np.round(bad[:20], 1)  # ties with the cuts
+        cands = [np.unique(np.concatenate([np.round(rng.random(40), 1), [1.0]]))
+                 for _ in range(2)]
+        grids = np.meshgrid(*cands, indexing="ij")
+        cuts = np.stack([g.reshape(-1) for g in grids], axis=1)
+        if margin > 0:
+            inside = bad[None] <= cuts[:, None] + margin * (1 - 1e-9)
+        else:
+            inside = bad[None] < cuts[:, None]
+        expected = inside.all(axis=2).any(axis=1)
+        assert np.array_equal(vd._blocked_grid(bad, cands, margin), expected)
