@@ -971,24 +971,19 @@ class SparseEvaluator:
         """
         checked = [(self.check_steps(st), self.check_samples(sa)) for st, sa in requests]
         keys = [(st.tobytes(), sa.shape, sa.tobytes(), False) for st, sa in checked]
+        done: dict[tuple, SparseResult] = {}
         todo: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
         for key, (st, sa) in zip(keys, checked, strict=True):
             if key in self._memo:
                 self._memo.move_to_end(key)
+                done[key] = self._memo[key]
             elif key not in todo:
                 todo[key] = (st.copy(), sa.copy())
         if todo:
             # the same call again (the audit's 1-D curves are also the critical values'
             # grid): the same, immutable result
             for key, res in zip(todo, self._evaluate_grids(list(todo.values())), strict=True):
-                self._remember(key, res)
-        # a result made here may have been dropped from the memo by later ones of this call
-        done = {key: self._memo[key] for key in keys if key in self._memo}
-        missing = [k for k in keys if k not in done]
-        if missing:  # pragma: no cover - more requests than the memo holds
-            for key, res in zip(missing, self._evaluate_grids([todo[k] for k in missing]),
-                                strict=True):
-                done[key] = res
+                done[key] = self._remember(key, res)
         return [done[key] for key in keys]
 
     def _first_failures(self, steps: np.ndarray, samples: np.ndarray) -> SparseResult:
