@@ -987,19 +987,19 @@ class SparseEvaluator:
         return [done[key] for key in keys]
 
     def _first_failures(self, steps: np.ndarray, samples: np.ndarray) -> SparseResult:
-        """First-failure evaluation, with the samples shared out to one Python thread per
-        CPU (each stepping its part on one MuJoCo thread): between the moments a thread
-        decides its samples in Python while the others step, where one batch on all MuJoCo
+        """First-failure evaluation, with the samples shared out to two Python threads,
+        each stepping its part on half the MuJoCo threads: between the moments one thread
+        decides its samples in Python while the other steps, where one batch on all MuJoCo
         threads left them idle (each sample's evaluation is its own: the result is the
-        same)."""
+        same). Two, not one per CPU: the deciding holds Python's lock."""
         n = samples.shape[0]
         threads = 1 if self.busy is not None and self.busy() else (
             self.nthread or os.cpu_count() or 1)
-        parts = min(threads, n // _SPLIT_LEAST)
+        parts = min(2, threads, n // _SPLIT_LEAST)
         if parts <= 1:
             return self._evaluate(steps, samples, keep_raw=False, first_failure=True)
         rows = np.array_split(np.arange(n), parts)
-        forks = [self.fork(nthread=1, prefill=False) for _ in rows]
+        forks = [self.fork(nthread=max(1, threads // parts), prefill=False) for _ in rows]
         with concurrent.futures.ThreadPoolExecutor(max_workers=parts - 1) as pool:
             later = [pool.submit(f._evaluate, steps, samples[r], keep_raw=False,
                                  first_failure=True, offset=int(r[0]))
