@@ -98,12 +98,14 @@ __all__ = [
     "SearchTrial",
     "SearchResult",
     "search_worst_case",
+    "run_searches",
     "SurrogateWorstCase",
     "surrogate_worst_case",
     "CheckedPoint",
     "Verification",
     "verify",
     "audit_moment",
+    "audit_moments",
     "DEFAULT_SMOOTHING",
 ]
 
