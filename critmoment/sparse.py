@@ -943,7 +943,7 @@ class SparseEvaluator:
         if keep_raw:
             return self._evaluate(steps, samples, keep_raw=True, first_failure=first_failure)
         if not first_failure:
-            return self.evaluate_many([(steps, samples)])[0]
+            return self._evaluate_checked([(steps, samples)])[0]
         key = (steps.tobytes(), samples.shape, samples.tobytes(), True)
         res = self._memo.get(key)
         if res is None:
@@ -969,7 +969,12 @@ class SparseEvaluator:
             ParameterError: bad steps or samples.
             SimulationDivergedError: a sample diverged and the policy is RAISE.
         """
-        checked = [(self.check_steps(st), self.check_samples(sa)) for st, sa in requests]
+        return self._evaluate_checked(
+            [(self.check_steps(st), self.check_samples(sa)) for st, sa in requests])
+
+    def _evaluate_checked(self, checked: list[tuple[np.ndarray, np.ndarray]]
+                          ) -> list[SparseResult]:
+        """:meth:`evaluate_many` of validated (steps, samples) requests."""
         keys = [(st.tobytes(), sa.shape, sa.tobytes(), False) for st, sa in checked]
         done: dict[tuple, SparseResult] = {}
         todo: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
@@ -1170,9 +1175,7 @@ class SparseEvaluator:
     def _start_row(self, k: int) -> np.ndarray:
         """The state row that starts step k: the recorded state holds the previous step's
         controls, step k applies its own."""
-        row = self._states[k].copy()
-        row[self._ctrl] = self._controls[k]
-        return row
+        return self._start_rows(np.array([k]))[0]
 
     def _start_rows(self, ks: np.ndarray) -> np.ndarray:
         """:meth:`_start_row` of each step in ``ks`` (c,), (c, nstate)."""
@@ -1449,9 +1452,7 @@ class SparseEvaluator:
     def _nominal_positions(self, k: int, s: int) -> np.ndarray:
         """The nominal run's object position in each gripper's frame (s, G, 3) [m] at the
         start of steps k .. k+s−1 (kinematics of the recorded states, cached)."""
-        part = self._nominal_rel[k:k + s]
-        self._fill_nominal(k + np.flatnonzero(np.isnan(part[:, 0, 0])))
-        return part
+        return self._nominal_at(np.arange(k, k + s))
 
     def _nominal_at(self, at: np.ndarray) -> np.ndarray:
         """:meth:`_nominal_positions` at the steps ``at`` (any shape), ``at.shape + (G, 3)``."""

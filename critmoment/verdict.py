@@ -510,15 +510,20 @@ def _blocked_grid(inside_bad: np.ndarray, cands: Sequence[np.ndarray],
     point lies inside the box up to each cut: per first cut, the lowest second coordinate
     among the bad points inside it in the first, compared with each second cut (the same
     comparisons as point by point, in O(grid + points · first cuts))."""
-    if margin > 0:
-        t0, t1 = (c + margin * (1 - 1e-9) for c in cands)
-        first = inside_bad[None, :, 0] <= t0[:, None]
-    else:
-        t0, t1 = cands
-        first = inside_bad[None, :, 0] < t0[:, None]
+    shift, inside = _inside_test(margin)
+    t0, t1 = (c + shift for c in cands)
+    first = inside(inside_bad[None, :, 0], t0[:, None])
     low = np.where(first, inside_bad[None, :, 1], np.inf).min(axis=1, initial=np.inf)
-    grid = low[:, None] <= t1[None, :] if margin > 0 else low[:, None] < t1[None, :]
-    return grid.reshape(-1)
+    return inside(low[:, None], t1[None, :]).reshape(-1)
+
+
+def _inside_test(margin: float) -> tuple[float, np.ufunc]:
+    """How :func:`_best_cut` tests a bad point against a cut, per coordinate: (shift of the
+    cut, comparison): strictly below it without a margin, else at most ``margin`` (less a
+    hair) above it."""
+    if margin > 0:
+        return margin * (1 - 1e-9), np.less_equal
+    return 0.0, np.less
 
 
 def _best_cut(bad: np.ndarray, a: np.ndarray, b: np.ndarray, margin: float,
@@ -543,11 +548,10 @@ def _best_cut(bad: np.ndarray, a: np.ndarray, b: np.ndarray, margin: float,
                                                               method="lower")]))
         cands.append(c)
 
+    shift, inside_of = _inside_test(margin)
+
     def blocked(cuts: np.ndarray) -> np.ndarray:
-        if margin > 0:
-            inside = inside_bad[None, :, :] <= cuts[:, None, :] + margin * (1 - 1e-9)
-        else:
-            inside = inside_bad[None, :, :] < cuts[:, None, :]
+        inside = inside_of(inside_bad[None, :, :], cuts[:, None, :] + shift)
         return inside.all(axis=2).any(axis=1)
 
     if k <= 2:

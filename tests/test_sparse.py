@@ -840,3 +840,23 @@ def test_first_failure_shared_out_between_threads_equals_one_thread(scenario, tw
     assert res.diverged.all()
     said = " ".join(r.getMessage() for r in caplog.records)
     assert "sample 0 " in said and "sample 20 " in said
+
+
+def test_busy_batches_take_one_thread_and_bad_requests_are_refused(scenario, twin,
+                                                                    demo_recording):
+    # while another thread steps (``busy``), the evaluator's batches take one MuJoCo thread;
+    # the values do not change. evaluate_many checks every request as evaluate does.
+    rec = demo_recording
+    steps = [_lift_step(rec)]
+    samples = sparse.sweep_samples(scenario.box, n=6, seed=4)
+    ev = SparseEvaluator(rec, twin, nthread=2)
+    free = ev.evaluate(steps, samples)
+    ev.busy = lambda: True
+    busy = ev.evaluate(steps, samples * np.array([1.0, 0.99]))
+    assert {b.nthread for b in ev._batches.values()} == {1, 2}
+    again = SparseEvaluator(rec, twin, nthread=2).evaluate(steps, samples * np.array([1.0, 0.99]))
+    assert np.array_equal(busy.cost, again.cost) and not np.array_equal(busy.cost, free.cost)
+    with pytest.raises(ParameterError, match="steps"):
+        ev.evaluate_many([(steps, samples), ([rec.n_steps + 5], samples)])
+    with pytest.raises(ParameterError):
+        ev.evaluate_many([(steps, np.full((1, 2), np.nan))])
