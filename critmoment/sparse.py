@@ -106,7 +106,7 @@ from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
 from critmoment.params import UncertaintyBox
 from critmoment.scenario import CostParams
-from critmoment.twin import STATE_SPEC, Twin, carried_flags
+from critmoment.twin import STATE_SPEC, Signals, Twin, carried_flags
 
 __all__ = [
     "SparseMode",
@@ -624,6 +624,7 @@ class _Decision(NamedTuple):
     excursion: np.ndarray  # (nsim,) longest contact excursion [s]
     follow: np.ndarray  # (nsim,) bool: needs steps past the horizon
     sticking: np.ndarray  # (nsim,) bool: a contact failure inside the cone (STICKING_MARGIN)
+    signals: Signals  # of every row decided, leading (nsim, L)
 
 
 class _Simulated(NamedTuple):
@@ -638,6 +639,21 @@ class _Simulated(NamedTuple):
     excursion: np.ndarray
     state: np.ndarray | None
     sticking: np.ndarray
+    signals: Signals  # of buf, leading (nsim, L) (rows past a simulation's length unused)
+
+    def scored(self, h: int, last: np.ndarray | None = None) -> Signals:
+        """The signals of the horizon's rows (nsim, h), or of the rows ``last`` (nsim, h)
+        picks in each simulation (the signals are per row: the same values as computing
+        them from those rows of ``buf``)."""
+        def pick(a):
+            a = a[:, :h]
+            if last is None:
+                return a
+            return np.take_along_axis(a, last.reshape(last.shape + (1,) * (a.ndim - 2)),
+                                      axis=1)
+
+        return Signals(**{f.name: pick(getattr(self.signals, f.name))
+                          for f in dataclasses.fields(Signals)})
 
 
 def _join_samples(parts: Sequence[SparseResult]) -> SparseResult:
@@ -1072,7 +1088,7 @@ class SparseEvaluator:
             k = ks[sl]
             sim = self._simulate(batch, k, np.arange(batch.nsim), mu, keep_state=False)
             view = {name: value[None, sl] for name, value in out.items()}
-            self._score(sim.buf[:, :h], mu, sim.diverged, view, 0, slice(None),
+            self._score(sim.scored(h), sim.diverged, view, 0, slice(None),
                         at=k[:, None] + np.arange(h)[None, :])
             self._flags(view, 0, slice(None), sim)
             raised[sl], warned[sl] = sim.raised, sim.warned
@@ -1104,15 +1120,14 @@ class SparseEvaluator:
                     evaluated[i, sl] = alive
                 sim = self._simulate(batch, k, run, mu, keep_state=keep_raw,
                                      stop_early=first_failure and not keep_raw)
-                buf, at = sim.buf[:, :h], k + np.arange(h)[None, :]
+                last, at = None, k + np.arange(h)[None, :]
                 if first_failure:
                     # a sample stops at its first failing step (with the flags of real
                     # lifts): its later rows repeat that one
                     stop = np.where(sim.stop & (sim.stop_step < h), sim.stop_step, h - 1)
                     last = np.minimum(np.arange(h)[None, :], stop[:, None])
-                    buf = np.take_along_axis(buf, last[:, :, None], axis=1)
                     at = k + last
-                self._score(buf, mu, sim.diverged, out, i, sl, at=at)
+                self._score(sim.scored(h, last), sim.diverged, out, i, sl, at=at)
                 self._flags(out, i, sl, sim)
                 if keep_raw:
                     raw[i, sl] = sim.buf[:, :h]
@@ -1339,7 +1354,7 @@ class SparseEvaluator:
                           failure=failure, stop=stop, stop_step=stop_step,
                           slip=np.where(valid, slip, 0.0).max(axis=1, initial=0.0),
                           excursion=decided.excursion, state=state,
-                          sticking=decided.sticking & ~diverged)
+                          sticking=decided.sticking & ~diverged, signals=decided.signals)
 
     def _decide(self, buf: np.ndarray, slip: np.ndarray, length: np.ndarray, mu: np.ndarray,
                 k: int, *, final: bool) -> _Decision:
@@ -1394,7 +1409,7 @@ class SparseEvaluator:
         return _Decision(failure=failure, stop=(stop_kind > 0) & ~sticking,
                          stop_step=stop_step,
                          excursion=excursion * self.twin.model.opt.timestep, follow=follow,
-                         sticking=sticking)
+                         sticking=sticking, signals=sig)
 
     def _first_failure(self, term_c: np.ndarray, term_m: np.ndarray, slipped: np.ndarray,
                        valid: np.ndarray, in_horizon: np.ndarray, length: np.ndarray, p: int,
@@ -1479,21 +1494,18 @@ class SparseEvaluator:
             self._nominal_rel[missing] = _object_in_grippers(xpos[None], xmat[None], g,
                                                              np.arange(g))[0]
 
-    def _score(self, buf: np.ndarray, mu: np.ndarray | float, diverged: np.ndarray,
-               out: dict[str, np.ndarray], i: int, sl: slice, *, at: np.ndarray) -> None:
-        """Signals of buf (nsim, h, nsd), reduced over the horizon, into out[...][i, sl].
+    def _score(self, sig: Signals, diverged: np.ndarray, out: dict[str, np.ndarray], i: int,
+               sl: slice, *, at: np.ndarray) -> None:
+        """Signals (leading (nsim, h)), reduced over the horizon, into out[...][i, sl].
 
-        ``at`` (1, h) or (nsim, h) gives the recording step of each row of buf. Where the
-        nominal run carries the object off its support there, the grip must hold it whatever
-        the sample does (a heavy object that sinks back onto the table has failed to lift,
-        not become safe).
+        ``at`` (1, h) or (nsim, h) gives the recording step of each row. The signals are
+        those the decision computed (:meth:`_decide`), with the nominal run's carried flags:
+        where the nominal run carries the object off its support, the grip must hold it
+        whatever the sample does (a heavy object that sinks back onto the table has failed
+        to lift, not become safe).
         """
-        twin, cp = self.twin, self.twin.scenario.cost
-        mu = np.asarray(mu, dtype=np.float64)
-        with np.errstate(over="ignore", invalid="ignore"):
-            sig = twin.signals(buf, mu=mu[:, None] if mu.ndim == 1 else mu,
-                               carried=self._carried[at])  # leading (nsim, h)
-        nsim = buf.shape[0]
+        cp = self.twin.scenario.cost
+        nsim = sig.cost.shape[0]
         rows = np.arange(nsim)
         cost = sig.cost
         trusted = self._trusted_at(np.asarray(at)[:, 0])  # per row of at: (1,) or (nsim,)
