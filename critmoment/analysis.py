@@ -33,7 +33,6 @@ from critmoment.exceptions import ParameterError
 from critmoment.feasibility import FeasibilityReport, check_fit, preflight
 from critmoment.groundtruth import NominalReference, brute_force, reference_from_recording
 from critmoment.moments import Moment, MomentDetector, MomentLabel
-from critmoment.prefix import SharedPrefix
 from critmoment.recording import Recording, model_hash, rollout
 from critmoment.scenario import Scenario
 from critmoment.trajectory import Trajectory, input_identity
@@ -446,7 +445,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_cost = float(res_all.worst_cost()[0]) if steps.size else 0.0
         res = _select_samples(res_all, slice(1, None))
     dopt = decision_options(opt, threshold)
-    roll = _Rollouts(trajectory, twin, opt.nthread, recording=rec, shared=evaluator.prefix)
+    roll = _Rollouts(trajectory, twin, opt.nthread, recording=rec)
 
     def alongside():
         # the critical values and the searches (mostly Python) while the samples' own runs
@@ -899,7 +898,7 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
     box = twin.scenario.box
     near_cost = (options.verify if options.verify is not None else 0.8) * options.threshold
     first = dict(region)
-    roll = _Rollouts(trajectory, twin, nthread, reference, shared=evaluator.prefix)
+    roll = _Rollouts(trajectory, twin, nthread, reference)
     n_sparse = n_rollouts = n_chained = 0
     current: dict | None = vd.round_inward(first, box)
     pts = np.zeros((0, box.ndim))
@@ -979,10 +978,9 @@ class _Rollouts:
 
     def __init__(self, trajectory: Trajectory, twin: Twin, nthread: int,
                  reference: NominalReference | None = None, chunk: int = 16,
-                 recording: Recording | None = None, shared: SharedPrefix | None = None):
+                 recording: Recording | None = None):
         self.trajectory, self.twin, self.nthread = trajectory, twin, nthread
         self.reference, self.chunk, self.recording = reference, chunk, recording
-        self.shared = shared
         self._lock = threading.Lock()
 
     def nominal(self) -> NominalReference | None:
@@ -996,7 +994,7 @@ class _Rollouts:
     def __call__(self, points: np.ndarray, nthread: int | None = None) -> np.ndarray:
         nthread = self.nthread if nthread is None else nthread
         bf = brute_force(self.trajectory, twin=self.twin, samples=points, nthread=nthread,
-                         reference=self.nominal(), chunk=self.chunk, shared=self.shared)
+                         reference=self.nominal(), chunk=self.chunk)
         self.reference = bf.reference
         return bf.failed
 

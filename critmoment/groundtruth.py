@@ -60,7 +60,6 @@ import numpy as np
 
 from critmoment.actuators import common_ancestor
 from critmoment.exceptions import ParameterError
-from critmoment.prefix import SharedPrefix
 from critmoment.recording import (
     batched_rollouts,
     ends_completed,
@@ -530,15 +529,12 @@ class NominalReference:
         completed: it completes the task.
         n_steps: physics steps of the trajectory.
         nominal: the nominal parameter values, (k,).
-        sensordata: its readings on the brute force's model (T, nsd), or None (then no
-            shared prefix: see :func:`brute_force`).
     """
 
     frames: _Frames
     completed: bool
     n_steps: int
     nominal: np.ndarray
-    sensordata: np.ndarray | None = None
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -580,8 +576,7 @@ class BruteForce:
 
 def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
                 criteria: OutcomeCriteria = OutcomeCriteria(), chunk: int = 16,
-                nthread: int = 0, reference: NominalReference | None = None,
-                shared: SharedPrefix | None = None) -> BruteForce:
+                nthread: int = 0, reference: NominalReference | None = None) -> BruteForce:
     """Run the whole trajectory once per parameter sample and classify each real outcome.
 
     The samples run in chunks of at most ``chunk`` simulations through
@@ -600,12 +595,6 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
         chunk: most simulations per batch call.
         nthread: threads (0: all CPUs).
         reference: the nominal run from an earlier call, or None to run it.
-        shared: the recording's shared prefix (:class:`critmoment.prefix.SharedPrefix`),
-            or None. With it and a ``reference`` that has its readings, the samples' runs
-            start where the prefix ends, their first steps composed from the nominal run
-            and the scene without the robot: the same runs to the bit (checked there), for
-            less stepping. The audit's own rollouts use it; the validation's ground truth
-            does not.
 
     Returns:
         The :class:`BruteForce` result.
@@ -631,22 +620,10 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
     everything = samples if reference is not None else np.vstack([box.nominal[None, :],
                                                                   samples])
     frames_ref = None if reference is None else reference.frames
-    start = None
-    if shared is not None and reference is not None and reference.sensordata is not None:
-        start = shared.start(everything, nthread=nthread)
-    step = 0 if start is None else start.step
     parts, diverged = [], []
-    for at, out, _mu in batched_rollouts(twin, state0 if start is None else start.states,
-                                         controls[step:], everything, model=probe.model,
-                                         chunk=chunk, nthread=nthread):
-        sensordata = out["sensordata"]
-        if start is not None:  # the first steps, composed (critmoment.prefix)
-            rows = slice(at, at + sensordata.shape[0])
-            sensordata = np.concatenate([start.sensordata(reference.sensordata, rows),
-                                         sensordata], axis=1)
-            out["diverged_step"] = np.where(out["diverged_step"] >= 0,
-                                            out["diverged_step"] + step, -1)
-        frames = _Frames.read(twin, probe, sensordata)
+    for _, out, _mu in batched_rollouts(twin, state0, controls, everything, model=probe.model,
+                                       chunk=chunk, nthread=nthread):
+        frames = _Frames.read(twin, probe, out["sensordata"])
         if frames_ref is None:
             frames_ref = frames.row(0)
         parts.append(_classify_frames(frames, frames_ref, controls, probe, dt, criteria,
@@ -721,7 +698,7 @@ def reference_from_recording(recording, twin: Twin,
     own = _classify_frames(frames, ref, controls, probe, dt, criteria, np.zeros(1, bool),
                            np.full(1, -1, np.int64))
     return NominalReference(frames=ref, completed=bool(own.completed[0]), n_steps=n,
-                            nominal=box.nominal.copy(), sensordata=full[0])
+                            nominal=box.nominal.copy())
 
 
 @dataclasses.dataclass(frozen=True)

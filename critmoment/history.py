@@ -37,7 +37,6 @@ import scipy.ndimage
 
 from critmoment.exceptions import ParameterError
 from critmoment.groundtruth import OutcomeCriteria, tracking_tolerances
-from critmoment.prefix import PrefixStart
 from critmoment.sparse import SparseEvaluator, _object_in_grippers
 from critmoment.task import TaskEvidence
 from critmoment.twin import STATE_SPEC
@@ -179,8 +178,7 @@ class ChainedResult:
             sample's own state, (m, n) int8 (−1 where the sample had already failed).
         start: the step the chain starts from (the nominal state there).
         end: the step the chain stops at (the end of the run).
-        stepped: physics steps each sample took at most in the twin's model (from the end
-            of the shared prefix, :mod:`critmoment.prefix`, when it has one).
+        stepped: physics steps each sample took at most.
         slip_step: first step of the first slip of the object in its holding gripper over
             the whole chain (the ground truth's rule, :func:`critmoment.groundtruth.grip_slip`
             with its tolerance and duration), −1 if none, (n,) int64.
@@ -367,11 +365,11 @@ class _Watch:
         rule at the end decides a run that lost its object)."""
         return (self.slip_step >= 0) | (self.motor_step >= 0) | (self.diverged_step >= 0)
 
-    def __call__(self, k: int, ids: np.ndarray, sensordata: np.ndarray,
-                 xpos: np.ndarray | None, xmat: np.ndarray | None, qpos: np.ndarray) -> None:
+    def __call__(self, k: int, ids: np.ndarray, sensordata: np.ndarray, xpos: np.ndarray,
+                 xmat: np.ndarray, qpos: np.ndarray) -> None:
         ev = self.ev
         ids = np.asarray(ids, dtype=np.int64)
-        c, s = qpos.shape[:2]
+        c, s = xpos.shape[:2]
         if c == 0 or s == 0:
             return
         # a simulation that went non-finite without MuJoCo raising has diverged
@@ -388,8 +386,7 @@ class _Watch:
         nominal_held = ev._held[k:k + s]                            # (s, G)
         both = held & nominal_held[None]
         slip = np.zeros((c, s))
-        # without poses (a shared prefix: the nominal run holds nothing there) no slip
-        if ev._anchors.size and xpos is not None:
+        if ev._anchors.size:
             rel = _object_in_grippers(xpos, xmat, ev.twin.object_body_id, ev._anchors)
             diff = rel - ev._nominal_positions(k, s)[None]           # (c, s, G, 3)
             found = self.found[ids]
@@ -691,12 +688,11 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
         if not kept or k >= kept[-1] + h:
             kept.append(k)
     failure = np.full((len(kept), n), -1, dtype=np.int8)
-    shared = _shared_start(ev, samples, first, kept)
     stepped = 0
     for lo in range(0, n, ev.chunk):
         rows = np.arange(lo, min(n, lo + ev.chunk))
         stepped = max(stepped, _chain_chunk(ev, watch, samples[rows], rows, kept, first, end,
-                                            block, failure, shared))
+                                            block, failure))
     # a sample that reached the end of the run, the task's own success rule decides (the
     # ground truth's NOT_COMPLETED: placed off the goal, not released, still moving)
     reached = ~(failure > 0).any(axis=0) & ~watch.failed()
@@ -711,35 +707,13 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
                          diverged_step=watch.diverged_step)
 
 
-def _shared_start(ev: SparseEvaluator, samples: np.ndarray, first: int, kept: list[int]
-                  ) -> PrefixStart | None:
-    """The samples' own states where the shared prefix ends (:mod:`critmoment.prefix`), for
-    a chain from step 0 whose first moment is no earlier and where the nominal run holds
-    nothing before it; else None."""
-    if first != 0 or ev.prefix is None:
-        return None
-    step = ev.prefix.plan()
-    if step == 0 or (kept and kept[0] < step) or ev._held[:step].any():
-        return None
-    busy = ev.busy is not None and ev.busy()
-    return ev.prefix.start(samples, nthread=1 if busy else ev.nthread)
-
-
 def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: np.ndarray,
                  kept: list[int], first: int, end: int, block: int,
-                 failure: np.ndarray, shared: PrefixStart | None = None) -> int:
+                 failure: np.ndarray) -> int:
     """Run one chunk of samples (``rows`` of the whole) along the chain; fill ``failure``
-    and the watch; the steps taken. With ``shared``, the samples go on from their own
-    states at its step, their readings before it streamed to the watch first."""
+    and the watch; the steps taken."""
     batch, mu = ev._batch(samples)
-    if shared is None:
-        batch.state[:] = ev._start_row(first)
-    else:
-        start = shared.states[rows]
-        start[:, ev._ctrl] = ev._controls[shared.step]
-        batch.state[:] = start
-        watch(first, rows, shared.sensordata(ev._sensordata, rows), None, None,
-              shared.qpos[rows])
+    batch.state[:] = ev._start_row(first)
     alive = np.ones(rows.size, bool)
     raised = np.zeros(rows.size, bool)
 
@@ -756,7 +730,7 @@ def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: 
                    & (watch.diverged_step[rows[ids]] < 0)]
         watch.diverged_step[rows[gone]] = k
 
-    current = taken = first if shared is None else shared.step
+    current = taken = first
     for j, k in enumerate([*kept, None]):
         target = end if k is None else k
         while current < target and alive.any():
@@ -783,5 +757,5 @@ def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: 
         taken = max(taken, current)
         alive[run[sim.failure[run] > 0]] = False
         alive &= ~watch.failed()[rows]
-    return taken - (first if shared is None else shared.step)
+    return taken - first
 

@@ -236,7 +236,7 @@ def batched_rollouts(twin: Twin, state0: np.ndarray, controls: np.ndarray, sampl
 
     Args:
         twin: the twin.
-        state0: initial integration state, (nstate,), or one per sample, (n, nstate).
+        state0: initial integration state, (nstate,).
         controls: controls per physics step, (T, nu).
         samples: parameter values, (n, k).
         model: the twin's model or one with sensors appended after the twin's
@@ -260,8 +260,7 @@ def batched_rollouts(twin: Twin, state0: np.ndarray, controls: np.ndarray, sampl
         if batch is None:
             batch = batches[rows.shape[0]] = mujoco.batch.Batch(model, rows.shape[0],
                                                                 nthread=nthread)
-        first = state0 if np.ndim(state0) == 1 else state0[start:start + rows.shape[0]]
-        out = simulate(twin, first, controls, samples=rows, nthread=nthread, batch=batch)
+        out = simulate(twin, state0, controls, samples=rows, nthread=nthread, batch=batch)
         friction = batch.expanded("geom_friction")
         mu = (np.full(rows.shape[0], twin.object_friction()) if friction is None
               else friction[:, twin.object_geom_id, 0].copy())

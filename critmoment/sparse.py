@@ -105,7 +105,6 @@ import numpy as np
 from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
 from critmoment.params import UncertaintyBox
-from critmoment.prefix import SharedPrefix
 from critmoment.scenario import CostParams
 from critmoment.twin import STATE_SPEC, Signals, Twin, carried_flags
 
@@ -777,23 +776,6 @@ class SparseEvaluator:
         self._chain_starts: dict[int, int] = {}
         self._written: dict[tuple[int, int], np.ndarray] = {}
         self._mu: dict[tuple[int, int], np.ndarray | float] = {}
-        #: the samples' own runs' shared prefix (:class:`critmoment.prefix.SharedPrefix`;
-        #: None without the recording's readings), shared with forks
-        self.prefix = (SharedPrefix(twin, self._states, self._controls,
-                                    np.asarray(self._sensordata, dtype=np.float64),
-                                    limit=self.n_steps, onsets=self._robot_onset)
-                       if self._sensordata is not None else None)
-
-    def _robot_onset(self, parameters: Sequence[int], limit: int) -> int:
-        """The first step (up to ``limit``) at which one of the box's ``parameters``
-        (indices) can change the nominal motion (:meth:`Parameter.onset
-        <critmoment.params.Parameter.onset>`)."""
-        from critmoment.history import NominalOnsets
-
-        run = NominalOnsets(self, limit)
-        box = self.twin.scenario.box
-        return min(min(box.parameters[j].onset(self.twin._param_ids[j], run), limit)
-                   for j in parameters)
 
     def fork(self, nthread: int | None = None, *, prefill: bool = True) -> SparseEvaluator:
         """An evaluator of the same recording and settings with simulations and caches of

@@ -254,7 +254,7 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     # the audit's own path (critmoment.analysis.sample_runs): which samples their own
     # rollouts and chains decide, then which fail (critmoment.verdict.failing_samples)
     # the audit's, its nominal reference read from the frequent rollout
-    roll = _Rollouts(traj, twin, nthread, chunk=chunk, recording=rec, shared=evaluator.prefix)
+    roll = _Rollouts(traj, twin, nthread, chunk=chunk, recording=rec)
     runs, _ = sample_runs(evaluator, steps, samples, res, dopt, roll=roll,
                           nominal_completed=nominal_completed, nthread=nthread,
                           stage=lambda name: _Timer(timings, name, _quiet))
