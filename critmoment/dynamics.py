@@ -1174,7 +1174,7 @@ def trajectory_load_bound(recording, twin, *, masses: Sequence[float] | np.ndarr
         ParameterError: negative masses, or a saturation outside (0, 1].
     """
     from critmoment.sparse import grip_frames
-    from critmoment.twin import STATE_SPEC
+    from critmoment.twin import STATE_SPEC, state_slice
 
     model = twin.model
     sc = twin.scenario
@@ -1196,9 +1196,8 @@ def trajectory_load_bound(recording, twin, *, masses: Sequence[float] | np.ndarr
     dt = float(recording.dt)
     states = np.asarray(recording.states, dtype=float)
     n_steps = states.shape[0] - 1
-    offset = mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_TIME)
-    qpos = states[:n_steps, offset:offset + model.nq]
-    qvel_all = states[:, offset + model.nq:offset + model.nq + model.nv]
+    qpos = states[:n_steps, state_slice(model, mujoco.mjtState.mjSTATE_QPOS)]
+    qvel_all = states[:, state_slice(model, mujoco.mjtState.mjSTATE_QVEL)]
     qvel = qvel_all[:n_steps]
     qacc = (qvel_all[1:] - qvel_all[:-1]) / dt
     rot = np.flatnonzero(twin.motors)

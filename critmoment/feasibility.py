@@ -352,8 +352,8 @@ def check_feasibility(recording: Recording, twin: Twin, *,
     if controls.shape != (n, m.nu):
         raise ParameterError(f"recording: expected controls of shape ({n}, {m.nu}) for this "
                              f"twin, got {controls.shape}: recorded with another scenario?")
-    offset = mujoco.mj_stateSize(m, mujoco.mjtState.mjSTATE_TIME)  # state = [time, qpos, ...]
     states = np.asarray(recording.states)
+    qpos = twin.qpos(states)
     force = np.asarray(recording.signals.actuator_force)
     grippers = _gripper_actuators(twin)
     joints, problems, notes, held = [], [], [], []
@@ -382,7 +382,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             target = (gain * controls[:, a] + b0) / (-b1) / gear
             if m.jnt_limited[j]:
                 target = np.clip(target, *m.jnt_range[j])
-            q = states[1:n + 1, offset + int(m.jnt_qposadr[j])]
+            q = qpos[1:n + 1, int(m.jnt_qposadr[j])]
             lag = _tracking_error(q, target, int(round(options.delay / dt)))
             k = int(np.argmax(lag))
             max_lag, max_lag_time = float(lag[k]), k * dt

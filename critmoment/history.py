@@ -137,7 +137,7 @@ def estimate_drift(evaluator: SparseEvaluator, steps: Any, samples: Any, *, hori
     m, n = len(traced), samples.shape[0]
     out = {name: np.zeros((m, n)) for name in ("drift", "drift_rate", "lag", "lag_rate")}
     remaining = np.zeros(m)
-    time_offset = 1  # mjSTATE_INTEGRATION starts with the time
+    qpos_all = twin.qpos(ev._states)
     for i, k in enumerate(traced):
         g = int(holder[k])
         tr = ev.trace(k, samples, nstep=horizon)
@@ -151,7 +151,7 @@ def estimate_drift(evaluator: SparseEvaluator, steps: Any, samples: Any, *, hori
         out["drift_rate"][i] = np.linalg.norm(disp[:, -1] - disp[:, -1 - half], axis=-1) / (
             half * dt)
         # qpos is recorded after the step's integration: the nominal states one step on
-        q_nom = ev._states[k + 1:k + 1 + s, time_offset + qadr]  # (s, J)
+        q_nom = qpos_all[k + 1:k + 1 + s, qadr]  # (s, J)
         dq = np.abs(tr["qpos"][:, :, qadr] - q_nom[None])
         out["lag"][i] = dq[:, -1].max(axis=-1)
         out["lag_rate"][i] = np.abs(dq[:, -1] - dq[:, -1 - half]).max(axis=-1) / (half * dt)
@@ -342,7 +342,7 @@ class _Watch:
         self.act = motors
         self.qadr = model.jnt_qposadr[model.actuator_trnid[motors, 0]]
         self.gear = model.actuator_gear[motors, 0]
-        self.qoffset = mujoco.mj_stateSize(model, mujoco.mjtState.mjSTATE_TIME)
+        self.nominal_q = twin.qpos(ev._states)  # the nominal run's positions
         # per column [rad or m] (an arm's slide axis has its own tolerance)
         self.tracking_tolerance = 1.0 / tracking_tolerances(criteria, twin.slide[motors])
         # per rule: its running count of steps (n, columns), the steps it must last, and
@@ -413,7 +413,7 @@ class _Watch:
             load = np.abs(sensordata[..., self.force_adr] / self.limits)
         saturated = load >= self.saturation
         target = ev._controls[k:k + s][:, self.act]                          # (s, r)
-        nominal = ev._states[k + 1:k + s + 1, self.qoffset + self.qadr] * self.gear
+        nominal = self.nominal_q[k + 1:k + s + 1, self.qadr] * self.gear
         q = qpos[..., self.qadr] * self.gear                                 # (c, s, r)
         excess = np.abs(q - target[None]) - np.abs(nominal - target)[None]
         lagging = excess > self.tracking_tolerance

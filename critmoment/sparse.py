@@ -106,7 +106,7 @@ from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
 from critmoment.params import UncertaintyBox
 from critmoment.scenario import CostParams
-from critmoment.twin import STATE_SPEC, Signals, Twin, carried_flags
+from critmoment.twin import STATE_SPEC, Signals, Twin, carried_flags, state_slice
 
 __all__ = [
     "SparseMode",
@@ -806,17 +806,7 @@ class SparseEvaluator:
 
     def _component(self, spec: mujoco.mjtState) -> slice:
         """Slice of a state component inside an mjSTATE_INTEGRATION row."""
-        model = self.twin.model
-        offset = 0
-        for bit in range(mujoco.mjtState.mjNSTATE):
-            part = 1 << bit
-            if not int(STATE_SPEC) & part:
-                continue
-            size = mujoco.mj_stateSize(model, part)
-            if part == int(spec):
-                return slice(offset, offset + size)
-            offset += size
-        raise ParameterError(f"state component {spec} is not part of {STATE_SPEC}")
+        return state_slice(self.twin.model, spec)
 
     # -- validation ------------------------------------------------------------
     def contact_trusted(self, steps: Any) -> np.ndarray:

@@ -133,6 +133,25 @@ def lifted_flags(carried: np.ndarray, height: np.ndarray, rise: float = LIFT_RIS
     return out
 
 
+def state_slice(model: mujoco.MjModel, component: mujoco.mjtState | int) -> slice:
+    """Where a state component (``mjSTATE_QPOS``, ``mjSTATE_QVEL``, ...) sits in a
+    :data:`STATE_SPEC` row of ``model``.
+
+    Raises:
+        ParameterError: the component is not part of ``STATE_SPEC``.
+    """
+    offset = 0
+    for bit in range(mujoco.mjtState.mjNSTATE):
+        part = 1 << bit
+        if not int(STATE_SPEC) & part:
+            continue
+        size = mujoco.mj_stateSize(model, part)
+        if part == int(component):
+            return slice(offset, offset + size)
+        offset += size
+    raise ParameterError(f"state component {component} is not part of {STATE_SPEC}")
+
+
 def _sensor_name(*parts: str) -> str:
     return "critmoment:" + ":".join(parts)
 
@@ -361,9 +380,7 @@ class Twin:
     def qpos(self, states: np.ndarray) -> np.ndarray:
         """The positions in integration states (T, nstate) of ``STATE_SPEC``, (T, nq) (a
         view)."""
-        # mjSTATE_INTEGRATION starts with the time, then qpos
-        offset = mujoco.mj_stateSize(self.model, mujoco.mjtState.mjSTATE_TIME)
-        return np.asarray(states)[:, offset:offset + self.model.nq]
+        return np.asarray(states)[:, state_slice(self.model, mujoco.mjtState.mjSTATE_QPOS)]
 
     # -- actions and state ------------------------------------------------------------
     def controls(self, actions: np.ndarray) -> np.ndarray:
