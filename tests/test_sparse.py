@@ -860,3 +860,28 @@ def test_busy_batches_take_one_thread_and_bad_requests_are_refused(scenario, twi
         ev.evaluate_many([(steps, samples), ([rec.n_steps + 5], samples)])
     with pytest.raises(ParameterError):
         ev.evaluate_many([(steps, np.full((1, 2), np.nan))])
+
+
+def test_the_scores_read_the_signals_the_decision_computed(twin, demo_recording):
+    # the decision's signals, picked per row, are those of the picked readings: scoring
+    # them again from the readings (as it was done before) gives the same values to the bit
+    ev = SparseEvaluator(demo_recording, twin)
+    box = twin.scenario.box
+    samples = np.vstack([box.low, box.nominal, box.high, sparse.sweep_samples(box, n=3)])
+    h = ev.horizon
+    for k in (1466, 1707, 2290):
+        batch, mu = ev._batch(samples)
+        sim = ev._simulate(batch, k, np.arange(batch.nsim), mu, keep_state=False,
+                           stop_early=True)
+        stop = np.where(sim.stop & (sim.stop_step < h), sim.stop_step, h - 1)
+        last = np.minimum(np.arange(h)[None, :], stop[:, None])
+        for pick in (None, last):
+            rows = (np.broadcast_to(np.arange(h), (samples.shape[0], h)) if pick is None
+                    else pick)
+            buf = np.take_along_axis(sim.buf[:, :h], rows[:, :, None], axis=1)
+            with np.errstate(over="ignore", invalid="ignore"):
+                again = twin.signals(buf, mu=mu[:, None], carried=ev._carried[k + rows])
+            scored = sim.scored(h, pick)
+            for f in dataclasses.fields(again):
+                assert np.array_equal(getattr(scored, f.name), getattr(again, f.name),
+                                      equal_nan=True), (k, f.name)
