@@ -888,12 +888,17 @@ class SparseEvaluator:
         return samples
 
     # -- batches -----------------------------------------------------------------
+    def _threads(self) -> int:
+        """MuJoCo threads for a batch now (0: all CPUs): one while :attr:`busy` says
+        another thread steps beside this one, else :attr:`nthread`."""
+        return 1 if self.busy is not None and self.busy() else self.nthread
+
     def _batch(self, samples: np.ndarray) -> tuple[mujoco.batch.Batch, np.ndarray | float]:
         """A batch with ``samples`` written (cached), and the object friction per simulation.
         While :attr:`busy` says another thread steps beside this one, the batch has one
         MuJoCo thread (the cores are taken: more threads only contend for them)."""
         n = samples.shape[0]
-        threads = 1 if self.busy is not None and self.busy() else self.nthread
+        threads = self._threads()
         key = (n, threads)
         batch = self._batches.get(key)
         if batch is None:
@@ -1004,8 +1009,7 @@ class SparseEvaluator:
         threads left them idle (each sample's evaluation is its own: the result is the
         same). Two, not one per CPU: the deciding holds Python's lock."""
         n = samples.shape[0]
-        threads = 1 if self.busy is not None and self.busy() else (
-            self.nthread or os.cpu_count() or 1)
+        threads = self._threads() or os.cpu_count() or 1
         parts = min(2, threads, n // _SPLIT_LEAST)
         if parts <= 1:
             return self._evaluate(steps, samples, keep_raw=False, first_failure=True)
