@@ -662,9 +662,8 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     verifying = _Once(verify)
 
     def physics():
-        out = chain()
         verifying.run()
-        return out
+        return chain()
 
     with _pool(nthread) as pool:
         chaining = pool.submit(physics)

@@ -269,6 +269,8 @@ class Twin:
                 a, dim = adr(_sensor_name("grip", g.name, geom))
                 blocks.append(np.arange(a, a + dim))
             self._grip_adr.append(np.concatenate(blocks))
+        # each slot's first value says whether it holds a contact: read only those
+        self._grip_found = [block[0::4] for block in self._grip_adr]
         self._support_adr = np.array([adr(_sensor_name("support", geom))[0]
                                       for geom in sc.support_geoms])
         a, _ = adr(_sensor_name("object_acc"))
@@ -540,8 +542,7 @@ class Twin:
         The contact part of :meth:`signals`, without the forces."""
         sd = np.asarray(sensordata, dtype=np.float64)
         lead = sd.shape[:-1]
-        touch = [(sd[..., adr].reshape(lead + (-1, 4))[..., 0] > 0).any(axis=-1)
-                 for adr in self._grip_adr]
+        touch = [(sd[..., found] > 0).any(axis=-1) for found in self._grip_found]
         gripper = (np.stack(touch, axis=-1) if touch else np.zeros(lead + (0,), bool))
         return gripper, (sd[..., self._support_adr] > 0).any(axis=-1)
 

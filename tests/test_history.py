@@ -528,3 +528,22 @@ def test_the_chains_decisions_do_not_depend_on_its_block_length(twin, demo_recor
         np.testing.assert_array_equal(other.to_confirm, runs[0].to_confirm)
         np.testing.assert_array_equal(other.near(0.8), runs[0].near(0.8))
     assert runs[0].failed.any() and not runs[0].failed.all()
+
+
+def test_a_chain_shared_out_to_two_threads_is_the_chain_in_one(twin, demo_recording):
+    # each sample's chain is its own: two Python threads, each with one MuJoCo thread and
+    # half the samples, give every field of the result to the bit
+    samples = np.array([[0.05, 1.0], [0.6, 0.3], [3.0, 0.5], [8.0, 1.4], [0.3, 0.9]])
+    steps = [1946, 2290, 3406]
+    one = history.chained_failures(sparse.SparseEvaluator(demo_recording, twin, nthread=1),
+                                   steps, samples, block=1000)
+    ev = sparse.SparseEvaluator(demo_recording, twin, nthread=2)
+    assert history._split_parts(ev, samples.shape[0]) == 2
+    two = history.chained_failures(ev, steps, samples, block=1000)
+    for f in dataclasses.fields(history.ChainedResult):
+        a, b = getattr(one, f.name), getattr(two, f.name)
+        if isinstance(a, np.ndarray):
+            np.testing.assert_array_equal(b, a, err_msg=f.name)
+        else:
+            assert b == a, f.name
+    assert one.failed.any() and not one.failed.all()
