@@ -789,6 +789,44 @@ def test_a_contact_failure_inside_an_elliptic_cone_is_a_sticking_one(scenario, t
     assert (pres.failure == sparse.Failure.CONTACT).any() and not pres.sticking_failure.any()
 
 
+def test_a_contact_failure_whose_object_stayed_still_is_a_sticking_one(scenario, twin,
+                                                                     monkeypatch):
+    """On an elliptic cone a contact failure whose object, measured in its holding gripper
+    at every step decided, moved no more than STILL_SLIP is a sticking one whatever its
+    force ratio; one measured at no step (two grippers hold it) is not; and on the demo,
+    whose contact failures all slid 20 µm or more, the default changes nothing."""
+    from critmoment import analysis, demos
+
+    traj = demos.scripted_transfer(3, twin=twin)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        rec = rollout.rollout(traj, twin=twin)
+    _, steps = analysis.audit_moments(rec, twin, SparseEvaluator(rec, twin), 8)
+    samples = sparse.sweep_samples(scenario.box, n=96, seed=3)
+
+    def sweep(still):
+        monkeypatch.setattr(sparse, "STILL_SLIP", still)
+        return SparseEvaluator(rec, twin).evaluate(steps, samples)
+
+    default, none, every = sweep(sparse.STILL_SLIP), sweep(0.0), sweep(1.0)
+    contact = none.failure == sparse.Failure.CONTACT
+    margin = contact & (none.fos_grasp >= 1 + sparse.STICKING_MARGIN)
+    np.testing.assert_array_equal(none.sticking_failure, margin & none.sticking_failure)
+    np.testing.assert_array_equal(default.sticking_failure, none.sticking_failure)
+    np.testing.assert_array_equal(default.failure, none.failure)
+    # with any slip counting as still, every contact failure at a moment whose decided
+    # steps are all measured (one gripper alone holds the object) becomes sticking
+    ev = SparseEvaluator(rec, twin)
+    alone = ev._alone.any(axis=-1)
+    h = ev.horizon + ev.persistence_steps
+    measured = np.array([alone[k:k + h].all() for k in steps])
+    unmeasured = np.array([not alone[k:k + h].any() for k in steps])
+    assert (contact & measured[:, None]).any() and (contact & unmeasured[:, None]).any()
+    assert every.sticking_failure[contact & measured[:, None]].all()
+    np.testing.assert_array_equal(every.sticking_failure[contact & unmeasured[:, None]],
+                                  none.sticking_failure[contact & unmeasured[:, None]])
+
+
 def test_pairs_stepped_together_equal_each_moment_alone(scenario, twin, demo_recording):
     # evaluate (no raw readings) steps every (moment, sample) pair in one batch, each from
     # its own moment; keep_raw steps one moment at a time: the same values, to the bit,
