@@ -225,7 +225,7 @@ STICKING_MARGIN = 0.05
 #: whose object, measured at every step decided, moved no more is a sticking one whatever
 #: its force ratio (the Sawyer + Rethink gripper's elliptic narrow box, seed 1: grasps that
 #: really hold moved 0.8–7.4 µm over their windows, grasps that really slip 98 µm and
-#: more; every contact failure of the demo's seeds 0 and 3, 882, moved 20 µm or more)
+#: more; every contact failure of the demo's sweeps of seeds 0 and 3 moved 20 µm or more)
 STILL_SLIP = 1e-5
 
 
@@ -358,7 +358,9 @@ class SparseResult:
             elliptic friction cone while the grasp's force ratio stayed at least
             ``1 + STICKING_MARGIN`` over every step decided: the grip's friction never
             reached its limit, so the object has not slipped, and the cost crossed the
-            threshold through the margin alone (a grasp that really slips sits on the cone);
+            threshold through the margin alone (a grasp that really slips sits on the cone),
+            or while the object, measured in its holding gripper at every step decided,
+            moved no more than ``STILL_SLIP`` (at its friction limit, but not sliding);
             (m, n) bool. Such a failure does not stop a sample, and a sample that fails only
             so (``failed_sticking_only``) is decided by its own full rollout.
         failure: why each pair fails (:class:`Failure` values), (m, n) int8; −1 where not
