@@ -1411,7 +1411,9 @@ class SparseEvaluator:
             with np.errstate(invalid="ignore"):
                 inside = np.where(valid, sig.fos_grasp, np.inf).min(axis=1) >= (
                     1.0 + STICKING_MARGIN)
-            measured = (self._alone[at].any(axis=-1) | ~valid).all(axis=1)
+            # watched for at least the persistence time, stepping (a solve moves nothing)
+            measured = ((self._alone[at].any(axis=-1) | ~valid).all(axis=1)
+                        & (length >= max(p, 2)) & (self.mode is SparseMode.STEP))
             still = measured & (np.where(valid, slip, 0.0).max(axis=1) <= STILL_SLIP)
             sticking = ((inside | still) & (failure == Failure.CONTACT)
                         & (stop_kind == Failure.CONTACT))
