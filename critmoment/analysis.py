@@ -613,9 +613,10 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     The samples the sweep cannot decide (:func:`critmoment.verdict.samples_to_rerun`) get
     their own full rollout; those that pass without one are chained (:func:`chain_samples`),
     and the chained samples it names go on to their own full rollout. With ``nthread`` other
-    than 1 the chain and then the rollouts run in a thread of their own (with the
-    evaluator's and ``roll``'s MuJoCo threads) while ``alongside`` runs in this one, which
-    then takes the rollouts if that thread has not started them.
+    than 1 the rollouts and then the chain run in a thread of their own (with the
+    evaluator's and ``roll``'s MuJoCo threads; the chain shares its samples out to two
+    Python threads, :func:`critmoment.history.chained_failures`) while ``alongside`` runs in
+    this one, which then takes the rollouts if that thread has not started them.
 
     Args:
         evaluator: the audit's sparse evaluator.
@@ -637,12 +638,12 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     moments = steps.size > 0 and sweep is not None
     reruns = vd.samples_to_rerun(sweep, options, nominal_completed=nominal_completed)
     rerun = reruns.any
-    # one physics thread beside this one, with all of MuJoCo's threads, running the chain
-    # and then the rollouts, unless this thread, done with ``alongside``, has taken them:
-    # three busy threads on the cores, not five (the chain and the rollouts each in a
-    # thread of its own with all MuJoCo threads: 3.3-4.9 s against 4.0-5.5 s, and about 1 s
-    # more CPU; with one MuJoCo thread each, the chain ran on one core for its last second
-    # while the other idled; 2026-12-03, demo audit)
+    # one physics thread beside this one, with all of MuJoCo's threads, running the
+    # rollouts and then the chain (divisible across threads, it ends the overlap; a batch of
+    # 5 rollouts on 2 threads ended on one), unless this thread, done with ``alongside``,
+    # has taken the rollouts: not the chain and the rollouts each in a thread of their own
+    # with all MuJoCo threads (3.3-4.9 s against 4.0-5.5 s, and about 1 s more CPU;
+    # 2026-12-03, demo audit)
 
     def verify():
         failed = np.zeros(n, bool)
@@ -676,7 +677,7 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
             extra = alongside() if alongside is not None else None
         finally:
             evaluator.busy = None
-        verifying.run()  # this thread takes the rollouts if the chain still runs
+        verifying.run()  # this thread takes the rollouts if that thread has not
         chained, chained_failed, suspect = chaining.result()
         rerun_failed = verifying.result()
     if suspect.any() and options.verify is not None:
