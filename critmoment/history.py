@@ -28,9 +28,7 @@ on the bundled demo), so it is meant for the samples the sparse sweep predicts s
 
 from __future__ import annotations
 
-import concurrent.futures
 import dataclasses
-import os
 from typing import Any
 
 import mujoco
@@ -622,6 +620,10 @@ def chain_start(evaluator: SparseEvaluator, steps: Any) -> int:
     return start
 
 
+#: fewest samples per part when a chain is shared out to Python threads
+_SPLIT_LEAST = 2
+
+
 def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
                      start: int | None = 0,
                      criteria: OutcomeCriteria | None = None,
@@ -678,9 +680,12 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     if isinstance(block, bool) or not isinstance(block, (int, np.integer)) or block < 1:
         raise ParameterError(f"block: expected an integer >= 1 (physics steps per batch "
                              f"call), got {block!r}")
-    parts = _split_parts(ev, samples.shape[0])
-    if parts > 1:
-        return _chained_split(ev, steps, samples, first, criteria, block, parts)
+    parts = ev._shared_out(samples.shape[0], _SPLIT_LEAST, lambda fork, rows: chained_failures(
+        fork, steps, samples[rows], start=first, criteria=criteria, block=block))
+    if parts is not None:
+        # each sample's chain is its own: the result is the same as in one thread, and
+        # while one thread watches its block's records in Python the other steps
+        return _join_chains(parts, samples)
     h = ev.horizon
     # to the end of the run, as the ground truth watches it: after the release the arm
     # still retreats past an object its own history may have placed elsewhere, and a
@@ -712,38 +717,6 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
                          diverged_step=watch.diverged_step)
 
 
-#: fewest samples per part when a chain is shared out to Python threads
-_SPLIT_LEAST = 2
-
-
-def _split_parts(ev: SparseEvaluator, n: int) -> int:
-    """How many Python threads a chain of ``n`` samples is shared out to: two when the
-    evaluator may take more than one MuJoCo thread, else one."""
-    threads = ev._threads() or os.cpu_count() or 1
-    return min(2, threads, n // _SPLIT_LEAST)
-
-
-def _chained_split(ev: SparseEvaluator, steps: np.ndarray, samples: np.ndarray, first: int,
-                   criteria: OutcomeCriteria, block: int, parts: int) -> ChainedResult:
-    """:func:`chained_failures` with the samples shared out to ``parts`` Python threads,
-    each stepping its part on its share of the MuJoCo threads: while one thread watches
-    its block's records in Python, the other steps (one batch on all MuJoCo threads
-    idled them while the watch ran). Each sample's chain is its own: the result is the
-    same as in one thread."""
-    threads = ev._threads() or os.cpu_count() or 1
-    rows = np.array_split(np.arange(samples.shape[0]), parts)
-    forks = [ev.fork(nthread=max(1, threads // parts), prefill=False) for _ in rows]
-
-    def run(fork, r):
-        return chained_failures(fork, steps, samples[r], start=first, criteria=criteria,
-                                block=block)
-
-    with concurrent.futures.ThreadPoolExecutor(max_workers=parts - 1) as pool:
-        later = [pool.submit(run, f, r) for f, r in zip(forks[1:], rows[1:], strict=True)]
-        results = [run(forks[0], rows[0])] + [f.result() for f in later]
-    return _join_chains(results, samples)
-
-
 def _join_chains(parts: list[ChainedResult], samples: np.ndarray) -> ChainedResult:
     """One :class:`ChainedResult` of the chains of consecutive parts of ``samples``."""
     head = parts[0]
@@ -752,7 +725,7 @@ def _join_chains(parts: list[ChainedResult], samples: np.ndarray) -> ChainedResu
         value = getattr(head, f.name)
         if f.name == "failure":
             per_sample[f.name] = np.concatenate([p.failure for p in parts], axis=1)
-        elif f.name != "samples" and isinstance(value, np.ndarray) and f.name != "steps":
+        elif f.name not in ("samples", "steps") and isinstance(value, np.ndarray):
             per_sample[f.name] = np.concatenate([getattr(p, f.name) for p in parts])
     return dataclasses.replace(head, samples=samples,
                                stepped=max(p.stepped for p in parts), **per_sample)

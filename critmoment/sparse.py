@@ -1012,26 +1012,39 @@ class SparseEvaluator:
         return [done[key] for key in keys]
 
     def _first_failures(self, steps: np.ndarray, samples: np.ndarray) -> SparseResult:
-        """First-failure evaluation, with the samples shared out to two Python threads,
-        each stepping its part on half the MuJoCo threads: between the moments one thread
-        decides its samples in Python while the other steps, where one batch on all MuJoCo
-        threads left them idle (each sample's evaluation is its own: the result is the
-        same). Two, not one per CPU: the deciding holds Python's lock."""
-        n = samples.shape[0]
-        threads = self._threads() or os.cpu_count() or 1
-        parts = min(2, threads, n // _SPLIT_LEAST)
-        if parts <= 1:
+        """First-failure evaluation, with the samples shared out (:meth:`_shared_out`):
+        between the moments one thread decides its samples in Python while the other
+        steps, where one batch on all MuJoCo threads left them idle (each sample's
+        evaluation is its own: the result is the same)."""
+        results = self._shared_out(samples.shape[0], _SPLIT_LEAST, lambda f, r: f._evaluate(
+            steps, samples[r], keep_raw=False, first_failure=True, offset=int(r[0])))
+        if results is None:
             return self._evaluate(steps, samples, keep_raw=False, first_failure=True)
+        return _join_samples(results)
+
+    def _parts(self, n: int, least: int) -> int:
+        """How many Python threads :meth:`_shared_out` shares ``n`` samples out to: two
+        when a batch may take more than one MuJoCo thread now and each part gets at least
+        ``least`` samples, else one. Two, not one per CPU: the Python side of each part
+        holds Python's lock."""
+        threads = self._threads() or os.cpu_count() or 1
+        return min(2, threads, n // least)
+
+    def _shared_out(self, n: int, least: int,
+                    run: Callable[[SparseEvaluator, np.ndarray], Any]) -> list | None:
+        """``run(fork, rows)`` on consecutive parts of ``n`` samples in :meth:`_parts`
+        Python threads (this one included), each with a fork of this evaluator on its share
+        of the MuJoCo threads; the results in order, or None when there is one part."""
+        parts = self._parts(n, least)
+        if parts <= 1:
+            return None
+        threads = self._threads() or os.cpu_count() or 1
         rows = np.array_split(np.arange(n), parts)
         forks = [self.fork(nthread=max(1, threads // parts), prefill=False) for _ in rows]
         with concurrent.futures.ThreadPoolExecutor(max_workers=parts - 1) as pool:
-            later = [pool.submit(f._evaluate, steps, samples[r], keep_raw=False,
-                                 first_failure=True, offset=int(r[0]))
-                     for f, r in zip(forks[1:], rows[1:], strict=True)]
-            first = forks[0]._evaluate(steps, samples[rows[0]], keep_raw=False,
-                                       first_failure=True)
-            results = [first] + [f.result() for f in later]
-        return _join_samples(results)
+            later = [pool.submit(run, f, r) for f, r in zip(forks[1:], rows[1:], strict=True)]
+            first = run(forks[0], rows[0])
+            return [first] + [f.result() for f in later]
 
     def _remember(self, key: tuple, res: SparseResult) -> SparseResult:
         """Keep ``res`` (made immutable) as the result of the call ``key``."""

@@ -538,7 +538,7 @@ def test_a_chain_shared_out_to_two_threads_is_the_chain_in_one(twin, demo_record
     one = history.chained_failures(sparse.SparseEvaluator(demo_recording, twin, nthread=1),
                                    steps, samples, block=1000)
     ev = sparse.SparseEvaluator(demo_recording, twin, nthread=2)
-    assert history._split_parts(ev, samples.shape[0]) == 2
+    assert ev._parts(samples.shape[0], history._SPLIT_LEAST) == 2
     two = history.chained_failures(ev, steps, samples, block=1000)
     for f in dataclasses.fields(history.ChainedResult):
         a, b = getattr(one, f.name), getattr(two, f.name)
