@@ -751,7 +751,7 @@ class SparseEvaluator:
         self._states = np.ascontiguousarray(states)
         self._controls = np.ascontiguousarray(controls)
         self.n_steps = int(controls.shape[0])
-        self._ctrl = self._component(mujoco.mjtState.mjSTATE_CTRL)
+        self._ctrl = state_slice(twin.model, mujoco.mjtState.mjSTATE_CTRL)
         # carried steps of real lifts (the object rises): a failure only at carried steps
         # outside them (a squeeze that tips the object off its support) is marked
         self._lifted = twin.lifted(self._carried, self._states)
@@ -812,10 +812,6 @@ class SparseEvaluator:
                 f"persistence={self.settings.persistence}, "
                 f"slip_tolerance={self.settings.slip_tolerance}, "
                 f"creep_horizon={self.settings.creep_horizon})")
-
-    def _component(self, spec: mujoco.mjtState) -> slice:
-        """Slice of a state component inside an mjSTATE_INTEGRATION row."""
-        return state_slice(self.twin.model, spec)
 
     # -- validation ------------------------------------------------------------
     def contact_trusted(self, steps: Any) -> np.ndarray:
