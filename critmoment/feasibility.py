@@ -666,10 +666,17 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
                    f"run: is the object pose right (--object-pose{default}), or the "
                    f"[support] geoms?")
     fall = _release_height(twin, recording)
-    if fall > RELEASE_HEIGHT:
+    if fall > RELEASE_HEIGHT and recording.completed:
         out.append(f"the nominal run lets go of the object {fall * 100:.3g} cm above where it "
                    f"comes to rest: it falls there (a toss, not a place), which the task's "
-                   f"rule may still count as done; is that the motion meant?")
+                   f"rule still counts as done; is that the motion meant?")
+    elif fall > RELEASE_HEIGHT:
+        # a grip that loses its object mid-carry reads the same as a release from too high:
+        # the run did not complete the task, so name both
+        out.append(f"the object leaves the grippers {fall * 100:.3g} cm above where it comes "
+                   f"to rest and falls there, and the nominal run does not complete the task: "
+                   f"dropped from the grip (too weak or slippery for it at the nominal "
+                   f"parameters?) or released too high?")
     touched = np.asarray(sig.contact_gripper, bool).any()
     if not touched:
         out.append(f"the nominal run never touches the object: is the object pose right "

@@ -15,8 +15,8 @@ these outcomes); it imports neither.
 Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
 
 * ``DIVERGED``: the sample's simulation diverged (MuJoCo warning or non-finite readings).
-* ``MOTOR``: a motor-checked actuator's force (``Twin.motors``: rotational ones and the
-  arm's slides) stays at its limit (|force| ≥ ``saturation`` × limit) for longer than
+* ``MOTOR``: a motor-checked actuator's force (``Twin.motors``: the arm's hinges and
+  slides, not a gripper's fingers) stays at its limit (|force| ≥ ``saturation`` × limit) for longer than
   ``motor_time``, or its joint lags its target by more than the nominal run does, by over
   ``tracking_tolerance`` (``tracking_tolerance_slide`` for a slide), for longer than
   ``tracking_time`` —
@@ -112,8 +112,8 @@ class OutcomeCriteria:
         slip_time: how long the displacement must exceed the tolerance to count [s]
             (transients at the hand-over settle within a few tens of ms).
         slip_is_failure: a run that slips but completes the task counts as a failure.
-        saturation: fraction of the force limit at which a motor-checked actuator (rotational,
-            or an arm's slide: ``Twin.motors``) is saturated.
+        saturation: fraction of the force limit at which a motor-checked actuator (an arm's
+            hinge or slide, not a finger: ``Twin.motors``) is saturated.
         motor_time: how long a saturation must last to count [s].
         tracking_tolerance: how much more than in the nominal run a rotational joint may lag
             its target [rad].

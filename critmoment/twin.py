@@ -64,8 +64,8 @@ class Signals:
             where the object must be carried (off its support); +inf on the support, 0 when
             it must be carried but no gripper touches it (falling), (...). This is the
             contact FOS the cost uses.
-        fos_motor: motor FOS over the motor-checked actuators (``Twin.motors``: rotational
-            ones and the arm's slides), (...).
+        fos_motor: motor FOS over the motor-checked actuators (``Twin.motors``: the arm's
+            hinges and slides, not a gripper's fingers), (...).
         motor_argmax: index (into the actuators) of the limiting actuator, (...).
         cost: cost (eq. 15) of fos_grasp and fos_motor, (...).
         contact_support: object touches the support, (...) bool.
@@ -291,21 +291,29 @@ class Twin:
         self.object_geom_id = model.geom(sc.object_geom).id
         self.object_qposadr = int(model.jnt_qposadr[model.body_jntadr[self.object_body_id]])
         self.limits = np.array([sc.limits[model.actuator(i).name] for i in range(model.nu)])
-        # actuators on rotational joints enter the motor FOS (eq. 13-14)
-        trn_joint = model.actuator_trnid[:, 0]
-        self.rotational = np.array([
+        # the arm's joint actuators enter the motor FOS (eq. 13-14): on hinges, and on the
+        # arm's slides (a lift, a gantry axis); a gripper's fingers, on either kind of joint,
+        # stay out (their force limit is the grip's squeeze, limited on purpose)
+        arm = set(_arm_actuators(model, sc))
+        on_arm = np.array([model.actuator(i).name in arm for i in range(model.nu)])
+        hinge = np.array([
             model.actuator_trntype[i] == mujoco.mjtTrn.mjTRN_JOINT
-            and model.jnt_type[trn_joint[i]] == mujoco.mjtJoint.mjJNT_HINGE
+            and model.jnt_type[model.actuator_trnid[i, 0]] == mujoco.mjtJoint.mjJNT_HINGE
             for i in range(model.nu)])
+        #: actuators on the arm's hinge joints (a gripper's hinge fingers are not)
+        self.rotational = on_arm & hinge
         if not self.rotational.any():
-            raise ScenarioError("expected at least one actuator on a hinge joint, found none")
+            fingers = [model.actuator(i).name for i in np.flatnonzero(hinge)]
+            raise ScenarioError(
+                "expected at least one actuator on a hinge joint of the arm (not a gripper's "
+                "finger), found none" + (f"; the hinge actuators {fingers} drive a "
+                                         f"gripper's fingers" if fingers else ""))
         #: actuators on slide joints of the arm (a lift, a gantry axis; not a gripper's
         #: fingers): in the motor checks with the rotational ones, their force in N
-        self.arm_slides = _arm_slides(model, sc)
-        slide = set(self.arm_slides)
-        self.slide = np.array([model.actuator(i).name in slide for i in range(model.nu)])
+        self.arm_slides = tuple(model.actuator(i).name for i in np.flatnonzero(on_arm & ~hinge))
+        self.slide = on_arm & ~hinge
         #: the actuators the motor checks read (motor FOS, load bounds, the ground truth's
-        #: saturation and tracking rules): rotational ones and the arm's slides
+        #: saturation and tracking rules): the arm's hinges and slides
         self.motors = self.rotational | self.slide
         self.actuator_names = tuple(model.actuator(i).name for i in range(model.nu))
         self.task = sc.task
@@ -635,20 +643,19 @@ def resolve_twin(scenario=None, twin: Twin | None = None) -> Twin:
         f"scenario's name or None, got {type(scenario).__name__}")
 
 
-def _arm_slides(model: mujoco.MjModel, scenario: Scenario) -> tuple[str, ...]:
-    """Actuators on slide joints that move the arm rather than a gripper's fingers (their
-    force, a grip's squeeze, is limited on purpose and stays out of the motor checks): driven
-    by a channel that is not a normalised gripper channel, on a joint whose body is not
-    below a gripper's base (the deepest body above all its geoms)."""
+def _arm_actuators(model: mujoco.MjModel, scenario: Scenario) -> tuple[str, ...]:
+    """Joint actuators (hinge or slide) that move the arm rather than a gripper's fingers
+    (their force, a grip's squeeze, is limited on purpose and stays out of the motor
+    checks): driven by a channel that is not a normalised gripper channel, on a joint whose
+    body is not below a gripper's base (the deepest body above all its geoms; a base that is
+    the world, a "gripper" whose geoms hang on different arms, names no fingers)."""
     conv = scenario.actions
     fingers = {a for c, acts in enumerate(conv.channels) if conv.normalised[c] for a in acts}
-    bases = [act_info.common_ancestor(model, [int(model.geom_bodyid[model.geom(g).id])
+    bases = {act_info.common_ancestor(model, [int(model.geom_bodyid[model.geom(g).id])
                                               for g in grip.geoms])
-             for grip in scenario.grippers]
+             for grip in scenario.grippers} - {0}
 
     def below_a_base(body: int) -> bool:
-        if any(body == base for base in bases):
-            return False
         while body > 0:
             body = int(model.body_parentid[body])
             if body in bases:
@@ -660,7 +667,8 @@ def _arm_slides(model: mujoco.MjModel, scenario: Scenario) -> tuple[str, ...]:
         name = model.actuator(i).name
         j = int(model.actuator_trnid[i, 0])
         if (model.actuator_trntype[i] == mujoco.mjtTrn.mjTRN_JOINT
-                and model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE and name not in fingers
-                and not below_a_base(int(model.jnt_bodyid[j]))):
+                and int(model.jnt_type[j]) in (int(mujoco.mjtJoint.mjJNT_HINGE),
+                                               int(mujoco.mjtJoint.mjJNT_SLIDE))
+                and name not in fingers and not below_a_base(int(model.jnt_bodyid[j]))):
             out.append(name)
     return tuple(out)

@@ -424,3 +424,28 @@ def test_a_release_high_above_the_rest_gets_a_fit_hint(twin, demo_recording):
     assert feasibility._release_height(twin, fake) == pytest.approx(0.14)
     touch[2:, 0] = True  # held to the end: never let go
     assert feasibility._release_height(twin, fake) == 0.0
+
+
+def test_a_fall_from_the_grip_in_a_run_that_fails_its_task_is_not_called_a_toss(
+        twin, demo_traj, demo_recording, monkeypatch):
+    """The same fall after the last touch reads as a toss where the nominal run completes its
+    task, and as a possible drop from the grip where it does not (a three-finger hand too
+    weak for its cube let it slip out mid-carry and was told it tossed it)."""
+
+    class Failed:
+        def __init__(self, rec):
+            self._rec = rec
+
+        def __getattr__(self, name):
+            return getattr(self._rec, name)
+
+        completed = False
+
+    monkeypatch.setattr(feasibility, "_release_height", lambda twin, rec: 0.12)
+    assert demo_recording.completed
+    done = check_fit(demo_traj, demo_recording, twin)
+    assert any("a toss, not a place" in h and "12 cm" in h for h in done), done
+    failed = check_fit(demo_traj, Failed(demo_recording), twin)
+    assert not any("toss" in h for h in failed), failed
+    assert any("leaves the grippers 12 cm above" in h and "dropped from the grip" in h
+               for h in failed), failed

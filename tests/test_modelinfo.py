@@ -231,3 +231,48 @@ def test_model_path_mistakes_say_what_was_expected(tmp_path):
     with pytest.raises(ScenarioError, match=r"'critmoment:geom:1' is critmoment's name for "
                                             r"the model's unnamed geom #1"):
         inspect_model(broken)
+
+
+def test_a_hinge_finger_is_out_of_the_motor_checks_as_a_slide_finger_is(tmp_path):
+    """A gripper's hinge jaw (SO-100, Koch, a Jaco's three fingers) is a squeeze limited on
+    purpose, as slide fingers are: at its force limit it is not a motor overload (a Jaco
+    whose ±0.3 N·m fingers opened at the start failed every sample at step 0 so). The
+    arm's hinges stay in."""
+    path = tmp_path / "jaw.xml"
+    # stiff and weak, it presses at its limit when closed
+    text = arm_xml(gripper="jaw").replace('joint="jaw" kp="5" ctrlrange="-0.2 1.0" '
+                                          'forcerange="-3 3"',
+                                          'joint="jaw" kp="500" ctrlrange="-0.2 1.0" '
+                                          'forcerange="-0.5 0.5"')
+    assert 'forcerange="-0.5 0.5"' in text
+    path.write_text(text)
+    init_scenario(path, object_body="cube", task="pick_hold", out=tmp_path / "jaw.toml")
+    twin = Twin(load_scenario(tmp_path / "jaw.toml"))
+    names = twin.actuator_names
+    assert [names[i] for i in np.flatnonzero(twin.motors)] == ["shoulder_act", "elbow_act"]
+    assert [names[i] for i in np.flatnonzero(twin.rotational)] == ["shoulder_act",
+                                                                    "elbow_act"]
+    # the jaw driven hard against its fixed jaw: at its 3 N·m limit, the motor FOS is the arm's
+    conv = twin.scenario.actions
+    jaw = [c for c, norm in enumerate(conv.normalised) if norm]
+    actions = np.zeros((100, conv.width))
+    actions[:, jaw] = 1.0  # closed
+    rec = rollout(Trajectory(actions=actions, fps=50.0, start=actions[0],
+                             object_pose=[0.8, 0.0, 0.02, 1, 0, 0, 0]), twin=twin)
+    jaw_id = names.index("jaw_act")
+    assert np.abs(rec.signals.actuator_norm[-1, jaw_id]) >= 0.999  # squeezing at its limit
+    assert names[int(rec.signals.motor_argmax[-1])] in ("shoulder_act", "elbow_act")
+    assert rec.signals.fos_motor[-1] > 1.0
+
+
+def test_a_scenario_whose_only_hinges_are_fingers_is_an_error(tmp_path):
+    text = arm_xml(gripper="jaw")
+    for joint in ("shoulder", "elbow"):
+        text = text.replace(f'<joint name="{joint}" type="hinge"', f'<joint name="{joint}" '
+                                                                   f'type="slide"')
+    path = tmp_path / "gantry.xml"
+    path.write_text(text)
+    init_scenario(path, object_body="cube", task="pick_hold", out=tmp_path / "g.toml")
+    with pytest.raises(ScenarioError, match=r"hinge joint of the arm .*'jaw_act'.* drive a "
+                                            r"gripper's fingers"):
+        Twin(load_scenario(tmp_path / "g.toml"))
