@@ -767,6 +767,9 @@ def _verification_text(v) -> str:
     if v.get("slipping"):
         text += (f"; {v['slipping']} failing only by a slip under the ground truth's "
                  f"tolerance re-run in full, {v['slipping_failed']} of them fail")
+    if v.get("chained"):
+        text += (f"; {v['chained']} passing at every moment carried on their own state "
+                 f"(chained segments), {v['chained_failed']} of them fail there")
     return text
 
 

@@ -1039,6 +1039,15 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
                        f"own full rollout (between the moments or by not completing the "
                        f"task); suggestion: reduce the uncertainty near the safe region's "
                        f"edge",)
+    if se.chained is not None and has_moments:
+        chained = np.asarray(se.chained, dtype=bool)
+        chain_failed = int((chained & failed).sum())
+        if chain_failed:
+            # the moments' lines count only the failures at the moments
+            causes += (f"{chain_failed} of {int(chained.sum())} samples that pass at every "
+                       f"audited moment fail on their own path (chained segments, each "
+                       f"sample's own run through the moments: a slip, a drop or a motor "
+                       f"overload between or after them, or the task not completed)",)
     if check is not None and check.shrunk and check.region is not None:
         causes += (f"the safe region first claimed ({_bounds_text(check.first_claim, box)}) "
                    f"failed its check at its corners and edges and was shrunk to "

@@ -90,6 +90,30 @@ def test_a_chained_failure_fails_a_sample_that_passes_without_a_rollout():
     assert not vd.samples_to_chain(sweep, near, OPT).any()
 
 
+def test_the_causes_count_the_samples_that_fail_only_on_their_own_path():
+    """Samples that pass every moment but fail their chain are failures no moment's line
+    counts ("fails 0% of the box"): a cause says how many, so that a low P(success) with
+    quiet moments is explained."""
+    chain = vd.DecisionOptions(threshold=THRESHOLD, chain=True)
+    box = _box()
+    samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0]])
+    sweep = _sweep([[0.1, 1.5, 0.3, 0.5]], samples)
+    near, *_ = vd.samples_to_rerun(sweep, chain, nominal_completed=True)
+    to_chain = vd.samples_to_chain(sweep, near, chain)
+    assert to_chain.tolist() == [True, False, True, True]
+
+    def causes(chained_failed):
+        se = vd.SampleEvidence(sweep=sweep, nominal_completed=True, rerun=near,
+                               rerun_failed=np.zeros(4, bool), chained=to_chain,
+                               chained_failed=np.array(chained_failed))
+        ev = vd.Evidence(box=box, samples=se, nominal_cost=0.1, moments=(_moment(100),))
+        return vd.decide(ev, chain).causes
+
+    assert any("2 of 3 samples that pass at every audited moment fail on their own path"
+               in c for c in causes([False, False, True, True]))
+    assert not any("on their own path" in c for c in causes([False, False, False, False]))
+
+
 def test_failing_samples_is_the_sparse_failure_unless_a_rollout_decided():
     samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0]])
     sweep = _sweep([[0.1, 1.5, 0.8, 0.5]], samples)
