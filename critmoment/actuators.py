@@ -168,6 +168,28 @@ def body_chain(model: mujoco.MjModel, body: int) -> list[int]:
     return chain
 
 
+def parts_below(model: mujoco.MjModel, body: int) -> dict[str, list[str]]:
+    """The bodies below ``body`` that carry collision geoms, each with those geoms' names
+    (an object whose geoms hang on a child body: critmoment audits one body's own geoms)."""
+    out: dict[str, list[str]] = {}
+    for g in range(model.ngeom):
+        b = int(model.geom_bodyid[g])
+        if b == body or not (model.geom_contype[g] or model.geom_conaffinity[g]):
+            continue
+        if body in body_chain(model, b):
+            out.setdefault(model.body(b).name, []).append(model.geom(g).name)
+    return out
+
+
+def object_parts_message(name: str, parts: dict[str, list[str]]) -> str:
+    """The error for an object body with collision geoms on bodies below it."""
+    listed = "; ".join(f"{b}: {', '.join(gs)}" for b, gs in parts.items())
+    return (f"[object] body {name!r}: expected its collision geoms on the body itself, got "
+            f"collision geoms on bodies below it ({listed}); critmoment reads the contacts, "
+            f"mass and friction of the object body's own geoms and would not see these: put "
+            f"them on {name!r} itself")
+
+
 def common_ancestor(model: mujoco.MjModel, bodies: Sequence[int]) -> int:
     """The deepest body that is ``bodies``' common ancestor (or one of them)."""
     chains = [body_chain(model, b) for b in bodies]

@@ -346,9 +346,14 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         raise ScenarioError(f"--object: body {object_body!r} has no collision geom")
     model = _compile(model_path, object_body=object_body, friction_geoms=tuple(obj["geoms"]))
     bid = model.body(object_body).id
+    parts = act_info.parts_below(model, bid)
+    if parts:
+        raise ScenarioError(act_info.object_parts_message(object_body, parts))
     key = 0 if model.nkey else None
     guesses, checks = [], []
-    geom_sizes = [(float(np.prod(model.geom_size[model.geom(g).id][:3] + 1e-9)), g)
+    # the volume of each geom's bounding box (geom_size's meaning depends on the type: a
+    # cylinder's, capsule's or sphere's third entry is 0, so its product lost to any box)
+    geom_sizes = [(float(np.prod(model.geom_aabb[model.geom(g).id][3:] + 1e-9)), g)
                   for g in obj["geoms"]]
     object_geom = max(geom_sizes)[1]
     if len(obj["geoms"]) > 1:

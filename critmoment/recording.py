@@ -15,6 +15,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+import math
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -79,10 +80,22 @@ def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None =
     actions = trajectory_mod.check_ranges(traj.actions, twin.channel_lower, twin.channel_upper,
                                           policy=policy, names=conv.labels)
     dt = float(twin.model.opt.timestep)
+    if traj.fps * dt > 1.0 + 1e-9:
+        # the targets are held over the physics steps between two rows (upsampled); a
+        # faster trajectory would skip rows without saying so
+        raise TrajectoryError(
+            f"trajectory at {traj.fps:g} Hz{_source(traj)}: expected at most the physics rate, "
+            f"{1.0 / dt:g} Hz (the model's timestep {dt:g} s); resample it to {1.0 / dt:g} Hz "
+            f"or less (e.g. keep one row in {math.ceil(traj.fps * dt - 1e-9)}), or lower the "
+            f"model's timestep")
     targets = trajectory_mod.upsample(actions, fps=traj.fps, physics_dt=dt,
                                       bounded=twin.channel_normalised,
                                       lower=twin.channel_lower, upper=twin.channel_upper)
     return twin.controls(targets)
+
+
+def _source(traj: Trajectory) -> str:
+    return f" ({traj.source})" if traj.source else ""
 
 
 def initial_state(twin: Twin, traj: Trajectory, model: mujoco.MjModel | None = None) -> np.ndarray:

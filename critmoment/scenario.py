@@ -566,6 +566,9 @@ class Scenario:
             raise ScenarioError(
                 f"[object] body: expected a body with one free joint, got {self.object_body!r} "
                 f"with {body.jntnum[0]} joint(s); free bodies: {_listing(free)}")
+        parts = act_info.parts_below(model, body.id)
+        if parts:
+            raise ScenarioError(act_info.object_parts_message(self.object_body, parts))
         owner = model.geom_bodyid[model.geom(self.object_geom).id]
         if owner != body.id:
             raise ScenarioError(

@@ -276,3 +276,47 @@ def test_a_scenario_whose_only_hinges_are_fingers_is_an_error(tmp_path):
     with pytest.raises(ScenarioError, match=r"hinge joint of the arm .*'jaw_act'.* drive a "
                                             r"gripper's fingers"):
         Twin(load_scenario(tmp_path / "g.toml"))
+
+
+def test_init_names_a_round_objects_largest_geom(tmp_path):
+    """A cylinder with a small box knob: the cylinder is the object geom (its friction is
+    the nominal), though a cylinder's third size entry is 0 (the volumes of the geoms'
+    bounding boxes decide, not the product of ``geom_size``)."""
+    text = arm_xml(gripper="slides").replace(
+        '<geom name="cube" type="box" size="0.02 0.02 0.02" mass="0.1" friction="0.8"/>',
+        '<geom name="body" type="cylinder" size="0.02 0.02" mass="0.1" friction="0.9"/>\n'
+        '      <geom name="knob" type="box" pos="0 0 0.024" size="0.004 0.004 0.004" '
+        'mass="0.001" friction="0.3"/>')
+    assert 'name="knob"' in text
+    path = tmp_path / "cyl.xml"
+    path.write_text(text)
+    init_scenario(path, object_body="cube", task="pick_hold", out=tmp_path / "cyl.toml")
+    sc = load_scenario(tmp_path / "cyl.toml")
+    assert sc.object_geom == "body"
+    friction = next(p for p in sc.box.parameters if p.name == "friction")
+    assert friction.nominal == pytest.approx(0.9)
+
+
+def test_an_object_whose_geoms_hang_on_a_child_body_is_refused(tmp_path):
+    """Contacts, mass and friction are read on the object body's own geoms: a box welded on
+    a child body would go unseen (the audit said SAFE, exit 0, of a run whose grip it never
+    saw), so init and the loader refuse it, naming the body and its geoms."""
+    text = arm_xml(gripper="slides").replace(
+        '<geom name="cube" type="box" size="0.02 0.02 0.02" mass="0.1" friction="0.8"/>',
+        '<geom name="core" type="sphere" size="0.002" mass="0.01"/>\n'
+        '      <body name="shell"><geom name="cube" type="box" size="0.02 0.02 0.02" '
+        'mass="0.1" friction="0.8"/></body>')
+    assert '<body name="shell">' in text
+    path = tmp_path / "child.xml"
+    path.write_text(text)
+    with pytest.raises(ScenarioError, match=r"\[object\] body 'cube': .*bodies below it "
+                                            r"\(shell: cube\)"):
+        init_scenario(path, object_body="cube", task="pick_hold", out=tmp_path / "c.toml")
+    # a scenario written for the plain model, pointed at this one, is refused on load
+    plain = _write(tmp_path, "plain.xml")
+    init_scenario(plain, object_body="cube", task="pick_hold", out=tmp_path / "p.toml")
+    toml = (tmp_path / "p.toml").read_text()
+    toml = toml.replace('geom = "cube"', 'geom = "core"').replace("plain.xml", "child.xml")
+    (tmp_path / "p.toml").write_text(toml)
+    with pytest.raises(ScenarioError, match=r"bodies below it \(shell: cube\)"):
+        load_scenario(tmp_path / "p.toml")

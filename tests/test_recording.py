@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import shutil
 import warnings
@@ -12,7 +13,7 @@ import pytest
 
 from critmoment import recording as rollout_mod
 from critmoment.exceptions import InputFileError, SimulationDivergedError, TrajectoryError
-from critmoment.recording import Recording, rollout, simulate, task_completed
+from critmoment.recording import Recording, prepare_controls, rollout, simulate, task_completed
 from critmoment.scenario import bundled_scenario_path, load_scenario
 from critmoment.trajectory import Trajectory, load_trajectory
 from critmoment.twin import Twin
@@ -389,3 +390,13 @@ def test_rollout_loads_the_scenario_itself():
 def test_missing_trajectory_file(tmp_path):
     with pytest.raises(InputFileError, match="does not exist"):
         load_trajectory(tmp_path / "traj.npz")
+
+
+def test_a_trajectory_faster_than_the_physics_says_so(twin, demo_traj):
+    """A 1 kHz trajectory (a common real-robot control rate) on a 500 Hz model: an error
+    naming both rates and the fix, not the upsampler's internal parameter."""
+    fast = dataclasses.replace(demo_traj, fps=1000.0, source="ep.npz")
+    with pytest.raises(TrajectoryError, match=r"trajectory at 1000 Hz \(ep.npz\): expected at "
+                                              r"most the physics rate, 500 Hz .*keep one row "
+                                              r"in 2"):
+        prepare_controls(twin, fast)
