@@ -14,11 +14,12 @@ The decision path, in order:
    failures are unlifted ones, ``SparseResult.failed_unlifted_only``, and those whose
    only failures are sticking ones, inside an elliptic friction cone,
    ``SparseResult.failed_sticking_only``); none when the nominal run itself fails the
-   task (every sample fails then).
+   task and there are no chained segments (every sample fails then).
 2. :func:`failing_samples`: a sample fails where its sparse evaluation fails at an audited
    moment (``SparseResult.failed``), unless its own rollout decided it; the rollout's real outcome
-   decides the re-run samples; every sample fails when the nominal run does not complete
-   the task (``require_task``).
+   decides the re-run samples, the chained segments (each sample's own run, ending with
+   the task's rule) the others that pass; without them every sample fails when the
+   nominal run does not complete the task (``require_task``).
 3. :func:`candidate_region`: the largest sub-box, anchored at the box's safe corner, with
    no failing sample, cut where a critical value (others at nominal) says it fails; none
    when no sample passes. The audit checks it (:func:`region_points` on its corners and
@@ -252,6 +253,13 @@ class Reruns(NamedTuple):
         return self.near | self.unlifted | self.sticking | self.slipping
 
 
+def _every_sample_fails(options: DecisionOptions, nominal_completed: bool) -> bool:
+    """The nominal run fails a task the options require and no sample's own run can say
+    otherwise (without the chained segments, sparse evaluation never sees the task's rule):
+    every sample fails."""
+    return options.require_task and not nominal_completed and not options.chain
+
+
 def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
                      nominal_completed: bool) -> Reruns:
     """The samples that sparse evaluation cannot decide, to be decided by their own rollout.
@@ -266,13 +274,14 @@ def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
         samples whose only failures are unlifted ones, samples whose only failures are
         sticking (and unlifted) ones, and samples whose only failures are short slips (and
         sticking and unlifted ones). All empty when ``verify`` is None, or when the
-        nominal run fails the task and ``require_task`` makes every sample fail.
+        nominal run fails the task and ``require_task`` makes every sample fail (without
+        ``chain``: with it, each sample's own run applies the task's rule).
     """
     n = 0 if sweep is None else sweep.n_samples
     none = np.zeros(n, bool)
     if sweep is None or sweep.n_moments == 0:
         return Reruns(none, none.copy(), none.copy(), none.copy())
-    if options.verify is None or (options.require_task and not nominal_completed):
+    if options.verify is None or _every_sample_fails(options, nominal_completed):
         return Reruns(none, none.copy(), none.copy(), none.copy())
     cost = sweep.worst_cost()
     near = ~sweep.failed_any & (cost >= options.verify * options.threshold)
@@ -353,8 +362,9 @@ def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.nd
     (``SparseResult.failed``: the cost above the threshold, or diverged); a sample with its
     own full rollout (every sample :func:`samples_to_rerun` names must have one) is decided
     by that rollout's real outcome instead; a sample that passes with no rollout is decided
-    by its chained evaluation on its own state (:func:`samples_to_chain`); with ``require_task`` every sample fails when
-    the nominal run does not complete the task.
+    by its chained evaluation on its own state (:func:`samples_to_chain`); with ``require_task`` and no chain every
+    sample fails when the nominal run does not complete the task (the verdict is UNSAFE
+    either way: the nominal parameters fail).
 
     Args:
         evidence: the sweep, the nominal completion and the rollouts' outcomes.
@@ -372,7 +382,7 @@ def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.nd
         failed = np.zeros(n, bool)
     else:
         failed = np.array(sweep.failed_any, dtype=bool)
-    if options.require_task and not evidence.nominal_completed:
+    if _every_sample_fails(options, evidence.nominal_completed):
         return np.ones(n, bool)
     need = samples_to_rerun(sweep, options, nominal_completed=evidence.nominal_completed).any
     if evidence.rerun is None:
@@ -409,11 +419,12 @@ def samples_to_chain(sweep: SparseResult, rerun: np.ndarray, options: DecisionOp
                      nominal_completed: bool = True) -> np.ndarray:
     """The samples to carry on their own state through the moments: those that pass at
     every audited moment and have no rollout of their own, (n,) bool (none without
-    ``options.chain``, and none when the nominal run does not complete a task the options
-    require: every sample fails then)."""
+    ``options.chain``). Where the nominal run does not complete a task the options require,
+    they are chained all the same: each one's own run, from step 0, ends with the task's
+    rule (measured on robosuite's Panda + Robotiq 2F-85, seed 1: a nominal run that drops
+    its cube, while 28 of 64 samples around it place theirs)."""
     n = sweep.n_samples
-    if not options.chain or sweep.n_moments == 0 or (options.require_task
-                                                     and not nominal_completed):
+    if not options.chain or sweep.n_moments == 0:
         return np.zeros(n, bool)
     return ~np.asarray(sweep.failed_any, dtype=bool) & ~np.asarray(rerun, dtype=bool)
 
@@ -988,7 +999,7 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
         interval = wilson_interval(n - n_fail, n, confidence=options.confidence)
     else:
         p, interval = (0.0 if nominal_fails else 1.0), (0.0, 1.0)
-    if task_failed:
+    if task_failed and _every_sample_fails(options, se.nominal_completed):
         p = 0.0
         interval = wilson_interval(0, n, confidence=options.confidence) if n else (0.0, 1.0)
     has_moments = se.sweep is not None and se.sweep.n_moments > 0

@@ -114,6 +114,34 @@ def test_the_causes_count_the_samples_that_fail_only_on_their_own_path():
     assert not any("on their own path" in c for c in causes([False, False, False, False]))
 
 
+def test_a_nominal_run_that_fails_its_task_leaves_each_sample_to_its_own_run():
+    """The nominal parameters fail the task (UNSAFE either way); with the chained segments
+    each sample that passes the moments is decided by its own run, which ends with the
+    task's rule (a Panda + Robotiq 2F-85 spawn whose nominal run drops its cube while 28 of
+    64 samples place theirs); without them every sample fails, since sparse evaluation
+    never sees the task's rule."""
+    chain = vd.DecisionOptions(threshold=THRESHOLD, chain=True)
+    plain = vd.DecisionOptions(threshold=THRESHOLD, chain=False)
+    box = _box()
+    samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0]])
+    sweep = _sweep([[0.1, 1.5, 0.3, 0.5]], samples)
+    near, *_ = vd.samples_to_rerun(sweep, chain, nominal_completed=False)
+    to_chain = vd.samples_to_chain(sweep, near, chain, nominal_completed=False)
+    assert to_chain.tolist() == [True, False, True, True]
+    se = vd.SampleEvidence(sweep=sweep, nominal_completed=False, rerun=near,
+                           rerun_failed=np.zeros(4, bool), chained=to_chain,
+                           chained_failed=np.array([False, False, True, False]))
+    assert vd.failing_samples(se, chain).tolist() == [False, True, True, False]
+    decision = vd.decide(vd.Evidence(box=box, samples=se, nominal_cost=0.1,
+                                     moments=(_moment(100),)), chain)
+    assert decision.verdict is vd.Verdict.UNSAFE and decision.p_success == 0.5
+    bare = vd.SampleEvidence(sweep=sweep, nominal_completed=False)
+    assert vd.failing_samples(bare, plain).all()
+    decision = vd.decide(vd.Evidence(box=box, samples=bare, nominal_cost=0.1,
+                                     moments=(_moment(100),)), plain)
+    assert decision.verdict is vd.Verdict.UNSAFE and decision.p_success == 0.0
+
+
 def test_failing_samples_is_the_sparse_failure_unless_a_rollout_decided():
     samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0]])
     sweep = _sweep([[0.1, 1.5, 0.8, 0.5]], samples)
