@@ -132,12 +132,19 @@ def cmd_demo(args) -> int:
 
 def cmd_rollout(args) -> int:
     from critmoment import report
+    from critmoment.feasibility import FitWarning, check_fit
     from critmoment.recording import rollout
 
     with _staged(args, "rollout") as out:
         twin, traj = _load(args)
+        check_fit(traj, None, twin)  # width and units, naming the likely mistake
         rec = rollout(traj, twin=twin)
-        summary = rec.summary()
+        # the run's own fit (an object never touched, a gripper that never closes, a
+        # start inside the table): the likely reason a run does not complete its task
+        fit = check_fit(traj, rec, twin)
+        for msg in fit:
+            warnings.warn(msg, FitWarning, stacklevel=1)
+        summary = {**rec.summary(), "fit_warnings": list(fit)}
         if out is not None:
             rec.save(out / "recording.npz")
             fig = report.plot_recording(rec)

@@ -25,11 +25,34 @@ def test_rollout_json(traj_file, capsys, tmp_path):
     assert main(["rollout", str(traj_file), "--json", "--out", str(tmp_path)]) == 0
     doc = json.loads(capsys.readouterr().out)
     for key in ("steps", "dt", "max_stage", "final_stage", "stage_first_step",
-                "min_fos_contact", "min_fos_motor", "max_cost"):
+                "min_fos_contact", "min_fos_motor", "max_cost", "fit_warnings"):
         assert key in doc
+    assert doc["fit_warnings"] == []
     assert doc["steps"] == 4000 and doc["final_stage"] == 4
     assert set(doc["stage_first_step"]) == {"1", "2", "3", "4"}
     assert (tmp_path / "recording.npz").is_file() and (tmp_path / "signals.png").is_file()
+
+
+def test_rollout_names_why_a_run_never_touches_its_object(tmp_path, capsys):
+    """``rollout`` alone already says why a run does not complete: the fit warnings of
+    ``analyze``'s preflight, on stderr and in the JSON."""
+    import warnings
+
+    from critmoment import suite
+    from critmoment.trajectory import save_trajectory
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        traj = suite.make("no_grasp", seed=0)
+    path = tmp_path / "miss.npz"
+    save_trajectory(traj, path)
+    assert main(["rollout", str(path), "--json"]) == 0
+    captured = capsys.readouterr()
+    doc = json.loads(captured.out)
+    assert len(doc["fit_warnings"]) == 1
+    assert "never touches the object" in doc["fit_warnings"][0]
+    assert "critmoment rollout: warning:" in captured.err
+    assert "never touches the object" in captured.err
 
 
 def test_moments_json(traj_file, capsys):
