@@ -199,6 +199,9 @@ class AuditReport:
             largest mass: per mass the first time [s] a joint saturates (as the ground truth
             counts it) and which, and the smallest payload any step can take; None without
             ``search``.
+        unlimited_motors: the motor-checked actuators (``Twin.motors``: the arm's, not a
+            gripper's fingers, whose squeeze is limited on purpose) with no force limit in
+            the scenario or the MJCF: their motor FOS is not checked.
     """
 
     verdict: Verdict
@@ -225,6 +228,7 @@ class AuditReport:
     contact_model: contactmodel.ContactModelReport | None = None
     load_bound: Mapping | None = None
     force_ratio_untrusted: tuple[int, ...] = ()
+    unlimited_motors: tuple[str, ...] = ()
 
     def passes(self, min_success: float | None = None) -> bool:
         """SAFE, or CONDITIONAL with P(success) ≥ ``min_success`` (the CLI's exit code 0)."""
@@ -570,7 +574,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         scenario=sc, options=opt, timings=_in_order(timings), manifest=manifest, failed=decision.failed,
         verification=verification, region_check=region_check, feasibility=feasibility,
         contact_model=contact, load_bound=load_bound,
-        force_ratio_untrusted=_untrusted(rec, evaluator, steps))
+        force_ratio_untrusted=_untrusted(rec, evaluator, steps),
+        unlimited_motors=twin.unlimited_motors)
 
 
 def _worst_case(res: sp.SparseResult, row: int, search: Mapping | None, box

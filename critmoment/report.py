@@ -397,10 +397,10 @@ def summary_text(report) -> str:
         lines.append(f"  contact force ratio not trusted at steps {', '.join(map(str, untrusted))}"
                      f": the nominal grip sits on the friction cone there although its run "
                      f"completes (contact chatter); measured slip and motor loads decide")
-    unlimited = getattr(report.scenario, "unlimited", ())
+    unlimited = getattr(report, "unlimited_motors", ())
     if unlimited:
-        lines.append(f"  no force limit (not in the scenario or the MJCF): "
-                     f"{', '.join(unlimited)}; their motor FOS is not checked")
+        lines.append(f"  no force limit (not in the scenario or the MJCF) on the arm's "
+                     f"actuators {', '.join(unlimited)}: their motor FOS is not checked")
     for cause in report.failure_causes:
         lines.append(f"  ! {cause}")
     return "\n".join(lines)

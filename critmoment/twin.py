@@ -316,6 +316,12 @@ class Twin:
         #: saturation and tracking rules): the arm's hinges and slides
         self.motors = self.rotational | self.slide
         self.actuator_names = tuple(model.actuator(i).name for i in range(model.nu))
+        #: the motor-checked actuators with no force limit in the scenario or the MJCF:
+        #: their motor FOS is not checked (a gripper's, never checked, are not listed)
+        self.unlimited_motors = tuple(
+            name for name, checked, limit in zip(self.actuator_names, self.motors,
+                                                 self.limits, strict=True)
+            if checked and not np.isfinite(limit))
         self.task = sc.task
         # action channels -> actuators
         conv = sc.actions

@@ -134,6 +134,19 @@ def test_unlimited_actuators_are_stated(tmp_path):
     sc = load_scenario(tmp_path)
     assert sc.unlimited == ("shoulder_act",)
     assert sc.limit_sources["shoulder_act"] == "none"
+    assert Twin(sc).unlimited_motors == ("shoulder_act",)
+
+
+def test_a_fingers_missing_force_limit_is_not_reported_as_an_unchecked_motor(tmp_path):
+    """A gripper's squeeze is never motor-checked: the report's "no force limit" note
+    names the arm's unlimited actuators only."""
+    text = arm_xml().replace(' forcerange="-20 20"', "")
+    (tmp_path / "arm.xml").write_text(text)
+    init_scenario(tmp_path / "arm.xml", object_body="cube", task="pick_hold",
+                  out=tmp_path / "scenario.toml")
+    sc = load_scenario(tmp_path)
+    assert set(sc.unlimited) == {"finger_a_act", "finger_b_act"}
+    assert Twin(sc).unlimited_motors == ()
 
 
 def test_inspect_lists_what_a_scenario_needs(tmp_path):
