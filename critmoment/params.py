@@ -87,7 +87,8 @@ class Parameter:
                 f"[{self.low}, {self.high}], got {self.nominal}")
         if self.low <= self.minimum:
             raise ParameterError(
-                f"parameter {self.name!r}: expected values > {self.minimum} {self.unit}, "
+                f"parameter {self.name!r}: expected values > "
+                f"{self.minimum}{' ' + self.unit if self.unit else ''}, "
                 f"got range [{self.low}, {self.high}]")
         if self.prior is Prior.LOGUNIFORM and self.low <= 0:
             raise ParameterError(

@@ -43,8 +43,10 @@ from critmoment.exceptions import (
 )
 from critmoment.params import (
     PARAMETER_KINDS,
+    ComOffsetParameter,
     ForceLimitParameter,
     FrictionParameter,
+    MassParameter,
     Parameter,
     Prior,
     UncertaintyBox,
@@ -604,7 +606,11 @@ class Scenario:
                     f"[model] keyframe: unknown keyframe {self.keyframe!r}; valid: "
                     f"{_listing(keys)} or an index 0..{model.nkey - 1}")
         for p in self.box.parameters:
-            _check_effect(p, p.resolve(model), model)
+            try:
+                index = p.resolve(model)
+            except ScenarioError as exc:
+                raise ScenarioError(f"[uncertainty.{p.name}]: {exc}") from None
+            _check_effect(p, index, model)
 
 
 def _listing(pool: Sequence[str], limit: int = 40) -> str:
@@ -640,6 +646,16 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
                 f"{model.geom_priority[index]} (MuJoCo mixes friction with max), so its costs "
                 "would not change over the range; vary the object's friction (critmoment gives "
                 "the object's geoms priority) or raise this geom's priority in the MJCF")
+    elif isinstance(p, (MassParameter, ComOffsetParameter)) and model.body_weldid[index] == 0:
+        raise ScenarioError(
+            f"[uncertainty.{p.name}]: body {p.target!r} is fixed to the world (no joint "
+            "between it and the world), so its mass or centre of mass changes nothing; "
+            "name a body that moves (the object, or a link of the arm)")
+    elif isinstance(p, MassParameter) and not model.body_mass[index] > 0:
+        raise ScenarioError(
+            f"[uncertainty.{p.name}]: body {p.target!r} has no mass in the MJCF "
+            f"({model.body_mass[index]:g} kg), so its inertia cannot scale with a mass; "
+            "name a body with mass (inertial or geoms with density)")
     elif isinstance(p, ForceLimitParameter) and not model.actuator_forcelimited[index]:
         raise ScenarioError(
             f"[uncertainty.{p.name}]: actuator {p.target!r} has no forcerange in the MJCF "

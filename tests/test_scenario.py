@@ -217,7 +217,7 @@ def test_unknown_gripper_geom_lists_valid_names(tmp_path):
      r"actuators: left/waist \(position on joint left/waist\)"),
     (('keyframe = "home"', 'keyframe = "away"'), r"unknown keyframe 'away'; valid: home or an index"),
     (('[uncertainty.mass]\nbody = "box"', '[uncertainty.mass]\nbody = "brick"'),
-     r"unknown body 'brick'; the model has: .*box"),
+     r"\[uncertainty\.mass\]: unknown body 'brick'; the model has: .*box"),
 ], ids=["object body", "support geom", "limit actuator", "keyframe",
         "parameter target"])
 def test_unknown_names_say_what_is_valid(tmp_path, edit, message):
@@ -247,6 +247,24 @@ def test_bad_uncertainty(tmp_path, old, new, message):
     folder = _toml(tmp_path, (old, new))
     with pytest.raises(ScenarioError, match=r"\[uncertainty\.(mass|weight)\].*" + message):
         load_scenario(folder)
+
+
+@pytest.mark.parametrize("body, message", [
+    ("table", r"body 'table' is fixed to the world .* changes nothing"),
+    ("world", r"body 'world' is fixed to the world"),
+    ("left/base_link", r"body 'left/base_link' is fixed to the world"),
+])
+def test_a_mass_on_a_body_that_cannot_move_is_rejected(tmp_path, body, message):
+    folder = _toml(tmp_path, ('[uncertainty.mass]\nbody = "box"',
+                              f'[uncertainty.mass]\nbody = "{body}"'))
+    with pytest.raises(ScenarioError, match=r"\[uncertainty\.mass\]: " + message):
+        load_scenario(folder)
+
+
+def test_a_mass_on_an_arm_link_is_accepted(tmp_path):
+    folder = _toml(tmp_path, ('[uncertainty.mass]\nbody = "box"',
+                              '[uncertainty.mass]\nbody = "left/wrist_link"'))
+    assert load_scenario(folder).box.parameters[0].target == "left/wrist_link"
 
 
 def test_named_parameter_with_kind(tmp_path):
