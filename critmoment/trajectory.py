@@ -725,7 +725,7 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
     file_fps = None
     if "fps" in data:
         file_fps = _as_rate(
-            _scalar(data["fps"], what=f"{path}: 'fps'"),
+            _scalar(data["fps"], what=f"{str(path)!r}: 'fps'"),
             what=f"{str(path)!r}: 'fps'",
             error=TrajectoryError,
         )
