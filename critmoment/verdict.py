@@ -420,7 +420,7 @@ def samples_to_chain(sweep: SparseResult, rerun: np.ndarray, options: DecisionOp
     """The samples to carry on their own state through the moments: those that pass at
     every audited moment and have no rollout of their own, (n,) bool (none without
     ``options.chain``). Where the nominal run does not complete a task the options require,
-    they are chained all the same: each one's own run, from step 0, ends with the task's
+    they are chained all the same: each one's own run (its chain) ends with the task's
     rule (measured on robosuite's Panda + Robotiq 2F-85, seed 1: a nominal run that drops
     its cube, while 28 of 64 samples around it place theirs)."""
     n = sweep.n_samples
