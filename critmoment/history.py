@@ -636,7 +636,10 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     not bit-exact, since the object's mass already sets how it rests on its support: on a
     chaotic model, robosuite's Panda + Robotiq 2F-85 with an elliptic cone, seed 0, two
     samples that really fail by a joint-tracking loss after the release passed their chains
-    from there and fail them from step 0), run the recorded controls with
+    from there and fail them from step 0; with hinge fingers out of the motor checks, the
+    shipped Panda + Robotiq 2F-85 and iiwa + Robotiq 2F-140 of seed 1, whose nominal runs
+    drop the cube, had 3 false safes from there and none from step 0), run the recorded
+    controls with
     the sample's own parameters, and at each moment (in time order; one whose window
     overlaps the previous one's is skipped) are decided by the sparse decision over the
     horizon from the state they reached, not the nominal one. All along, from ``start`` to
