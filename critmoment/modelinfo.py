@@ -35,6 +35,7 @@ from critmoment import actuators as act_info
 from critmoment.exceptions import ScenarioError
 from critmoment.scenario import GENERATED, compile_spec, load_scenario, prepare_spec
 from critmoment.task import TASK_KINDS
+from critmoment.twin import Twin
 
 __all__ = ["ModelInfo", "GripperGuess", "InitResult", "inspect_model", "init_scenario"]
 
@@ -518,7 +519,8 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         tmp = out_path.with_name(f".{out_path.name}.tmp")
         try:
             tmp.write_text(text, encoding="utf-8")
-            load_scenario(tmp)  # loads as written, or the error says why
+            # loads as written and binds to a twin, or the error says why
+            Twin(load_scenario(tmp))
             os.replace(tmp, out_path)
         finally:
             if tmp.exists():
@@ -531,5 +533,5 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
             probe.write_text(text.replace(f"mjcf = {_toml_str(rel)}",
                                           f"mjcf = {_toml_str(str(model_path.resolve()))}"),
                              encoding="utf-8")
-            load_scenario(probe)
+            Twin(load_scenario(probe))
     return InitResult(text=text, path=out_path, guesses=tuple(guesses), checks=tuple(checks))

@@ -307,7 +307,8 @@ class Twin:
             raise ScenarioError(
                 "expected at least one actuator on a hinge joint of the arm (not a gripper's "
                 "finger), found none" + (f"; the hinge actuators {fingers} drive a "
-                                         f"gripper's fingers" if fingers else ""))
+                                         f"gripper's fingers" if fingers else "")
+                + _mocap_hint(model))
         #: actuators on slide joints of the arm (a lift, a gantry axis; not a gripper's
         #: fingers): in the motor checks with the rotational ones, their force in N
         self.arm_slides = tuple(model.actuator(i).name for i in np.flatnonzero(on_arm & ~hinge))
@@ -647,6 +648,26 @@ def resolve_twin(scenario=None, twin: Twin | None = None) -> Twin:
     raise ScenarioError(
         f"scenario: expected a Scenario, a Twin, a path to a scenario.toml, a bundled "
         f"scenario's name or None, got {type(scenario).__name__}")
+
+
+def _mocap_hint(model: mujoco.MjModel) -> str:
+    """Why a model's arm may have no actuators: a mocap body welded to it moves it (as in
+    teleoperation and end-effector-control scenes); empty if none is."""
+    welds = []
+    for e in range(model.neq):
+        if (model.eq_type[e] != mujoco.mjtEq.mjEQ_WELD
+                or model.eq_objtype[e] != mujoco.mjtObj.mjOBJ_BODY):
+            continue
+        a, b = int(model.eq_obj1id[e]), int(model.eq_obj2id[e])
+        for mocap, other in ((a, b), (b, a)):
+            if model.body_mocapid[mocap] >= 0:
+                welds.append(f"mocap body {model.body(mocap).name!r} welded to "
+                             f"{model.body(other).name!r}")
+    if not welds:
+        return ""
+    return (f"; the model moves its arm with a {', '.join(welds)} (end-effector control): "
+            "critmoment replays joint-space actions through the model's actuators, so give "
+            "the arm's joints position actuators and remove the weld")
 
 
 def _arm_actuators(model: mujoco.MjModel, scenario: Scenario) -> tuple[str, ...]:

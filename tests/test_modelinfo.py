@@ -137,6 +137,27 @@ def test_unlimited_actuators_are_stated(tmp_path):
     assert Twin(sc).unlimited_motors == ("shoulder_act",)
 
 
+def test_init_refuses_an_arm_moved_by_a_mocap_weld_and_says_so(tmp_path):
+    """An end-effector-controlled scene (a mocap body welded to the hand, no actuator on
+    the arm, as gymnasium-robotics' Fetch) cannot replay joint-space actions: init says so
+    and writes nothing."""
+    text = arm_xml()
+    for act in ("shoulder_act", "elbow_act"):
+        start = text.index(f'<position name="{act}"')
+        text = text[:start] + text[text.index("/>", start) + 2:]
+    text = text.replace('<site name="goal"', '<body name="target" mocap="true" pos="0.3 0 0.4"/>'
+                        '\n    <site name="goal"')
+    text = text.replace("</worldbody>", "</worldbody>\n  <equality><weld body1=\"target\" "
+                        "body2=\"hand\"/></equality>")
+    (tmp_path / "arm.xml").write_text(text)
+    with pytest.raises(ScenarioError, match=r"no.*found none; the model moves its arm with a "
+                                            r"mocap body 'target' welded to 'hand'.*position "
+                                            r"actuators"):
+        init_scenario(tmp_path / "arm.xml", object_body="cube", task="pick_hold",
+                      out=tmp_path / "scenario.toml")
+    assert not (tmp_path / "scenario.toml").exists()
+
+
 def test_a_fingers_missing_force_limit_is_not_reported_as_an_unchecked_motor(tmp_path):
     """A gripper's squeeze is never motor-checked: the report's "no force limit" note
     names the arm's unlimited actuators only."""
@@ -285,10 +306,11 @@ def test_a_scenario_whose_only_hinges_are_fingers_is_an_error(tmp_path):
                                                                    f'type="slide"')
     path = tmp_path / "gantry.xml"
     path.write_text(text)
-    init_scenario(path, object_body="cube", task="pick_hold", out=tmp_path / "g.toml")
+    # init binds what it writes to a twin: it refuses, and writes nothing
     with pytest.raises(ScenarioError, match=r"hinge joint of the arm .*'jaw_act'.* drive a "
                                             r"gripper's fingers"):
-        Twin(load_scenario(tmp_path / "g.toml"))
+        init_scenario(path, object_body="cube", task="pick_hold", out=tmp_path / "g.toml")
+    assert not (tmp_path / "g.toml").exists()
 
 
 def test_init_names_a_round_objects_largest_geom(tmp_path):
