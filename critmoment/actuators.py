@@ -181,13 +181,23 @@ def parts_below(model: mujoco.MjModel, body: int) -> dict[str, list[str]]:
     return out
 
 
-def object_parts_message(name: str, parts: dict[str, list[str]]) -> str:
-    """The error for an object body with collision geoms on bodies below it."""
+def object_parts_message(model: mujoco.MjModel, body: int,
+                         parts: dict[str, list[str]]) -> str:
+    """The error for an object body with collision geoms on bodies below it: parts fixed
+    to it (no joint between) MuJoCo can merge into it; an articulated object is not
+    audited."""
+    name = model.body(body).name
     listed = "; ".join(f"{b}: {', '.join(gs)}" for b, gs in parts.items())
+    rigid = all(int(model.body_weldid[model.body(b).id]) == int(model.body_weldid[body])
+                for b in parts)
+    fix = (f"they are fixed to it (no joint between), so let MuJoCo merge them into it: add "
+           f"<compiler fusestatic=\"true\"/> to the MJCF, or move them onto {name!r}"
+           if rigid else
+           "some are joined to it by joints (an articulated object), which critmoment does "
+           "not audit: make the object one rigid body")
     return (f"[object] body {name!r}: expected its collision geoms on the body itself, got "
             f"collision geoms on bodies below it ({listed}); critmoment reads the contacts, "
-            f"mass and friction of the object body's own geoms and would not see these: put "
-            f"them on {name!r} itself")
+            f"mass and friction of the object body's own geoms and would not see these: {fix}")
 
 
 def common_ancestor(model: mujoco.MjModel, bodies: Sequence[int]) -> int:

@@ -349,7 +349,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     bid = model.body(object_body).id
     parts = act_info.parts_below(model, bid)
     if parts:
-        raise ScenarioError(act_info.object_parts_message(object_body, parts))
+        raise ScenarioError(act_info.object_parts_message(model, bid, parts))
     key = 0 if model.nkey else None
     guesses, checks = [], []
     # the volume of each geom's bounding box (geom_size's meaning depends on the type: a

@@ -570,7 +570,7 @@ class Scenario:
                 f"with {body.jntnum[0]} joint(s); free bodies: {_listing(free)}")
         parts = act_info.parts_below(model, body.id)
         if parts:
-            raise ScenarioError(act_info.object_parts_message(self.object_body, parts))
+            raise ScenarioError(act_info.object_parts_message(model, body.id, parts))
         owner = model.geom_bodyid[model.geom(self.object_geom).id]
         if owner != body.id:
             raise ScenarioError(
@@ -715,12 +715,22 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
     if object_body is not None and friction_geoms:
         body = spec.body(object_body)
         if body is not None:
-            own = [g for g in body.geoms]
+            own = _rigid_geoms(body)
             if any(g.name in friction_geoms for g in own):
                 top = max((g.priority for g in geoms), default=0)
                 for g in own:
                     g.priority = top + 1
     return spec
+
+
+def _rigid_geoms(body) -> list:
+    """The geoms of a spec body and of the bodies below it with no joint of their own (parts
+    fixed to it, which ``<compiler fusestatic="true"/>`` merges into it)."""
+    out = list(body.geoms)
+    for child in body.bodies:
+        if not child.joints:
+            out += _rigid_geoms(child)
+    return out
 
 
 def compile_spec(spec: mujoco.MjSpec, mjcf: Path) -> mujoco.MjModel:

@@ -355,3 +355,36 @@ def test_an_object_whose_geoms_hang_on_a_child_body_is_refused(tmp_path):
     (tmp_path / "p.toml").write_text(toml)
     with pytest.raises(ScenarioError, match=r"bodies below it \(shell: cube\)"):
         load_scenario(tmp_path / "p.toml")
+
+
+def test_an_objects_fixed_parts_merge_with_fusestatic(tmp_path):
+    """A part fixed to the object (no joint between, as gymnasium-robotics' kitchen kettle):
+    the error says how MuJoCo merges it; with ``fusestatic`` the scenario loads and the
+    part's geom, now the object's, gets the priority its friction parameter needs. A part
+    on a joint of its own is an articulated object: refused as such."""
+    shell = ('<geom name="core" type="sphere" size="0.002" mass="0.01"/>\n'
+             '      <body name="shell">{joint}<geom name="cube" type="box" size="0.02 0.02 0.02" '
+             'mass="0.1" friction="0.8"/></body>')
+    plain = '<geom name="cube" type="box" size="0.02 0.02 0.02" mass="0.1" friction="0.8"/>'
+    text = arm_xml(gripper="slides").replace(plain, shell.format(joint=""))
+    (tmp_path / "rigid.xml").write_text(text)
+    with pytest.raises(ScenarioError, match=r"fixed to it \(no joint between\).*"
+                                            r"fusestatic=\"true\""):
+        init_scenario(tmp_path / "rigid.xml", object_body="cube", task="pick_hold",
+                      out=tmp_path / "r.toml")
+    fused = text.replace('<option ', '<compiler fusestatic="true"/>\n  <option ')
+    (tmp_path / "fused.xml").write_text(fused)
+    init_scenario(tmp_path / "fused.xml", object_body="cube", task="pick_hold",
+                  out=tmp_path / "f.toml")
+    sc = load_scenario(tmp_path / "f.toml")
+    model = Twin(sc).model
+    box = model.geom("cube").id
+    assert model.geom_bodyid[box] == model.body("cube").id
+    others = [g for g in range(model.ngeom) if model.geom_bodyid[g] != model.body("cube").id]
+    assert model.geom_priority[box] > model.geom_priority[others].max()
+    hinged = arm_xml(gripper="slides").replace(
+        plain, shell.format(joint='<joint name="lid" type="hinge"/>'))
+    (tmp_path / "hinged.xml").write_text(hinged)
+    with pytest.raises(ScenarioError, match=r"articulated object"):
+        init_scenario(tmp_path / "hinged.xml", object_body="cube", task="pick_hold",
+                      out=tmp_path / "h.toml")
