@@ -861,23 +861,25 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
                  twin: Twin, evaluator: sp.SparseEvaluator, steps: np.ndarray,
                  sides: Sequence[str], options: vd.DecisionOptions, nominal_completed: bool,
                  exhaustive: bool = False, nthread: int = 0, per_edge: int = 3,
-                 worst: int = 2, margin: float = 0.01, max_rounds: int = 4,
+                 margin: float = 0.01, max_rounds: int = 4,
                  reference: NominalReference | None = None) -> vd.RegionCheck:
     """Check a claimed safe region on its corners and edges, and shrink it until it holds.
 
     Each round evaluates the region's corners and edges (:func:`critmoment.verdict.
-    region_points`, ``per_edge`` points per edge, 4× denser on edges where the cost comes
-    within ``verify × threshold``, unless a coarse point already fails) by sparse evaluation
-    at the audit's moments, and decides
-    the ``worst`` highest-cost points that pass (and those that fail only unlifted) by their
-    own full rollout (:func:`critmoment.groundtruth.brute_force`) once no point fails the
-    sparse evaluation (before, the region shrinks anyway); with ``options.chain`` its worst
-    corner (every parameter at its failing side in ``sides``), if it passes without a
-    rollout of its own, is carried on its own state (:func:`chain_samples`), as the sweep's
-    samples are. When a point fails, the
-    region's failing-side faces move in (:func:`critmoment.verdict.shrink_region`: its new
-    worst corner is a checked point that passed, ``margin`` prior-quantile units from every
-    failing one) and the next round checks the new region.
+    region_points`, ``per_edge`` points per edge, corners included, 4× denser on edges where
+    the cost comes within ``verify × threshold``, unless a coarse point already fails) by
+    sparse evaluation at the audit's moments. While a point fails there in a way sparse
+    evaluation decides alone, the region shrinks at once. Once none does, every point is
+    decided as a sample of the sweep is, by :func:`sample_runs` and
+    :func:`critmoment.verdict.failing_samples` (the one decision path): the points the
+    sweep cannot decide by their own full rollout, every other one by its own run through
+    the moments (chained, with ``options.chain``). A region holds only where each of its
+    checked points passes so: sparse evaluation from the nominal states alone passed
+    corners whose own runs drop the object (robosuite's xArm7 with its own gripper, where
+    friction changes the path). When a point fails, the region's failing-side faces move
+    in (:func:`critmoment.verdict.shrink_region`: its new worst corner is a checked point
+    that passed, ``margin`` prior-quantile units from every failing one) and the next
+    round checks the new region.
 
     Args:
         region: the claimed region, {name: (low, high)}.
@@ -891,7 +893,6 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         exhaustive: evaluate every moment over its whole horizon (else first failure).
         nthread: threads (0: all CPUs).
         per_edge: points per edge, corners included.
-        worst: extra full rollouts of the highest-cost passing points per round.
         margin: distance a shrunk face keeps from a failing point (prior quantiles).
         max_rounds: rounds before giving up (no region then).
         reference: the nominal run of an earlier :func:`~critmoment.groundtruth.brute_force`
@@ -907,72 +908,48 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
     n_sparse = n_rollouts = n_chained = 0
     current: dict | None = vd.round_inward(first, box)
     pts = np.zeros((0, box.ndim))
-    fails = rolled = np.zeros(0, bool)
+    fails = rolled = chained = np.zeros(0, bool)
+    rounds = 0
     for rnd in range(1, max_rounds + 1):
         if current is None:
             break
+        rounds = rnd
         pts, edges = vd.region_points(current, box, per_edge=per_edge)
         res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
         n_sparse += pts.shape[0]
         hot = vd.hot_edges(edges, res.worst_cost(), near=near_cost)
-        coarse_fails = (res.failed_any & ~res.failed_unlifted_only).any()
-        if hot and not (coarse_fails and rnd < max_rounds):
+        if hot and not (_sparse_fails(res, options).any() and rnd < max_rounds):
             pts, edges = vd.region_points(current, box, per_edge=per_edge, dense=hot)
             res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
             n_sparse += pts.shape[0]
-        cost = res.worst_cost()
-        # sparse evaluation decides every point; the worst points that pass (and those that
-        # fail only unlifted) are decided by their own full rollout
-        reruns = vd.samples_to_rerun(res, options, nominal_completed=True)
-        # failures only a rollout can decide
-        unlifted = reruns.unlifted | reruns.sticking | reruns.slipping
-        rolled = unlifted | vd.points_to_roll_out(cost, res.failed_any, unlifted, worst=worst)
-        if (res.failed_any & ~unlifted).any():
-            rolled = np.zeros(pts.shape[0], bool)  # it shrinks anyway: rollouts next round
-        outcome = np.zeros(pts.shape[0], bool)
-        if rolled.any():
-            outcome[rolled] = roll(pts[rolled])
+        rolled = chained = np.zeros(pts.shape[0], bool)
+        if _sparse_fails(res, options).any():
+            fails = np.array(res.failed_any, dtype=bool)  # it shrinks: no runs this round
+        else:
+            runs, _ = sample_runs(evaluator, steps, pts, res, options, roll=roll,
+                                  nominal_completed=nominal_completed, nthread=nthread)
+            fails = vd.failing_samples(runs.evidence(res, nominal_completed=nominal_completed),
+                                       options)
+            rolled, chained = runs.rerun, runs.chained & ~runs.rerun
             n_rollouts += int(rolled.sum())
-        fails = np.array(res.failed_any, dtype=bool)
-        if options.require_task and not nominal_completed:
-            fails[:] = True
-        fails[rolled] = outcome[rolled]
-        if not fails.any():
-            # the sweep's decision path: the region's worst corner (every parameter at its
-            # failing side, the worst combination the region's cuts assume), unless its own
-            # rollout decided it, is carried on its own state (a soft grip's creep, a shifted
-            # grip); one run, where chaining every corner took 2^k
-            worst_corner = _worst_corner(pts, current, box, sides)
-            chained, chained_failed, suspect = chain_samples(
-                evaluator, steps, pts, res, rolled | ~worst_corner, options,
-                nominal_completed=nominal_completed)
-            fails[chained] = chained_failed[chained]
             n_chained += int(chained.sum())
-            if suspect.any() and options.verify is not None:
-                fails[suspect] = roll(pts[suspect])
-                n_rollouts += int(suspect.sum())
         if not fails.any():
             return vd.RegionCheck(region=current, points=pts, failed=fails, rolled_out=rolled,
                                   rounds=rnd, n_sparse=n_sparse, n_rollouts=n_rollouts,
-                                  n_chained=n_chained,
-                                  first_claim=first)
+                                  n_chained=n_chained, chained=chained, first_claim=first)
         current = vd.round_inward(vd.shrink_region(current, pts[fails], box, sides,
                                                    margin=margin, passing=pts[~fails]), box)
     return vd.RegionCheck(region=None, points=pts, failed=fails, rolled_out=rolled,
-                          rounds=max_rounds, n_sparse=n_sparse, n_rollouts=n_rollouts,
-                          n_chained=n_chained,
-                          first_claim=first)
+                          rounds=rounds, n_sparse=n_sparse, n_rollouts=n_rollouts,
+                          n_chained=n_chained, chained=chained, first_claim=first)
 
 
-def _worst_corner(points: np.ndarray, region: Mapping[str, tuple[float, float]], box,
-                  sides: Sequence[str]) -> np.ndarray:
-    """(n,) bool: the points at the region's corner where every parameter sits at its
-    failing side ("above": its high bound; "below": its low bound)."""
-    at = np.ones(points.shape[0], bool)
-    for j, (name, side) in enumerate(zip(box.names, sides, strict=True)):
-        lo, hi = region[name]
-        at &= np.isclose(points[:, j], hi if side == "above" else lo)
-    return at
+def _sparse_fails(res: sp.SparseResult, options: vd.DecisionOptions) -> np.ndarray:
+    """(p,) bool: the points whose sparse evaluation fails in a way it decides alone (not
+    one that only their own rollout decides, :func:`critmoment.verdict.samples_to_rerun`)."""
+    reruns = vd.samples_to_rerun(res, options, nominal_completed=True)
+    return (np.asarray(res.failed_any, dtype=bool)
+            & ~(reruns.unlifted | reruns.sticking | reruns.slipping))
 
 
 class _Rollouts:

@@ -310,13 +310,18 @@ def _gripper_actuators(twin: Twin) -> set[int]:
 def _force_limit(twin: Twin, a: int) -> tuple[float, str]:
     """The smallest force limit of actuator ``a`` in actuator units, and where it comes from."""
     m = twin.model
-    candidates = [(float(twin.limits[a]), "[limits]")]
+    # the scenario's limit is named as such only where its [limits] table sets it (else it
+    # is the model's own, read from the attributes below); first, so that it wins a tie
+    source = twin.scenario.limit_sources.get(twin.actuator_names[a], "scenario")
+    candidates = [(float(twin.limits[a]), "[limits]")] if source == "scenario" else []
     if m.actuator_forcelimited[a]:
         candidates.append((float(np.abs(m.actuator_forcerange[a]).min()), "forcerange"))
     j = int(m.actuator_trnid[a, 0])
     gear = abs(float(m.actuator_gear[a, 0])) or 1.0
     if m.jnt_actfrclimited[j]:
         candidates.append((float(np.abs(m.jnt_actfrcrange[j]).min()) / gear, "actuatorfrcrange"))
+    if not candidates:
+        candidates.append((float(twin.limits[a]), "the model"))
     return min(candidates, key=lambda c: c[0])
 
 
@@ -484,7 +489,10 @@ def _blocking_contact(model: mujoco.MjModel, states: np.ndarray, start: float,
         mujoco.mj_fwdPosition(model, data)
         con = data.contact
         g1, g2 = np.asarray(con.geom1)[:data.ncon], np.asarray(con.geom2)[:data.ncon]
-        touching = np.asarray(con.dist)[:data.ncon] <= 0
+        # active contacts: within the geoms' margin less their gap (MuJoCo applies force
+        # there), not only penetrating ones (Baxter's arm geoms have margin 1 mm)
+        touching = (np.asarray(con.dist)[:data.ncon]
+                    < np.asarray(con.includemargin)[:data.ncon])
         b1, b2 = model.geom_bodyid[g1], model.geom_bodyid[g2]
         g1, g2, b1, b2 = g1[touching], g2[touching], b1[touching], b2[touching]
         across = carried[b1] != carried[b2]

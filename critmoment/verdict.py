@@ -23,8 +23,8 @@ The decision path, in order:
 3. :func:`candidate_region`: the largest sub-box, anchored at the box's safe corner, with
    no failing sample, cut where a critical value (others at nominal) says it fails; none
    when no sample passes. The audit checks it (:func:`region_points` on its corners and
-   edges, densified where the cost is near the threshold, by sparse evaluation, the same
-   decision path, and full rollouts of its worst points) and shrinks it
+   edges, densified where the cost is near the threshold, by sparse evaluation and then
+   each point on its own run, the samples' decision path) and shrinks it
    (:func:`shrink_region`) until it holds: a :class:`RegionCheck`.
 4. :func:`decide`: UNSAFE when the nominal parameters fail; SAFE when no sample and no
    worst case fails and the whole box passes its check; else CONDITIONAL with the checked
@@ -66,7 +66,6 @@ __all__ = [
     "candidate_region",
     "region_points",
     "hot_edges",
-    "points_to_roll_out",
     "shrink_region",
     "round_inward",
     "region_text",
@@ -743,18 +742,6 @@ def hot_edges(edges: Sequence[np.ndarray], cost: np.ndarray, *, near: float) -> 
     return [i for i, e in enumerate(edges) if hot[e].any()]
 
 
-def points_to_roll_out(cost: np.ndarray, failed: np.ndarray, already: np.ndarray, *,
-                       worst: int) -> np.ndarray:
-    """The region check's worst points: the ``worst`` highest-cost points that pass and have
-    no rollout yet, (p,) bool."""
-    cost = np.nan_to_num(np.asarray(cost, dtype=np.float64), nan=-np.inf)
-    free = ~np.asarray(failed, dtype=bool) & ~np.asarray(already, dtype=bool)
-    out = np.zeros(cost.shape, bool)
-    order = [i for i in np.argsort(-cost, kind="stable") if free[i]]
-    out[order[:max(0, int(worst))]] = True
-    return out
-
-
 def shrink_region(region: Mapping[str, tuple[float, float]], failing: np.ndarray,
                   box: UncertaintyBox, sides: Sequence[str], *, margin: float = 0.01,
                   passing: np.ndarray | None = None) -> dict[str, tuple[float, float]] | None:
@@ -800,7 +787,9 @@ def shrink_region(region: Mapping[str, tuple[float, float]], failing: np.ndarray
     if cut is None:
         cut = _best_cut(bad, a, b, float(margin))
     if cut is None:
-        return None
+        # a failure on a face the failing sides keep (failures at both ends of a
+        # parameter): move any face
+        return _any_face_cut(lo, hi, failing, box, float(margin), passing)
     out = {}
     for j, p in enumerate(box.parameters):
         if np.isclose(cut[j], b[j], rtol=0, atol=1e-12):
@@ -813,6 +802,57 @@ def shrink_region(region: Mapping[str, tuple[float, float]], failing: np.ndarray
     return out
 
 
+def _any_face_cut(lo: np.ndarray, hi: np.ndarray, failing: np.ndarray, box: UncertaintyBox,
+                  margin: float, passing: np.ndarray | None = None
+                  ) -> dict[str, tuple[float, float]] | None:
+    """The region [lo, hi] cut, face by face, until every failing point is outside it: each
+    cut moves one face, low or high, of one parameter past a failing point on it, half way
+    (in prior quantiles; at least ``margin``) towards the nearest checked point that passed
+    inside, or the opposite face; of the possible cuts, the one that keeps the most volume.
+    Greedy, for failures at both ends of a parameter, where the failing sides' cut finds
+    none; the next round of the check verifies what it leaves. None when nothing is left."""
+    u_lo = box.to_unit(lo[None])[0].astype(np.float64)
+    u_hi = box.to_unit(hi[None])[0].astype(np.float64)
+    bad = box.to_unit(np.asarray(failing, dtype=np.float64).reshape(-1, box.ndim))
+    good = (np.zeros((0, box.ndim)) if passing is None or not np.size(passing) else
+            box.to_unit(np.asarray(passing, dtype=np.float64).reshape(-1, box.ndim)))
+    tol = 1e-12
+    for _ in range(bad.shape[0]):
+        inside = bad[((bad >= u_lo - tol) & (bad <= u_hi + tol)).all(axis=1)]
+        if inside.shape[0] == 0:
+            break
+        best, best_vol = None, -1.0
+        for f in inside:
+            for j in range(box.ndim):
+                below = good[:, j][good[:, j] < f[j] - tol]
+                above = good[:, j][good[:, j] > f[j] + tol]
+                to_lo = f[j] - max(below.max(initial=u_lo[j]), u_lo[j])
+                to_hi = min(above.min(initial=u_hi[j]), u_hi[j]) - f[j]
+                for face, value in ((1, f[j] - max(margin, 0.5 * to_lo)),
+                                    (0, f[j] + max(margin, 0.5 * to_hi))):
+                    new_lo, new_hi = u_lo.copy(), u_hi.copy()
+                    (new_hi if face else new_lo)[j] = value
+                    if not (new_hi[j] - new_lo[j] > tol):
+                        continue
+                    vol = float(np.prod(new_hi - new_lo))
+                    if vol > best_vol:
+                        best, best_vol = (new_lo, new_hi), vol
+        if best is None:
+            return None
+        u_lo, u_hi = best
+    if ((bad >= u_lo - tol) & (bad <= u_hi + tol)).all(axis=1).any():
+        return None
+    start_lo, start_hi = box.to_unit(lo[None])[0], box.to_unit(hi[None])[0]
+    x_lo, x_hi = box.from_unit(u_lo[None])[0], box.from_unit(u_hi[None])[0]
+    out = {}
+    for j, p in enumerate(box.parameters):
+        # a face that did not move keeps its exact value
+        a = lo[j] if u_lo[j] == start_lo[j] else float(np.clip(x_lo[j], lo[j], hi[j]))
+        b = hi[j] if u_hi[j] == start_hi[j] else float(np.clip(x_hi[j], lo[j], hi[j]))
+        out[p.name] = (float(a), float(b))
+    return out
+
+
 @dataclasses.dataclass(frozen=True, eq=False)
 class RegionCheck:
     """The check of a safe region on its corners and edges.
@@ -820,14 +860,16 @@ class RegionCheck:
     Attributes:
         region: the region that holds, {name: (low, high)}, or None when none does.
         points: the points checked in the last (holding) round, (p, k).
-        failed: their decision (sparse evaluation, then own rollouts), (p,) bool.
+        failed: their decision (sparse evaluation, then their own runs: the one decision
+            path of the sweep's samples), (p,) bool.
         rolled_out: which of them have their own full rollout, (p,) bool.
         rounds: check-and-shrink rounds.
         n_sparse: points evaluated by sparse evaluation over every round.
         n_rollouts: full rollouts over every round.
         first_claim: the region first claimed (before any shrinking), or None.
-        n_chained: worst corners (every parameter at its failing side) carried on their
-            own state through the moments (chained segments) over every round.
+        n_chained: points carried on their own state through the moments (chained
+            segments, each its own run from the start) over every round.
+        chained: which points of the last round were chained, (p,) bool, or None.
     """
 
     region: Mapping[str, tuple[float, float]] | None
@@ -839,6 +881,15 @@ class RegionCheck:
     n_rollouts: int
     first_claim: Mapping[str, tuple[float, float]] | None = None
     n_chained: int = 0
+    chained: np.ndarray | None = None
+
+    @property
+    def own_runs(self) -> int:
+        """Points of the last round decided on their own run (full rollout or chain)."""
+        own = np.asarray(self.rolled_out, dtype=bool)
+        if self.chained is not None:
+            own = own | np.asarray(self.chained, dtype=bool)
+        return int(own.sum())
 
     @property
     def holds(self) -> bool:
@@ -858,7 +909,8 @@ class RegionCheck:
                 "holds": self.holds, "rounds": self.rounds,
                 "points": int(self.points.shape[0]), "sparse": self.n_sparse,
                 "rollouts": self.n_rollouts, "chained": self.n_chained,
-                "rollouts_last_round": int(self.rolled_out.sum())}
+                "rollouts_last_round": int(self.rolled_out.sum()),
+                "own_runs_last_round": self.own_runs}
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -1104,18 +1156,25 @@ def region_text(region: Mapping[str, tuple[float, float]] | None, box: Uncertain
         return "no safe region: fails at the nominal parameters"
     evidence = ""
     if check is not None and region is not None:
-        chained = ("" if not check.n_chained else
-                   ", its worst corner also on its own run through the moments"
-                   if check.n_chained == 1 else
-                   f", {check.n_chained} worst corners (one per round) also on their own run "
-                   f"through the moments")
-        evidence = (f" (checked at {check.n_sparse} points of its corners and edges by sparse "
-                    f"evaluation{chained}, and by {check.n_rollouts} full rollouts of its worst "
-                    f"points)")
+        p, own = int(check.points.shape[0]), check.own_runs
+        rolled = int(np.asarray(check.rolled_out, dtype=bool).sum())
+        runs = ", ".join(part for part in (
+            f"{own - rolled} chained through the moments" if own > rolled else "",
+            f"{rolled} full rollout{'s' if rolled != 1 else ''}" if rolled else "") if part)
+        if own == p:
+            evidence = (f" (checked at {p} points of its corners and edges by sparse "
+                        f"evaluation and on each point's own run: {runs})")
+        elif own:
+            evidence = (f" (checked at {p} points of its corners and edges by sparse "
+                        f"evaluation, {own} of them also on their own run: {runs})")
+        else:
+            evidence = (f" (checked at {p} points of its corners and edges by sparse "
+                        f"evaluation only)")
     if region is None:
         if check is not None and check.first_claim is not None:
             return (f"no safe region: every sub-box tried failed its check at its corners and "
-                    f"edges ({check.n_sparse} points, {check.n_rollouts} full rollouts)")
+                    f"edges ({check.n_sparse} sparse evaluations, {check.n_chained} chained runs, "
+                    f"{check.n_rollouts} full rollouts)")
         return ("no safe region: no sub-box at the box's safe corner is free of failing "
                 "samples")
     words = _bounds_text(region, box)

@@ -184,6 +184,59 @@ def test_servo_too_weak_for_gravity_lags(weak):
     assert "force limit 0.5 N·m" in msg
 
 
+def test_a_limit_the_model_sets_is_named_by_its_attribute(tmp_path):
+    """The same weak servo with an empty [limits] table: its 0.5 N·m is the model's
+    forcerange, and the message names that, not the scenario's table."""
+    path = _scene(tmp_path, axis="0 1 0", limit=0.5)
+    path.write_text(path.read_text().replace("servo = 0.5\n", ""))
+    twin = Twin(load_scenario(path))
+    assert twin.scenario.limit_sources["servo"] == "mjcf"
+    rec = _record(twin, _ramp(0.0, seconds=4.0))
+    report = check_feasibility(rec, twin, raise_on_failure=False)
+    assert not report.feasible
+    assert "force limit 0.5 N·m (forcerange)" in report.problems[0]
+    assert "([limits])" not in report.problems[0]
+
+
+def test_a_contact_inside_the_geoms_margin_holds_a_joint_back(tmp_path):
+    """MuJoCo applies contact force from ``dist < margin - gap``, before the geoms touch:
+    an arm pushed into an obstacle by a margin of 2 cm stops short of it, and the contact
+    is named as what holds it back (Baxter's arm geoms have margin 1 mm)."""
+    xml = f"""<mujoco model="blocked">
+  <compiler angle="radian" inertiafromgeom="true"/>
+  <option timestep="0.002" integrator="implicitfast" gravity="0 0 0"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="2 2 0.1" pos="0 0 -0.5"/>
+    <body name="arm" pos="0 0 0.5">
+      <joint name="hinge" type="hinge" axis="0 0 1" range="-2 2" damping="1"/>
+      <geom name="link" type="box" size="{LINK_L / 2} 0.02 0.02" pos="{LINK_L / 2} 0 0"
+            mass="{LINK_MASS}" margin="0.02"/>
+      <geom name="pad" type="box" size="0.01 0.02 0.02" pos="{LINK_L} 0 0" mass="0"
+            contype="0" conaffinity="0"/>
+    </body>
+    <geom name="wall" type="box" size="0.05 0.01 0.1" pos="0.2 0.12 0.5"/>
+    <body name="box" pos="1 1 -0.48">
+      <freejoint/>
+      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.1"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="servo" joint="hinge" kp="50" kv="5" forcerange="-5 5"/>
+  </actuator>
+</mujoco>
+"""
+    (tmp_path / "arm.xml").write_text(xml)
+    path = _scene(tmp_path, axis="0 0 1", limit=5.0)
+    (tmp_path / "arm.xml").write_text(xml)
+    twin = Twin(load_scenario(path))
+    rec = _record(twin, _ramp(1.0, seconds=3.0))
+    report = check_feasibility(rec, twin, raise_on_failure=False)
+    entry = report.joint("hinge")
+    assert entry.max_lag > 0.3
+    assert "wall" in entry.blocked_by and "link" in entry.blocked_by
+    assert any("held back by a contact" in w for w in report.warnings)
+
+
 def test_strong_servo_holds_with_the_static_error(strong):
     rec = _record(strong, _ramp(0.0))
     report = check_feasibility(rec, strong)

@@ -261,6 +261,25 @@ def test_shrinking_lands_on_a_checked_point_that_passed():
     assert region["mass"][1] > 0.1  # not shrunk to nothing
 
 
+def test_failures_at_both_ends_of_a_parameter_move_both_faces():
+    """Failing at low and at high friction (a grip that slips, and one that drags the
+    object along): the failing sides' cut cannot keep the low-friction failures out (they
+    sit on the face it keeps), so both faces move in, half way to the passing points, and
+    the region that is left excludes every failure."""
+    box = _box()
+    region = {"mass": (0.05, 0.5), "friction": (0.2, 1.5)}
+    pts, _ = vd.region_points(region, box, per_edge=3)
+    fails = (pts[:, 1] <= 0.2) | (pts[:, 1] >= 1.5)
+    out = vd.shrink_region(region, pts[fails], box, ["above", "above"], passing=pts[~fails])
+    assert out is not None
+    assert out["mass"] == (0.05, 0.5)
+    assert 0.2 < out["friction"][0] < 0.85 < out["friction"][1] < 1.5
+    np.testing.assert_allclose(out["friction"], (0.525, 1.175))
+    # a region with a failure inside every possible cut is no region
+    assert vd.shrink_region({"mass": (0.05, 0.05), "friction": (0.2, 0.2)},
+                            np.array([[0.05, 0.2]]), box, ["above", "above"]) is None
+
+
 def test_region_points_cover_corners_and_densified_edges():
     box = _box()
     region = {"mass": (0.05, 0.5), "friction": (0.4, 1.5)}
@@ -300,13 +319,17 @@ def test_decide_asks_for_the_region_check_then_states_it_with_its_evidence():
     assert lo < first.p_success < hi
     pts, _ = vd.region_points(first.region_to_check, box)
     check = vd.RegionCheck(region=first.region_to_check, points=pts,
-                           failed=np.zeros(len(pts), bool), rolled_out=np.zeros(len(pts), bool),
+                           failed=np.zeros(len(pts), bool), rolled_out=np.arange(len(pts)) < 4,
                            rounds=1, n_sparse=len(pts), n_rollouts=4,
+                           chained=np.arange(len(pts)) >= 4, n_chained=len(pts) - 4,
                            first_claim=first.region_to_check)
     final = vd.decide(vd.Evidence(**{**ev.__dict__, "region": check}), OPT)
     assert final.safe_region == first.region_to_check
     assert final.safe_region_text.startswith("safe for mass ≤")
-    assert "by 4 full rollouts" in final.safe_region_text
+    assert (f"checked at {len(pts)} points of its corners and edges by sparse evaluation and "
+            f"on each point's own run: {len(pts) - 4} chained through the moments, 4 full "
+            "rollouts") in final.safe_region_text
+    assert check.to_json()["own_runs_last_round"] == len(pts)
     # a check that found no holding region leaves none
     failed_check = vd.RegionCheck(region=None, points=pts, failed=np.ones(len(pts), bool),
                                   rolled_out=np.zeros(len(pts), bool), rounds=4,
