@@ -523,7 +523,42 @@ def _warning_lines(caught, command: str) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     """Runs the command line; returns the exit code (0 ok, 1 not safe, 2 error)."""
-    parser = build_parser()
+    with _terminate_as_interrupt():
+        return _main(argv)
+
+
+@contextlib.contextmanager
+def _terminate_as_interrupt() -> Iterator[None]:
+    """SIGTERM (``kill``, a job scheduler's stop) ends the run as Ctrl-C does: the output
+    being written is removed, the previous one kept, exit 2. Only in the main thread (where
+    Python runs signal handlers); the previous handler comes back after."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def stop(signum, frame):
+        raise KeyboardInterrupt
+
+    try:
+        previous = signal.signal(signal.SIGTERM, stop)
+    except (ValueError, OSError):  # no signals here (an embedded interpreter)
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _main(argv: list[str] | None) -> int:
+    try:
+        parser = build_parser()
+    except KeyboardInterrupt:
+        print("critmoment: interrupted; no output was written", file=sys.stderr)
+        return EXIT_ERROR
     try:
         args, extra = parser.parse_known_args(argv)
         if extra:  # reported by the command's parser, so the line names the command

@@ -16,7 +16,11 @@ Models load as they ship. critmoment compiles its own copy through ``mujoco.MjSp
   the object's friction, so that the object's friction governs its contacts (MuJoCo mixes
   two geoms' friction with ``max`` unless one has the higher priority). The pads' own
   friction then no longer acts on the object's contacts; it still acts on every other
-  contact of the pads.
+  contact of the pads;
+* compiles a body whose centre of mass the box moves (``com_offset``) as not ``simple``:
+  MuJoCo treats a body whose inertial frame is its own as simple, and refuses a centre of
+  mass moved off that frame at run time (``mj_setConstGroups``: "sameframe no longer
+  holds").
 """
 
 from __future__ import annotations
@@ -176,6 +180,10 @@ def _names(table, key, where, default=...) -> tuple[str, ...] | None:
 # ---------------------------------------------------------------------------
 
 
+#: the largest exponent α, β of the cost (exp(50) ≈ 5e21: a step already)
+MAX_COST_EXPONENT = 50.0
+
+
 @dataclasses.dataclass(frozen=True)
 class CostParams:
     """Constants of the cost C = A·exp(−α(FOS_c − 1)) + B·exp(−β(FOS_m − 1)) (thesis eq. 15)."""
@@ -191,6 +199,20 @@ class CostParams:
             value = getattr(self, key)
             if not (np.isfinite(value) and value > 0):
                 raise ScenarioError(f"[cost] {key}: expected a finite number > 0, got {value!r}")
+        for key in ("alpha", "beta"):
+            value = getattr(self, key)
+            if value > MAX_COST_EXPONENT:
+                raise ScenarioError(
+                    f"[cost] {key}: expected at most {MAX_COST_EXPONENT:g} (the sharpness of "
+                    f"the cost's exponential in the factor of safety; above it the cost is a "
+                    f"step and its largest value, at a factor of safety 0, overflows), got "
+                    f"{value!r}")
+        largest = self.A * math.exp(self.alpha) + self.B * math.exp(self.beta)
+        if not self.threshold < largest:
+            raise ScenarioError(
+                f"[cost] threshold: expected below the largest cost the formula gives, "
+                f"A·exp(α) + B·exp(β) = {largest:.4g} (both factors of safety at 0), got "
+                f"{self.threshold!r}: no grip and no motor could ever fail")
 
 
 
@@ -485,8 +507,7 @@ class Scenario:
 
     def load_spec(self) -> mujoco.MjSpec:
         """The scenario's MJCF as critmoment's own MjSpec (see :func:`prepare_spec`)."""
-        return prepare_spec(self.mjcf, object_body=self.object_body,
-                            friction_geoms=_friction_targets(self.box))
+        return prepare_spec(self.mjcf, object_body=self.object_body, **_spec_targets(self.box))
 
     def load_model(self) -> mujoco.MjModel:
         """Compile the scenario's MJCF (without critmoment's sensors)."""
@@ -619,8 +640,13 @@ def _listing(pool: Sequence[str], limit: int = 40) -> str:
     return (", ".join(shown[:limit]) + (f", ... ({more} more)" if more > 0 else "")) or "(none)"
 
 
-def _friction_targets(box: UncertaintyBox) -> tuple[str, ...]:
-    return tuple(p.target for p in box.parameters if isinstance(p, FrictionParameter))
+def _spec_targets(box: UncertaintyBox) -> dict[str, tuple[str, ...]]:
+    """:func:`prepare_spec`'s keywords for the box: the geoms whose friction it varies and
+    the bodies whose centre of mass it moves."""
+    return {"friction_geoms": tuple(p.target for p in box.parameters
+                                    if isinstance(p, FrictionParameter)),
+            "com_bodies": tuple(p.target for p in box.parameters
+                                if isinstance(p, ComOffsetParameter))}
 
 
 def _collides(model: mujoco.MjModel, a: int, b: int) -> bool:
@@ -669,7 +695,7 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
 
 
 def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
-                 friction_geoms: Sequence[str] = (),
+                 friction_geoms: Sequence[str] = (), com_bodies: Sequence[str] = (),
                  what: str = "[model] mjcf") -> mujoco.MjSpec:
     """The MJCF as an MjSpec, made ready for critmoment (see the module docstring).
 
@@ -678,6 +704,8 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
         object_body: the object's body; when ``friction_geoms`` names any of its geoms,
             the object's geoms get a priority above every other geom.
         friction_geoms: geoms whose friction the uncertainty box varies.
+        com_bodies: bodies whose centre of mass the uncertainty box moves (compiled as not
+            simple).
         what: where the path came from, for messages.
 
     Raises:
@@ -720,6 +748,10 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
                 top = max((g.priority for g in geoms), default=0)
                 for g in own:
                     g.priority = top + 1
+    for name in com_bodies:
+        body = spec.body(name)
+        if body is not None:
+            body.simple = 0
     return spec
 
 
@@ -959,7 +991,7 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         raise ScenarioError("[uncertainty]: expected at least one parameter table")
     box = UncertaintyBox(tuple(_parameter(n, s) for n, s in unc.items()))
 
-    spec = prepare_spec(mjcf, object_body=object_body, friction_geoms=_friction_targets(box))
+    spec = prepare_spec(mjcf, object_body=object_body, **_spec_targets(box))
     model = compile_spec(spec, mjcf)
     object_geom = _object_geom(object_t, model, object_body)
     key_id = None

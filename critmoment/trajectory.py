@@ -921,6 +921,8 @@ def _h5_object_pose(fh: Any, *, path: Path) -> np.ndarray | None:
             value = _h5_read(raw, path=path) if hasattr(raw, "shape") and hasattr(
                 raw, "name") else np.asarray(raw, dtype=np.float64)
             value = np.asarray(value, dtype=np.float64)
+            if value.ndim == 2 and value.shape[0] == 0:
+                raise ValueError(f"shape {value.shape}: no rows")
             row = value[0] if value.ndim == 2 else value
             if row.ndim != 1 or row.shape[0] < 7:
                 raise ValueError(f"shape {value.shape}, expected (7,) or (T, >=7)")

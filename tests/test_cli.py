@@ -197,3 +197,30 @@ def test_verbose_errors_add_the_traceback(capsys):
     err = capsys.readouterr().err
     assert "Traceback" in err and err.strip().splitlines()[-1].startswith(
         "critmoment rollout: error: ")
+
+
+def test_sigterm_ends_a_run_as_ctrl_c_does(traj_file, tmp_path, capsys, monkeypatch):
+    """``kill`` (SIGTERM) during an audit: exit 2, "interrupted", the previous output kept
+    whole and no temporary folder left behind (it used to leave ``.DIR.critmoment-tmp-*``
+    and die with 143); the process's own SIGTERM handler is back afterwards."""
+    import os
+    import signal
+
+    from critmoment import analysis
+
+    out = tmp_path / "report"
+    assert main(["rollout", str(traj_file), "--out", str(out)]) == 0
+    before = sorted(p.name for p in out.iterdir())
+    capsys.readouterr()
+
+    def killed(*args, **kwargs):
+        os.kill(os.getpid(), signal.SIGTERM)
+        raise AssertionError("SIGTERM did not stop the audit")
+
+    monkeypatch.setattr(analysis, "analyze", killed)
+    handler = signal.getsignal(signal.SIGTERM)
+    assert main(["analyze", str(traj_file), "--samples", "8", "--out", str(out)]) == 2
+    assert "critmoment analyze: error: interrupted; no output was written" in capsys.readouterr().err
+    assert sorted(p.name for p in out.iterdir()) == before
+    assert [p.name for p in tmp_path.iterdir()] == ["report"]
+    assert signal.getsignal(signal.SIGTERM) is handler

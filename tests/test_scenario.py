@@ -163,6 +163,10 @@ def test_mjcf_that_does_not_compile(tmp_path):
     ("horizon = 10", 'horizon = "10"', r"\[sparse\] horizon: expected an integer"),
     ("horizon = 10", "horizon = 10\npersistence = -1.0", r"\[sparse\] persistence: expected a time >= 0"),
     ("threshold = 0.9", "threshold = 0.0", r"\[cost\] threshold: expected a finite number > 0"),
+    ("threshold = 0.9", "threshold = 100.0", r"\[cost\] threshold: expected below the largest "
+     r"cost the formula gives, A·exp\(α\) \+ B·exp\(β\) = 9.403 \(both factors of safety "
+     r"at 0\), got 100.0: no grip and no motor could ever fail"),
+    ("alpha = 0.7", "alpha = 1000.0", r"\[cost\] alpha: expected at most 50 .*got 1000.0"),
     ("horizon = 10", "horizon = 0", r"\[sparse\] horizon: expected an integer >= 1"),
 ])
 def test_malformed_scenario(tmp_path, old, new, message):

@@ -923,3 +923,29 @@ def test_the_scores_read_the_signals_the_decision_computed(twin, demo_recording)
             for f in dataclasses.fields(again):
                 assert np.array_equal(getattr(scored, f.name), getattr(again, f.name),
                                       equal_nan=True), (k, f.name)
+
+
+def test_a_centre_of_mass_offset_on_the_bundled_cube_is_evaluated(scenario, demo_traj):
+    """A ``com_offset`` parameter on a body MuJoCo compiles as simple (inertial frame = body
+    frame, as the bundled cube's) used to make every batch refuse it ("sameframe no longer
+    holds"); critmoment compiles that body as not simple, and the offset moves the centre of
+    mass the sparse evaluation sees: the cube's nominal run is unchanged by the flag, and an
+    offset of 5 mm changes the readings at the lift-off."""
+    from critmoment.params import ComOffsetParameter, UncertaintyBox
+
+    body = scenario.object_body
+    box = UncertaintyBox(scenario.box.parameters
+                         + (ComOffsetParameter("com", body, -0.005, 0.005, 0.0),))
+    twin = Twin(scenario.replace(box=box))
+    assert twin.model.body_simple[twin.object_body_id] == 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        rec = rollout.rollout(demo_traj, twin=twin)
+    lift = int(np.flatnonzero(rec.stage >= 2)[0])
+    ev = SparseEvaluator(rec, twin)
+    samples = np.tile(box.nominal, (3, 1))
+    samples[:, 2] = [0.0, -0.005, 0.005]
+    res = ev.evaluate([lift], samples, keep_raw=True)
+    assert np.isfinite(res.cost).all() and not res.diverged.any()
+    assert not np.allclose(res.sensordata[0, 1], res.sensordata[0, 0])
+    assert not np.allclose(res.sensordata[0, 2], res.sensordata[0, 0])

@@ -519,6 +519,13 @@ def test_act_env_state_gives_the_object_pose(tmp_path):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         np.testing.assert_array_equal(load_trajectory(path).object_pose[:3], [0.05, 0.5, 0.02])
+    with h5py.File(path, "w") as f:  # an empty env_state is ignored with a warning
+        f.create_dataset("action", data=np.zeros((30, NA)))
+        f.create_dataset("observations/qpos", data=np.zeros((30, NA)))
+        f.create_dataset("observations/env_state", data=np.zeros((0, 7)))
+    with pytest.warns(CritmomentWarning, match=r"env_state is not an object pose .*shape "
+                      r"\(0, 7\): no rows"):
+        assert load_trajectory(path).object_pose is None
 
 
 def test_list_episodes(tmp_path):
