@@ -17,6 +17,7 @@ import concurrent.futures
 import contextlib
 import dataclasses
 import logging
+import math
 import platform
 import sys
 import threading
@@ -35,7 +36,7 @@ from critmoment.groundtruth import NominalReference, brute_force, reference_from
 from critmoment.moments import Moment, MomentDetector, MomentLabel
 from critmoment.recording import Recording, model_hash, rollout
 from critmoment.scenario import Scenario
-from critmoment.trajectory import Trajectory, input_identity
+from critmoment.trajectory import Trajectory, check_trajectory, input_identity
 from critmoment.twin import Twin, resolve_twin
 from critmoment.verdict import MomentReport, Verdict, safe_subbox
 
@@ -128,29 +129,50 @@ class AnalyzeOptions:
     chain: bool = True
 
     def __post_init__(self):
-        if self.n_samples < 8:
-            raise ParameterError(f"n_samples: expected >= 8, got {self.n_samples}")
-        if self.max_moments < 1:
-            raise ParameterError(f"max_moments: expected >= 1, got {self.max_moments}")
-        if self.horizon is not None and self.horizon < 1:
-            raise ParameterError(f"horizon: expected >= 1 or None, got {self.horizon}")
-        if self.search_patience is not None and self.search_patience < 1:
-            raise ParameterError(
-                f"search_patience: expected >= 1 or None, got {self.search_patience}")
-        if self.search_trials < 1:
-            raise ParameterError(f"search_trials: expected >= 1, got {self.search_trials}")
-        if not 0 < self.confidence < 1:
-            raise ParameterError(f"confidence: expected in (0, 1), got {self.confidence}")
-        if self.min_success is not None and not 0 <= self.min_success <= 1:
-            raise ParameterError(f"min_success: expected in [0, 1], got {self.min_success}")
-        if self.critical_grid < 5:
-            raise ParameterError(f"critical_grid: expected >= 5, got {self.critical_grid}")
-        if self.map_resolution < 0:
-            raise ParameterError(f"map_resolution: expected >= 0, got {self.map_resolution}")
-        if self.verify is not None and (isinstance(self.verify, bool)
-                                        or not 0 < self.verify <= 1):
-            raise ParameterError(f"verify: expected a fraction of the threshold in (0, 1] or "
-                                 f"None, got {self.verify!r}")
+        budget.check_seed(self.seed, what="seed")
+        _option_int("n_samples", self.n_samples, 8)
+        _option_int("max_moments", self.max_moments, 1)
+        _option_int("horizon", self.horizon, 1, none=True)
+        _option_int("search_trials", self.search_trials, 1)
+        _option_int("search_patience", self.search_patience, 1, none=True)
+        _option_int("critical_grid", self.critical_grid, 5)
+        _option_int("nthread", self.nthread, 0)
+        _option_int("map_resolution", self.map_resolution, 0)
+        _option_real("confidence", self.confidence, "in (0, 1)", lambda v: 0 < v < 1)
+        _option_real("min_success", self.min_success, "in [0, 1]", lambda v: 0 <= v <= 1,
+                     none=True)
+        _option_real("verify", self.verify, "a fraction of the threshold in (0, 1]",
+                     lambda v: 0 < v <= 1, none=True)
+        for name in ("search", "require_task", "verify_unlifted", "exhaustive",
+                     "check_feasibility", "chain"):
+            value = getattr(self, name)
+            if not isinstance(value, (bool, np.bool_)):
+                raise ParameterError(f"{name}: expected True or False, got "
+                                     f"{type(value).__name__} {value!r}")
+
+
+def _option_int(name: str, value: Any, least: int, *, none: bool = False) -> None:
+    """An option that must be an integer >= ``least`` (or None where ``none``)."""
+    if value is None and none:
+        return
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)) \
+            or value < least:
+        raise ParameterError(f"{name}: expected an integer >= {least}"
+                             f"{' or None' if none else ''}, got {type(value).__name__} "
+                             f"{value!r}")
+
+
+def _option_real(name: str, value: Any, expected: str, ok: Callable[[float], bool], *,
+                 none: bool = False) -> None:
+    """An option that must be a finite real number for which ``ok`` holds (or None)."""
+    if value is None and none:
+        return
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer,
+                                                                      np.floating)) \
+            or not math.isfinite(value) or not ok(float(value)):
+        raise ParameterError(f"{name}: expected a number {expected}"
+                             f"{' or None' if none else ''}, got {type(value).__name__} "
+                             f"{value!r}")
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -419,9 +441,13 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     Returns:
         The audit report.
     """
+    check_trajectory(trajectory)
+    if options is not None and not isinstance(options, AnalyzeOptions):
+        raise ParameterError(f"options: expected AnalyzeOptions (critmoment.AnalyzeOptions"
+                             f"(n_samples=..., ...)), got {type(options).__name__}")
     opt = options or AnalyzeOptions()
     if seed is not None:
-        opt = dataclasses.replace(opt, seed=int(seed))
+        opt = dataclasses.replace(opt, seed=budget.check_seed(seed))
     twin = resolve_twin(scenario, twin)
     sc = twin.scenario
     budget.check_audit(trajectory, twin, opt)  # seed domain, rollout and sweep size

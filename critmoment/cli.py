@@ -401,11 +401,13 @@ def build_parser() -> argparse.ArgumentParser:
                        help="physics steps per sparse evaluation (default: the scenario's)")
         p.add_argument("--max-moments", type=_int_at_least(1), default=None,
                        help=f"critical moments audited (default {default.max_moments})")
-        p.add_argument("--verify", type=_fraction(open_low=True), default=None,
-                       metavar="FRACTION",
-                       help="re-run in full the samples that pass with a cost >= FRACTION x "
-                            f"threshold (default {default.verify})")
-        p.add_argument("--no-verify", action="store_true", help="skip the verification rollouts")
+        verify = p.add_mutually_exclusive_group()
+        verify.add_argument("--verify", type=_fraction(open_low=True), default=None,
+                            metavar="FRACTION",
+                            help="re-run in full the samples that pass with a cost >= "
+                                 f"FRACTION x threshold (default {default.verify})")
+        verify.add_argument("--no-verify", action="store_true",
+                            help="skip the verification rollouts")
 
     p = sub.add_parser("demo", help="write a scripted pick-and-transfer trajectory")
     p.add_argument("--seed", type=_seed, default=0, help="seeds the cube's spawn pose")

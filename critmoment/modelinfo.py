@@ -390,6 +390,15 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                 raise ScenarioError(f"--support: unknown geom {s!r}")
     by_distance = sorted(grippers, key=lambda g: dist[g.name])
     task_lines = [f"kind = {_toml_str(task)}"]
+    # an option the task does not use is a mistake in the command, not something to drop
+    unused = [flag for flag, value, used in (
+        ("--picker", picker, task == "handover"), ("--receiver", receiver, task == "handover"),
+        ("--goal", goal, task == "pick_place"), ("--goal-site", goal_site, task == "pick_place"))
+        if value is not None and not used]
+    if unused:
+        raise ScenarioError(f"--task {task}: {' and '.join(unused)} "
+                            f"{'does' if len(unused) == 1 else 'do'} not apply to this task "
+                            f"(--picker/--receiver: handover; --goal/--goal-site: pick_place)")
     if task == "handover":
         if len(grippers) < 2:
             raise ScenarioError(f"--task handover needs two grippers, found {len(grippers)}")
@@ -405,7 +414,10 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
             checks.append(f"which gripper carries the object ([task] gripper = {holder!r})")
         task_lines.append(f"gripper = {_toml_str(holder)}")
         if task == "pick_place":
-            if (goal is None) == (goal_site is None):
+            if goal is not None and goal_site is not None:
+                raise ScenarioError("--task pick_place: expected one of --goal X Y Z and "
+                                    "--goal-site NAME, got both")
+            if goal is None and goal_site is None:
                 raise ScenarioError("--task pick_place: expected --goal X Y Z or --goal-site NAME "
                                     "(where the object must be placed)")
             if goal is not None:

@@ -16,6 +16,7 @@ import dataclasses
 import hashlib
 import json
 import math
+import warnings
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -25,6 +26,7 @@ import numpy as np
 
 from critmoment import trajectory as trajectory_mod
 from critmoment.exceptions import (
+    CritmomentWarning,
     InputFileError,
     ParameterError,
     SimulationDivergedError,
@@ -94,13 +96,53 @@ def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None =
     return twin.controls(targets)
 
 
+def checked_start(twin: Twin, traj: Trajectory, *, range_policy: str | None = None,
+                  tolerance: float = 0.05) -> np.ndarray:
+    """The trajectory's start (its joints' and grippers' first positions, in action units)
+    after the range policy (default: the scenario's): a value outside its channel's range
+    (the joint's range; a gripper's normalised [0, 1]) is an error, a warning, or clipped
+    with a warning, as an action would be. The actions' own check names the step; the
+    start has none, and a start far outside a joint's range otherwise shows only later, as a
+    motor that cannot follow. ``tolerance`` is a fraction of each channel's range: a
+    recorded start (an observed position, a gripper a little past its normalised end) may
+    lie just outside it.
+
+    Raises:
+        TrajectoryError: a value out of range under the ``error`` policy.
+    """
+    start = np.asarray(traj.start, dtype=np.float64)
+    lo, hi = np.asarray(twin.channel_lower), np.asarray(twin.channel_upper)
+    slack = tolerance * np.where(np.isfinite(hi - lo), hi - lo, 0.0)
+    bad = (start < lo - slack) | (start > hi + slack)
+    if not bad.any():
+        return start
+    labels = twin.scenario.actions.labels
+    items = "; ".join(f"{labels[c]} = {start[c]:g} (range [{lo[c]:g}, {hi[c]:g}])"
+                      for c in np.flatnonzero(bad)[:6])
+    more = int(bad.sum()) - 6
+    message = (f"trajectory start{_source(traj)}: {int(bad.sum())} value(s) outside their "
+               f"channel's range: {items}{f'; and {more} more' if more > 0 else ''}")
+    policy = trajectory_mod.RangePolicy[(range_policy or twin.scenario.range_policy).upper()]
+    if policy is trajectory_mod.RangePolicy.ERROR:
+        raise TrajectoryError(
+            f"{message}; expected the robot's first positions within its joint ranges (a "
+            f"start in other units, degrees or mm?), or set [actions] range_policy = "
+            f"\"clip\" or \"warn\"")
+    clip = policy is trajectory_mod.RangePolicy.CLIP
+    warnings.warn(message + ("; clipped into range" if clip else ""), CritmomentWarning,
+                  stacklevel=3)
+    return np.clip(start, lo, hi) if clip else start
+
+
 def _source(traj: Trajectory) -> str:
     return f" ({traj.source})" if traj.source else ""
 
 
 def initial_state(twin: Twin, traj: Trajectory, model: mujoco.MjModel | None = None) -> np.ndarray:
-    """Integration state (nstate,) at the start of the trajectory, controls set to its first action."""
-    start = traj.start if traj.start is not None else traj.actions[0]
+    """Integration state (nstate,) at the start of the trajectory, controls set to its first
+    action. A start (``traj.start``) outside its channels' ranges is treated by the
+    scenario's range policy, as the actions are: an error, a warning, or clipped."""
+    start = (checked_start(twin, traj) if traj.start is not None else traj.actions[0])
     model = model or twin.model
     data = twin.initial_data(start=start, qpos0=traj.qpos0, object_pose=traj.object_pose,
                              model=model)

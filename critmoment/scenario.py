@@ -28,6 +28,7 @@ from __future__ import annotations
 import dataclasses
 import difflib
 import math
+import os
 import re
 import sys
 import warnings
@@ -626,12 +627,25 @@ class Scenario:
                 raise ScenarioError(
                     f"[model] keyframe: unknown keyframe {self.keyframe!r}; valid: "
                     f"{_listing(keys)} or an index 0..{model.nkey - 1}")
+        written: dict[tuple, str] = {}
+        obj = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, self.object_body)
         for p in self.box.parameters:
             try:
                 index = p.resolve(model)
             except ScenarioError as exc:
                 raise ScenarioError(f"[uncertainty.{p.name}]: {exc}") from None
             _check_effect(p, index, model)
+            # one parameter per quantity: a second would overwrite the first in every
+            # simulation (the friction of any of the object's geoms is the object's)
+            key = (p.fields, "object" if isinstance(p, FrictionParameter)
+                   and obj >= 0 and model.geom_bodyid[index] == obj else index)
+            if key in written:
+                raise ScenarioError(
+                    f"[uncertainty.{p.name}] and [uncertainty.{written[key]}]: both vary "
+                    f"{p.fields[0].split('_', 1)[1]} of {p.target!r}"
+                    f"{' (the object)' if key[1] == 'object' else ''}; expected one "
+                    f"parameter per quantity (the second would overwrite the first)")
+            written[key] = p.name
 
 
 def _listing(pool: Sequence[str], limit: int = 40) -> str:
@@ -889,6 +903,30 @@ def _check_channel_kinds(actions: ActionConvention, resolver: _ActuatorResolver)
                     "actuator's controls")
 
 
+def _check_gripper_controls(actions: ActionConvention, model: mujoco.MjModel) -> None:
+    """A gripper channel's closed and open controls must lie near its actuators' control
+    range: far outside it (by more than the range's width) they are in other units (mm for
+    m, degrees for radians) or of the wrong sign, and MuJoCo would clamp them silently."""
+    for c, acts in enumerate(actions.channels):
+        if not actions.normalised[c]:
+            continue
+        for a, scale, offset in zip(acts, actions.scales[c], actions.offsets[c], strict=True):
+            i = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_ACTUATOR, a)
+            if i < 0 or not model.actuator_ctrllimited[i]:
+                continue
+            lo, hi = (float(v) for v in model.actuator_ctrlrange[i])
+            width = hi - lo
+            for end, value in (("closed (action 0)", offset), ("open (action 1)",
+                                                               offset + scale)):
+                if not lo - width <= value <= hi + width:
+                    raise ScenarioError(
+                        f"[actions] channel {actions.labels[c]!r}: the {end} control of "
+                        f"actuator {a!r} is {value:g}, far outside its ctrlrange [{lo:g}, "
+                        f"{hi:g}]; expected values in the actuator's own units (the model's "
+                        f"ctrlrange: m or rad for a position servo), not mm, degrees or "
+                        f"another sign")
+
+
 def _gripper_from_table(gname: str, gt: Any, model: mujoco.MjModel) -> Gripper:
     where = f"[grippers.{gname}]"
     if not isinstance(gt, Mapping):
@@ -949,6 +987,10 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
         path = bundled_scenario_path()
     elif isinstance(path, str) and path in BUNDLED_SCENARIOS:
         path = bundled_scenario_path(path)
+    elif not isinstance(path, (str, os.PathLike)):
+        raise ScenarioError(f"scenario: expected a scenario.toml, its folder or a bundled "
+                            f"scenario's name ({', '.join(BUNDLED_SCENARIOS)}), got "
+                            f"{type(path).__name__} {path!r}")
     path = Path(path)
     try:
         if path.is_dir():
@@ -1033,6 +1075,7 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
     else:
         actions = _aloha14(actions_t, resolver.one)
     _check_channel_kinds(actions, resolver)
+    _check_gripper_controls(actions, model)
     fps = _number(actions_t, "fps", "[actions]", 50.0, positive=True)
     policy = _get(actions_t, "range_policy", str, "[actions]", "error")
     if policy not in ("error", "clip", "warn"):

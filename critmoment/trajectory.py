@@ -54,6 +54,7 @@ __all__ = [
     "DEFAULT_FPS",
     "SUPPORTED_SUFFIXES",
     "Trajectory",
+    "check_trajectory",
     "RangePolicy",
     "load_trajectory",
     "save_trajectory",
@@ -254,6 +255,15 @@ class Trajectory:
     source: str = ""
 
     def __post_init__(self) -> None:
+        try:
+            self._check_fields()
+        except TrajectoryError as exc:
+            # a file's field names its file (a NaN in the start row of an ACT episode)
+            if self.source and self.source not in str(exc):
+                raise TrajectoryError(f"{self.source!r}: {exc}") from None
+            raise
+
+    def _check_fields(self) -> None:
         actions = _as_float_array(self.actions, what="actions", error=TrajectoryError)
         if actions.ndim != 2:
             raise TrajectoryError(
@@ -461,8 +471,25 @@ def load_trajectory(
     return traj
 
 
+def check_trajectory(value: Any, what: str = "trajectory") -> Trajectory:
+    """``value`` itself when it is a :class:`Trajectory`.
+
+    Raises:
+        ParameterError: anything else (a path, an array), with what to call instead.
+    """
+    if not isinstance(value, Trajectory):
+        hint = (" (read a file with critmoment.load_trajectory(path))"
+                if isinstance(value, (str, os.PathLike)) else "")
+        raise ParameterError(f"{what}: expected a critmoment Trajectory{hint}, got "
+                             f"{type(value).__name__}")
+    return value
+
+
 def _load_any(path: str | os.PathLike, *, fps: float | None,
               episode: int | None) -> Trajectory:
+    if not isinstance(path, (str, os.PathLike)):
+        raise ParameterError(f"path: expected a trajectory file or dataset folder (str or "
+                             f"os.PathLike), got {type(path).__name__} {path!r}")
     p = Path(os.fspath(path))
     if fps is not None:
         fps = _as_rate(fps, what="fps argument", error=ParameterError)
@@ -1329,6 +1356,16 @@ def _load_lerobot_files(
             raise TrajectoryError(
                 f"{str(chosen_file)!r} episode {ep}: expected unique frame_index "
                 f"values, got frame {int(sorted_frames[dup[0]])} more than once"
+            )
+        gap = np.flatnonzero(np.diff(sorted_frames) != 1)
+        if gap.size:
+            # frames missing from the episode: the actions around them would be played
+            # back to back, faster than recorded, with or without timestamps
+            raise TrajectoryError(
+                f"{str(chosen_file)!r} episode {ep}: expected consecutive frame_index "
+                f"values, got a jump from frame {int(sorted_frames[gap[0]])} to "
+                f"{int(sorted_frames[gap[0] + 1])} ({gap.size} gap(s) in all): frames are "
+                f"missing from the episode"
             )
         if not np.array_equal(order, np.arange(len(order))):
             table = table.take(pa.array(order))

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import os
 import types
 import warnings
 from collections.abc import Mapping
@@ -160,7 +161,9 @@ class Twin:
     """A scenario bound to its compiled model.
 
     Args:
-        scenario: the validated scenario.
+        scenario: the validated scenario (or, loaded with
+            :func:`~critmoment.scenario.load_scenario`, a path to a scenario.toml or its
+            folder, a bundled scenario's name, or None for the bundled default).
 
     Attributes:
         scenario: the scenario.
@@ -168,7 +171,17 @@ class Twin:
             read-only; use :meth:`copy_model` for a model to modify.
     """
 
-    def __init__(self, scenario: Scenario):
+    def __init__(self, scenario: Scenario | str | os.PathLike | None):
+        from critmoment.scenario import Scenario as _Scenario
+        from critmoment.scenario import load_scenario
+
+        if scenario is None or isinstance(scenario, (str, os.PathLike)):
+            scenario = load_scenario(scenario)  # a path, a bundled name, None: the default
+        elif not isinstance(scenario, _Scenario):
+            raise ScenarioError(
+                f"Twin: expected a Scenario (critmoment.load_scenario), a path to a "
+                f"scenario.toml or its folder, a bundled scenario's name or None, got "
+                f"{type(scenario).__name__} {scenario!r}")
         self.scenario = scenario
         spec = scenario.load_spec()
         self.add_sensors(spec)

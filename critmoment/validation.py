@@ -59,8 +59,8 @@ from critmoment.groundtruth import (
 )
 from critmoment.moments import Moment
 from critmoment.recording import Recording, rollout
-from critmoment.trajectory import Trajectory, input_identity
-from critmoment.twin import Twin, carried_flags
+from critmoment.trajectory import Trajectory, check_trajectory, input_identity
+from critmoment.twin import Twin, carried_flags, resolve_twin
 from critmoment.verdict import failing_samples
 
 __all__ = [
@@ -589,6 +589,8 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
     Returns:
         The :class:`ValidationResult`.
     """
+    twin = resolve_twin(None, twin)
+    check_trajectory(traj)
     box = twin.scenario.box
     if samples is None:
         n_samples = _check_int("n_samples", n_samples, 1)

@@ -75,3 +75,58 @@ def test_a_twin_or_a_wrong_type_in_the_scenario_position(twin, demo_traj):
         cm.rollout(demo_traj, 42)
     with pytest.raises(ScenarioError, match="twin: expected a critmoment Twin"):
         cm.analyze(demo_traj, twin="aloha")
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    (dict(n_samples="16"), r"n_samples: expected an integer >= 8, got str '16'"),
+    (dict(n_samples=16.5), r"n_samples: expected an integer >= 8, got float 16.5"),
+    (dict(n_samples=None), r"n_samples: expected an integer >= 8, got NoneType None"),
+    (dict(seed="x"), r"seed: expected an integer in \[0, 4294967295\], got str 'x'"),
+    (dict(seed=-1), r"seed: expected an integer in \[0, 2\*\*32 - 1"),
+    (dict(nthread=-3), r"nthread: expected an integer >= 0, got int -3"),
+    (dict(horizon=2.5), r"horizon: expected an integer >= 1 or None, got float 2.5"),
+    (dict(critical_grid=5.5), r"critical_grid: expected an integer >= 5"),
+    (dict(map_resolution=float("nan")), r"map_resolution: expected an integer >= 0"),
+    (dict(confidence="0.9"), r"confidence: expected a number in \(0, 1\), got str '0.9'"),
+    (dict(verify="0.5"), r"verify: expected a number a fraction of the threshold in \(0, 1\] "
+                         r"or None, got str '0.5'"),
+    (dict(verify=float("nan")), r"verify: expected a number"),
+    (dict(search_trials="x"), r"search_trials: expected an integer >= 1, got str 'x'"),
+    (dict(chain="yes"), r"chain: expected True or False, got str 'yes'"),
+])
+def test_analyze_options_refuse_wrong_types(kwargs, message):
+    """Every option is checked for its type and range when the options are made: a
+    ParameterError that names it, never a TypeError from a comparison inside the audit."""
+    with pytest.raises(critmoment.ParameterError, match=message):
+        critmoment.AnalyzeOptions(**kwargs)
+
+
+def test_library_calls_refuse_what_is_not_their_input(demo_traj, tmp_path):
+    """A path where a Trajectory goes, options as a dict, a seed that is not an integer, a
+    number as a path or a scenario: each a CritmomentError that says what was expected."""
+    import numpy as np
+
+    import critmoment as cm
+
+    with pytest.raises(cm.ParameterError, match=r"trajectory: expected a critmoment "
+                       r"Trajectory \(read a file with critmoment.load_trajectory\(path\)\), "
+                       r"got str"):
+        cm.analyze("traj.npz")
+    for wrong in (None, np.zeros((5, 14))):
+        with pytest.raises(cm.ParameterError, match="expected a critmoment Trajectory"):
+            cm.analyze(wrong)
+    with pytest.raises(cm.ParameterError, match="options: expected AnalyzeOptions"):
+        cm.analyze(demo_traj, options={"n_samples": 8})
+    with pytest.raises(cm.ParameterError, match="seed: expected an integer"):
+        cm.analyze(demo_traj, seed="x")
+    for wrong in (None, 5, b"traj.npz"):
+        with pytest.raises(cm.ParameterError, match="path: expected a trajectory file"):
+            cm.load_trajectory(wrong)
+    with pytest.raises(cm.ScenarioError, match="scenario: expected a scenario.toml, its "
+                       "folder or a bundled scenario's name"):
+        cm.load_scenario(5)
+    with pytest.raises(cm.ScenarioError, match="Twin: expected a Scenario"):
+        cm.Twin(5)
+    assert cm.Twin("aloha_transfer_cube").scenario.name == "aloha_transfer_cube"
+    with pytest.raises(cm.ParameterError, match="expected a critmoment Trajectory"):
+        cm.validate("traj.npz", twin=cm.Twin(None), n_samples=4)

@@ -92,6 +92,14 @@ def test_init_handover_needs_two_grippers_and_pick_place_a_goal(tmp_path):
         init_scenario(model_path, object_body="hand", task="pick_hold")
     with pytest.raises(ScenarioError, match="--task: expected one of"):
         init_scenario(model_path, object_body="cube", task="juggle")
+    # options the task does not use, or both goals, are mistakes in the command
+    with pytest.raises(ScenarioError, match=r"--task pick_hold: --picker does not apply to "
+                       r"this task \(--picker/--receiver: handover"):
+        init_scenario(model_path, object_body="cube", task="pick_hold", picker="hand")
+    with pytest.raises(ScenarioError, match="expected one of --goal X Y Z and --goal-site "
+                       "NAME, got both"):
+        init_scenario(model_path, object_body="cube", task="pick_place", goal=(0, 0, 0.1),
+                      goal_site="goal")
 
 
 def test_init_refuses_torque_motors(tmp_path):

@@ -400,3 +400,35 @@ def test_a_trajectory_faster_than_the_physics_says_so(twin, demo_traj):
                                               r"most the physics rate, 500 Hz .*keep one row "
                                               r"in 2"):
         prepare_controls(twin, fast)
+
+
+def test_a_start_outside_its_joint_range_follows_the_range_policy(twin, demo_traj):
+    """A start (the robot's first positions) far outside a channel's range, 50 rad on a
+    ±π waist, a gripper at 7 on its normalised [0, 1]: an error that names the channel and
+    the range under the default policy (it was taken, and later blamed on a weak motor), a
+    warning under "warn", clipped under "clip"; a start 1 % past a gripper's end passes."""
+    import dataclasses
+    import warnings
+
+    from critmoment.exceptions import CritmomentWarning, TrajectoryError
+    from critmoment.recording import checked_start
+
+    start = np.array(demo_traj.start if demo_traj.start is not None else demo_traj.actions[0],
+                     dtype=float)
+    far = start.copy()
+    far[0], far[6] = 50.0, 7.0
+    traj = dataclasses.replace(demo_traj, start=far)
+    with pytest.raises(TrajectoryError, match=r"trajectory start.*2 value\(s\) outside their "
+                       r"channel's range: left/waist = 50 \(range \[-3.1415\d, 3.1415\d\]\); "
+                       r"left/gripper = 7 \(range \[0, 1\]\)"):
+        checked_start(twin, traj)
+    with pytest.warns(CritmomentWarning, match="outside their channel's range"):
+        np.testing.assert_array_equal(checked_start(twin, traj, range_policy="warn"), far)
+    with pytest.warns(CritmomentWarning, match="clipped into range"):
+        clipped = checked_start(twin, traj, range_policy="clip")
+    assert clipped[6] == 1.0 and clipped[0] == pytest.approx(twin.channel_upper[0])
+    near = start.copy()
+    near[6] = 1.01
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        checked_start(twin, dataclasses.replace(demo_traj, start=near))

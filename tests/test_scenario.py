@@ -167,6 +167,15 @@ def test_mjcf_that_does_not_compile(tmp_path):
      r"cost the formula gives, A·exp\(α\) \+ B·exp\(β\) = 9.403 \(both factors of safety "
      r"at 0\), got 100.0: no grip and no motor could ever fail"),
     ("alpha = 0.7", "alpha = 1000.0", r"\[cost\] alpha: expected at most 50 .*got 1000.0"),
+    ("gripper_close = 0.01844", "gripper_close = -0.5",
+     r"\[actions\] channel 'left/gripper': the closed \(action 0\) control of actuator "
+     r"'left/left_finger' is -0.5, far outside its ctrlrange \[0.021, 0.057\]; expected "
+     r"values in the actuator's own units"),
+    ('[uncertainty.friction]\ngeom = "box"',
+     '[uncertainty.mass2]\nkind = "mass"\nbody = "box"\nrange = [0.05, 1.0]\nnominal = 0.1\n'
+     '[uncertainty.friction]\ngeom = "box"',
+     r"\[uncertainty.mass2\] and \[uncertainty.mass\]: both vary mass of 'box'; expected one "
+     r"parameter per quantity"),
     ("horizon = 10", "horizon = 0", r"\[sparse\] horizon: expected an integer >= 1"),
 ])
 def test_malformed_scenario(tmp_path, old, new, message):

@@ -583,3 +583,18 @@ def test_declared_sizes_are_checked_before_reading(tmp_path):
     assert h5.stat().st_size < 100_000
     with pytest.raises(ResourceLimitError, match="11,200,000,000 bytes"):
         load_trajectory(h5)
+
+
+def test_lerobot_missing_frames_are_refused_without_timestamps(tmp_path, rng):
+    """Frames 0-5 then 9-14: without a 'timestamp' column (only frame_index) the gap was
+    taken silently, the actions around it played back to back."""
+    a = _actions(rng, 12).astype(np.float32)
+    frames = list(range(6)) + list(range(9, 15))
+    pq.write_table(pa.table({
+        "action": pa.array([r.tolist() for r in a], pa.list_(pa.float32())),
+        "frame_index": pa.array(frames, pa.int64()),
+        "episode_index": pa.array([0] * 12, pa.int64()),
+    }), tmp_path / "ep.parquet")
+    with pytest.raises(TrajectoryError, match=r"expected consecutive frame_index values, got "
+                       r"a jump from frame 5 to 9 \(1 gap\(s\) in all\)"):
+        load_trajectory(tmp_path / "ep.parquet", fps=50)
