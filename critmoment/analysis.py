@@ -582,7 +582,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                                         sides=sides, options=dopt,
                                         nominal_completed=rec.completed,
                                         exhaustive=opt.exhaustive, nthread=opt.nthread,
-                                        reference=roll.nominal())
+                                        reference=roll.nominal(),
+                                        every_point=bool((failed & runs.chained).any()))
         decision = vd.decide(dataclasses.replace(evidence, region=region_check), dopt)
         if verification is not None:
             verification["region"] = region_check.to_json()
@@ -888,7 +889,8 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
                  sides: Sequence[str], options: vd.DecisionOptions, nominal_completed: bool,
                  exhaustive: bool = False, nthread: int = 0, per_edge: int = 3,
                  margin: float = 0.01, max_rounds: int = 4,
-                 reference: NominalReference | None = None) -> vd.RegionCheck:
+                 reference: NominalReference | None = None,
+                 every_point: bool = True) -> vd.RegionCheck:
     """Check a claimed safe region on its corners and edges, and shrink it until it holds.
 
     Each round evaluates the region's corners and edges (:func:`critmoment.verdict.
@@ -923,6 +925,12 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         max_rounds: rounds before giving up (no region then).
         reference: the nominal run of an earlier :func:`~critmoment.groundtruth.brute_force`
             of this trajectory, or None.
+        every_point: decide every checked point on its own run; else only the corners,
+            the coarse edge points (``per_edge`` per edge) and the densified points the
+            sweep's path would roll out (within ``verify × threshold``), the others by their
+            sparse evaluation (:func:`analyze` asks for every point where a sample that
+            passed its sparse evaluation failed on its own run: there the sparse passes do
+            not stand for the runs).
 
     Returns:
         The :class:`~critmoment.verdict.RegionCheck`.
@@ -952,11 +960,16 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         if _sparse_fails(res, options).any():
             fails = np.array(res.failed_any, dtype=bool)  # it shrinks: no runs this round
         else:
-            runs, _ = sample_runs(evaluator, steps, pts, res, options, roll=roll,
+            own = _own_run_points(pts, current, box, per_edge, res, options, every_point)
+            sub = _select_samples(res, own)
+            runs, _ = sample_runs(evaluator, steps, pts[own], sub, options, roll=roll,
                                   nominal_completed=nominal_completed, nthread=nthread)
-            fails = vd.failing_samples(runs.evidence(res, nominal_completed=nominal_completed),
-                                       options)
-            rolled, chained = runs.rerun, runs.chained & ~runs.rerun
+            fails = np.zeros(pts.shape[0], bool)
+            fails[own] = vd.failing_samples(
+                runs.evidence(sub, nominal_completed=nominal_completed), options)
+            rolled, chained = np.zeros(pts.shape[0], bool), np.zeros(pts.shape[0], bool)
+            rolled[own] = runs.rerun
+            chained[own] = runs.chained & ~runs.rerun
             n_rollouts += int(rolled.sum())
             n_chained += int(chained.sum())
         if not fails.any():
@@ -968,6 +981,21 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
     return vd.RegionCheck(region=None, points=pts, failed=fails, rolled_out=rolled,
                           rounds=rounds, n_sparse=n_sparse, n_rollouts=n_rollouts,
                           n_chained=n_chained, chained=chained, first_claim=first)
+
+
+def _own_run_points(pts: np.ndarray, region: Mapping[str, tuple[float, float]], box,
+                    per_edge: int, res: sp.SparseResult, options: vd.DecisionOptions,
+                    every_point: bool) -> np.ndarray:
+    """(p,) bool: the checked points decided on their own run. With ``every_point``, all;
+    else the corners and the coarse edge points (``per_edge`` per edge), and the points
+    between them the sweep's path would roll out (a pass within ``verify × threshold``, a
+    failure only a rollout decides); the others keep their sparse decision."""
+    if every_point:
+        return np.ones(pts.shape[0], bool)
+    coarse, _ = vd.region_points(region, box, per_edge=per_edge)
+    keys = {np.round(x, 12).tobytes() for x in coarse}
+    own = np.array([np.round(x, 12).tobytes() in keys for x in pts], dtype=bool)
+    return own | vd.samples_to_rerun(res, options, nominal_completed=True).any
 
 
 def _sparse_fails(res: sp.SparseResult, options: vd.DecisionOptions) -> np.ndarray:

@@ -24,7 +24,8 @@ The decision path, in order:
    no failing sample, cut where a critical value (others at nominal) says it fails; none
    when no sample passes. The audit checks it (:func:`region_points` on its corners and
    edges, densified where the cost is near the threshold, by sparse evaluation and then
-   each point on its own run, the samples' decision path) and shrinks it
+   its corners and coarse edge points on their own run, the samples' decision path) and
+   shrinks it
    (:func:`shrink_region`) until it holds: a :class:`RegionCheck`.
 4. :func:`decide`: UNSAFE when the nominal parameters fail; SAFE when no sample and no
    worst case fails and the whole box passes its check; else CONDITIONAL with the checked
@@ -1166,7 +1167,8 @@ def region_text(region: Mapping[str, tuple[float, float]] | None, box: Uncertain
                         f"evaluation and on each point's own run: {runs})")
         elif own:
             evidence = (f" (checked at {p} points of its corners and edges by sparse "
-                        f"evaluation, {own} of them also on their own run: {runs})")
+                        f"evaluation, {own} of them (its corners, its edges' coarse points "
+                        f"and those near the threshold) also on their own run: {runs})")
         else:
             evidence = (f" (checked at {p} points of its corners and edges by sparse "
                         f"evaluation only)")

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from critmoment import analysis, report
+from critmoment import verdict as vd
 from critmoment.analysis import AnalyzeOptions, Verdict, analyze, safe_subbox
 from critmoment.exceptions import ParameterError
 from critmoment.params import UncertaintyBox
@@ -340,8 +341,6 @@ def test_critical_values_are_the_sparse_routine_and_bracket_the_crossing(
 
 def _region_fails(traj, twin, region, per_edge=6):
     """Full rollouts of the region's corners and edges: the points whose real run fails."""
-    from critmoment import verdict as vd
-
     pts, _ = vd.region_points(region, twin.scenario.box, per_edge=per_edge)
     bf = brute_force(traj, twin=twin, samples=pts)
     return pts[bf.failed], pts.shape[0]
@@ -355,10 +354,21 @@ def test_stated_region_holds_under_full_rollouts_narrow_box(demo_traj, scenario)
         r = analyze(demo_traj, twin=narrow, options=FAST)
     assert r.verdict is Verdict.CONDITIONAL and r.safe_region is not None
     assert r.region_check is not None and r.region_check.holds
-    # every checked point of the holding round is decided on its own run, as a sample is
+    # the corners and coarse edge points (and any point near the threshold) of the holding
+    # round are decided on their own run, as a sample is; the densified points between them
+    # by sparse evaluation, since no chained sample failed on its own run here
     check = r.region_check
-    assert check.own_runs == check.points.shape[0]
-    assert "on each point's own run" in r.safe_region_text
+    coarse, _ = vd.region_points(check.region, narrow.scenario.box, per_edge=3)
+    assert check.own_runs >= coarse.shape[0] and check.n_chained + check.n_rollouts >= 8
+    assert "also on their own run" in r.safe_region_text
+    # asked for every point (what the audit asks where a chained sample failed), each has one
+    every = analysis.check_region(
+        check.region, trajectory=demo_traj, twin=narrow,
+        evaluator=analysis.audit_evaluator(r.recording, narrow)[0],
+        steps=np.array([mr.moment.step for mr in r.moments]), sides=["above", "below"],
+        options=analysis.decision_options(FAST, narrow.scenario.cost.threshold),
+        nominal_completed=True)
+    assert every.holds and every.own_runs == every.points.shape[0]
     failing, n = _region_fails(demo_traj, narrow, r.safe_region)
     assert n == 20 and failing.size == 0, f"the stated region fails at {failing}"
     assert r.to_json()["verification"]["region"]["holds"] is True
