@@ -525,8 +525,32 @@ def _warning_lines(caught, command: str) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     """Runs the command line; returns the exit code (0 ok, 1 not safe, 2 error)."""
-    with _terminate_as_interrupt():
+    with _terminate_as_interrupt(), _quiet_mujoco_log():
         return _main(argv)
+
+
+@contextlib.contextmanager
+def _quiet_mujoco_log() -> Iterator[None]:
+    """MuJoCo's own log off for a command's run: by default it appends each warning (an
+    unstable simulation) to ``MUJOCO_LOG.TXT`` in the user's current folder and prints it on
+    stderr, besides the one line critmoment prints; its warning counters, which critmoment
+    reads, still count. The previous settings come back after."""
+    try:
+        import mujoco
+
+        config = mujoco.MjLogConfig.get()
+        before = (config.logto_file, config.logto_console)
+        config.logto_file, config.logto_console = False, False
+        config.set()
+    except (ImportError, AttributeError):  # a MuJoCo without the log settings
+        yield
+        return
+    try:
+        yield
+    finally:
+        config = mujoco.MjLogConfig.get()
+        config.logto_file, config.logto_console = before
+        config.set()
 
 
 @contextlib.contextmanager

@@ -224,3 +224,32 @@ def test_sigterm_ends_a_run_as_ctrl_c_does(traj_file, tmp_path, capsys, monkeypa
     assert sorted(p.name for p in out.iterdir()) == before
     assert [p.name for p in tmp_path.iterdir()] == ["report"]
     assert signal.getsignal(signal.SIGTERM) is handler
+
+
+def test_a_diverging_run_prints_one_line_and_writes_no_mujoco_log(tmp_path, capfd,
+                                                                  monkeypatch):
+    """MuJoCo's own log is off during a command: a diverging rollout used to leave
+    MUJOCO_LOG.TXT in the user's folder and a MuJoCo warning on stderr before critmoment's
+    error line; the log settings are back afterwards."""
+    import shutil
+
+    import mujoco
+
+    from critmoment.scenario import bundled_scenario_path
+
+    folder = tmp_path / "stiff"
+    shutil.copytree(bundled_scenario_path().parent, folder)
+    arm = folder / "vx300s.xml"
+    old = 'name="elbow" joint="elbow" kp="200" kv="6" forcerange="-15 15"'
+    arm.write_text(arm.read_text().replace(old, 'name="elbow" joint="elbow" kp="3e5" kv="6"'))
+    traj = tmp_path / "hold.npz"
+    np.savez(traj, actions=np.tile([0, -0.96, 1.16, 0, -0.3, 0, 1.0] * 2, (20, 1)), fps=50.0)
+    monkeypatch.chdir(tmp_path)
+    before = mujoco.MjLogConfig.get()
+    assert main(["rollout", str(traj), "--scenario", str(folder)]) == 2
+    err = capfd.readouterr().err
+    assert "critmoment rollout: error: simulation diverged at physics step" in err
+    assert "Nan, Inf or huge value" not in err
+    assert not (tmp_path / "MUJOCO_LOG.TXT").exists()
+    after = mujoco.MjLogConfig.get()
+    assert (after.logto_file, after.logto_console) == (before.logto_file, before.logto_console)
