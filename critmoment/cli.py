@@ -525,32 +525,12 @@ def _warning_lines(caught, command: str) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     """Runs the command line; returns the exit code (0 ok, 1 not safe, 2 error)."""
-    with _terminate_as_interrupt(), _quiet_mujoco_log():
+    from critmoment.twin import quiet_mujoco_log
+
+    # MuJoCo's own log appends each warning (an unstable simulation) to MUJOCO_LOG.TXT in the
+    # user's folder and prints it, besides the one line critmoment prints
+    with _terminate_as_interrupt(), quiet_mujoco_log():
         return _main(argv)
-
-
-@contextlib.contextmanager
-def _quiet_mujoco_log() -> Iterator[None]:
-    """MuJoCo's own log off for a command's run: by default it appends each warning (an
-    unstable simulation) to ``MUJOCO_LOG.TXT`` in the user's current folder and prints it on
-    stderr, besides the one line critmoment prints; its warning counters, which critmoment
-    reads, still count. The previous settings come back after."""
-    try:
-        import mujoco
-
-        config = mujoco.MjLogConfig.get()
-        before = (config.logto_file, config.logto_console)
-        config.logto_file, config.logto_console = False, False
-        config.set()
-    except (ImportError, AttributeError):  # a MuJoCo without the log settings
-        yield
-        return
-    try:
-        yield
-    finally:
-        config = mujoco.MjLogConfig.get()
-        config.logto_file, config.logto_console = before
-        config.set()
 
 
 @contextlib.contextmanager
@@ -592,8 +572,14 @@ def _main(argv: list[str] | None) -> int:
                 f"unrecognized arguments: {' '.join(extra)}")
     except SystemExit as exc:  # argparse: --help (0) or a usage error (2, one line)
         return exc.code if isinstance(exc.code, int) else EXIT_ERROR
+    # a library log line reads as the command's own warnings do
+    handler = logging.StreamHandler()
+    handler.setFormatter(logging.Formatter(
+        f"critmoment {args.command}: %(levelname)s: "
+        f"{'%(name)s: ' if args.verbose else ''}%(message)s"))
+    handler.addFilter(_lower_level)
     logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
-                        format="%(levelname)s %(name)s: %(message)s")
+                        handlers=[handler])
     _Stdout.closed = False
     command = args.command
     code = EXIT_ERROR
@@ -620,6 +606,12 @@ def _main(argv: list[str] | None) -> int:
     except (BrokenPipeError, OSError, ValueError):
         pass
     return code
+
+
+def _lower_level(record: logging.LogRecord) -> bool:
+    """Log levels in lower case ("warning"), as critmoment's own lines print them."""
+    record.levelname = record.levelname.lower()
+    return True
 
 
 def _error(command: str, message: str, args) -> None:

@@ -1251,6 +1251,11 @@ def list_episodes(path: str | os.PathLike) -> tuple[Episode, ...]:
             counts.setdefault(int(i), []).append((int(k), f))
     out = []
     for idx in sorted(counts, key=lambda i: -1 if i is None else i):
+        if idx is not None and len(counts[idx]) > 1:
+            # as loading it would say: an episode split over files cannot be read
+            raise TrajectoryError(
+                f"LeRobot data {str(p)!r}: expected episode {idx} in one parquet file, found "
+                f"it in {[_short(f) for _, f in counts[idx]]}")
         for frames, f in counts[idx]:
             out.append(Episode(index=idx, frames=frames, file=str(f)))
     return tuple(out)

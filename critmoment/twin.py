@@ -18,12 +18,13 @@ batch in exactly one way (:meth:`Twin.write_parameters`).
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import dataclasses
 import os
 import types
 import warnings
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 
 import mujoco
 import numpy as np
@@ -202,8 +203,43 @@ class Twin:
         self._original = types.SimpleNamespace(
             **{f: getattr(model, f).copy() for f in self.parameter_fields()})
         self.write_parameters(model, scenario.box.nominal[None, :])
+        self._check_box_ends()
 
     # -- construction ---------------------------------------------------------
+    def _check_box_ends(self) -> None:
+        """Each parameter at each end of its range (the others nominal) must give a model
+        MuJoCo can simulate: a mass of 1e-12 kg makes the inertia singular
+        (``mjWARN_INERTIA``) and every evaluation diverge, which is a range that makes no
+        sense rather than a verdict.
+
+        Raises:
+            ScenarioError: naming the parameter, the end and MuJoCo's warning.
+        """
+        box = self.scenario.box
+
+        def warnings_at(sample: np.ndarray) -> set[str]:
+            model = self.copy_model()
+            self.write_parameters(model, sample[None])
+            data = mujoco.MjData(model)
+            with quiet_mujoco_log():
+                mujoco.mj_forward(model, data)
+            return {mujoco.mjtWarning(i).name for i in range(len(data.warning))
+                    if data.warning[i].number}
+
+        nominal = warnings_at(box.nominal)  # the model's own, whatever the parameters
+        for j, p in enumerate(box.parameters):
+            for end, value in (("low", p.low), ("high", p.high)):
+                sample = box.nominal.copy()
+                sample[j] = value
+                found = sorted(warnings_at(sample) - nominal)
+                if found:
+                    unit = f" {p.unit}" if p.unit else ""
+                    raise ScenarioError(
+                        f"[uncertainty.{p.name}]: at the {end} end of its range, {value:g}"
+                        f"{unit}, MuJoCo cannot simulate the model ({', '.join(found)}: "
+                        f"{'a body too light for its inertia to be resolved' if 'mjWARN_INERTIA' in found else 'an unstable state'}"
+                        f" at the start); expected a range the simulation holds")
+
     def _targets(self, p, index: int, model: mujoco.MjModel) -> tuple[int, ...]:
         """The ids parameter ``p`` (resolved to ``index``) writes."""
         if not isinstance(p, FrictionParameter):
@@ -454,6 +490,7 @@ class Twin:
             qpos0 = np.asarray(qpos0, dtype=np.float64)
             if qpos0.shape != (model.nq,):
                 raise TrajectoryError(f"expected qpos0 of shape ({model.nq},), got {qpos0.shape}")
+            _check_qpos_quaternions(model, qpos0)
             data.qpos[:] = qpos0
         elif start is not None:
             ctrl = self.controls(np.asarray(start)[None])[0]
@@ -633,6 +670,47 @@ def _as_slice(index: np.ndarray) -> np.ndarray | slice:
     if index.size and np.array_equal(index, np.arange(index[0], index[0] + index.size)):
         return slice(int(index[0]), int(index[0]) + index.size)
     return index
+
+
+@contextlib.contextmanager
+def quiet_mujoco_log() -> Iterator[None]:
+    """MuJoCo's own log (the ``MUJOCO_LOG.TXT`` file in the current folder and the console)
+    off inside the block, its previous settings back after; MuJoCo's warning counters, which
+    critmoment reads, still count."""
+    try:
+        config = mujoco.MjLogConfig.get()
+        before = (config.logto_file, config.logto_console)
+        config.logto_file, config.logto_console = False, False
+        config.set()
+    except AttributeError:  # a MuJoCo without the log settings
+        yield
+        return
+    try:
+        yield
+    finally:
+        config = mujoco.MjLogConfig.get()
+        config.logto_file, config.logto_console = before
+        config.set()
+
+
+def _check_qpos_quaternions(model: mujoco.MjModel, qpos: np.ndarray) -> None:
+    """Every free and ball joint's quaternion in ``qpos`` must be a unit quaternion (within
+    1 %): MuJoCo would silently replace a zero one by the identity and rescale any other.
+
+    Raises:
+        TrajectoryError: naming the joint, its qpos addresses and the norm found.
+    """
+    for j in range(model.njnt):
+        kind = int(model.jnt_type[j])
+        if kind not in (int(mujoco.mjtJoint.mjJNT_FREE), int(mujoco.mjtJoint.mjJNT_BALL)):
+            continue
+        adr = int(model.jnt_qposadr[j]) + (3 if kind == int(mujoco.mjtJoint.mjJNT_FREE) else 0)
+        norm = float(np.linalg.norm(qpos[adr:adr + 4]))
+        if not abs(norm - 1.0) <= 0.01:
+            name = model.joint(j).name or f"joint #{j}"
+            raise TrajectoryError(
+                f"qpos0: expected a unit quaternion (w, x, y, z) for joint {name!r} at "
+                f"qpos[{adr}:{adr + 4}], got {qpos[adr:adr + 4].tolist()} with norm {norm:.6g}")
 
 
 def resolve_twin(scenario=None, twin: Twin | None = None) -> Twin:

@@ -598,3 +598,15 @@ def test_lerobot_missing_frames_are_refused_without_timestamps(tmp_path, rng):
     with pytest.raises(TrajectoryError, match=r"expected consecutive frame_index values, got "
                        r"a jump from frame 5 to 9 \(1 gap\(s\) in all\)"):
         load_trajectory(tmp_path / "ep.parquet", fps=50)
+
+
+def test_an_episode_split_over_two_files_is_refused_by_listing_and_loading(tmp_path, rng):
+    """Episode 0 in two parquet files of one dataset: loading refused it while `episodes`
+    listed it twice; both now say the same."""
+    _write_lerobot(tmp_path / "ds", rng, lengths=(12,))
+    first = next((tmp_path / "ds" / "data").rglob("*.parquet"))
+    (first.parent / "episode_000001.parquet").write_bytes(first.read_bytes())
+    for call in (lambda: list_episodes(tmp_path / "ds"),
+                 lambda: load_trajectory(tmp_path / "ds", episode=0)):
+        with pytest.raises(TrajectoryError, match="expected episode 0 in one parquet file"):
+            call()

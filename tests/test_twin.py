@@ -619,3 +619,33 @@ def test_a_compound_object_is_sensed_and_its_friction_varied_on_every_geom(tmp_p
     # at rest only the lower half touches the table
     assert sig.contact_support[0]
     assert rec.completed and sig.contact_gripper.any()
+
+
+def test_a_zero_quaternion_in_qpos0_is_an_error(twin):
+    """A full initial qpos whose free joint has a zero quaternion: MuJoCo would replace it
+    by the identity without a word (the run then never touched the object)."""
+    from critmoment.exceptions import TrajectoryError
+
+    qpos0 = twin.model.qpos0.copy()
+    adr = int(twin.model.jnt_qposadr[twin.model.body_jntadr[twin.object_body_id]]) + 3
+    qpos0[adr:adr + 4] = 0.0
+    with pytest.raises(TrajectoryError, match=r"qpos0: expected a unit quaternion \(w, x, y, "
+                       rf"z\) for joint '.+' at qpos\[{adr}:{adr + 4}\], got \[0.0, 0.0, 0.0, "
+                       r"0.0\] with norm 0"):
+        twin.initial_data(qpos0=qpos0)
+    qpos0[adr:adr + 4] = [1.0, 0.0, 0.0, 0.0]
+    twin.initial_data(qpos0=qpos0)
+
+
+def test_a_mass_range_mujoco_cannot_simulate_is_a_scenario_error(scenario):
+    """A cube of 1e-12 kg at the low end of the box: MuJoCo finds its inertia singular
+    (mjWARN_INERTIA) and every evaluation there diverged into an UNSAFE verdict; the twin
+    now refuses the range, naming the parameter, the end and the warning."""
+    from critmoment.exceptions import ScenarioError
+    from critmoment.twin import Twin
+
+    tiny = scenario.replace(box=scenario.box.with_range("mass", 1e-12, 1e-9, nominal=1e-9))
+    with pytest.raises(ScenarioError, match=r"\[uncertainty.mass\]: at the low end of its "
+                       r"range, 1e-12 kg, MuJoCo cannot simulate the model \(mjWARN_INERTIA"):
+        Twin(tiny)
+    Twin(scenario.replace(box=scenario.box.with_range("mass", 1e-6, 1e-3, nominal=1e-4)))
