@@ -185,6 +185,11 @@ def _names(table, key, where, default=...) -> tuple[str, ...] | None:
 MAX_COST_EXPONENT = 50.0
 
 
+#: where each cost term alone should reach the threshold, as a factor of safety: outside
+#: it the weights call a comfortable margin a failure, or a limit well passed safe
+FOS_BAND = (0.5, 2.0)
+
+
 @dataclasses.dataclass(frozen=True)
 class CostParams:
     """Constants of the cost C = A·exp(−α(FOS_c − 1)) + B·exp(−β(FOS_m − 1)) (thesis eq. 15)."""
@@ -214,7 +219,26 @@ class CostParams:
                 f"[cost] threshold: expected below the largest cost the formula gives, "
                 f"A·exp(α) + B·exp(β) = {largest:.4g} (both factors of safety at 0), got "
                 f"{self.threshold!r}: no grip and no motor could ever fail")
+        for name, weight, rate, term in (("A", self.A, self.alpha, "contact"),
+                                         ("B", self.B, self.beta, "motor")):
+            fos = self.failing_fos(term)
+            if not FOS_BAND[0] <= fos <= FOS_BAND[1]:
+                warnings.warn(
+                    f"[cost]: the {term} term alone reaches the threshold {self.threshold:g} "
+                    f"at a {term} factor of safety of {fos:.3g} ({name} = {weight:g}, "
+                    f"{'α' if term == 'contact' else 'β'} = {rate:g}): "
+                    + (f"a {term} with {fos:.3g}× margin counts as failing"
+                       if fos > FOS_BAND[1] else
+                       f"a {term} well past its limit still passes")
+                    + f"; expected it between {FOS_BAND[0]:g} and {FOS_BAND[1]:g} (1 is the "
+                      f"limit itself: the friction cone, the force limit)",
+                    ScenarioWarning, stacklevel=3)
 
+    def failing_fos(self, term: str) -> float:
+        """The factor of safety at which the ``term`` ("contact" or "motor") alone reaches
+        the threshold: 1 + ln(weight / threshold) / rate."""
+        weight, rate = (self.A, self.alpha) if term == "contact" else (self.B, self.beta)
+        return 1.0 + math.log(weight / self.threshold) / rate
 
 
 @dataclasses.dataclass(frozen=True)

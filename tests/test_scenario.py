@@ -492,3 +492,23 @@ def test_object_grippers_and_supports_are_different_geoms(tmp_path, old, new, me
     # object never touches "its gripper"), exit 0
     with pytest.raises(ScenarioError, match=message):
         load_scenario(_toml(tmp_path, (old, new)))
+
+
+def test_cost_weights_that_fail_a_comfortable_grip_are_warned_of():
+    """A = 1000 (α 0.7, threshold 0.9): the contact term alone reaches the threshold at a
+    contact factor of safety of 11, every grip fails and the contact term is then set aside
+    as chatter; the scenario warns with the number. The bundled weights reach it at 1.15
+    (contact) and 1.05 (motor)."""
+    import warnings
+
+    from critmoment.scenario import CostParams, ScenarioWarning
+
+    with pytest.warns(ScenarioWarning, match=r"the contact term alone reaches the threshold "
+                      r"0.9 at a contact factor of safety of 11 \(A = 1000, α = 0.7\): a "
+                      r"contact with 11× margin counts as failing"):
+        CostParams(A=1000.0, B=1.0, alpha=0.7, beta=2.0, threshold=0.9)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        cost = CostParams(A=1.0, B=1.0, alpha=0.7, beta=2.0, threshold=0.9)
+    assert cost.failing_fos("contact") == pytest.approx(1.0 + np.log(1 / 0.9) / 0.7)
+    assert 1.0 < cost.failing_fos("motor") < 1.06
