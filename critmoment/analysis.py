@@ -993,8 +993,9 @@ def _own_run_points(pts: np.ndarray, region: Mapping[str, tuple[float, float]], 
     if every_point:
         return np.ones(pts.shape[0], bool)
     coarse, _ = vd.region_points(region, box, per_edge=per_edge)
-    keys = {np.round(x, 12).tobytes() for x in coarse}
-    own = np.array([np.round(x, 12).tobytes() in keys for x in pts], dtype=bool)
+    scale = np.maximum(np.abs(box.high - box.low), 1e-300)
+    near = np.abs(pts[:, None, :] - coarse[None, :, :]) <= 1e-9 * scale
+    own = near.all(axis=2).any(axis=1)
     return own | vd.samples_to_rerun(res, options, nominal_completed=True).any
 
 
