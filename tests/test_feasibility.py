@@ -36,17 +36,19 @@ KP = 2000.0
 
 
 def _arm_xml(*, axis: str, forcerange: float, frictionloss: float,
-             actuator: str | None = None) -> str:
+             actuator: str | None = None, link_contact: str = 'contype="0" conaffinity="0"',
+             obstacle: str = "", gravity: str = "0 0 -9.81") -> str:
     return f"""<mujoco model="arm">
   <compiler angle="radian" inertiafromgeom="true"/>
-  <option timestep="0.002" integrator="implicitfast"/>
+  <option timestep="0.002" integrator="implicitfast" gravity="{gravity}"/>
   <worldbody>
     <geom name="floor" type="plane" size="2 2 0.1"/>
+    {obstacle}
     <body name="arm" pos="0 0 0.5">
       <joint name="hinge" type="hinge" axis="{axis}" range="-2 2" damping="1"
              frictionloss="{frictionloss}"/>
       <geom name="link" type="box" size="{LINK_L / 2} 0.02 0.02" pos="{LINK_L / 2} 0 0"
-            mass="{LINK_MASS}" contype="0" conaffinity="0"/>
+            mass="{LINK_MASS}" {link_contact}/>
       <geom name="pad" type="box" size="0.01 0.02 0.02" pos="{LINK_L} 0 0" mass="0"
             contype="0" conaffinity="0"/>
     </body>
@@ -64,10 +66,11 @@ def _arm_xml(*, axis: str, forcerange: float, frictionloss: float,
 
 
 def _scene(folder: Path, *, axis: str, limit: float, frictionloss: float = 0.0,
-           actuator: str | None = None) -> Path:
+           actuator: str | None = None, **xml) -> Path:
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "arm.xml").write_text(_arm_xml(axis=axis, forcerange=limit,
-                                             frictionloss=frictionloss, actuator=actuator))
+                                             frictionloss=frictionloss, actuator=actuator,
+                                             **xml))
     toml = one_actuator_toml("arm", mjcf="arm.xml", gripper="hand", gripper_geom="pad",
                              support="floor", actuator="servo", limit=limit, label="hinge",
                              uncertainty="""[uncertainty.mass]
@@ -202,32 +205,12 @@ def test_a_contact_inside_the_geoms_margin_holds_a_joint_back(tmp_path):
     """MuJoCo applies contact force from ``dist < margin - gap``, before the geoms touch:
     an arm pushed into an obstacle by a margin of 2 cm stops short of it, and the contact
     is named as what holds it back (Baxter's arm geoms have margin 1 mm)."""
-    xml = f"""<mujoco model="blocked">
-  <compiler angle="radian" inertiafromgeom="true"/>
-  <option timestep="0.002" integrator="implicitfast" gravity="0 0 0"/>
-  <worldbody>
-    <geom name="floor" type="plane" size="2 2 0.1" pos="0 0 -0.5"/>
-    <body name="arm" pos="0 0 0.5">
-      <joint name="hinge" type="hinge" axis="0 0 1" range="-2 2" damping="1"/>
-      <geom name="link" type="box" size="{LINK_L / 2} 0.02 0.02" pos="{LINK_L / 2} 0 0"
-            mass="{LINK_MASS}" margin="0.02"/>
-      <geom name="pad" type="box" size="0.01 0.02 0.02" pos="{LINK_L} 0 0" mass="0"
-            contype="0" conaffinity="0"/>
-    </body>
-    <geom name="wall" type="box" size="0.05 0.01 0.1" pos="0.2 0.12 0.5"/>
-    <body name="box" pos="1 1 -0.48">
-      <freejoint/>
-      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.1"/>
-    </body>
-  </worldbody>
-  <actuator>
-    <position name="servo" joint="hinge" kp="50" kv="5" forcerange="-5 5"/>
-  </actuator>
-</mujoco>
-"""
-    (tmp_path / "arm.xml").write_text(xml)
-    path = _scene(tmp_path, axis="0 0 1", limit=5.0)
-    (tmp_path / "arm.xml").write_text(xml)
+    path = _scene(tmp_path, axis="0 0 1", limit=5.0, gravity="0 0 0",
+                  link_contact='margin="0.02"',
+                  obstacle='<geom name="wall" type="box" size="0.05 0.01 0.1" '
+                           'pos="0.2 0.12 0.5"/>',
+                  actuator='<position name="servo" joint="hinge" kp="50" kv="5" '
+                           'forcerange="-5 5"/>')
     twin = Twin(load_scenario(path))
     rec = _record(twin, _ramp(1.0, seconds=3.0))
     report = check_feasibility(rec, twin, raise_on_failure=False)
