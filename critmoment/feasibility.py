@@ -60,6 +60,10 @@ _LIFT_TASKS = ("handover", "pick_place", "pick_hold")
 #: share of a lag stretch's largest lag that the servo's velocity damping must explain at
 #: the target's speed for the message to name the damping as the likely cause
 DAMPING_SHARE = 0.5
+#: share of a saturated actuator's steps whose force changes sign from the step before,
+#: from which the saturation is called a numerical oscillation (a stiff servo under an
+#: explicit integrator), not a load
+FLIP_SHARE = 0.25
 #: penetration of the object into another geom at the start that gets a fit warning [m]
 START_PENETRATION = 0.002
 #: fall of the object after its last touch by a gripper that gets a fit warning [m]
@@ -191,6 +195,9 @@ class JointFeasibility:
         damping_lag: the lag the servo's velocity damping alone gives at that speed, at
             steady state: (kv + joint damping / gear²) / kp × speed [rad or m] (0 when there
             is no stretch).
+        force_flips: of the consecutive steps both at the force limit, the fraction whose
+            force changes sign (a numerical oscillation between +limit and −limit, not a
+            load).
     """
 
     actuator: str
@@ -213,6 +220,7 @@ class JointFeasibility:
     note: str = ""
     blocked_by: str = ""
     target_speed: float = 0.0
+    force_flips: float = 0.0
     damping_lag: float = 0.0
 
     def to_json(self) -> dict:
@@ -402,6 +410,9 @@ def check_feasibility(recording: Recording, twin: Twin, *,
                 damping_lag = (kv + damping / gear ** 2) / (-b1) * speed
         saturated = np.abs(force[:, a]) >= options.saturation_fraction * limit
         sat_start, sat_len = _longest_run(saturated)
+        both = saturated[1:] & saturated[:-1]
+        flips = both & (np.sign(force[1:, a]) != np.sign(force[:-1, a]))
+        force_flips = float(flips.sum()) / max(1, int(both.sum()))
         friction = float(m.dof_frictionloss[m.jnt_dofadr[j]])
         entry = JointFeasibility(
             actuator=name, joint=jname, kind=kind.value, unit=unit, gripper=is_gripper,
@@ -410,7 +421,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             saturation_duration=sat_len * dt, saturation_start=sat_start * dt if sat_len else None,
             saturation_total=float(saturated.sum()) * dt, force_limit=limit, limit_source=source,
             frictionloss=friction, target_span=span, note=note, target_speed=speed,
-            damping_lag=damping_lag)
+            damping_lag=damping_lag, force_flips=force_flips)
         stretch = _failing_stretch(entry, tol, abs(gear), options)
         if stretch is not None:
             blocked = _blocking_contact(m, states, *stretch, joint=j)
@@ -543,6 +554,8 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
         if e.blocked_by:
             cause = (f"the contact {e.blocked_by} holds it back: the motion pushes the robot "
                      f"against itself, the object or the support")
+        elif e.saturation_total > 0 and e.force_flips >= FLIP_SHARE:
+            cause = _oscillation(e, fu)
         elif e.saturation_total > 0 and e.saturation_start is not None:
             cause = (f"the actuator is at its force limit {e.force_limit:g} {fu} "
                      f"({e.limit_source}) for {e.saturation_total:.3g} s in all: too weak "
@@ -567,6 +580,7 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
             f"{e.lag_start:.3f} s; likely cause: {cause}")
     elif e.saturation_duration > opt.saturation_duration:
         cause = (f"the contact {e.blocked_by} holds it back" if e.blocked_by else
+                 _oscillation(e, fu) if e.force_flips >= FLIP_SHARE else
                  "too weak for the load; check [limits], the model's forcerange and gear")
         out.append(
             f"the twin cannot reproduce the nominal motion: actuator {e.actuator!r} (joint "
@@ -577,6 +591,15 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
         out = [msg.replace("the twin cannot reproduce the nominal motion: ",
                            "the nominal motion is held back by a contact: ") for msg in out]
     return out
+
+
+def _oscillation(e: JointFeasibility, fu: str) -> str:
+    """The cause of a saturation whose force flips between +limit and −limit."""
+    return (f"a numerical oscillation, not a load: the actuator's force jumps between "
+            f"+{e.force_limit:g} and −{e.force_limit:g} {fu} from one step to the next "
+            f"({e.force_flips:.0%} of its steps at the limit); check the model's integrator "
+            f"(implicitfast damps a stiff servo, Euler does not) and the servo's kp/kv for "
+            f"the timestep")
 
 
 # -- trajectory <-> scenario fit ------------------------------------------------------

@@ -242,11 +242,29 @@ class ComOffsetParameter(Parameter):
 
 @dataclasses.dataclass(frozen=True)
 class ForceLimitParameter(Parameter):
-    """Symmetric force limit of an actuator [N or N·m] (e.g. the gripper's grip force)."""
+    """Symmetric force limit of an actuator [N or N·m] (e.g. the gripper's grip force).
+
+    ``torque``: the actuator drives a hinge joint, so its force is a torque (N·m); set by
+    :func:`with_units` once the model is known.
+    """
 
     fields: ClassVar[tuple[str, ...]] = ("actuator_forcerange",)
-    unit: ClassVar[str] = "N"
     minimum: ClassVar[float] = 0.0
+    torque: bool = False
+
+    @property
+    def unit(self) -> str:  # type: ignore[override]
+        return "N·m" if self.torque else "N"
+
+    def with_units(self, model: mujoco.MjModel) -> ForceLimitParameter:
+        """This parameter with its unit read from ``model``: N·m for an actuator on a hinge
+        (or ball) joint, N otherwise."""
+        a = self.resolve(model)
+        on_joint = int(model.actuator_trntype[a]) in (int(mujoco.mjtTrn.mjTRN_JOINT),
+                                                      int(mujoco.mjtTrn.mjTRN_JOINTINPARENT))
+        kind = int(model.jnt_type[model.actuator_trnid[a, 0]]) if on_joint else -1
+        torque = kind in (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_BALL))
+        return dataclasses.replace(self, torque=torque)
 
     def resolve(self, model):
         return _resolve(model, mujoco.mjtObj.mjOBJ_ACTUATOR, self.target, "actuator")

@@ -678,6 +678,19 @@ def _listing(pool: Sequence[str], limit: int = 40) -> str:
     return (", ".join(shown[:limit]) + (f", ... ({more} more)" if more > 0 else "")) or "(none)"
 
 
+def _with_units(box: UncertaintyBox, model: mujoco.MjModel) -> UncertaintyBox:
+    """The box with each force limit's unit read from the model (N·m on a hinge)."""
+    out = []
+    for p in box.parameters:
+        if isinstance(p, ForceLimitParameter):
+            try:
+                p = p.with_units(model)
+            except ScenarioError as exc:
+                raise ScenarioError(f"[uncertainty.{p.name}]: {exc}") from None
+        out.append(p)
+    return UncertaintyBox(tuple(out))
+
+
 def _spec_targets(box: UncertaintyBox) -> dict[str, tuple[str, ...]]:
     """:func:`prepare_spec`'s keywords for the box: the geoms whose friction it varies and
     the bodies whose centre of mass it moves."""
@@ -1059,6 +1072,7 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
 
     spec = prepare_spec(mjcf, object_body=object_body, **_spec_targets(box))
     model = compile_spec(spec, mjcf)
+    box = _with_units(box, model)
     object_geom = _object_geom(object_t, model, object_body)
     key_id = None
     if isinstance(keyframe, int) and 0 <= keyframe < model.nkey:

@@ -818,7 +818,8 @@ class SparseEvaluator:
         """Whether the contact criterion decides at each moment, (m,) bool.
 
         The force ratio is calibrated against the nominal run: where the nominal parameters'
-        own grip crosses the contact criterion's threshold anywhere in the moment's window
+        own cost crosses the threshold by a contact excursion (the contact term at least
+        the motor term, the two summed as the decision sums them) anywhere in the moment's window
         (horizon and persistence) while it carries the object in a real lift (its force
         ratio touches the friction cone: contact chatter of mesh fingers, a soft cone), or
         for ``persistence`` in all over the whole motion, although the nominal run
@@ -857,8 +858,10 @@ class SparseEvaluator:
 
     def _nominal_over(self) -> np.ndarray:
         """(T,) bool: the lifted steps of a nominal run that completes the task at which its
-        grip's contact term crosses the threshold (none when it does not complete), read
-        once from the recording."""
+        cost crosses the threshold by a contact excursion as the decision counts one (the
+        contact term at least the motor term: on ALOHA with noslip the grip's 0.75 and the
+        motors' 0.47 crossed 0.9 together while the run completed, and every sample failed
+        there), none when it does not complete; read once from the recording."""
         if self._over is None:
             sd = self._sensordata
             over = np.zeros(self.n_steps, bool)
@@ -868,7 +871,8 @@ class SparseEvaluator:
                     sig = self.twin.signals(np.asarray(sd, dtype=np.float64),
                                             carried=self._carried)
                     term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
-                over = self._lifted & (term_c > cp.threshold)
+                    term_m = cp.B * np.exp(-cp.beta * (sig.fos_motor - 1.0))
+                over = self._lifted & (term_c + term_m > cp.threshold) & ~(term_m > term_c)
             self._over = over
         return self._over
 

@@ -572,14 +572,28 @@ def _best_cut(bad: np.ndarray, a: np.ndarray, b: np.ndarray, margin: float,
         vol[_blocked_grid(inside_bad, cands, margin) if k == 2 else blocked(cuts)] = -1.0
         i = int(np.argmax(vol))
         return cuts[i] if vol[i] > 0 else None
+    # k > 2: one bad point at a time, the (point, axis) cut that keeps the most volume (a
+    # cut of one axis below every bad point keeps the least: the region became a sliver
+    # of whichever parameter's bad points lay lowest)
     cut = b.copy()
-    while blocked(cut[None])[0]:
-        hit = (inside_bad <= cut + margin) if margin > 0 else (inside_bad < cut)
-        inside = inside_bad[hit.all(axis=1)]
-        j = int(np.argmax(cut - inside.min(axis=0)))
-        cut[j] = inside[:, j].min() - margin
-        if cut[j] <= a[j]:
+    for _ in range(inside_bad.shape[0]):
+        inside = inside_bad[inside_of(inside_bad, cut + shift).all(axis=1)]
+        if inside.shape[0] == 0:
+            break
+        values = np.minimum(inside - margin, cut)  # (q, k): the cut that puts p out on j
+        kept = np.where(values > a, (values - a) / (cut - a), -1.0)
+        p, j = np.unravel_index(int(np.argmax(kept)), kept.shape)
+        if kept[p, j] <= 0:
             return None
+        cut[j] = values[p, j]
+    # then each face out again as far as the bad points the others keep out allow (an early
+    # cut may have been made redundant by a later one)
+    for j in range(k):
+        others = np.arange(k) != j
+        held = inside_of(inside_bad[:, others], cut[others] + shift).all(axis=1)
+        cut[j] = min(b[j], float((inside_bad[held, j] - margin).min(initial=np.inf)))
+    if blocked(cut[None])[0]:
+        return None
     return cut
 
 
@@ -660,7 +674,7 @@ def round_inward(region: Mapping[str, tuple[float, float]] | None, box: Uncertai
             lo = _round(lo, digits, up=True)
         if not np.isclose(hi, p.high):
             hi = _round(hi, digits, up=False)
-        if hi < lo:
+        if not hi > lo:  # nothing left, or a single value: no region
             return None
         out[p.name] = (float(lo), float(hi))
     return out
@@ -791,6 +805,14 @@ def shrink_region(region: Mapping[str, tuple[float, float]], failing: np.ndarray
         # a failure on a face the failing sides keep (failures at both ends of a
         # parameter): move any face
         return _any_face_cut(lo, hi, failing, box, float(margin), passing)
+    if float(np.max(b - cut)) <= 3.0 * margin:
+        # only a hair past the failing points (no passing corner clean of them): the next
+        # round would fail just inside; faces move half way to the nearest passing point
+        # instead, so that the rounds converge (three parameters with the failures along
+        # a whole face)
+        moved = _any_face_cut(lo, hi, failing, box, float(margin), passing)
+        if moved is not None:
+            return moved
     out = {}
     for j, p in enumerate(box.parameters):
         if np.isclose(cut[j], b[j], rtol=0, atol=1e-12):

@@ -512,3 +512,20 @@ def test_cost_weights_that_fail_a_comfortable_grip_are_warned_of():
         cost = CostParams(A=1.0, B=1.0, alpha=0.7, beta=2.0, threshold=0.9)
     assert cost.failing_fos("contact") == pytest.approx(1.0 + np.log(1 / 0.9) / 0.7)
     assert 1.0 < cost.failing_fos("motor") < 1.06
+
+
+def test_a_force_limit_on_a_hinge_is_a_torque_and_on_a_slide_a_force(tmp_path):
+    """The unit a force limit prints with comes from the actuator's joint: N·m for the
+    shoulder's hinge (it printed "shoulder_limit ≥ 19.5 N"), N for a finger's slide."""
+    from critmoment.scenario import load_scenario
+
+    folder = _toml(tmp_path, ('[uncertainty.friction]\ngeom = "box"',
+                              '[uncertainty.shoulder]\nkind = "force_limit"\n'
+                              'actuator = "right/shoulder"\nrange = [5.0, 20.0]\nnominal = 20.0\n'
+                              '[uncertainty.grip]\nkind = "force_limit"\n'
+                              'actuator = "right/left_finger"\nrange = [2.0, 8.0]\nnominal = 5.0\n'
+                              '[uncertainty.friction]\ngeom = "box"'))
+    units = {p.name: p.unit for p in load_scenario(folder).box.parameters}
+    assert units["shoulder"] == "N·m" and units["grip"] == "N"
+    box = load_scenario(folder).box.with_range("shoulder", 10.0, 20.0)
+    assert box.parameters[box.index("shoulder")].unit == "N·m"

@@ -261,6 +261,52 @@ def test_shrinking_lands_on_a_checked_point_that_passed():
     assert region["mass"][1] > 0.1  # not shrunk to nothing
 
 
+def _box3() -> UncertaintyBox:
+    from critmoment.params import ComOffsetParameter
+
+    return UncertaintyBox(_box().parameters + (ComOffsetParameter("com", "box", -0.01, 0.01,
+                                                                  0.0),))
+
+
+def test_three_parameters_keep_a_parameter_that_does_not_matter_whole():
+    """Fails iff mass > 0.8 kg over mass × friction × centre of mass: the sub-box is the 2-D
+    answer with the centre of mass over its whole range (the cut of one axis below every
+    failing sample made it a sliver of whichever axis they reached lowest)."""
+    box3 = _box3().parameters
+    box3 = UncertaintyBox((MassParameter("mass", "box", 0.05, 1.5, 0.05),) + box3[1:])
+    from scipy.stats import qmc
+
+    x = box3.from_unit(qmc.Sobol(3, seed=0).random(64))
+    failed = x[:, 0] > 0.8
+    region = vd.safe_subbox(x, failed, box3, ["above", "below", "above"])
+    assert region["friction"] == (0.2, 1.5)
+    assert region["com"][0] == -0.01 and region["com"][1] > 0.009
+    assert 0.75 < region["mass"][1] < 0.85
+    inside = np.all([(x[:, j] > lo) & (x[:, j] < hi) for j, (lo, hi) in
+                     enumerate(region.values())], axis=0)
+    assert not (inside & failed).any()
+
+
+def test_three_parameter_shrinking_converges_within_the_rounds():
+    """The check's shrink with three parameters, on a known boundary (heavy and slippery
+    fails; the centre of mass does not matter): within 4 rounds the region holds on a dense
+    check of its corners and edges and keeps most of the mass range."""
+    box = _box3()
+    sides = ["above", "below", "above"]
+    region = {"mass": (0.05, 0.5), "friction": (0.2, 1.5), "com": (-0.01, 0.01)}
+    for _ in range(4):
+        pts, _ = vd.region_points(region, box, per_edge=5)
+        fails = _cost(pts) > THRESHOLD
+        if not fails.any():
+            break
+        region = vd.round_inward(vd.shrink_region(region, pts[fails], box, sides,
+                                                  passing=pts[~fails]), box)
+        assert region is not None
+    dense, _ = vd.region_points(region, box, per_edge=21)
+    assert not (_cost(dense) > THRESHOLD).any()
+    assert region["mass"][1] > 0.2 and region["com"] == (-0.01, 0.01)
+
+
 def test_failures_at_both_ends_of_a_parameter_move_both_faces():
     """Failing at low and at high friction (a grip that slips, and one that drags the
     object along): the failing sides' cut cannot keep the low-friction failures out (they
