@@ -243,21 +243,28 @@ def test_round_inward_never_grows_the_region():
     assert r == {"mass": (0.05, 0.352), "friction": (0.453, 1.5)}
 
 
-def test_shrinking_lands_on_a_checked_point_that_passed():
-    """Check, shrink, check again on a known boundary: the region ends up holding."""
-    box = _box()
-    sides = ["above", "below"]
-    region = {"mass": (0.05, 0.5), "friction": (0.2, 1.5)}  # claims too much: (0.5, 0.2) fails
-    for _ in range(4):
-        pts, edges = vd.region_points(region, box, per_edge=9)
+def _check_and_shrink(region, box, sides, *, per_edge, dense_per_edge, rounds=4):
+    """The region check's rounds against the known boundary of ``_cost``: check the corners
+    and edges, shrink on failures; the last region, after asserting that it holds on a
+    denser check."""
+    for _ in range(rounds):
+        pts, _ = vd.region_points(region, box, per_edge=per_edge)
         fails = _cost(pts) > THRESHOLD
         if not fails.any():
             break
         region = vd.round_inward(vd.shrink_region(region, pts[fails], box, sides,
                                                   passing=pts[~fails]), box)
         assert region is not None
-    dense, _ = vd.region_points(region, box, per_edge=41)
+    dense, _ = vd.region_points(region, box, per_edge=dense_per_edge)
     assert not (_cost(dense) > THRESHOLD).any()
+    return region
+
+
+def test_shrinking_lands_on_a_checked_point_that_passed():
+    """Check, shrink, check again on a known boundary: the region ends up holding."""
+    region = {"mass": (0.05, 0.5), "friction": (0.2, 1.5)}  # claims too much: (0.5, 0.2) fails
+    region = _check_and_shrink(region, _box(), ["above", "below"], per_edge=9,
+                               dense_per_edge=41)
     assert region["mass"][1] > 0.1  # not shrunk to nothing
 
 
@@ -291,19 +298,9 @@ def test_three_parameter_shrinking_converges_within_the_rounds():
     """The check's shrink with three parameters, on a known boundary (heavy and slippery
     fails; the centre of mass does not matter): within 4 rounds the region holds on a dense
     check of its corners and edges and keeps most of the mass range."""
-    box = _box3()
-    sides = ["above", "below", "above"]
     region = {"mass": (0.05, 0.5), "friction": (0.2, 1.5), "com": (-0.01, 0.01)}
-    for _ in range(4):
-        pts, _ = vd.region_points(region, box, per_edge=5)
-        fails = _cost(pts) > THRESHOLD
-        if not fails.any():
-            break
-        region = vd.round_inward(vd.shrink_region(region, pts[fails], box, sides,
-                                                  passing=pts[~fails]), box)
-        assert region is not None
-    dense, _ = vd.region_points(region, box, per_edge=21)
-    assert not (_cost(dense) > THRESHOLD).any()
+    region = _check_and_shrink(region, _box3(), ["above", "below", "above"], per_edge=5,
+                               dense_per_edge=21)
     assert region["mass"][1] > 0.2 and region["com"] == (-0.01, 0.01)
 
 
