@@ -308,6 +308,24 @@ def _resting_supports(model: mujoco.MjModel, object_body: int, key: int | None) 
     return found
 
 
+def _check_out(out_path: Path, overwrite: bool) -> None:
+    """``init --out``: a file path in an existing folder, not an existing file unless
+    ``overwrite``; checked before anything is written.
+
+    Raises:
+        ScenarioError: what is wrong with the path.
+    """
+    if out_path.is_dir():
+        raise ScenarioError(f"--out: {out_path} is a folder; expected the path of the "
+                            f"scenario file to write (e.g. {out_path / 'scenario.toml'})")
+    if out_path.exists() and not overwrite:
+        raise ScenarioError(f"--out: {out_path} exists; pass --force to replace it")
+    if not out_path.parent.is_dir():
+        what = "is a file" if out_path.parent.exists() else "does not exist"
+        raise ScenarioError(f"--out: {out_path.parent} {what}; expected the scenario "
+                            f"file's folder to exist")
+
+
 def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                   supports: Sequence[str] = (), out: str | Path | None = None,
                   goal: Sequence[float] | None = None, goal_site: str | None = None,
@@ -453,6 +471,8 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
              f"description = {_toml_str(f'{task} of {object_body} ({model_path.name})')}", "",
              "[model]"]
     out_path = Path(out) if out is not None else None
+    if out_path is not None:
+        _check_out(out_path, overwrite)
     base = out_path.parent if out_path is not None else Path.cwd()
     rel = os.path.relpath(model_path.resolve(), base.resolve())
     lines.append(f"mjcf = {_toml_str(rel)}")
@@ -526,8 +546,6 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                       "sample's slip on its own run (chained segments)")
     text = "\n".join(lines)
     if out_path is not None:
-        if out_path.exists() and not overwrite:
-            raise ScenarioError(f"--out: {out_path} exists; pass --force to replace it")
         tmp = out_path.with_name(f".{out_path.name}.tmp")
         try:
             tmp.write_text(text, encoding="utf-8")

@@ -396,3 +396,22 @@ def test_an_objects_fixed_parts_merge_with_fusestatic(tmp_path):
     with pytest.raises(ScenarioError, match=r"articulated object"):
         init_scenario(tmp_path / "hinged.xml", object_body="cube", task="pick_hold",
                       out=tmp_path / "h.toml")
+
+
+def test_init_out_must_be_a_file_in_an_existing_folder(tmp_path):
+    """--out under a file, in a missing folder, or naming a folder (even with --force): a
+    ScenarioError that names the path, before anything is written (it was an OSError on a
+    hidden temporary file's name)."""
+    model_path = _write(tmp_path)
+    (tmp_path / "afile").write_text("x")
+    (tmp_path / "adir").mkdir()
+    for out, force, message in (
+            (tmp_path / "afile" / "x.toml", False, r"afile is a file; expected the scenario "
+                                                   r"file's folder to exist"),
+            (tmp_path / "nowhere" / "x.toml", False, r"nowhere does not exist"),
+            (tmp_path / "adir", True, r"adir is a folder; expected the path of the scenario "
+                                      r"file to write")):
+        with pytest.raises(ScenarioError, match=message):
+            init_scenario(model_path, object_body="cube", task="pick_hold", out=out,
+                          overwrite=force)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["adir", "afile", "arm.xml"]
