@@ -1032,6 +1032,21 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
     else:
         start = qpos[0]
 
+    # a rate the file records (a root attribute ``fps``, as some exporters write it) is the
+    # episode's; without one, ACT's own 50 Hz
+    recorded = None
+    for key in ("fps", "frame_rate", "control_freq"):
+        if key in attrs:
+            recorded = _as_rate(attrs[key], what=f"{_short(path)!r} attribute {key!r}",
+                                error=TrajectoryError)
+            break
+    if recorded is not None and fps is not None and not _rates_agree(fps, recorded):
+        raise TrajectoryError(
+            f"fps argument {fps:g} Hz disagrees with the rate {recorded:g} Hz recorded in "
+            f"{_short(path)!r} (expected agreement within {_RATE_RTOL:.0%}); omit fps= to "
+            f"use the recorded rate")
+    if fps is None:
+        fps = recorded
     if fps is None:
         logger.info("%s: ACT episode without a rate; assuming %g Hz", path, DEFAULT_FPS)
     meta = {"source_format": "act_hdf5"}

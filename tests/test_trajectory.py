@@ -610,3 +610,20 @@ def test_an_episode_split_over_two_files_is_refused_by_listing_and_loading(tmp_p
                  lambda: load_trajectory(tmp_path / "ds", episode=0)):
         with pytest.raises(TrajectoryError, match="expected episode 0 in one parquet file"):
             call()
+
+
+def test_act_hdf5_uses_a_recorded_rate(tmp_path):
+    """A root attribute fps = 25 is the episode's rate (it was ignored for ACT's 50 Hz); an
+    fps argument that disagrees with it is an error, as for LeRobot data."""
+    path = tmp_path / "episode_0.hdf5"
+    with h5py.File(path, "w") as f:
+        f.create_dataset("action", data=np.zeros((30, NA)))
+        f.create_dataset("observations/qpos", data=np.zeros((30, NA)))
+        f.attrs["fps"] = 25
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        assert load_trajectory(path).fps == 25.0
+        assert load_trajectory(path, fps=25.0).fps == 25.0
+        with pytest.raises(TrajectoryError, match=r"fps argument 50 Hz disagrees with the rate "
+                           r"25 Hz recorded in"):
+            load_trajectory(path, fps=50.0)
