@@ -181,6 +181,8 @@ def _names(table, key, where, default=...) -> tuple[str, ...] | None:
 # ---------------------------------------------------------------------------
 
 
+#: a sliding friction coefficient above this is warned of as no real material's
+PLAUSIBLE_FRICTION = 10.0
 #: the largest exponent α, β of the cost (exp(50) ≈ 5e21: a step already)
 MAX_COST_EXPONENT = 50.0
 
@@ -862,10 +864,15 @@ def _parameter(name: str, spec: Any) -> Parameter:
         raise ScenarioError(
             f"{where} prior: expected one of {[p.value for p in Prior]}, got {prior_name!r}") from None
     try:
-        return cls(name=name, target=target, low=float(rng[0]), high=float(rng[1]),
-                   nominal=nominal, prior=prior)
+        param = cls(name=name, target=target, low=float(rng[0]), high=float(rng[1]),
+                    nominal=nominal, prior=prior)
     except ParameterError as exc:
         raise ScenarioError(f"{where}: {exc}") from exc
+    if isinstance(param, FrictionParameter) and param.high > PLAUSIBLE_FRICTION:
+        warnings.warn(f"{where} range: a sliding friction coefficient up to {param.high:g} is "
+                      f"far beyond real materials (rubber on rough surfaces reaches about 1-2); "
+                      f"is the range in other units?", ScenarioWarning, stacklevel=3)
+    return param
 
 
 class _ActuatorResolver:
@@ -906,6 +913,7 @@ def _resolve_limits(raw: Mapping[str, Any], resolver: _ActuatorResolver
     model = resolver.model
     limits: dict[str, float] = {}
     sources: dict[str, str] = {}
+    set_by: dict[str, str] = {}  # actuator -> the [limits] key that set it
     for i in range(model.nu):
         value = act_info.force_limit(model, i)
         limits[resolver.names[i]] = math.inf if value is None else value
@@ -921,8 +929,16 @@ def _resolve_limits(raw: Mapping[str, Any], resolver: _ActuatorResolver
                 f"[limits] {key!r} matches no actuator (by name, or by the joint/tendon it "
                 f"drives); actuators: {resolver.listing()}")
         for i in matches:
-            limits[resolver.names[i]] = float(value)
-            sources[resolver.names[i]] = "scenario"
+            name = resolver.names[i]
+            earlier = set_by.get(name)
+            if earlier is not None and float(raw[earlier]) != float(value):
+                raise ScenarioError(
+                    f"[limits] {earlier!r} = {raw[earlier]!r} and {key!r} = {value!r} both "
+                    f"set actuator {name!r}; expected one limit per actuator (use full "
+                    f"names)")
+            set_by[name] = key
+            limits[name] = float(value)
+            sources[name] = "scenario"
     return limits, sources
 
 

@@ -167,6 +167,9 @@ def test_mjcf_that_does_not_compile(tmp_path):
      r"cost the formula gives, A·exp\(α\) \+ B·exp\(β\) = 9.403 \(both factors of safety "
      r"at 0\), got 100.0: no grip and no motor could ever fail"),
     ("alpha = 0.7", "alpha = 1000.0", r"\[cost\] alpha: expected at most 50 .*got 1000.0"),
+    ("waist = 10.0", 'waist = 10.0\n"left/waist" = 3.0',
+     r"\[limits\] 'waist' = 10.0 and 'left/waist' = 3.0 both set actuator 'left/waist'; "
+     r"expected one limit per actuator"),
     ("gripper_close = 0.01844", "gripper_close = -0.5",
      r"\[actions\] channel 'left/gripper': the closed \(action 0\) control of actuator "
      r"'left/left_finger' is -0.5, far outside its ctrlrange \[0.021, 0.057\]; expected "
@@ -529,3 +532,12 @@ def test_a_force_limit_on_a_hinge_is_a_torque_and_on_a_slide_a_force(tmp_path):
     assert units["shoulder"] == "N·m" and units["grip"] == "N"
     box = load_scenario(folder).box.with_range("shoulder", 10.0, 20.0)
     assert box.parameters[box.index("shoulder")].unit == "N·m"
+
+
+def test_a_friction_range_beyond_real_materials_is_warned_of(tmp_path):
+    from critmoment.scenario import ScenarioWarning, load_scenario
+
+    folder = _toml(tmp_path, ("range = [0.2, 1.5]", "range = [0.2, 1e6]"))
+    with pytest.warns(ScenarioWarning, match=r"\[uncertainty.friction\] range: a sliding "
+                      r"friction coefficient up to 1e\+06 is far beyond real materials"):
+        load_scenario(folder)
