@@ -38,12 +38,13 @@ decide a run.
 from __future__ import annotations
 
 import dataclasses
+import warnings
 from collections.abc import Mapping, Sequence
 from typing import Any, ClassVar
 
 import numpy as np
 
-from critmoment.exceptions import ScenarioError
+from critmoment.exceptions import CritmomentWarning, ScenarioError
 
 __all__ = [
     "TaskEvidence",
@@ -253,6 +254,11 @@ class HandoverTask(Task):
 
     @classmethod
     def from_table(cls, table, grippers, resolve_site=None):
+        if "lift_height" in table:
+            # kept for files that set it, but nothing reads it: say so
+            warnings.warn("[task] lift_height: a hand-over's success is the receiver holding "
+                          "the object off every support at the end, which needs no lift "
+                          "height; the value is not used", CritmomentWarning, stacklevel=3)
         return cls(grippers=tuple(grippers), picker=_gripper(table, "picker", grippers, cls.kind),
                    receiver=_gripper(table, "receiver", grippers, cls.kind),
                    lift_height=_number(table, "lift_height", 0.02),

@@ -138,3 +138,14 @@ def test_evidence_shapes_are_checked():
     with pytest.raises(ScenarioError, match="task evidence: expected"):
         TaskEvidence(contact_gripper=np.zeros((5, 1), bool), contact_support=np.zeros(4, bool),
                      object_pos=np.zeros((5, 3)), object_vel=np.zeros((5, 3)), dt=DT)
+
+
+def test_a_lift_height_for_a_handover_is_warned_unused():
+    """Nothing in a hand-over's success reads lift_height (100 m gave the same verdict)."""
+    from critmoment.exceptions import CritmomentWarning
+
+    table = {"kind": "handover", "picker": "left", "receiver": "right", "lift_height": 100.0}
+    with pytest.warns(CritmomentWarning, match=r"\[task\] lift_height: a hand-over's success "
+                      r".*the value is not used"):
+        task = task_from_table(table, ["left", "right"])
+    assert isinstance(task, HandoverTask)
