@@ -1157,8 +1157,8 @@ def _index_column(column: Any, *, what: str) -> np.ndarray:
         first = int(np.flatnonzero(np.asarray(arr.is_null()))[0])
         raise TrajectoryError(f"{what}: expected an integer in every row, got null at row {first}")
     if pa.types.is_integer(arr.type):
-        return np.asarray(arr.to_numpy(zero_copy_only=False), dtype=np.int64)
-    if pa.types.is_floating(arr.type):
+        out = np.asarray(arr.to_numpy(zero_copy_only=False), dtype=np.int64)
+    elif pa.types.is_floating(arr.type):
         values = np.asarray(arr.to_numpy(zero_copy_only=False), dtype=np.float64)
         bad = np.flatnonzero(~np.isfinite(values) | (values != np.round(values)))
         if bad.size:
@@ -1167,8 +1167,14 @@ def _index_column(column: Any, *, what: str) -> np.ndarray:
                 f"{what}: expected integers, got {float(values[i])!r} at row {i} "
                 f"({bad.size} non-integer value(s) in total)"
             )
-        return values.astype(np.int64)
-    raise TrajectoryError(f"{what}: expected an integer column, got type {arr.type}")
+        out = values.astype(np.int64)
+    else:
+        raise TrajectoryError(f"{what}: expected an integer column, got type {arr.type}")
+    negative = np.flatnonzero(out < 0)
+    if negative.size:  # LeRobot counts episodes and frames from 0
+        i = int(negative[0])
+        raise TrajectoryError(f"{what}: expected indices >= 0, got {int(out[i])} at row {i}")
+    return out
 
 
 _LEROBOT_COLUMNS = ("action", "episode_index", "frame_index", "timestamp", "observation.state")

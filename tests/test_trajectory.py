@@ -627,3 +627,15 @@ def test_act_hdf5_uses_a_recorded_rate(tmp_path):
         with pytest.raises(TrajectoryError, match=r"fps argument 50 Hz disagrees with the rate "
                            r"25 Hz recorded in"):
             load_trajectory(path, fps=50.0)
+
+
+def test_lerobot_negative_indices_are_refused(tmp_path, rng):
+    a = _actions(rng, 6).astype(np.float32)
+    pq.write_table(pa.table({
+        "action": pa.array([r.tolist() for r in a], pa.list_(pa.float32())),
+        "frame_index": pa.array(range(6), pa.int64()),
+        "episode_index": pa.array([-3] * 6, pa.int64()),
+    }), tmp_path / "ep.parquet")
+    with pytest.raises(TrajectoryError, match=r"column 'episode_index': expected indices >= 0, "
+                       r"got -3 at row 0"):
+        load_trajectory(tmp_path / "ep.parquet", fps=50)
