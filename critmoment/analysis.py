@@ -956,7 +956,7 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
             pts, edges = vd.region_points(current, box, per_edge=per_edge, dense=hot)
             res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
             n_sparse += pts.shape[0]
-        rolled = chained = np.zeros(pts.shape[0], bool)
+        rolled, chained = np.zeros(pts.shape[0], bool), np.zeros(pts.shape[0], bool)
         if _sparse_fails(res, options).any():
             fails = np.array(res.failed_any, dtype=bool)  # it shrinks: no runs this round
         else:
@@ -967,7 +967,6 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
             fails = np.zeros(pts.shape[0], bool)
             fails[own] = vd.failing_samples(
                 runs.evidence(sub, nominal_completed=nominal_completed), options)
-            rolled, chained = np.zeros(pts.shape[0], bool), np.zeros(pts.shape[0], bool)
             rolled[own] = runs.rerun
             chained[own] = runs.chained & ~runs.rerun
             n_rollouts += int(rolled.sum())

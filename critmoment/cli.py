@@ -574,10 +574,7 @@ def _main(argv: list[str] | None) -> int:
         return exc.code if isinstance(exc.code, int) else EXIT_ERROR
     # a library log line reads as the command's own warnings do
     handler = logging.StreamHandler()
-    handler.setFormatter(logging.Formatter(
-        f"critmoment {args.command}: %(levelname)s: "
-        f"{'%(name)s: ' if args.verbose else ''}%(message)s"))
-    handler.addFilter(_lower_level)
+    handler.setFormatter(_CommandFormatter(args.command, verbose=args.verbose))
     logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
                         handlers=[handler])
     _Stdout.closed = False
@@ -608,10 +605,18 @@ def _main(argv: list[str] | None) -> int:
     return code
 
 
-def _lower_level(record: logging.LogRecord) -> bool:
-    """Log levels in lower case ("warning"), as critmoment's own lines print them."""
-    record.levelname = record.levelname.lower()
-    return True
+class _CommandFormatter(logging.Formatter):
+    """``critmoment COMMAND: warning: message`` (the logger's name too with --verbose), as
+    critmoment's own lines print; the record itself is left as it is for other handlers."""
+
+    def __init__(self, command: str, *, verbose: bool):
+        super().__init__()
+        self.command, self.verbose = command, verbose
+
+    def format(self, record: logging.LogRecord) -> str:
+        name = f"{record.name}: " if self.verbose else ""
+        return (f"critmoment {self.command}: {record.levelname.lower()}: {name}"
+                f"{record.getMessage()}")
 
 
 def _error(command: str, message: str, args) -> None:

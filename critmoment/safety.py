@@ -76,6 +76,16 @@ def motor_fos(force: np.ndarray, limit: np.ndarray) -> tuple[np.ndarray, np.ndar
     return np.take_along_axis(ratio, idx[..., None], axis=-1)[..., 0], idx
 
 
+def cost_terms(fos_contact: np.ndarray, fos_motor: np.ndarray, params: CostParams
+               ) -> tuple[np.ndarray, np.ndarray]:
+    """The cost's two terms, A·exp(−α(FOS_c − 1)) and B·exp(−β(FOS_m − 1)) (eq. 15), each
+    (...); +inf factors of safety give 0. Overflow gives +inf without a warning."""
+    with np.errstate(over="ignore"):
+        c = params.A * np.exp(-params.alpha * (np.asarray(fos_contact) - 1.0))
+        m = params.B * np.exp(-params.beta * (np.asarray(fos_motor) - 1.0))
+    return c, m
+
+
 def cost(fos_contact: np.ndarray, fos_motor: np.ndarray, params: CostParams) -> np.ndarray:
     """Cost C = A·exp(−α(FOS_c − 1)) + B·exp(−β(FOS_m − 1)) (eq. 15).
 
@@ -87,9 +97,7 @@ def cost(fos_contact: np.ndarray, fos_motor: np.ndarray, params: CostParams) -> 
     Returns:
         (...) cost; the motion fails where it exceeds ``params.threshold``.
     """
-    with np.errstate(over="ignore"):
-        c = params.A * np.exp(-params.alpha * (np.asarray(fos_contact) - 1.0))
-        m = params.B * np.exp(-params.beta * (np.asarray(fos_motor) - 1.0))
+    c, m = cost_terms(fos_contact, fos_motor, params)
     return c + m
 
 

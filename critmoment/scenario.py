@@ -185,8 +185,6 @@ def _names(table, key, where, default=...) -> tuple[str, ...] | None:
 PLAUSIBLE_FRICTION = 10.0
 #: the largest exponent α, β of the cost (exp(50) ≈ 5e21: a step already)
 MAX_COST_EXPONENT = 50.0
-
-
 #: where each cost term alone should reach the threshold, as a factor of safety: outside
 #: it the weights call a comfortable margin a failure, or a limit well passed safe
 FOS_BAND = (0.5, 2.0)

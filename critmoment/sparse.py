@@ -102,6 +102,7 @@ import mujoco
 import mujoco.batch
 import numpy as np
 
+from critmoment import safety
 from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
 from critmoment.params import UncertaintyBox
@@ -870,8 +871,7 @@ class SparseEvaluator:
                 with np.errstate(over="ignore", invalid="ignore"):
                     sig = self.twin.signals(np.asarray(sd, dtype=np.float64),
                                             carried=self._carried)
-                    term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
-                    term_m = cp.B * np.exp(-cp.beta * (sig.fos_motor - 1.0))
+                    term_c, term_m = safety.cost_terms(sig.fos_grasp, sig.fos_motor, cp)
                 over = self._lifted & (term_c + term_m > cp.threshold) & ~(term_m > term_c)
             self._over = over
         return self._over
@@ -1386,8 +1386,7 @@ class SparseEvaluator:
         with np.errstate(over="ignore", invalid="ignore"):
             sig = self.twin.signals(buf, mu=mu[:, None], carried=self._carried[at])
             cp = self.twin.scenario.cost
-            term_m = cp.B * np.exp(-cp.beta * (sig.fos_motor - 1.0))
-            term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp - 1.0))
+            term_c, term_m = safety.cost_terms(sig.fos_grasp, sig.fos_motor, cp)
             # uncalibrated where the contact is not trusted: slip and motor decide
             if np.ndim(k):
                 term_c = np.where(self._trusted_at(k)[:, None], term_c, 0.0)
@@ -1554,8 +1553,8 @@ class SparseEvaluator:
             object_acc = sig.object_acc[rows, np.argmax(np.linalg.norm(sig.object_acc, axis=-1),
                                                         axis=1)]
         with np.errstate(over="ignore", invalid="ignore"):
-            term_c = cp.A * np.exp(-cp.alpha * (sig.fos_grasp[rows, worst] - 1.0))
-            term_m = cp.B * np.exp(-cp.beta * (sig.fos_motor[rows, worst] - 1.0))
+            term_c, term_m = safety.cost_terms(sig.fos_grasp[rows, worst],
+                                               sig.fos_motor[rows, worst], cp)
         values = {
             "fos_contact": fos_contact, "fos_grasp": fos_grasp, "fos_motor": fos_motor,
             "motor_argmax": motor_argmax,

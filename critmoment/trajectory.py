@@ -163,6 +163,22 @@ def _rates_agree(a: float, b: float) -> bool:
     return abs(a - b) <= _RATE_RTOL * max(abs(a), abs(b))
 
 
+def _given_or_recorded(fps: float | None, recorded: float | None, where: str) -> float | None:
+    """The rate a file records, else the ``fps`` argument (None when neither is known).
+
+    Raises:
+        TrajectoryError: both are given and disagree.
+    """
+    if recorded is None:
+        return fps
+    if fps is not None and not _rates_agree(fps, recorded):
+        raise TrajectoryError(
+            f"fps argument {fps:g} Hz disagrees with the rate {recorded:g} Hz recorded in "
+            f"{where} (expected agreement within {_RATE_RTOL:.0%}); omit fps= to use the "
+            f"recorded rate")
+    return recorded
+
+
 def _check_json(meta: Any) -> dict:
     if not isinstance(meta, Mapping):
         raise TrajectoryError(
@@ -766,17 +782,8 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
             )
         if file_fps is None:
             file_fps = time_fps
-    if file_fps is not None:
-        if fps is not None and not _rates_agree(fps, file_fps):
-            raise TrajectoryError(
-                f"fps argument {fps:g} Hz disagrees with the rate {file_fps:g} Hz "
-                f"recorded in {str(path)!r} (expected agreement within "
-                f"{_RATE_RTOL:.0%}); omit fps= to use the file's rate"
-            )
-        rate = file_fps
-    elif fps is not None:
-        rate = fps
-    else:
+    rate = _given_or_recorded(fps, file_fps, repr(str(path)))
+    if rate is None:
         logger.info("%s records no frame rate; assuming %g Hz", path, DEFAULT_FPS)
         rate = DEFAULT_FPS
 
@@ -1040,13 +1047,7 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
             recorded = _as_rate(attrs[key], what=f"{_short(path)!r} attribute {key!r}",
                                 error=TrajectoryError)
             break
-    if recorded is not None and fps is not None and not _rates_agree(fps, recorded):
-        raise TrajectoryError(
-            f"fps argument {fps:g} Hz disagrees with the rate {recorded:g} Hz recorded in "
-            f"{_short(path)!r} (expected agreement within {_RATE_RTOL:.0%}); omit fps= to "
-            f"use the recorded rate")
-    if fps is None:
-        fps = recorded
+    fps = _given_or_recorded(fps, recorded, repr(_short(path)))
     if fps is None:
         logger.info("%s: ACT episode without a rate; assuming %g Hz", path, DEFAULT_FPS)
     meta = {"source_format": "act_hdf5"}
@@ -1419,17 +1420,8 @@ def _load_lerobot_files(
                 f"by 'timestamp' (expected agreement within {_RATE_RTOL:.0%})"
             )
     recorded = info_fps if info_fps is not None else time_fps
-    if recorded is not None:
-        if fps is not None and not _rates_agree(fps, recorded):
-            raise TrajectoryError(
-                f"fps argument {fps:g} Hz disagrees with the rate {recorded:g} Hz "
-                f"recorded in LeRobot data {source!r} (expected agreement within "
-                f"{_RATE_RTOL:.0%}); omit fps= to use the recorded rate"
-            )
-        rate = recorded
-    elif fps is not None:
-        rate = fps
-    else:
+    rate = _given_or_recorded(fps, recorded, f"LeRobot data {source!r}")
+    if rate is None:
         warnings.warn(
             f"LeRobot data {source!r}: no meta/info.json 'fps' and no 'timestamp' "
             f"column found, and no fps= given; assuming {DEFAULT_FPS:g} Hz",

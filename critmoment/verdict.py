@@ -836,8 +836,9 @@ def _any_face_cut(lo: np.ndarray, hi: np.ndarray, failing: np.ndarray, box: Unce
     inside, or the opposite face; of the possible cuts, the one that keeps the most volume.
     Greedy, for failures at both ends of a parameter, where the failing sides' cut finds
     none; the next round of the check verifies what it leaves. None when nothing is left."""
-    u_lo = box.to_unit(lo[None])[0].astype(np.float64)
-    u_hi = box.to_unit(hi[None])[0].astype(np.float64)
+    start_lo = box.to_unit(lo[None])[0].astype(np.float64)
+    start_hi = box.to_unit(hi[None])[0].astype(np.float64)
+    u_lo, u_hi = start_lo.copy(), start_hi.copy()
     bad = box.to_unit(np.asarray(failing, dtype=np.float64).reshape(-1, box.ndim))
     good = (np.zeros((0, box.ndim)) if passing is None or not np.size(passing) else
             box.to_unit(np.asarray(passing, dtype=np.float64).reshape(-1, box.ndim)))
@@ -867,7 +868,6 @@ def _any_face_cut(lo: np.ndarray, hi: np.ndarray, failing: np.ndarray, box: Unce
         u_lo, u_hi = best
     if ((bad >= u_lo - tol) & (bad <= u_hi + tol)).all(axis=1).any():
         return None
-    start_lo, start_hi = box.to_unit(lo[None])[0], box.to_unit(hi[None])[0]
     x_lo, x_hi = box.from_unit(u_lo[None])[0], box.from_unit(u_hi[None])[0]
     out = {}
     for j, p in enumerate(box.parameters):

@@ -253,3 +253,20 @@ def test_a_diverging_run_prints_one_line_and_writes_no_mujoco_log(tmp_path, capf
     assert not (tmp_path / "MUJOCO_LOG.TXT").exists()
     after = mujoco.MjLogConfig.get()
     assert (after.logto_file, after.logto_console) == (before.logto_file, before.logto_console)
+
+
+def test_library_log_lines_read_as_the_commands_own_warnings():
+    """A library warning (critmoment.sparse's divergence line) prints as ``critmoment
+    analyze: warning: ...`` (the logger named with --verbose), and the record keeps its own
+    level name for other handlers."""
+    import logging
+
+    from critmoment.cli import _CommandFormatter
+
+    record = logging.LogRecord("critmoment.sparse", logging.WARNING, __file__, 1,
+                               "diverged at step %d", (7,), None)
+    assert (_CommandFormatter("analyze", verbose=False).format(record)
+            == "critmoment analyze: warning: diverged at step 7")
+    assert (_CommandFormatter("analyze", verbose=True).format(record)
+            == "critmoment analyze: warning: critmoment.sparse: diverged at step 7")
+    assert record.levelname == "WARNING"
