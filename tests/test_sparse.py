@@ -949,3 +949,34 @@ def test_a_centre_of_mass_offset_on_the_bundled_cube_is_evaluated(scenario, demo
     assert np.isfinite(res.cost).all() and not res.diverged.any()
     assert not np.allclose(res.sensordata[0, 1], res.sensordata[0, 0])
     assert not np.allclose(res.sensordata[0, 2], res.sensordata[0, 0])
+
+
+def test_the_nominal_cost_with_both_terms_calibrates_the_contact_criterion(tmp_path):
+    """ALOHA with noslip_iterations="5" (mass ≤ 1.5 kg): at the lift the nominal grip's
+    contact term (about 0.75) and the motors' (about 0.47) cross the threshold 0.9 only
+    together, while the run completes. Calibrated on the contact term alone the moment
+    trusted the force ratio and 4 of 16 real successes were called failing; with both terms
+    it does not, and the audit agrees with brute force on every sample."""
+    import shutil
+
+    import critmoment as cm
+    from critmoment import analysis, demos
+    from critmoment.scenario import bundled_scenario_path
+
+    folder = tmp_path / "noslip"
+    shutil.copytree(bundled_scenario_path().parent, folder)
+    scene = folder / "scene.xml"
+    scene.write_text(scene.read_text().replace('impratio="10"/>',
+                                               'impratio="10" noslip_iterations="5"/>'))
+    toml = folder / "scenario.toml"
+    toml.write_text(toml.read_text().replace("range = [0.05, 10.0]", "range = [0.05, 1.5]"))
+    twin = Twin(load_scenario(folder))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        traj = demos.scripted_transfer(0, twin=twin)
+        rec = rollout.rollout(traj, twin=twin)
+        evaluator, _ = analysis.audit_evaluator(rec, twin)
+        assert rec.completed and not evaluator.contact_trusted([2570])[0]
+        check = cm.validate(traj, twin=twin, n_samples=16, seed=0)
+    assert check.confusion == {"true_safe": 6, "false_safe": 0, "true_unsafe": 10,
+                               "false_unsafe": 0}
