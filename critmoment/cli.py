@@ -525,12 +525,16 @@ def _warning_lines(caught, command: str) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     """Runs the command line; returns the exit code (0 ok, 1 not safe, 2 error)."""
-    from critmoment.twin import quiet_mujoco_log
-
-    # MuJoCo's own log appends each warning (an unstable simulation) to MUJOCO_LOG.TXT in the
-    # user's folder and prints it, besides the one line critmoment prints
-    with _terminate_as_interrupt(), quiet_mujoco_log():
-        return _main(argv)
+    with _terminate_as_interrupt():
+        try:  # the package's modules load here (about 1 s): a Ctrl-C is an interruption too
+            from critmoment.twin import quiet_mujoco_log
+        except KeyboardInterrupt:
+            print("critmoment: interrupted; no output was written", file=sys.stderr)
+            return EXIT_ERROR
+        # MuJoCo's own log appends each warning (an unstable simulation) to MUJOCO_LOG.TXT in
+        # the user's folder and prints it, besides the one line critmoment prints
+        with quiet_mujoco_log():
+            return _main(argv)
 
 
 @contextlib.contextmanager

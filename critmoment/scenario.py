@@ -993,6 +993,82 @@ def _gripper_from_table(gname: str, gt: Any, model: mujoco.MjModel) -> Gripper:
     return Gripper(gname, _subtree_geoms(model, body, where), body=body)
 
 
+def _reach(model: mujoco.MjModel, data: mujoco.MjData, geom: int
+           ) -> tuple[np.ndarray, float] | None:
+    """A fixed world point and a bound on how far any point of ``geom`` can get from it, over
+    every joint value: the sum along its kinematic chain of the bodies' offsets, each hinge or
+    ball joint's anchor offset twice, each slide joint's travel. None where the chain has a
+    free joint, an unlimited slide or a mocap body (no such bound)."""
+    chain, b = [], int(model.geom_bodyid[geom])
+    while b != 0:
+        chain.append(b)
+        b = int(model.body_parentid[b])
+    moving = [i for i, b in enumerate(chain) if model.body_jntnum[b]]
+    if not moving or any(model.body_mocapid[b] >= 0 for b in chain):
+        return None
+    top = moving[-1]  # the highest body with joints: its parent is fixed in the world
+    bound = float(np.linalg.norm(model.geom_pos[geom]) + model.geom_rbound[geom])
+    for i, b in enumerate(chain[:top + 1]):
+        if i < top:
+            bound += float(np.linalg.norm(model.body_pos[b]))
+        for j in range(model.body_jntadr[b], model.body_jntadr[b] + model.body_jntnum[b]):
+            kind = model.jnt_type[j]
+            if kind == mujoco.mjtJoint.mjJNT_FREE:
+                return None
+            if kind == mujoco.mjtJoint.mjJNT_SLIDE:
+                if not model.jnt_limited[j]:
+                    return None
+                q0 = model.qpos0[model.jnt_qposadr[j]]
+                bound += float(np.max(np.abs(model.jnt_range[j] - q0)))
+            else:
+                bound += 2.0 * float(np.linalg.norm(model.jnt_pos[j]))
+    parent = int(model.body_parentid[chain[top]])
+    anchor = data.xpos[parent] + data.xmat[parent].reshape(3, 3) @ model.body_pos[chain[top]]
+    return anchor, bound
+
+
+def _check_goal_reach(model: mujoco.MjModel, goal: Sequence[float], gripper: Gripper,
+                      object_body: str, key_id: int | None, *, slack: float) -> None:
+    """A pick-and-place goal the carrying gripper cannot bring the object to, at any joint
+    values, is an error (a goal in millimetres, or in another frame), not a task that every
+    sample fails.
+
+    Raises:
+        ScenarioError: naming the goal, the arm's fixed base point and both distances.
+    """
+    data = mujoco.MjData(model)
+    if key_id is not None:
+        mujoco.mj_resetDataKeyframe(model, data, key_id)
+    mujoco.mj_kinematics(model, data)
+    obj = model.body(object_body).id
+    # how far the object's centre can be from a gripper geom that touches it
+    extent = max((float(np.linalg.norm(model.geom_pos[g]) + model.geom_rbound[g])
+                  for g in range(model.ngeom) if model.geom_bodyid[g] == obj), default=0.0)
+    goal = np.asarray(goal, dtype=float)
+    gravity = np.asarray(model.opt.gravity, dtype=float)
+    down = gravity / np.linalg.norm(gravity) if np.linalg.norm(gravity) > 0 else np.zeros(3)
+    best = None
+    for name in gripper.geoms:
+        reach = _reach(model, data, model.geom(name).id)
+        if reach is None:
+            return
+        anchor, bound = reach
+        # released anywhere above the goal, the object may fall onto it (a bin below the arm)
+        lift = max(0.0, float(np.dot(goal - anchor, down)))
+        gap = float(np.linalg.norm(goal - lift * down - anchor)) - (bound + extent + slack)
+        if best is None or gap < best[0]:
+            best = (gap, anchor, bound + extent + slack)
+    if best is None or best[0] <= 0.0:
+        return
+    _, anchor, farthest = best
+    raise ScenarioError(
+        f"[task] goal: ({', '.join(f'{v:g}' for v in goal)}) m is "
+        f"{np.linalg.norm(goal - anchor):.3g} m from ({', '.join(f'{v:.3f}' for v in anchor)})"
+        f" m, the fixed base of the arm that carries gripper {gripper.name!r}; at any joint "
+        f"values that arm brings the object at most {farthest:.3g} m from there; expected a "
+        f"goal in world coordinates, in metres, that the arm can reach")
+
+
 def _subtree_geoms(model: mujoco.MjModel, body: str, where: str) -> tuple[str, ...]:
     bid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, body)
     if bid < 0:
@@ -1148,6 +1224,10 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         raise ScenarioError("scenario: missing [task] table; expected kind = one of handover, "
                             "pick_place, pick_hold (critmoment never guesses the task)")
     task = task_from_table(raw["task"], [g.name for g in grippers], resolve_site=site_position)
+    goal = getattr(task, "goal", None)
+    if goal is not None:
+        holder = next(g for g in grippers if g.name == task.gripper)
+        _check_goal_reach(model, goal, holder, object_body, key_id, slack=task.tolerance)
 
     limits_t = _get(raw, "limits", dict, "scenario", {})
     limits, sources = _resolve_limits(limits_t, resolver)

@@ -226,6 +226,36 @@ def test_sigterm_ends_a_run_as_ctrl_c_does(traj_file, tmp_path, capsys, monkeypa
     assert signal.getsignal(signal.SIGTERM) is handler
 
 
+def test_the_command_line_loads_the_heavy_libraries_inside_its_interrupt_handling():
+    """``import critmoment.cli`` (what the console script does before ``main``) leaves
+    Optuna, Pinocchio, CasADi, ruptures and the audit's modules unloaded: a Ctrl-C in the
+    second they take to import is then caught by ``main`` (it printed a traceback)."""
+    import subprocess
+    import sys
+
+    code = ("import sys, critmoment.cli, critmoment; "
+            "print(sorted(m for m in ('optuna', 'pinocchio', 'casadi', 'ruptures', "
+            "'critmoment.analysis', 'critmoment.sparse') if m in sys.modules)); "
+            "print(critmoment.Twin.__name__, critmoment.sparse.__name__)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.splitlines()
+    assert out == ["[]", "Twin critmoment.sparse"]
+
+
+def test_ctrl_c_while_the_package_loads_exits_2_without_a_traceback(monkeypatch, capsys):
+    import sys
+    import types
+
+    class Loading(types.ModuleType):
+        def __getattr__(self, name):
+            raise KeyboardInterrupt
+
+    monkeypatch.setitem(sys.modules, "critmoment.twin", Loading("critmoment.twin"))
+    assert main(["rollout", "missing.npz"]) == 2
+    err = capsys.readouterr().err
+    assert err == "critmoment: interrupted; no output was written\n"
+
+
 def test_a_diverging_run_prints_one_line_and_writes_no_mujoco_log(tmp_path, capfd,
                                                                   monkeypatch):
     """MuJoCo's own log is off during a command: a diverging rollout used to leave

@@ -541,3 +541,27 @@ def test_a_friction_range_beyond_real_materials_is_warned_of(tmp_path):
     with pytest.warns(ScenarioWarning, match=r"\[uncertainty.friction\] range: a sliding "
                       r"friction coefficient up to 1e\+06 is far beyond real materials"):
         load_scenario(folder)
+
+
+@pytest.mark.parametrize("goal", ["[500.0, 150.0, 20.0]", "[0.5, 0.15, 1.5]",
+                                  "[-1.3, 0.0, 0.02]"])
+def test_a_goal_the_arm_cannot_reach_is_an_error(tmp_path, goal):
+    """A goal in millimetres, or beyond any joint values (the bound sums the chain's link
+    offsets: 1.15 m from the Panda's shoulder, whose real reach is about 0.86 m + the hand)."""
+    folder = _copy(tmp_path, {"scenario.toml": [("goal = [0.5, 0.15, 0.02]", f"goal = {goal}")]},
+                   source=bundled_scenario_path("panda_pick_place").parent)
+    with pytest.raises(ScenarioError, match=r"\[task\] goal: .* the fixed base of the "
+                       r"arm that carries gripper 'hand'; .*at most 1\.\d+ m"):
+        load_scenario(folder)
+
+
+def test_a_far_but_reachable_goal_loads(tmp_path):
+    folder = _copy(tmp_path, {"scenario.toml": [("goal = [0.5, 0.15, 0.02]",
+                                                 "goal = [0.0, 0.9, 0.02]")]},
+                   source=bundled_scenario_path("panda_pick_place").parent)
+    assert load_scenario(folder).task.goal == (0.0, 0.9, 0.02)
+    # far below the arm: released above it, the object may fall there (a bin on the floor)
+    folder = _copy(tmp_path / "low", {"scenario.toml": [("goal = [0.5, 0.15, 0.02]",
+                                                         "goal = [0.5, 0.15, -3.0]")]},
+                   source=bundled_scenario_path("panda_pick_place").parent)
+    assert load_scenario(folder).task.goal == (0.5, 0.15, -3.0)
