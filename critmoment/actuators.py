@@ -25,7 +25,25 @@ import numpy as np
 
 __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
            "gripper_gap", "closing_ends", "moves_geoms", "position_target", "body_chain",
-           "common_ancestor"]
+           "common_ancestor", "collision_geoms", "geom_pairs"]
+
+
+def collision_geoms(model: mujoco.MjModel) -> np.ndarray:
+    """Which geoms can touch anything, (ngeom,) bool: a nonzero contype or conaffinity, or a
+    place in an explicit ``<pair>`` (which MuJoCo collides whatever the two geoms' bits say;
+    some models give their objects contacts only that way)."""
+    mask = (model.geom_contype != 0) | (model.geom_conaffinity != 0)
+    mask[model.pair_geom1] = True
+    mask[model.pair_geom2] = True
+    return mask
+
+
+def geom_pairs(model: mujoco.MjModel, geoms: Sequence[int]) -> np.ndarray:
+    """The ids of the explicit ``<pair>`` elements in which any of ``geoms`` takes part. Their
+    own friction, condim and solver parameters replace the geoms' (and MuJoCo skips dynamic
+    contacts between the two bodies)."""
+    geoms = np.asarray(list(geoms), dtype=int)
+    return np.flatnonzero(np.isin(model.pair_geom1, geoms) | np.isin(model.pair_geom2, geoms))
 
 
 class ActuatorKind(enum.Enum):
@@ -172,9 +190,10 @@ def parts_below(model: mujoco.MjModel, body: int) -> dict[str, list[str]]:
     """The bodies below ``body`` that carry collision geoms, each with those geoms' names
     (an object whose geoms hang on a child body: critmoment audits one body's own geoms)."""
     out: dict[str, list[str]] = {}
+    colliding = collision_geoms(model)
     for g in range(model.ngeom):
         b = int(model.geom_bodyid[g])
-        if b == body or not (model.geom_contype[g] or model.geom_conaffinity[g]):
+        if b == body or not colliding[g]:
             continue
         if body in body_chain(model, b):
             out.setdefault(model.body(b).name, []).append(model.geom(g).name)

@@ -133,8 +133,8 @@ def _subtree(model: mujoco.MjModel, root: int) -> np.ndarray:
 
 
 def _collision_geoms(model: mujoco.MjModel, bodies: np.ndarray) -> list[int]:
-    return [g for g in range(model.ngeom) if bodies[model.geom_bodyid[g]]
-            and (model.geom_contype[g] or model.geom_conaffinity[g])]
+    colliding = act_info.collision_geoms(model)
+    return [g for g in range(model.ngeom) if bodies[model.geom_bodyid[g]] and colliding[g]]
 
 
 def _moved_bodies(model: mujoco.MjModel, i: int) -> list[int]:
@@ -519,13 +519,23 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
             lines.append(f"# {a.name} = {lim:g}   (from the MJCF)")
     mass = float(obj["mass"])
     mu = float(model.geom_friction[model.geom(object_geom).id, 0])
-    mu_nom = min(max(mu, 0.2), 1.5)
+    # explicit <pair>s between the object and a gripper set the grip's friction themselves
+    pads = {model.geom(name).id for g in grippers for name in g.geoms}
+    pairs = [p for p in act_info.geom_pairs(model, [model.geom(object_geom).id])
+             if {int(model.pair_geom1[p]), int(model.pair_geom2[p])} & pads]
+    if pairs:
+        mu = float(model.pair_friction[pairs, 0].min())
+        guesses.append(f"nominal friction {mu:g}: the sliding friction of the object's "
+                       f"explicit contact pairs with the gripper (the parameter sets theirs)")
+    # the box reaches up to the model's own friction (a grippy pair of 2.5), within reason
+    mu_hi = min(max(1.5, mu), 10.0)
+    mu_nom = min(max(mu, 0.2), mu_hi)
     lines += ["", "# The uncertainty box: what the policy cannot see.", "[uncertainty.mass]",
               f"body = {_toml_str(object_body)}",
               f"range = [{_num(0.5 * mass)}, {_num(20.0 * mass)}]   # [kg]",
               f"nominal = {_num(mass)}", "", "[uncertainty.friction]",
               f"geom = {_toml_str(object_geom)}",
-              "range = [0.2, 1.5]   # sliding friction of the object's contacts (critmoment "
+              f"range = [0.2, {_num(mu_hi)}]   # sliding friction of the object's contacts (critmoment "
               "gives the object priority)", f"nominal = {_num(mu_nom)}", "",
               "[cost]", "A = 1.0", "B = 1.0", "alpha = 0.7", "beta = 2.0", "threshold = 0.9", "",
               "[sparse]", "horizon = 10   # physics steps per sparse evaluation"]
@@ -538,7 +548,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         lines.append("#                        # set this only with the audit's chain off")
     lines.append("")
     guesses.append(f"uncertainty box: mass {0.5 * mass:.4g}..{20 * mass:.4g} kg (nominal "
-                   f"{mass:.4g}), friction 0.2..1.5 (nominal {mu_nom:g})")
+                   f"{mass:.4g}), friction 0.2..{mu_hi:g} (nominal {mu_nom:g})")
     checks.append("the uncertainty box ranges")
     if soft:
         checks.append(f"soft contacts (cone {info.cone}, impratio {info.impratio:g}): grips "

@@ -316,9 +316,9 @@ def batched_rollouts(twin: Twin, state0: np.ndarray, controls: np.ndarray, sampl
             batch = batches[rows.shape[0]] = mujoco.batch.Batch(model, rows.shape[0],
                                                                 nthread=nthread)
         out = simulate(twin, state0, controls, samples=rows, nthread=nthread, batch=batch)
-        friction = batch.expanded("geom_friction")
-        mu = (np.full(rows.shape[0], twin.object_friction()) if friction is None
-              else friction[:, twin.object_geom_id, 0].copy())
+        mu = np.broadcast_to(twin.grip_friction(batch.expanded("geom_friction"),
+                                                batch.expanded("pair_friction")),
+                             (rows.shape[0],)).copy()
         yield start, out, mu
 
 

@@ -701,6 +701,12 @@ def _spec_targets(box: UncertaintyBox) -> dict[str, tuple[str, ...]]:
 
 
 def _collides(model: mujoco.MjModel, a: int, b: int) -> bool:
+    """Whether MuJoCo's dynamic contacts (the geoms' bits) can join geoms ``a`` and ``b``; an
+    explicit pair between their bodies replaces those (``pair_signature``)."""
+    ba, bb = int(model.geom_bodyid[a]), int(model.geom_bodyid[b])
+    signature = (min(ba, bb) << 16) + max(ba, bb)
+    if np.any(model.pair_signature == signature):
+        return False
     return bool((model.geom_contype[a] & model.geom_conaffinity[b])
                 or (model.geom_contype[b] & model.geom_conaffinity[a]))
 
@@ -712,10 +718,11 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
         rivals = [i for i in range(model.ngeom)
                   if model.geom_bodyid[i] != body and _collides(model, index, i)
                   and model.geom_priority[i] >= model.geom_priority[index]]
-        if not (model.geom_contype[index] or model.geom_conaffinity[index]):
+        if not act_info.collision_geoms(model)[index]:
             raise ScenarioError(
                 f"[uncertainty.{p.name}]: geom {p.target!r} takes part in no contact "
-                "(contype = conaffinity = 0): its friction changes nothing")
+                "(contype = conaffinity = 0 and no explicit <pair>): its friction changes "
+                "nothing")
         if rivals:
             raise ScenarioError(
                 f"[uncertainty.{p.name}]: the friction of geom {p.target!r} never governs its "
@@ -1075,11 +1082,12 @@ def _subtree_geoms(model: mujoco.MjModel, body: str, where: str) -> tuple[str, .
         names = [model.body(i).name for i in range(model.nbody)]
         raise ScenarioError(f"{where} body: unknown body {body!r}; valid names: {_listing(names)}")
     inside = []
+    colliding = act_info.collision_geoms(model)
     for g in range(model.ngeom):
         b = int(model.geom_bodyid[g])
         while b not in (0, bid):
             b = int(model.body_parentid[b])
-        if b == bid and (model.geom_contype[g] or model.geom_conaffinity[g]):
+        if b == bid and colliding[g]:
             inside.append(model.geom(g).name)
     if not inside:
         raise ScenarioError(f"{where} body: {body!r} has no collision geom in its subtree")
@@ -1092,8 +1100,9 @@ def _object_geom(object_t: Mapping[str, Any], model: mujoco.MjModel, body: str) 
     bid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, body)
     if bid < 0:
         return ""  # validate_names reports the unknown body
+    colliding = act_info.collision_geoms(model)
     own = [model.geom(g).name for g in range(model.ngeom)
-           if model.geom_bodyid[g] == bid and (model.geom_contype[g] or model.geom_conaffinity[g])]
+           if model.geom_bodyid[g] == bid and colliding[g]]
     if len(own) != 1:
         raise ScenarioError(f"[object] geom: body {body!r} has {len(own)} collision geoms "
                             f"{own}; say which with geom = \"...\"")

@@ -925,9 +925,8 @@ class SparseEvaluator:
         written = self._written.get(key)
         if written is None or not np.array_equal(written, samples):
             self.twin.write_parameters(batch, samples)
-            friction = batch.expanded("geom_friction")
-            self._mu[key] = (friction[:, self.twin.object_geom_id, 0].copy()
-                             if friction is not None else self.twin.object_friction())
+            self._mu[key] = self.twin.grip_friction(batch.expanded("geom_friction"),
+                                                    batch.expanded("pair_friction"))
             self._written[key] = samples.copy()
         return batch, self._mu[key]
 

@@ -199,6 +199,14 @@ class Twin:
         self._param_targets = [self._targets(p, i, model)
                                for p, i in zip(scenario.box.parameters, self._param_ids,
                                                strict=True)]
+        #: per parameter, the explicit <pair>s its geoms take part in: MuJoCo uses a pair's
+        #: own friction instead of the geoms', so a friction parameter writes theirs too
+        self._param_pairs = [
+            act_info.geom_pairs(model, t) if isinstance(p, FrictionParameter)
+            else np.zeros(0, dtype=int)
+            for p, t in zip(scenario.box.parameters, self._param_targets, strict=True)]
+        self._warn_replaced_pairs(model)
+        self._grip_sources = self._friction_sources(model)
         # parameters scale from the MJCF's own values, whatever nominal values are applied
         self._original = types.SimpleNamespace(
             **{f: getattr(model, f).copy() for f in self.parameter_fields()})
@@ -240,6 +248,84 @@ class Twin:
                         f"{'a body too light for its inertia to be resolved' if 'mjWARN_INERTIA' in found else 'an unstable state'}"
                         f" at the start); expected a range the simulation holds")
 
+    def _warn_replaced_pairs(self, model: mujoco.MjModel) -> None:
+        box = self.scenario.box
+        for p, pairs, nominal in zip(box.parameters, self._param_pairs, box.nominal,
+                                     strict=True):
+            own = model.pair_friction[pairs, 0]
+            if pairs.size and not np.allclose(own, nominal):
+                each = ", ".join(
+                    f"{model.geom(int(model.pair_geom1[i])).name}–"
+                    f"{model.geom(int(model.pair_geom2[i])).name} {f:g}"
+                    for i, f in zip(pairs, own, strict=True))
+                warnings.warn(
+                    f"[uncertainty.{p.name}]: explicit contact pairs of its geom(s) set their "
+                    f"own friction in the MJCF ({each}), which MuJoCo uses instead of the "
+                    f"geoms'; the parameter sets those pairs' sliding friction too, so the "
+                    f"audited runs use its nominal {nominal:g} there (set the nominal to the "
+                    f"pairs' value to audit the model's own contacts)", CritmomentWarning,
+                    stacklevel=4)
+
+    def _friction_sources(self, model: mujoco.MjModel) -> list[tuple[str, tuple[int, ...]]]:
+        """Where the friction of each contact between the object and a gripper comes from:
+        an explicit pair (``("pair", (p,))``), the geom of higher priority (``("geom",
+        (g,))``) or, at equal priority, the larger of the two (``("max", (g1, g2))``). Bodies
+        joined by an explicit pair have no other contacts (MuJoCo skips their dynamic ones)."""
+        colliding = act_info.collision_geoms(model)
+        obj = [g for g in np.flatnonzero(model.geom_bodyid == self.object_body_id)
+               if colliding[g]]
+        pads = {model.geom(name).id for grip in self.scenario.grippers for name in grip.geoms}
+        signatures = set(model.pair_signature.tolist())
+        sources = []
+        for o in obj:
+            for g in sorted(pads):
+                pair = [p for p in act_info.geom_pairs(model, [o])
+                        if {int(model.pair_geom1[p]), int(model.pair_geom2[p])} == {o, g}]
+                b1, b2 = sorted((int(model.geom_bodyid[o]), int(model.geom_bodyid[g])))
+                if pair:
+                    sources.append(("pair", (pair[0],)))
+                elif (b1 << 16) + b2 in signatures or not (
+                        model.geom_contype[o] & model.geom_conaffinity[g]
+                        or model.geom_contype[g] & model.geom_conaffinity[o]):
+                    continue
+                elif model.geom_priority[o] != model.geom_priority[g]:
+                    top = o if model.geom_priority[o] > model.geom_priority[g] else g
+                    sources.append(("geom", (int(top),)))
+                else:
+                    sources.append(("max", (int(o), int(g))))
+        return sorted(set(sources)) or [("geom", (self.object_geom_id,))]
+
+    def grip_friction(self, geom_friction: np.ndarray | None = None,
+                      pair_friction: np.ndarray | None = None) -> np.ndarray:
+        """The sliding friction of the object's grip contacts, per simulation: the lowest
+        over the contacts an object geom and a gripper geom can make (MuJoCo's own rule for
+        each: an explicit pair's friction, else the higher-priority geom's, else the larger).
+
+        Args:
+            geom_friction: per-simulation ``geom_friction`` (n, ngeom, 3); default the
+                nominal model's.
+            pair_friction: per-simulation ``pair_friction`` (n, npair, 5); default the
+                nominal model's.
+
+        Returns:
+            (n,) friction coefficients.
+        """
+        geom = (self.model.geom_friction[None] if geom_friction is None
+                else np.asarray(geom_friction))
+        pair = (self.model.pair_friction[None] if pair_friction is None
+                else np.asarray(pair_friction))
+        n = max(geom.shape[0], pair.shape[0])
+        values = []
+        for kind, ids in self._grip_sources:
+            if kind == "pair":
+                values.append(np.broadcast_to(pair[:, ids[0], 0], (n,)))
+            elif kind == "geom":
+                values.append(np.broadcast_to(geom[:, ids[0], 0], (n,)))
+            else:
+                values.append(np.broadcast_to(np.maximum(geom[:, ids[0], 0],
+                                                         geom[:, ids[1], 0]), (n,)))
+        return np.min(values, axis=0)
+
     def _targets(self, p, index: int, model: mujoco.MjModel) -> tuple[int, ...]:
         """The ids parameter ``p`` (resolved to ``index``) writes."""
         if not isinstance(p, FrictionParameter):
@@ -247,8 +333,8 @@ class Twin:
         body = int(model.geom_bodyid[index])
         if body != model.body(self.scenario.object_body).id:
             return (index,)
-        geoms = tuple(int(g) for g in np.flatnonzero(model.geom_bodyid == body)
-                      if model.geom_contype[g] or model.geom_conaffinity[g])
+        colliding = act_info.collision_geoms(model)
+        geoms = tuple(int(g) for g in np.flatnonzero(model.geom_bodyid == body) if colliding[g])
         mu = model.geom_friction[list(geoms), 0]
         if not np.all(mu == mu[0]):
             each = ", ".join(f"{model.geom(g).name or f'geom #{g}'}: {m:g}"
@@ -401,6 +487,8 @@ class Twin:
         fields: list[str] = []
         for p in self.scenario.box.parameters:
             fields.extend(f for f in p.fields if f not in fields)
+        if any(pairs.size for pairs in self._param_pairs):
+            fields.append("pair_friction")
         return tuple(fields)
 
     def write_parameters(self, target, samples: np.ndarray, arrays: Mapping[str, np.ndarray] | None = None) -> None:
@@ -423,6 +511,9 @@ class Twin:
         for j, p in enumerate(box.parameters):
             for index in self._param_targets[j]:
                 p.write(index, self._original, arrays, samples[:, j])
+            pairs = self._param_pairs[j]
+            if pairs.size:  # both tangential directions: the pair's sliding friction
+                arrays["pair_friction"][:, pairs[:, None], np.arange(2)] = samples[:, j, None, None]
         if any(p.needs_set_const for p in box.parameters):
             if isinstance(target, mujoco.MjModel):
                 mujoco.mj_setConst(target, mujoco.MjData(target))
@@ -430,8 +521,10 @@ class Twin:
                 target.set_const()
 
     def object_friction(self, model: mujoco.MjModel | None = None) -> float:
-        """Sliding friction of the object's contacts (the object geom has priority)."""
-        return float((model or self.model).geom_friction[self.object_geom_id, 0])
+        """Sliding friction of the object's grip contacts in ``model`` (default the nominal
+        one): :meth:`grip_friction` of its fields."""
+        model = model or self.model
+        return float(self.grip_friction(model.geom_friction[None], model.pair_friction[None])[0])
 
     def lifted(self, carried: np.ndarray, states: np.ndarray) -> np.ndarray:
         """:func:`lifted_flags` of ``carried`` (T,), with the object's height read from

@@ -13,6 +13,7 @@ import math
 from pathlib import Path
 
 import mujoco
+import mujoco.batch
 import numpy as np
 import pytest
 from scenarios import one_actuator_toml
@@ -74,8 +75,14 @@ SLOPE_OWN_MU = 0.3      # the slope's own friction, ignored thanks to the box's 
 BOX_HALF = 0.05
 
 
-def _slope_xml(theta_deg: float, condim: int) -> str:
+def _slope_xml(theta_deg: float, condim: int, pair_mu: float | None = None) -> str:
+    """The box on a slope; with ``pair_mu`` its only contact is an explicit <pair> with the
+    slope (the box's own contype and conaffinity 0) of that sliding friction."""
     th = math.radians(theta_deg)
+    bits = ' contype="0" conaffinity="0"' if pair_mu is not None else ""
+    pair = (f'<contact><pair geom1="box" geom2="slope" condim="{condim}" '
+            f'friction="{pair_mu} {pair_mu} 0.005 0.0001 0.0001"/></contact>'
+            if pair_mu is not None else "")
     # box centre one half-size above the slope plane (which passes through the origin)
     cx, cz = BOX_HALF * math.sin(th), BOX_HALF * math.cos(th)
     return f"""<mujoco model="slope">
@@ -88,7 +95,7 @@ def _slope_xml(theta_deg: float, condim: int) -> str:
     <body name="box" pos="{cx!r} 0 {cz!r}" euler="0 {th!r} 0">
       <freejoint name="box_joint"/>
       <geom name="box" type="box" size="{BOX_HALF} {BOX_HALF} {BOX_HALF}" mass="1.0"
-            condim="{condim}" priority="1" friction="{SLOPE_MU} 0.005 0.0001"/>
+            condim="{condim}" priority="1" friction="{SLOPE_MU} 0.005 0.0001"{bits}/>
     </body>
     <body name="arm" pos="0 3 -1">
       <joint name="hinge" type="hinge" axis="0 1 0"/>
@@ -99,6 +106,7 @@ def _slope_xml(theta_deg: float, condim: int) -> str:
   <actuator>
     <position name="servo" joint="hinge" kp="10" kv="1"/>
   </actuator>
+  {pair}
 </mujoco>
 """
 
@@ -257,6 +265,61 @@ def test_friction_parameter_changes_the_regime(tmp_path_factory):
     wrong = twin.signals(data.sensordata)
     assert float(wrong.fos_contact[0]) == pytest.approx(float(sig.fos_contact[0]) * SLOPE_MU / mu,
                                                         rel=1e-12)
+
+
+SLOPE_MASS_ONLY_TOML = one_actuator_toml(
+    "slope", mjcf="slope.xml", gripper="slope", gripper_geom="slope", support="floor",
+    actuator="servo", limit=5.0, uncertainty="""[uncertainty.mass]
+body = "box"
+range = [0.1, 20.0]
+nominal = 1.0
+""")
+
+
+def test_an_explicit_pair_sets_the_friction_the_fos_reads(tmp_path):
+    """Contacts made only by an explicit <pair> (the box's contype and conaffinity 0) use the
+    pair's friction, not the geoms': the box rests at 15° with FOS μ_pair / tan θ. It was
+    refused ("takes part in no contact"), and without a friction parameter its FOS read the
+    geom's 0.5: 0.5 / tan 15° = 1.87 where the contact holds with 0.9 (3.36)."""
+    theta, pair_mu = 15.0, 0.9
+    folder = _write(tmp_path / "mass", {"slope.xml": _slope_xml(theta, 3, pair_mu),
+                                        "scenario.toml": SLOPE_MASS_ONLY_TOML})
+    twin = Twin(load_scenario(folder))
+    assert twin.object_friction() == pair_mu
+    model = twin.copy_model()
+    data = mujoco.MjData(model)
+    _run(model, data, 300)
+    box = twin.object_geom_id
+    mus = [data.contact.friction[i, 0] for i in range(data.ncon) if box in data.contact.geom[i]]
+    assert mus and np.allclose(mus, pair_mu, rtol=0, atol=1e-15)
+    sig = twin.signals(data.sensordata)
+    assert float(sig.fos_contact[0]) == pytest.approx(
+        pair_mu / math.tan(math.radians(theta)), rel=1e-4)
+
+
+def test_a_friction_parameter_writes_the_explicit_pairs_too(tmp_path):
+    theta, pair_mu = 35.0, 0.9  # tan 35° = 0.70: the pair's 0.9 would hold the box
+    folder = _write(tmp_path / "mu", {"slope.xml": _slope_xml(theta, 3, pair_mu),
+                                      "scenario.toml": SLOPE_TOML})
+    with pytest.warns(UserWarning, match=r"explicit contact pairs .*box 0\.9.* nominal 0\.5"):
+        twin = Twin(load_scenario(folder))
+    assert twin.model.pair_friction[0, 0] == twin.model.pair_friction[0, 1] == SLOPE_MU
+    assert twin.object_friction() == SLOPE_MU
+    for mu, holds in ((SLOPE_MU, False), (0.8, True)):
+        model = twin.copy_model()
+        twin.write_parameters(model, [[1.0, mu]])
+        assert twin.object_friction(model) == mu
+        data = mujoco.MjData(model)
+        _run(model, data, 300)
+        speed = abs(data.qvel[:3] @ _downslope(theta))
+        assert (speed < 1e-3) == holds
+    # per simulation, in a batch
+    batch = mujoco.batch.Batch(twin.model, 3)
+    samples = np.array([[1.0, 0.2], [2.0, 0.8], [1.0, 1.4]])
+    twin.write_parameters(batch, samples)
+    np.testing.assert_array_equal(twin.grip_friction(batch.expanded("geom_friction"),
+                                                     batch.expanded("pair_friction")),
+                                  samples[:, 1])
 
 
 # ---------------------------------------------------------------------------
