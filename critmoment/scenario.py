@@ -723,6 +723,16 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
                 f"[uncertainty.{p.name}]: geom {p.target!r} takes part in no contact "
                 "(contype = conaffinity = 0 and no explicit <pair>): its friction changes "
                 "nothing")
+        # with the highest priority its condim is its contacts'; a pair sets its own
+        dynamic = bool(model.geom_contype[index] or model.geom_conaffinity[index])
+        pairs = act_info.geom_pairs(model, [index])
+        if not rivals and not ((dynamic and model.geom_condim[index] > 1)
+                               or (model.pair_dim[pairs] > 1).any()):
+            raise ScenarioError(
+                f"[uncertainty.{p.name}]: geom {p.target!r} makes frictionless contacts "
+                f"(condim 1{' in its explicit pairs too' if pairs.size else ''}): its "
+                "friction changes nothing; set condim = 3 (or 4, 6) on it, or drop the "
+                "friction parameter")
         if rivals:
             raise ScenarioError(
                 f"[uncertainty.{p.name}]: the friction of geom {p.target!r} never governs its "

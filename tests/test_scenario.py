@@ -565,3 +565,11 @@ def test_a_far_but_reachable_goal_loads(tmp_path):
                                                          "goal = [0.5, 0.15, -3.0]")]},
                    source=bundled_scenario_path("panda_pick_place").parent)
     assert load_scenario(folder).task.goal == (0.5, 0.15, -3.0)
+
+
+def test_a_friction_parameter_on_frictionless_contacts_is_an_error(tmp_path):
+    folder = _copy(tmp_path, {"scene.xml": [('condim="4" priority="2"', 'condim="1" priority="2"')]},
+                   source=bundled_scenario_path("panda_pick_place").parent)
+    with pytest.raises(ScenarioError, match=r"\[uncertainty\.friction\]: geom 'cube' makes "
+                       r"frictionless contacts \(condim 1\)"):
+        load_scenario(folder)
