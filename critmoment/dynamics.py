@@ -31,7 +31,8 @@ Conventions handled:
 * Not modelled: joint damping, springs, friction loss, gravity compensation
   (``body_gravcomp``), fluid forces, tendon armature, contacts and equality
   constraints. Compare with ``mujoco.mj_inverse`` with constraints, springs
-  and dampers disabled.
+  and dampers disabled. The load bounds subtract MuJoCo's own passive forces
+  (:func:`passive_forces`: damping, springs, gravity compensation, fluid).
 
 The built model holds one ``pinocchio.Data`` that every call reuses, so a
 :class:`PinocchioModel` must not be shared between threads.
@@ -1143,6 +1144,35 @@ class LoadBound:
         return self.actuator_names[int(self.limiting[row, step])]
 
 
+def passive_forces(model: mujoco.MjModel, states: np.ndarray) -> np.ndarray:
+    """MuJoCo's passive generalised forces ``qfrc_passive`` at recorded states (T, nv): the
+    forces the actuators need not supply (joint damping, and springs, gravity compensation
+    and fluid forces where the model has them). Inverse dynamics minus these is what the
+    actuators carry.
+
+    Args:
+        model: the compiled model.
+        states: ``mjSTATE_INTEGRATION`` rows (T, nstate).
+    """
+    from critmoment.twin import STATE_SPEC, state_slice
+
+    states = np.asarray(states, dtype=float)
+    qvel = states[:, state_slice(model, mujoco.mjtState.mjSTATE_QVEL)]
+    others = (model.body_gravcomp.any() or model.jnt_stiffness.any()
+              or model.tendon_stiffness.any() or model.tendon_damping.any()
+              or model.opt.density > 0 or model.opt.viscosity > 0)
+    if not others:  # damping alone: -b·q̇, as MuJoCo computes it
+        return -model.dof_damping * qvel
+    data = mujoco.MjData(model)
+    out = np.empty((states.shape[0], model.nv))
+    for t, row in enumerate(states):
+        mujoco.mj_setState(model, data, row, STATE_SPEC)
+        mujoco.mj_fwdPosition(model, data)
+        mujoco.mj_fwdVelocity(model, data)
+        out[t] = data.qfrc_passive
+    return out
+
+
 def trajectory_load_bound(recording, twin, *, masses: Sequence[float] | np.ndarray | None = None,
                           pin_model: PinocchioModel | None = None, saturation: float = 0.999,
                           min_duration: float = 0.05) -> LoadBound:
@@ -1205,7 +1235,7 @@ def trajectory_load_bound(recording, twin, *, masses: Sequence[float] | np.ndarr
     gear = model.actuator_gear[rot, 0]
     limits = np.asarray(twin.limits, dtype=float)[rot]
     tau0 = pm.rnea(qpos, qvel, qacc, include_armature=True)
-    tau0 = (tau0[:, dofs] + model.dof_damping[dofs] * qvel[:, dofs]) / gear  # (T, J)
+    tau0 = (tau0[:, dofs] - passive_forces(model, states[:n_steps])[:, dofs]) / gear  # (T, J)
 
     sig = recording.signals
     held = np.asarray(sig.contact_gripper, bool) & ~np.asarray(sig.contact_support, bool)[:, None]

@@ -43,8 +43,9 @@ Modelling choices (see ``docs/search.md`` for the measurements behind them):
   damping) move by 12–20 % less than ``qacc`` says (measured on the demo at lift-off, e.g.
   2.44 vs 2.10 rad/s² on the right wrist_rotate). The difference in inverse-dynamics force is
   ≤ 0.01 N·m there, small beside the limits; for the free object both agree exactly.
-* **Required actuator force.** ``τ0`` is inverse dynamics with armature plus joint damping
-  ``dof_damping·q̇``, divided by the transmission gear; dry joint friction (``frictionloss``,
+* **Required actuator force.** ``τ0`` is inverse dynamics with armature minus MuJoCo's
+  passive forces (joint damping ``dof_damping·q̇``, and springs, gravity compensation and
+  fluid forces where the model has them), divided by the transmission gear; dry joint friction (``frictionloss``,
   0.1 N·m on the ViperX) is left out because its sign is not known at a moment.
 * **Grip.** The grip is modelled as ``ΣFn = pads × finger force limit`` (each pad presses with
   its finger's saturated force, the bundled demo's 5 N per finger) and Coulomb friction with
@@ -650,7 +651,8 @@ def analytic_bounds(recording, twin: Twin, step: Any, *,
     if tau0_full is None:
         qfrc = pm.rnea(data.qpos, data.qvel, data.qacc, include_armature=True)
         tau0_full = qfrc
-    tau0 = (tau0_full[dofs] + model.dof_damping[dofs] * data.qvel[dofs]) / gear
+    # minus MuJoCo's passive forces (joint damping, springs, gravity compensation, fluid)
+    tau0 = (tau0_full[dofs] - data.qfrc_passive[dofs]) / gear
     y = (np.stack([g.y for g in grasps]) if grasps else np.zeros((0, rot.size)))
 
     if not holding:

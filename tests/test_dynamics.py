@@ -735,6 +735,49 @@ def test_load_bound_finds_the_free_arms_overload_where_the_full_rollout_saturate
     assert not [m for m in detector.events_ if m.label is MomentLabel.GRASP]
 
 
+def test_load_bound_subtracts_gravity_compensation_and_springs(tmp_path):
+    """An arm whose weight MuJoCo half compensates (``gravcomp="0.5"``) and whose joint
+    spring pulls it (stiffness 2 N·m/rad towards 0.3 rad): the servo carries only the rest,
+    and so does the bound (it counted the whole weight and no spring: 1.62 N·m where the
+    servo holds 0.21)."""
+    from scenarios import one_actuator_toml
+
+    from critmoment import recording as rollout
+    from critmoment.scenario import load_scenario
+    from critmoment.trajectory import Trajectory
+    from critmoment.twin import Twin, state_slice
+
+    xml = SWING_MJCF.replace('<body name="arm" pos="0 0 0.8">',
+                             '<body name="arm" pos="0 0 0.8" gravcomp="0.5">')
+    xml = xml.replace('<joint name="hinge" type="hinge" axis="0 1 0"/>',
+                      '<joint name="hinge" type="hinge" axis="0 1 0" stiffness="2" '
+                      'springref="0.3" damping="0.1"/>')
+    (tmp_path / "scene.xml").write_text(xml)
+    (tmp_path / "scenario.toml").write_text(one_actuator_toml(
+        "swing", mjcf="scene.xml", gripper="hand", gripper_geom="pad", support="table",
+        actuator="hinge", limit=5.0, task=True, uncertainty="""[uncertainty.mass]
+body = "box"
+range = [0.05, 2.0]
+nominal = 0.05
+"""))
+    twin = Twin(load_scenario(tmp_path))
+    fps = 50.0
+    t = np.arange(30) / fps
+    rec = rollout.rollout(Trajectory(actions=np.where(t < 0.15, 0.0, -0.6)[:, None], fps=fps,
+                                     start=np.zeros(1)), twin=twin)
+    bound = dyn.trajectory_load_bound(rec, twin, masses=[0.05])
+    force = np.abs(rec.signals.actuator_force[:, 0])
+    steps = np.flatnonzero(force[: int(0.5 / rec.dt)] < 4.9)  # the servo not saturated
+    assert steps.size > 40
+    np.testing.assert_allclose(5.0 / bound.fos[0, steps], force[steps], rtol=0.02, atol=0.01)
+    # what the bound would miss without them: the compensation and the spring, 0.2-1.4 N·m
+    model = twin.model
+    passive = dyn.passive_forces(model, rec.states[:-1])[:, 0]
+    qvel = rec.states[:-1, state_slice(model, mujoco.mjtState.mjSTATE_QVEL)]
+    damping = -model.dof_damping[0] * qvel[:, 0]
+    assert np.abs(passive - damping)[steps].min() > 0.15
+
+
 def test_load_bound_rejects_bad_options(swing):
     twin, rec = swing
     with pytest.raises(ParameterError, match="masses"):
