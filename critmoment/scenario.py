@@ -718,6 +718,12 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
         rivals = [i for i in range(model.ngeom)
                   if model.geom_bodyid[i] != body and _collides(model, index, i)
                   and model.geom_priority[i] >= model.geom_priority[index]]
+        if model.opt.enableflags & mujoco.mjtEnableBit.mjENBL_OVERRIDE:
+            raise ScenarioError(
+                f"[uncertainty.{p.name}]: the model enables the contact override (<option> "
+                f"<flag override=\"enable\"/>), which gives every contact the friction "
+                f"o_friction = {model.opt.o_friction[0]:g}: the friction of geom {p.target!r} "
+                "changes nothing; disable the override or drop the friction parameter")
         if not act_info.collision_geoms(model)[index]:
             raise ScenarioError(
                 f"[uncertainty.{p.name}]: geom {p.target!r} takes part in no contact "

@@ -315,6 +315,8 @@ class Twin:
         pair = (self.model.pair_friction[None] if pair_friction is None
                 else np.asarray(pair_friction))
         n = max(geom.shape[0], pair.shape[0])
+        if self.model.opt.enableflags & mujoco.mjtEnableBit.mjENBL_OVERRIDE:
+            return np.full(n, float(self.model.opt.o_friction[0]))  # every contact's
         values = []
         for kind, ids in self._grip_sources:
             if kind == "pair":

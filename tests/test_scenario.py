@@ -573,3 +573,21 @@ def test_a_friction_parameter_on_frictionless_contacts_is_an_error(tmp_path):
     with pytest.raises(ScenarioError, match=r"\[uncertainty\.friction\]: geom 'cube' makes "
                        r"frictionless contacts \(condim 1\)"):
         load_scenario(folder)
+
+
+def test_the_contact_override_makes_a_friction_parameter_an_error(tmp_path):
+    """``<flag override="enable"/>`` gives every contact ``o_friction``: a friction parameter
+    changes nothing, and without one the FOS reads o_friction (the geoms' friction is not
+    used)."""
+    option = '<option timestep="0.002" integrator="implicitfast" cone="elliptic" impratio="10"/>'
+    override = ('<option timestep="0.002" integrator="implicitfast" cone="elliptic" '
+                'impratio="10" o_friction="0.7 0.7 0.005 0.0001 0.0001">'
+                '<flag override="enable"/></option>')
+    source = bundled_scenario_path("panda_pick_place").parent
+    folder = _copy(tmp_path, {"scene.xml": [(option, override)]}, source=source)
+    with pytest.raises(ScenarioError, match=r"contact override .* o_friction = 0\.7"):
+        load_scenario(folder)
+    text = (folder / "scenario.toml").read_text()
+    start = text.index("[uncertainty.friction]")
+    (folder / "scenario.toml").write_text(text[:start] + text[text.index("\n[", start) + 1:])
+    assert Twin(load_scenario(folder)).object_friction() == 0.7
