@@ -25,7 +25,7 @@ import numpy as np
 
 __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
            "gripper_gap", "closing_ends", "moves_geoms", "position_target", "body_chain",
-           "common_ancestor", "collision_geoms", "geom_pairs"]
+           "common_ancestor", "collision_geoms", "geom_pairs", "filtered_actuators"]
 
 
 def collision_geoms(model: mujoco.MjModel) -> np.ndarray:
@@ -52,6 +52,7 @@ class ActuatorKind(enum.Enum):
     POSITION = "position"      # gain kp·ctrl, bias −kp·length (−kv·velocity): a servo on ctrl
     AFFINE = "general-affine"  # general with an affine bias: a servo on −bias0/bias1 ... of ctrl
     VELOCITY = "velocity"      # gain kv·ctrl, bias −kv·velocity
+    INTVELOCITY = "intvelocity"  # a servo on the integral of ctrl: ctrl is a velocity
     MOTOR = "motor"            # force = gear·ctrl: a torque (or force) command
     OTHER = "other"            # muscles, dampers, user dynamics
 
@@ -108,10 +109,28 @@ class ActuatorInfo:
                 "gain": self.gain}
 
 
+def filtered_actuators(model: mujoco.MjModel) -> np.ndarray:
+    """Actuators whose activation low-pass filters their control (``dyntype`` filter or
+    filterexact, e.g. ``<position timeconst>``): at rest their activation equals the
+    control."""
+    dyn = model.actuator_dyntype
+    return np.flatnonzero(((dyn == int(mujoco.mjtDyn.mjDYN_FILTER))
+                           | (dyn == int(mujoco.mjtDyn.mjDYN_FILTEREXACT)))
+                          & (model.actuator_actadr >= 0))
+
+
 def _kind(model: mujoco.MjModel, i: int) -> ActuatorKind:
     gain_t, bias_t = model.actuator_gaintype[i], model.actuator_biastype[i]
     g, b = model.actuator_gainprm[i], model.actuator_biasprm[i]
     fixed, affine = mujoco.mjtGain.mjGAIN_FIXED, mujoco.mjtBias.mjBIAS_AFFINE
+    dyn = int(model.actuator_dyntype[i])
+    if dyn == int(mujoco.mjtDyn.mjDYN_INTEGRATOR):
+        # the activation integrates ctrl: <intvelocity> (a servo on ∫ctrl, ctrl a velocity)
+        return (ActuatorKind.INTVELOCITY if gain_t == fixed and bias_t == affine
+                else ActuatorKind.OTHER)
+    if dyn not in (int(mujoco.mjtDyn.mjDYN_NONE), int(mujoco.mjtDyn.mjDYN_FILTER),
+                   int(mujoco.mjtDyn.mjDYN_FILTEREXACT)):
+        return ActuatorKind.OTHER  # muscles, user dynamics
     if gain_t == fixed and bias_t == mujoco.mjtBias.mjBIAS_NONE:
         return ActuatorKind.MOTOR
     if gain_t == fixed and bias_t == affine:

@@ -326,6 +326,17 @@ def _check_out(out_path: Path, overwrite: bool) -> None:
                             f"file's folder to exist")
 
 
+def _joint_channel_map(model: mujoco.MjModel, a: int) -> tuple[float, float]:
+    """(scale, offset) with ``ctrl = offset + scale·q`` for the joint position ``q`` that
+    actuator ``a`` holds at rest (:func:`critmoment.actuators.position_target` inverted);
+    (1, 0) for anything that drives no joint."""
+    zero, one = (act_info.position_target(model, a, c) for c in (0.0, 1.0))
+    if zero is None or one is None or one == zero:
+        return 1.0, 0.0
+    scale = 1.0 / (one - zero)
+    return scale, -zero * scale + 0.0  # (no negative zero in the file)
+
+
 def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                   supports: Sequence[str] = (), out: str | Path | None = None,
                   goal: Sequence[float] | None = None, goal_site: str | None = None,
@@ -502,6 +513,13 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         else:
             lines.append(f"actuators = [{_toml_str(item.name)}]   # {item.kind.value} on "
                          f"{item.transmission} {item.target}")
+            scale, offset = _joint_channel_map(model, item.index)
+            if not (np.isclose(scale, 1.0) and np.isclose(offset, 0.0)):
+                # a geared or offset servo: ctrl is not the joint position itself
+                lines += [f"scales = [{_num(scale)}]    # ctrl = offset + scale·(joint target)",
+                          f"offsets = [{_num(offset)}]"]
+                guesses.append(f"channel {item.name!r}: ctrl = {offset:g} + {scale:g}·(joint "
+                               f"target), from its gear and gains")
             labels.append(item.name)
         lines.append("")
     guesses.append(f"action convention: {len(channels)} channels [{', '.join(labels)}]")

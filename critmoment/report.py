@@ -23,6 +23,7 @@ import io
 import itertools
 import json
 import os
+import re
 import shutil
 import tempfile
 from collections.abc import Iterator, Sequence
@@ -44,6 +45,8 @@ MARKER = ".critmoment-output.json"
 # Files earlier critmoment versions wrote without a marker.
 _KNOWN_OUTPUTS = frozenset({"report.json", "report.html", "recording.npz", "rollout.json",
                             "moments.json", "validation.json"})
+#: The figure files critmoment writes (report_figures' names; the CLI's signals/moments).
+_FIGURE_FILE = re.compile(r"(signals|moments|cost_map|moment_\d+)\.png")
 
 #: Resolution of the report's PNG figures [dots per inch].
 DPI = 90
@@ -612,9 +615,11 @@ def _previous_files(folder: Path) -> set[str]:
     try:
         listed = json.loads((folder / MARKER).read_text())["files"]
         return {str(n) for n in listed if "/" not in str(n) and str(n) not in ("", ".", "..")}
-    except (OSError, ValueError, KeyError, TypeError):
+    except (OSError, ValueError, KeyError, TypeError, RecursionError):
+        # only the figure names critmoment writes: a folder of the user's own pictures is
+        # not an earlier output
         return {e.name for e in os.scandir(folder) if e.is_file() and (
-            e.name in _KNOWN_OUTPUTS or e.name.endswith(".png"))}
+            e.name in _KNOWN_OUTPUTS or _FIGURE_FILE.fullmatch(e.name))}
 
 
 class StagedOutput:

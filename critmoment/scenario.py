@@ -969,10 +969,13 @@ def _check_channel_kinds(actions: ActionConvention, resolver: _ActuatorResolver)
         for a in acts:
             info = resolver.infos[resolver.names.index(a)]
             if not info.kind.tracks_position and not actions.normalised[c]:
+                kind = info.kind.value
+                command = {"motor": "torque", "intvelocity": "velocity"}.get(kind,
+                                                                             "velocity or other")
                 raise ScenarioError(
-                    f"[actions] channel {actions.labels[c]!r}: actuator {a!r} is a "
-                    f"{info.kind.value} actuator (ctrl is a {'torque' if info.kind.value == 'motor' else 'velocity or other'} "
-                    "command), but the action convention gives joint-position targets; "
+                    f"[actions] channel {actions.labels[c]!r}: actuator {a!r} is "
+                    f"{'an' if kind[0] in 'aeiou' else 'a'} {kind} actuator (ctrl is a "
+                    f"{command} command), but the action convention gives joint-position targets; "
                     "audit a position-controlled model, or convert the actions to this "
                     "actuator's controls")
 

@@ -604,6 +604,10 @@ class Twin:
         data.qvel[:] = 0
         if start is not None:
             data.ctrl[:] = self.controls(np.asarray(start)[None])[0]
+            # a filtered servo (<position timeconst>) at rest at its target: its activation
+            # is the control (from 0 it would pull the arm down first)
+            for a in act_info.filtered_actuators(model):
+                data.act[model.actuator_actadr[a]] = data.ctrl[a]
         mujoco.mj_forward(model, data)
         if self.scenario.settle if settle is None else settle:
             self.settle_object(model, data)

@@ -415,3 +415,59 @@ def test_init_out_must_be_a_file_in_an_existing_folder(tmp_path):
             init_scenario(model_path, object_body="cube", task="pick_hold", out=out,
                           overwrite=force)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["adir", "afile", "arm.xml"]
+
+
+SHOULDER = '<position name="shoulder_act" joint="shoulder" kp="400" kv="20" forcerange="-60 60"/>'
+ELBOW = '<position name="elbow_act" joint="elbow" kp="300" kv="15" forcerange="-40 40"/>'
+
+
+def _variant(tmp_path, old: str, new: str):
+    text = arm_xml()
+    assert text.count(old) == 1
+    path = tmp_path / "variant.xml"
+    path.write_text(text.replace(old, new))
+    return path
+
+
+def test_an_intvelocity_actuator_is_not_a_position_servo(tmp_path):
+    """``<intvelocity>`` integrates ctrl as a velocity: its bias looks like a position
+    servo's, but a joint-position trajectory drove the arm away (the lift drifted 0.2 ->
+    0.45 m in a probe) and the audit gave a verdict."""
+    path = _variant(tmp_path, SHOULDER, '<intvelocity name="shoulder_act" joint="shoulder" '
+                    'kp="400" kv="20" actrange="-3 3"/>')
+    model = mujoco.MjModel.from_xml_path(str(path))
+    assert act_info.describe(model, 0).kind is act_info.ActuatorKind.INTVELOCITY
+    assert not act_info.ActuatorKind.INTVELOCITY.tracks_position
+    with pytest.raises(ScenarioError, match=r"shoulder_act \(intvelocity\).*not position servos"):
+        init_scenario(path, object_body="cube", task="pick_hold")
+
+
+def test_a_filtered_servo_starts_with_its_activation_at_the_control(tmp_path):
+    """``<position timeconst>``: at rest at its target the filter's state is the control
+    (from 0 the arm first sagged, the servo saturated for 20 ms and every sample was
+    called failing while 5 of 8 succeeded)."""
+    path = _variant(tmp_path, ELBOW, ELBOW.replace('/>', ' timeconst="0.1"/>'))
+    model = mujoco.MjModel.from_xml_path(str(path))
+    assert act_info.describe(model, 1).kind is act_info.ActuatorKind.POSITION
+    assert act_info.filtered_actuators(model).tolist() == [1]
+    init_scenario(path, object_body="cube", task="pick_hold", out=tmp_path / "s.toml")
+    twin = Twin(load_scenario(tmp_path / "s.toml"))
+    start = np.array([0.02, -0.03, 1.0])  # (the joints' ranges are ±3°)
+    data = twin.initial_data(start=start)
+    assert data.act[model.actuator_actadr[1]] == data.ctrl[1] == -0.03
+    assert data.qpos[model.joint("elbow").qposadr[0]] == pytest.approx(-0.03)
+
+
+def test_init_maps_joint_targets_through_a_geared_servos_gear(tmp_path):
+    """A ``general`` servo with gear 2 holds its joint at ctrl / 2: init writes the channel's
+    scale, so the trajectory's joint targets stay in radians."""
+    path = _variant(tmp_path, ELBOW, '<general name="elbow_act" joint="elbow" gear="2" '
+                    'biastype="affine" gainprm="300" biasprm="0 -300 -15" forcerange="-40 40"/>')
+    out = tmp_path / "s.toml"
+    result = init_scenario(path, object_body="cube", task="pick_hold", out=out)
+    assert "scales = [2.0]" in out.read_text()
+    assert any("'elbow_act': ctrl = 0 + 2·(joint target)" in g for g in result.guesses)
+    twin = Twin(load_scenario(out))
+    data = twin.initial_data(start=np.array([0.02, -0.03, 1.0]))  # (ranges ±3°)
+    assert data.ctrl[1] == pytest.approx(-0.06)
+    assert data.qpos[twin.model.joint("elbow").qposadr[0]] == pytest.approx(-0.03)

@@ -151,6 +151,20 @@ def test_legacy_output_without_marker_is_replaceable(tmp_path):
     assert check_output_path(out) == out.resolve()
 
 
+def test_a_folder_of_the_users_pictures_is_not_an_earlier_output(tmp_path):
+    """Without the marker only the figure names critmoment writes count as its own: a
+    folder of photos was replaced whole (and the photos deleted)."""
+    out = tmp_path / "pics"
+    out.mkdir()
+    (out / "holiday.png").write_text("photo")
+    with pytest.raises(OutputError, match="holiday.png"):
+        check_output_path(out)
+    # a marker nested too deeply to parse is no marker (it raised RecursionError)
+    (out / ".critmoment-output.json").write_text("[" * 100_000 + "]" * 100_000)
+    with pytest.raises(OutputError, match="holiday.png"):
+        check_output_path(out)
+
+
 def test_dollar_signs_are_not_mathtext():
     assert report._tex_safe("run $\\frac{1$.npz") == "run \\$\\frac{1\\$.npz"
 
