@@ -24,11 +24,10 @@ import zlib
 from collections.abc import Iterator
 from pathlib import Path
 
-import numpy as np
-
+# only light modules here: NumPy, MuJoCo and the rest load inside main(), where an
+# interruption is handled
 from critmoment import budget
 from critmoment.exceptions import CritmomentError
-from critmoment.safety import format_fos
 
 __all__ = ["main", "build_parser", "EXIT_OK", "EXIT_UNSAFE", "EXIT_ERROR"]
 
@@ -62,6 +61,8 @@ class _Stdout:
 
 
 def _json_default(obj):
+    import numpy as np
+
     if isinstance(obj, np.generic):
         return obj.item()
     if isinstance(obj, np.ndarray):
@@ -159,6 +160,8 @@ def cmd_rollout(args) -> int:
                  f"{summary['max_stage']}, final stage {summary['final_stage']} "
                  f"({'completed' if summary['completed'] else 'NOT completed'}); first step "
                  f"per stage {{{firsts}}}")
+    from critmoment.safety import format_fos
+
     _Stdout.emit(f"min FOS contact {format_fos(summary['min_fos_contact'], '.3f')}, min FOS "
                  f"motor {format_fos(summary['min_fos_motor'], '.3f')} "
                  f"({summary['limiting_actuator']}), max cost {summary['max_cost']:.3f}")
@@ -526,15 +529,41 @@ def _warning_lines(caught, command: str) -> list[str]:
 def main(argv: list[str] | None = None) -> int:
     """Runs the command line; returns the exit code (0 ok, 1 not safe, 2 error)."""
     with _terminate_as_interrupt():
-        try:  # the package's modules load here (about 1 s): a Ctrl-C is an interruption too
-            from critmoment.twin import quiet_mujoco_log
+        try:
+            # the libraries load here (about 1 s), whole: a Ctrl-C meanwhile is raised after
+            # them (one cutting NumPy's initialisation short left an ImportError, exit 1)
+            with _signals_held():
+                from critmoment.twin import quiet_mujoco_log
         except KeyboardInterrupt:
             print("critmoment: interrupted; no output was written", file=sys.stderr)
+            return EXIT_ERROR
+        except ImportError as exc:
+            print(f"critmoment: error: {_one_line(str(exc))} (a dependency is missing or "
+                  "broken: reinstall critmoment)", file=sys.stderr)
             return EXIT_ERROR
         # MuJoCo's own log appends each warning (an unstable simulation) to MUJOCO_LOG.TXT in
         # the user's folder and prints it, besides the one line critmoment prints
         with quiet_mujoco_log():
             return _main(argv)
+
+
+@contextlib.contextmanager
+def _signals_held() -> Iterator[None]:
+    """SIGINT and SIGTERM held back inside the block and delivered at its end (POSIX, main
+    thread); elsewhere nothing is held."""
+    import signal
+    import threading
+
+    held = {signal.SIGINT, signal.SIGTERM}
+    if (not hasattr(signal, "pthread_sigmask")
+            or threading.current_thread() is not threading.main_thread()):
+        yield
+        return
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, held)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
 
 
 @contextlib.contextmanager

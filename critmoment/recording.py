@@ -463,7 +463,7 @@ class Recording:
             with np.load(path, allow_pickle=False) as z:
                 meta = json.loads(str(z["meta"]))
                 arrays = {k: z[k] for k in ("states", "sensordata", "controls", "nominal")}
-        except (OSError, ValueError, KeyError) as exc:
+        except (OSError, ValueError, KeyError, RecursionError) as exc:
             raise InputFileError(f"{path}: not a critmoment recording ({exc})") from exc
         if arrays["sensordata"].shape[-1] != twin.nsensordata:
             raise InputFileError(

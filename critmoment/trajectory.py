@@ -806,7 +806,7 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
                 ) from None
         try:
             meta = json.loads(text)
-        except json.JSONDecodeError as exc:
+        except (ValueError, RecursionError) as exc:  # also a 5000-digit number, deep nesting
             raise TrajectoryError(
                 f"{str(path)!r}: 'meta' expected a JSON object string, got text "
                 f"that is not valid JSON: {exc}"
@@ -1077,7 +1077,7 @@ def _read_info(root: Path) -> dict:
     info_path = root / "meta" / "info.json"
     try:
         info = json.loads(info_path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+    except (OSError, ValueError, RecursionError) as exc:  # ValueError: bad JSON or UTF-8
         raise InputFileError(
             f"cannot read LeRobot metadata {str(info_path)!r} (expected a JSON "
             f"object with at least 'fps'): {exc}"

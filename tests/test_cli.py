@@ -228,13 +228,14 @@ def test_sigterm_ends_a_run_as_ctrl_c_does(traj_file, tmp_path, capsys, monkeypa
 
 def test_the_command_line_loads_the_heavy_libraries_inside_its_interrupt_handling():
     """``import critmoment.cli`` (what the console script does before ``main``) leaves
-    Optuna, Pinocchio, CasADi, ruptures and the audit's modules unloaded: a Ctrl-C in the
-    second they take to import is then caught by ``main`` (it printed a traceback)."""
+    NumPy, MuJoCo, Optuna, Pinocchio, CasADi, ruptures and the audit's modules unloaded: a
+    Ctrl-C in the second they take to import is then caught by ``main`` (it printed a
+    traceback, or exited 1 when it cut NumPy's initialisation short)."""
     import subprocess
     import sys
 
     code = ("import sys, critmoment.cli, critmoment; "
-            "print(sorted(m for m in ('optuna', 'pinocchio', 'casadi', 'ruptures', "
+            "print(sorted(m for m in ('numpy', 'mujoco', 'optuna', 'pinocchio', 'casadi', 'ruptures', "
             "'critmoment.analysis', 'critmoment.sparse') if m in sys.modules)); "
             "print(critmoment.Twin.__name__, critmoment.sparse.__name__)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
@@ -300,3 +301,21 @@ def test_library_log_lines_read_as_the_commands_own_warnings():
     assert (_CommandFormatter("analyze", verbose=True).format(record)
             == "critmoment analyze: warning: critmoment.sparse: diverged at step 7")
     assert record.levelname == "WARNING"
+
+
+def test_a_signal_while_the_libraries_load_is_delivered_after_them(monkeypatch, capsys):
+    """SIGINT during the imports in ``main`` waits for them to finish (held), then ends the
+    run as an interruption: exit 2, one line."""
+    import os
+    import signal
+    import sys
+    import types
+
+    class Loading(types.ModuleType):
+        def __getattr__(self, name):
+            os.kill(os.getpid(), signal.SIGINT)  # held: nothing happens yet
+            return lambda: __import__("contextlib").nullcontext()
+
+    monkeypatch.setitem(sys.modules, "critmoment.twin", Loading("critmoment.twin"))
+    assert main(["rollout", "missing.npz"]) == 2
+    assert capsys.readouterr().err == "critmoment: interrupted; no output was written\n"
