@@ -358,6 +358,11 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             outside the grippers); the message names the joint, the lag [rad or m], its
             duration [s], its start [s] and the likely cause.
     """
+    from critmoment.recording import check_recording
+    from critmoment.twin import resolve_twin
+
+    check_recording(recording)
+    twin = resolve_twin(None, twin)
     m = twin.model
     dt = float(recording.dt)
     n = recording.n_steps

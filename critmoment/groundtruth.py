@@ -599,7 +599,12 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
     Returns:
         The :class:`BruteForce` result.
     """
+    from critmoment.trajectory import check_trajectory
+    from critmoment.twin import resolve_twin
+
     t_start = time.perf_counter()
+    check_trajectory(traj)
+    twin = resolve_twin(None, twin)
     box = twin.scenario.box
     samples = box.check_samples(samples)
     if samples.shape[0] == 0:

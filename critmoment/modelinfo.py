@@ -318,6 +318,9 @@ def _check_out(out_path: Path, overwrite: bool) -> None:
     if out_path.is_dir():
         raise ScenarioError(f"--out: {out_path} is a folder; expected the path of the "
                             f"scenario file to write (e.g. {out_path / 'scenario.toml'})")
+    if out_path.exists() and not out_path.is_file():
+        raise ScenarioError(f"--out: {out_path} is a special file (a device, FIFO or socket), "
+                            f"which is never replaced; expected the path of a scenario file")
     if out_path.exists() and not overwrite:
         raise ScenarioError(f"--out: {out_path} exists; pass --force to replace it")
     if not out_path.parent.is_dir():

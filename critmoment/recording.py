@@ -19,6 +19,7 @@ import math
 import warnings
 from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import mujoco
 import mujoco.batch
@@ -39,6 +40,7 @@ from critmoment.twin import STATE_SPEC, Signals, Twin, resolve_twin
 
 __all__ = [
     "Recording",
+    "check_recording",
     "rollout",
     "simulate",
     "prepare_controls",
@@ -486,6 +488,19 @@ def _friction_of(twin: Twin, values: np.ndarray) -> float:
     return twin.object_friction(model)
 
 
+def check_recording(value: Any, what: str = "recording") -> Recording:
+    """``value`` itself when it is a :class:`Recording`.
+
+    Raises:
+        ParameterError: anything else (a trajectory, a path), with what to call instead.
+    """
+    if not isinstance(value, Recording):
+        raise ParameterError(f"{what}: expected a critmoment Recording (the frequent rollout: "
+                             f"critmoment.rollout(trajectory, scenario)), got "
+                             f"{type(value).__name__}")
+    return value
+
+
 def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
             twin: Twin | None = None, range_policy: str | None = None) -> Recording:
     """Run the frequent rollout of a trajectory at nominal parameters.
@@ -502,6 +517,7 @@ def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
     Raises:
         SimulationDivergedError: the physics diverged; the message names the step.
     """
+    traj = trajectory_mod.check_trajectory(traj)
     twin = resolve_twin(scenario, twin)
     controls = prepare_controls(twin, traj, range_policy=range_policy)
     state0 = initial_state(twin, traj)

@@ -534,6 +534,9 @@ def check_output_path(path: str | os.PathLike, *, kind: str = "folder",
     if exists and kind == "file" and is_dir:
         raise OutputError(f"{option} {_short(raw)!r}: expected a file path, got an existing "
                           f"folder")
+    if exists and kind == "file" and not dest.is_file():
+        raise OutputError(f"{option} {_short(raw)!r}: expected a file path, got an existing "
+                          f"special file (a device, FIFO or socket), which is never replaced")
     anchor = _nearest_existing(dest)
     if not anchor.is_dir():
         raise OutputError(f"{option} {_short(raw)!r}: expected a path under a folder, but "

@@ -788,7 +788,7 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
     """
     mjcf = Path(mjcf)
     if not mjcf.is_file():
-        raise InputFileError(f"{what}: file not found: {mjcf}")
+        raise InputFileError(f"{what}: {_not_a_file(mjcf)}: {mjcf}")
     if mjcf.suffix.lower() in (".toml", ".npz", ".hdf5", ".h5", ".parquet", ".json"):
         raise ScenarioError(f"{what}: expected an MJCF model file (.xml), got {mjcf} (a "
                             f"{mjcf.suffix} file); a scenario goes to --scenario, a "
@@ -1095,6 +1095,15 @@ def _check_goal_reach(model: mujoco.MjModel, goal: Sequence[float], gripper: Gri
         f"goal in world coordinates, in metres, that the arm can reach")
 
 
+def _not_a_file(path: Path) -> str:
+    """Why ``path`` cannot be read as a file, in words."""
+    if path.is_dir():
+        return "expected a file, got a folder"
+    if path.exists():
+        return "expected a regular file, got a special file (a device, FIFO or socket)"
+    return "file not found"
+
+
 def _subtree_geoms(model: mujoco.MjModel, body: str, where: str) -> tuple[str, ...]:
     bid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, body)
     if bid < 0:
@@ -1152,7 +1161,7 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
             path = path / "scenario.toml"
         if not path.is_file():
             raise InputFileError(
-                f"scenario file not found: {path} (expected a scenario.toml, a folder with one, "
+                f"scenario {_not_a_file(path)}: {path} (expected a scenario.toml, a folder with one, "
                 f"or a bundled name: {', '.join(BUNDLED_SCENARIOS)})")
         text = path.read_text(encoding="utf-8")
     except OSError as exc:

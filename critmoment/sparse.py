@@ -716,8 +716,11 @@ class SparseEvaluator:
                  divergence: DivergencePolicy = DivergencePolicy.MARK,
                  persistence: float | None = None, slip_tolerance: float | None = None,
                  creep_horizon: int | None = None):
-        self.twin = twin
-        self.recording = recording
+        from critmoment.recording import check_recording
+        from critmoment.twin import resolve_twin
+
+        self.twin = resolve_twin(None, twin)
+        self.recording = check_recording(recording)
         sig = recording.signals
         self._carried = carried_flags(sig.contact_support, sig.contact_gripper)
         horizon = twin.scenario.horizon if horizon is None else horizon

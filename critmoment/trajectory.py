@@ -341,10 +341,14 @@ class Trajectory:
                 )
             _check_finite_vector(pose, what="object_pose")
             norm = float(np.linalg.norm(pose[3:]))
-            if norm < 1e-9:
+            # as everywhere else a pose comes in (--object-pose, ACT env_state, qpos0): a
+            # quaternion far from unit length is a mistake (another convention, degrees),
+            # not something to rescale silently
+            if abs(norm - 1.0) > _POSE_NORM_TOL:
                 raise TrajectoryError(
-                    f"object_pose: expected a non-zero quaternion (w, x, y, z) in "
-                    f"elements 3..6, got {pose[3:].tolist()} with norm {norm!r}"
+                    f"object_pose: expected a unit quaternion (w, x, y, z) in elements 3..6 "
+                    f"(norm within {_POSE_NORM_TOL:g} of 1), got {pose[3:].tolist()} with "
+                    f"norm {norm:.6g}"
                 )
             if abs(norm - 1.0) > _QUAT_NORM_TOL:
                 pose[3:] /= norm
@@ -536,6 +540,11 @@ def _load_any(path: str | os.PathLike, *, fps: float | None,
             f"trajectory path {str(p)!r} is a directory without meta/info.json; "
             f"expected a LeRobot dataset directory or a file: {_SUPPORTED_TEXT}"
         )
+    if not p.is_file():  # reading a FIFO would wait forever, a device for ever more
+        raise InputFileError(
+            f"trajectory path {str(p)!r} is not a regular file (a FIFO, device or "
+            f"socket); expected a file or directory: {_SUPPORTED_TEXT}"
+        )
     suffix = p.suffix.lower()
     if suffix not in SUPPORTED_SUFFIXES:
         raise InputFileError(
@@ -689,6 +698,12 @@ def _npz_declared_bytes(path: Path) -> None:
         )
     total = 0
     with zipfile.ZipFile(path) as zf:
+        names = [info.filename for info in zf.infolist()]
+        twice = sorted({n for n in names if names.count(n) > 1})
+        if twice:  # numpy would read the last one silently
+            raise InputFileError(
+                f"{_short(path)!r} holds member(s) {twice} more than once; expected one "
+                f"array per key (which one is meant is ambiguous)")
         for info in zf.infolist():
             member = f"{_short(path)!r} member {info.filename!r}"
             if info.flag_bits & 0x1:

@@ -130,3 +130,24 @@ def test_library_calls_refuse_what_is_not_their_input(demo_traj, tmp_path):
     assert cm.Twin("aloha_transfer_cube").scenario.name == "aloha_transfer_cube"
     with pytest.raises(cm.ParameterError, match="expected a critmoment Trajectory"):
         cm.validate("traj.npz", twin=cm.Twin(None), n_samples=4)
+
+
+@pytest.mark.parametrize("call", ["rollout", "check_feasibility", "evaluate", "brute_force"])
+@pytest.mark.parametrize("bad", ["traj.npz", None])
+def test_stage_functions_refuse_a_path_or_none_with_a_critmoment_error(twin, demo_recording,
+                                                                      call, bad):
+    """They raised AttributeError ('str' object has no attribute 'n_channels')."""
+    import numpy as np
+
+    calls = {
+        "rollout": lambda: critmoment.rollout(bad, twin=twin),
+        "check_feasibility": lambda: critmoment.check_feasibility(bad, twin),
+        "evaluate": lambda: critmoment.evaluate(bad, twin, [10], np.array([[0.05, 1.0]])),
+        "brute_force": lambda: critmoment.brute_force(bad, twin=twin,
+                                                      samples=np.array([[0.05, 1.0]])),
+    }
+    with pytest.raises(exceptions.ParameterError, match=r"expected a critmoment "
+                       r"(Trajectory|Recording)"):
+        calls[call]()
+    with pytest.raises(exceptions.ScenarioError, match="expected a critmoment Twin"):
+        critmoment.check_feasibility(demo_recording, "twin")

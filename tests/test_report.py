@@ -206,3 +206,13 @@ def test_reused_moment_figure_draws_what_a_fresh_one_draws(audit):
         step = int(mr.moment.step)
         fresh = report._png(report._lighten(report.plot_curves(audit, step)))
         assert reused[f"moment_{step}"] == fresh
+
+
+def test_a_special_file_is_never_replaced_as_an_output(tmp_path):
+    import os
+
+    fifo = tmp_path / "out.npz"
+    os.mkfifo(fifo)
+    with pytest.raises(OutputError, match="special file"):
+        StagedOutput(fifo, command="demo", kind="file")
+    assert not fifo.is_file() and fifo.exists()

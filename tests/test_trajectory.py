@@ -62,7 +62,7 @@ def test_trajectory_properties_and_read_only():
 
 
 def test_int_actions_converted_and_quaternion_normalised():
-    traj = Trajectory(np.arange(6).reshape(3, 2), object_pose=[0, 0, 0, 2, 0, 0, 0])
+    traj = Trajectory(np.arange(6).reshape(3, 2), object_pose=[0, 0, 0, 1.005, 0, 0, 0])
     assert traj.actions.dtype == np.float64
     np.testing.assert_array_equal(traj.object_pose, [0, 0, 0, 1, 0, 0, 0])
 
@@ -75,7 +75,7 @@ def test_int_actions_converted_and_quaternion_normalised():
         ({"actions": np.array([["a", "b"], ["c", "d"]])}, r"real numeric"),
         ({"actions": np.zeros((3, 2)), "fps": 0.0}, r"fps.*> 0"),
         ({"actions": np.zeros((3, 2)), "start": np.zeros(3)}, r"start.*\(2,\)"),
-        ({"actions": np.zeros((3, 2)), "object_pose": np.zeros(7)}, r"non-zero quaternion"),
+        ({"actions": np.zeros((3, 2)), "object_pose": np.zeros(7)}, r"unit quaternion"),
         ({"actions": np.zeros((3, 2)), "qpos0": np.zeros((2, 2))}, r"qpos0.*1-D"),
         ({"actions": np.zeros((3, 2)), "meta": {"x": object()}}, r"JSON"),
     ],
@@ -104,7 +104,7 @@ def test_npz_round_trip_exact(tmp_path):
         fps=30.0,
         start=rng.normal(size=NA),
         qpos0=rng.normal(size=23),
-        object_pose=np.r_[rng.normal(size=3), rng.normal(size=4)],
+        object_pose=np.r_[rng.normal(size=3), (q := rng.normal(size=4)) / np.linalg.norm(q)],
         meta={"task": "transfer_cube", "n": 3, "ok": True, "list": [1.5, None]},
         source="unit test",
     )
@@ -639,3 +639,39 @@ def test_lerobot_negative_indices_are_refused(tmp_path, rng):
     with pytest.raises(TrajectoryError, match=r"column 'episode_index': expected indices >= 0, "
                        r"got -3 at row 0"):
         load_trajectory(tmp_path / "ep.parquet", fps=50)
+
+
+def test_a_fifo_is_refused_before_it_is_read(tmp_path):
+    """Opening a FIFO named like a trajectory waited forever."""
+    import os
+
+    fifo = tmp_path / "x.npz"
+    os.mkfifo(fifo)
+    with pytest.raises(InputFileError, match="not a regular file"):
+        load_trajectory(fifo)
+
+
+def test_an_npz_with_a_key_twice_is_ambiguous(tmp_path):
+    import zipfile
+
+    path = tmp_path / "dup.npz"
+    save_trajectory(Trajectory(actions=np.zeros((3, 2)), fps=50.0), path)
+    extra = tmp_path / "x.npz"
+    np.savez(extra, actions=np.ones((3, 2)))
+    with zipfile.ZipFile(extra) as src, warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # zipfile warns of the duplicate name it writes
+        with zipfile.ZipFile(path, "a") as dst:
+            dst.writestr("actions.npy", src.read("actions.npy"))
+    with pytest.raises(InputFileError, match=r"\['actions.npy'\] more than once"):
+        load_trajectory(path)
+
+
+def test_a_trajectorys_object_pose_needs_a_unit_quaternion():
+    """As --object-pose, ACT env_state and qpos0 require: [x, y, z, 2, 0, 0, 0] was
+    rescaled silently."""
+    with pytest.raises(TrajectoryError, match="expected a unit quaternion"):
+        Trajectory(actions=np.zeros((3, 2)), fps=50.0,
+                   object_pose=[0.1, 0.0, 0.02, 2.0, 0.0, 0.0, 0.0])
+    pose = Trajectory(actions=np.zeros((3, 2)), fps=50.0,
+                      object_pose=[0.1, 0.0, 0.02, 1.004, 0.0, 0.0, 0.0]).object_pose
+    assert np.linalg.norm(pose[3:]) == pytest.approx(1.0, abs=1e-12)
