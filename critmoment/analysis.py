@@ -34,7 +34,7 @@ from critmoment.exceptions import ParameterError
 from critmoment.feasibility import FeasibilityReport, check_fit, preflight
 from critmoment.groundtruth import NominalReference, brute_force, reference_from_recording
 from critmoment.moments import Moment, MomentDetector, MomentLabel
-from critmoment.recording import Recording, model_hash, rollout
+from critmoment.recording import Recording, check_task_window, model_hash, rollout
 from critmoment.scenario import Scenario
 from critmoment.trajectory import Trajectory, check_trajectory, input_identity
 from critmoment.twin import Twin, resolve_twin
@@ -462,6 +462,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     with stage("rollout"):
         check_fit(trajectory, None, twin)  # width and units, naming the likely mistake
         rec = rollout(trajectory, twin=twin)
+        check_task_window(twin, trajectory)  # a success rule no run of this length can meet
         feasibility = preflight(trajectory, rec, twin) if opt.check_feasibility else None
     with stage("moments"):
         evaluator, contact = audit_evaluator(rec, twin, horizon=opt.horizon, chain=opt.chain,

@@ -98,6 +98,11 @@ def _scenario_for(given, traj):
     if given is not None:
         return given
     named = traj.meta.get("scenario") if isinstance(traj.meta, dict) else None
+    if named is not None and named not in BUNDLED_SCENARIOS:
+        warnings.warn(f"the trajectory's meta names scenario {str(named)[:80]!r}, which is not "
+                      f"a bundled one ({', '.join(BUNDLED_SCENARIOS)}); using the default "
+                      f"{BUNDLED_SCENARIOS[0]!r}: pass --scenario to audit it on its own twin",
+                      stacklevel=2)
     return named if named in BUNDLED_SCENARIOS else None
 
 

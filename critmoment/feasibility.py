@@ -683,11 +683,16 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
         TrajectoryError: a hard mismatch (action width not the scenario's, gripper values
             that are not normalised, joint targets in degrees), or with ``strict`` the first
             warning.
+        ScenarioError: with ``recording``, a task no run of this length can meet
+            (:func:`critmoment.recording.check_task_window`).
     """
+    from critmoment.recording import check_task_window
+
     _check_width(trajectory, twin)
     _check_units(trajectory, twin)
     if recording is None:
         return []
+    check_task_window(twin, trajectory)
     out: list[str] = []
     sig = recording.signals
     default = ("; the trajectory gives none, so the model's default pose was used"

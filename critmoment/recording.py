@@ -30,6 +30,7 @@ from critmoment.exceptions import (
     CritmomentWarning,
     InputFileError,
     ParameterError,
+    ScenarioError,
     SimulationDivergedError,
     TrajectoryError,
 )
@@ -96,6 +97,22 @@ def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None =
                                       bounded=twin.channel_normalised,
                                       lower=twin.channel_lower, upper=twin.channel_upper)
     return twin.controls(targets)
+
+
+def check_task_window(twin: Twin, traj: Trajectory) -> None:
+    """The task's final window (``settle_time``) must be shorter than the motion, or its
+    success rule reaches back to the start, where the object rests untouched on its
+    support, and no run can succeed (an audit or validation would blame every sample).
+
+    Raises:
+        ScenarioError: naming both durations.
+    """
+    duration = traj.n_steps / traj.fps
+    if twin.task.settle_time >= duration:
+        raise ScenarioError(
+            f"[task] settle_time: {twin.task.settle_time:g} s, but the trajectory{_source(traj)} "
+            f"lasts {duration:g} s; expected a final window shorter than the motion (default "
+            f"0.05 s)")
 
 
 def checked_start(twin: Twin, traj: Trajectory, *, range_policy: str | None = None,

@@ -1053,6 +1053,34 @@ def _reach(model: mujoco.MjModel, data: mujoco.MjData, geom: int
     return anchor, bound
 
 
+def _carry_reach(model: mujoco.MjModel, gripper: Gripper, object_body: str,
+                 key_id: int | None) -> tuple[list[tuple[np.ndarray, float]], np.ndarray] | None:
+    """Where ``gripper`` can bring the object's centre at any joint values: per gripper geom
+    a fixed point and a radius around it (:func:`_reach` plus how far the object's centre
+    can be from a geom touching it), and the object's start position; None where some geom
+    has no such bound."""
+    data = mujoco.MjData(model)
+    if key_id is not None:
+        mujoco.mj_resetDataKeyframe(model, data, key_id)
+    mujoco.mj_kinematics(model, data)
+    obj = model.body(object_body).id
+    extent = max((float(np.linalg.norm(model.geom_pos[g]) + model.geom_rbound[g])
+                  for g in range(model.ngeom) if model.geom_bodyid[g] == obj), default=0.0)
+    balls = []
+    for name in gripper.geoms:
+        reach = _reach(model, data, model.geom(name).id)
+        if reach is None:
+            return None
+        balls.append((reach[0], reach[1] + extent))
+    return balls, data.xpos[obj].copy()
+
+
+def _down(model: mujoco.MjModel) -> np.ndarray:
+    gravity = np.asarray(model.opt.gravity, dtype=float)
+    norm = float(np.linalg.norm(gravity))
+    return gravity / norm if norm > 0 else np.array([0.0, 0.0, -1.0])
+
+
 def _check_goal_reach(model: mujoco.MjModel, goal: Sequence[float], gripper: Gripper,
                       object_body: str, key_id: int | None, *, slack: float) -> None:
     """A pick-and-place goal the carrying gripper cannot bring the object to, at any joint
@@ -1062,29 +1090,19 @@ def _check_goal_reach(model: mujoco.MjModel, goal: Sequence[float], gripper: Gri
     Raises:
         ScenarioError: naming the goal, the arm's fixed base point and both distances.
     """
-    data = mujoco.MjData(model)
-    if key_id is not None:
-        mujoco.mj_resetDataKeyframe(model, data, key_id)
-    mujoco.mj_kinematics(model, data)
-    obj = model.body(object_body).id
-    # how far the object's centre can be from a gripper geom that touches it
-    extent = max((float(np.linalg.norm(model.geom_pos[g]) + model.geom_rbound[g])
-                  for g in range(model.ngeom) if model.geom_bodyid[g] == obj), default=0.0)
+    carry = _carry_reach(model, gripper, object_body, key_id)
+    if carry is None:
+        return
     goal = np.asarray(goal, dtype=float)
-    gravity = np.asarray(model.opt.gravity, dtype=float)
-    down = gravity / np.linalg.norm(gravity) if np.linalg.norm(gravity) > 0 else np.zeros(3)
+    down = _down(model) if np.linalg.norm(model.opt.gravity) > 0 else np.zeros(3)
     best = None
-    for name in gripper.geoms:
-        reach = _reach(model, data, model.geom(name).id)
-        if reach is None:
-            return
-        anchor, bound = reach
+    for anchor, radius in carry[0]:
         # released anywhere above the goal, the object may fall onto it (a bin below the arm)
         lift = max(0.0, float(np.dot(goal - anchor, down)))
-        gap = float(np.linalg.norm(goal - lift * down - anchor)) - (bound + extent + slack)
+        gap = float(np.linalg.norm(goal - lift * down - anchor)) - (radius + slack)
         if best is None or gap < best[0]:
-            best = (gap, anchor, bound + extent + slack)
-    if best is None or best[0] <= 0.0:
+            best = (gap, anchor, radius + slack)
+    if best[0] <= 0.0:
         return
     _, anchor, farthest = best
     raise ScenarioError(
@@ -1093,6 +1111,29 @@ def _check_goal_reach(model: mujoco.MjModel, goal: Sequence[float], gripper: Gri
         f" m, the fixed base of the arm that carries gripper {gripper.name!r}; at any joint "
         f"values that arm brings the object at most {farthest:.3g} m from there; expected a "
         f"goal in world coordinates, in metres, that the arm can reach")
+
+
+def _check_lift_reach(model: mujoco.MjModel, lift_height: float, gripper: Gripper,
+                      object_body: str, key_id: int | None) -> None:
+    """A ``lift_height`` above the highest point the carrying arm can raise the object's
+    centre to (from its start pose) can never be met: an error, not a task every sample
+    fails.
+
+    Raises:
+        ScenarioError: naming both heights.
+    """
+    carry = _carry_reach(model, gripper, object_body, key_id)
+    if carry is None:
+        return
+    up = -_down(model)
+    start = float(np.dot(carry[1], up))
+    highest = max(float(np.dot(anchor, up)) + radius for anchor, radius in carry[0])
+    if start + lift_height > highest:
+        raise ScenarioError(
+            f"[task] lift_height: {lift_height:g} m above the object's start, but at any joint "
+            f"values the arm that carries gripper {gripper.name!r} raises it at most "
+            f"{max(0.0, highest - start):.3g} m; expected a height in metres the arm can reach "
+            f"(default 0.02)")
 
 
 def _not_a_file(path: Path) -> str:
@@ -1163,7 +1204,7 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
             raise InputFileError(
                 f"scenario {_not_a_file(path)}: {path} (expected a scenario.toml, a folder with one, "
                 f"or a bundled name: {', '.join(BUNDLED_SCENARIOS)})")
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8-sig")  # (a byte-order mark some editors write)
     except OSError as exc:
         raise InputFileError(f"{path}: cannot read the scenario file ({exc.strerror or exc})"
                              ) from exc
@@ -1261,10 +1302,12 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         raise ScenarioError("scenario: missing [task] table; expected kind = one of handover, "
                             "pick_place, pick_hold (critmoment never guesses the task)")
     task = task_from_table(raw["task"], [g.name for g in grippers], resolve_site=site_position)
-    goal = getattr(task, "goal", None)
-    if goal is not None:
+    if task.kind in ("pick_place", "pick_hold"):  # (a hand-over's success needs no lift)
         holder = next(g for g in grippers if g.name == task.gripper)
-        _check_goal_reach(model, goal, holder, object_body, key_id, slack=task.tolerance)
+        _check_lift_reach(model, task.lift_height, holder, object_body, key_id)
+        if task.kind == "pick_place":
+            _check_goal_reach(model, task.goal, holder, object_body, key_id,
+                              slack=task.tolerance)
 
     limits_t = _get(raw, "limits", dict, "scenario", {})
     limits, sources = _resolve_limits(limits_t, resolver)

@@ -1056,12 +1056,16 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
 
     # a rate the file records (a root attribute ``fps``, as some exporters write it) is the
     # episode's; without one, ACT's own 50 Hz
-    recorded = None
-    for key in ("fps", "frame_rate", "control_freq"):
-        if key in attrs:
-            recorded = _as_rate(attrs[key], what=f"{_short(path)!r} attribute {key!r}",
-                                error=TrajectoryError)
-            break
+    rates = {key: _as_rate(attrs[key], what=f"{_short(path)!r} attribute {key!r}",
+                           error=TrajectoryError)
+             for key in ("fps", "frame_rate", "control_freq") if key in attrs}
+    if len(set(rates.values())) > 1 and fps not in rates.values():
+        raise TrajectoryError(
+            f"{str(path)!r}: the root attributes record different rates "
+            f"({', '.join(f'{k} = {v:g}' for k, v in rates.items())}); expected one rate for "
+            f"the episode (remove the wrong attribute, or load it with load_trajectory(path, "
+            f"fps=...))")
+    recorded = fps if len(set(rates.values())) > 1 else next(iter(rates.values()), None)
     fps = _given_or_recorded(fps, recorded, repr(_short(path)))
     if fps is None:
         logger.info("%s: ACT episode without a rate; assuming %g Hz", path, DEFAULT_FPS)

@@ -586,6 +586,7 @@ class Twin:
             if qpos0.shape != (model.nq,):
                 raise TrajectoryError(f"expected qpos0 of shape ({model.nq},), got {qpos0.shape}")
             _check_qpos_quaternions(model, qpos0)
+            _check_qpos_ranges(model, qpos0)
             data.qpos[:] = qpos0
         elif start is not None:
             ctrl = self.controls(np.asarray(start)[None])[0]
@@ -810,6 +811,32 @@ def _check_qpos_quaternions(model: mujoco.MjModel, qpos: np.ndarray) -> None:
             raise TrajectoryError(
                 f"qpos0: expected a unit quaternion (w, x, y, z) for joint {name!r} at "
                 f"qpos[{adr}:{adr + 4}], got {qpos[adr:adr + 4].tolist()} with norm {norm:.6g}")
+
+
+def _check_qpos_ranges(model: mujoco.MjModel, qpos: np.ndarray, *, slack: float = 1.0) -> None:
+    """Every limited hinge and slide joint in ``qpos`` within its range widened by ``slack``
+    of its width on each side: far outside, the limit's constraint throws the joint back and
+    the run diverges at once (50 rad on a ±3 rad joint). A little outside is left to the
+    limit (MuJoCo's own qpos0 puts a slide finger at 0 below a range starting at 0.021 m).
+
+    Raises:
+        TrajectoryError: naming the joint, its value and its range.
+    """
+    for j in range(model.njnt):
+        kind = int(model.jnt_type[j])
+        if kind not in (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)) \
+                or not model.jnt_limited[j]:
+            continue
+        lo, hi = (float(v) for v in model.jnt_range[j])
+        margin = slack * (hi - lo)
+        value = float(qpos[model.jnt_qposadr[j]])
+        if not lo - margin <= value <= hi + margin:
+            name = model.joint(j).name or f"joint #{j}"
+            unit = "rad" if kind == int(mujoco.mjtJoint.mjJNT_HINGE) else "m"
+            raise TrajectoryError(
+                f"qpos0: joint {name!r} at {value:g} {unit}, outside its range [{lo:g}, {hi:g}] "
+                f"{unit}; expected a start pose the model allows (qpos0 is in MuJoCo's qpos "
+                f"order, radians and metres)")
 
 
 def resolve_twin(scenario=None, twin: Twin | None = None) -> Twin:

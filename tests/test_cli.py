@@ -1,5 +1,6 @@
 """The command line: outputs, JSON keys, exit codes, errors as one clear line."""
 
+import dataclasses
 import json
 
 import numpy as np
@@ -319,3 +320,14 @@ def test_a_signal_while_the_libraries_load_is_delivered_after_them(monkeypatch, 
     monkeypatch.setitem(sys.modules, "critmoment.twin", Loading("critmoment.twin"))
     assert main(["rollout", "missing.npz"]) == 2
     assert capsys.readouterr().err == "critmoment: interrupted; no output was written\n"
+
+
+def test_a_trajectory_naming_an_unknown_scenario_is_warned_of(traj_file, tmp_path, capsys):
+    from critmoment.trajectory import load_trajectory, save_trajectory
+
+    traj = load_trajectory(traj_file)
+    path = tmp_path / "t.npz"
+    save_trajectory(dataclasses.replace(traj, meta={**traj.meta, "scenario": "my_robot"}), path)
+    assert main(["rollout", str(path)]) == 0
+    err = capsys.readouterr().err
+    assert "meta names scenario 'my_robot', which is not a bundled one" in err

@@ -591,3 +591,32 @@ def test_the_contact_override_makes_a_friction_parameter_an_error(tmp_path):
     start = text.index("[uncertainty.friction]")
     (folder / "scenario.toml").write_text(text[:start] + text[text.index("\n[", start) + 1:])
     assert Twin(load_scenario(folder)).object_friction() == 0.7
+
+
+def test_a_lift_height_the_arm_cannot_reach_is_an_error(tmp_path):
+    source = bundled_scenario_path("panda_pick_place").parent
+    folder = _copy(tmp_path, {"scenario.toml": [("lift_height = 0.02        # [m]",
+                                                 "lift_height = 5.0        # [m]")]},
+                   source=source)
+    with pytest.raises(ScenarioError, match=r"\[task\] lift_height: 5 m above the object's "
+                       r"start, but .* raises it at most 1\.\d+ m"):
+        load_scenario(folder)
+
+
+def test_a_settle_time_as_long_as_the_motion_is_an_error(tmp_path, demo_traj):
+    """The success rule's final window would reach back to the untouched start: every run
+    failed and the audit said UNSAFE (exit 1) where the scenario was wrong (exit 2)."""
+    from critmoment.analysis import AnalyzeOptions, analyze
+
+    folder = _toml(tmp_path, ('receiver = "left"', 'receiver = "left"\nsettle_time = 100.0'))
+    with pytest.raises(ScenarioError, match=r"settle_time: 100 s, but the trajectory .*lasts "
+                       r"8 s"):
+        analyze(demo_traj, twin=Twin(load_scenario(folder)),
+                options=AnalyzeOptions(n_samples=8, check_feasibility=False))
+
+
+def test_a_scenario_file_with_a_byte_order_mark_loads(tmp_path):
+    folder = _copy(tmp_path)
+    path = folder / "scenario.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + path.read_bytes())
+    assert load_scenario(folder).name == "aloha_transfer_cube"

@@ -675,3 +675,14 @@ def test_a_trajectorys_object_pose_needs_a_unit_quaternion():
     pose = Trajectory(actions=np.zeros((3, 2)), fps=50.0,
                       object_pose=[0.1, 0.0, 0.02, 1.004, 0.0, 0.0, 0.0]).object_pose
     assert np.linalg.norm(pose[3:]) == pytest.approx(1.0, abs=1e-12)
+
+
+def test_an_act_episode_with_two_different_rates_is_refused(tmp_path):
+    path = tmp_path / "episode_0.hdf5"
+    with h5py.File(path, "w") as f:
+        f.create_dataset("action", data=np.zeros((10, 14)))
+        f.attrs["fps"] = 50
+        f.attrs["frame_rate"] = 25
+    with pytest.raises(TrajectoryError, match=r"different rates \(fps = 50, frame_rate = 25\)"):
+        load_trajectory(path)
+    assert load_trajectory(path, fps=25).fps == 25

@@ -712,3 +712,14 @@ def test_a_mass_range_mujoco_cannot_simulate_is_a_scenario_error(scenario):
                        r"range, 1e-12 kg, MuJoCo cannot simulate the model \(mjWARN_INERTIA"):
         Twin(tiny)
     Twin(scenario.replace(box=scenario.box.with_range("mass", 1e-6, 1e-3, nominal=1e-4)))
+
+
+def test_a_qpos0_far_outside_a_joints_range_is_an_error(twin):
+    """50 rad on the ±π waist diverged at step 6; now the joint is named."""
+    from critmoment.exceptions import TrajectoryError
+
+    qpos0 = twin.initial_data().qpos.copy()
+    qpos0[twin.model.joint("left/waist").qposadr[0]] = 50.0
+    with pytest.raises(TrajectoryError, match=r"joint 'left/waist' at 50 rad, outside its "
+                       r"range \[-3.14158, 3.14158\]"):
+        twin.initial_data(qpos0=qpos0)
