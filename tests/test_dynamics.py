@@ -676,9 +676,9 @@ SWING_MJCF = """
 """
 
 
-@pytest.fixture(scope="module")
-def swing(tmp_path_factory):
-    """(twin, recording): the arm rests, then swings 1.2 rad from t = 0.14 s on."""
+def _swing(folder, xml: str = SWING_MJCF, target: float = -1.2):
+    """(twin, recording) of the swing arm in ``xml``: it rests, then swings to ``target``
+    [rad] from t = 0.14 s on."""
     from scenarios import one_actuator_toml
 
     from critmoment import recording as rollout
@@ -686,8 +686,7 @@ def swing(tmp_path_factory):
     from critmoment.trajectory import Trajectory
     from critmoment.twin import Twin
 
-    folder = tmp_path_factory.mktemp("swing")
-    (folder / "scene.xml").write_text(SWING_MJCF)
+    (folder / "scene.xml").write_text(xml)
     (folder / "scenario.toml").write_text(one_actuator_toml(
         "swing", mjcf="scene.xml", gripper="hand", gripper_geom="pad", support="table",
         actuator="hinge", limit=5.0, task=True, uncertainty="""[uncertainty.mass]
@@ -698,9 +697,15 @@ nominal = 0.05
     twin = Twin(load_scenario(folder))
     fps = 50.0
     t = np.arange(30) / fps
-    actions = np.where(t < 0.15, 0.0, -1.2)[:, None]
+    actions = np.where(t < 0.15, 0.0, target)[:, None]
     return twin, rollout.rollout(Trajectory(actions=actions, fps=fps, start=np.zeros(1)),
                                  twin=twin)
+
+
+@pytest.fixture(scope="module")
+def swing(tmp_path_factory):
+    """(twin, recording): the arm rests, then swings 1.2 rad from t = 0.14 s on."""
+    return _swing(tmp_path_factory.mktemp("swing"))
 
 
 def test_load_bound_finds_the_free_arms_overload_where_the_full_rollout_saturates(swing):
@@ -740,31 +745,14 @@ def test_load_bound_subtracts_gravity_compensation_and_springs(tmp_path):
     spring pulls it (stiffness 2 N·m/rad towards 0.3 rad): the servo carries only the rest,
     and so does the bound (it counted the whole weight and no spring: 1.62 N·m where the
     servo holds 0.21)."""
-    from scenarios import one_actuator_toml
-
-    from critmoment import recording as rollout
-    from critmoment.scenario import load_scenario
-    from critmoment.trajectory import Trajectory
-    from critmoment.twin import Twin, state_slice
+    from critmoment.twin import state_slice
 
     xml = SWING_MJCF.replace('<body name="arm" pos="0 0 0.8">',
                              '<body name="arm" pos="0 0 0.8" gravcomp="0.5">')
     xml = xml.replace('<joint name="hinge" type="hinge" axis="0 1 0"/>',
                       '<joint name="hinge" type="hinge" axis="0 1 0" stiffness="2" '
                       'springref="0.3" damping="0.1"/>')
-    (tmp_path / "scene.xml").write_text(xml)
-    (tmp_path / "scenario.toml").write_text(one_actuator_toml(
-        "swing", mjcf="scene.xml", gripper="hand", gripper_geom="pad", support="table",
-        actuator="hinge", limit=5.0, task=True, uncertainty="""[uncertainty.mass]
-body = "box"
-range = [0.05, 2.0]
-nominal = 0.05
-"""))
-    twin = Twin(load_scenario(tmp_path))
-    fps = 50.0
-    t = np.arange(30) / fps
-    rec = rollout.rollout(Trajectory(actions=np.where(t < 0.15, 0.0, -0.6)[:, None], fps=fps,
-                                     start=np.zeros(1)), twin=twin)
+    twin, rec = _swing(tmp_path, xml, target=-0.6)
     bound = dyn.trajectory_load_bound(rec, twin, masses=[0.05])
     force = np.abs(rec.signals.actuator_force[:, 0])
     steps = np.flatnonzero(force[: int(0.5 / rec.dt)] < 4.9)  # the servo not saturated
