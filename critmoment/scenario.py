@@ -1302,6 +1302,7 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         raise ScenarioError("scenario: missing [task] table; expected kind = one of handover, "
                             "pick_place, pick_hold (critmoment never guesses the task)")
     task = task_from_table(raw["task"], [g.name for g in grippers], resolve_site=site_position)
+    task = dataclasses.replace(task, up=tuple(float(v) + 0.0 for v in -_down(model)))
     if task.kind in ("pick_place", "pick_hold"):  # (a hand-over's success needs no lift)
         holder = next(g for g in grippers if g.name == task.gripper)
         _check_lift_reach(model, task.lift_height, holder, object_body, key_id)

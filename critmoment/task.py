@@ -110,11 +110,15 @@ class Task:
         grippers: names of the scenario's grippers, in signal order.
         lift_height: least rise of the object above its start that counts as a lift [m].
         settle_time: final window over which contacts are read for the success rule [s].
+        up: the world's up direction, against gravity (set from the model when a scenario
+            loads: a model with gravity along −y lifts along +y).
     """
 
     grippers: tuple[str, ...]
     lift_height: float = 0.02
     settle_time: float = 0.05
+    up: tuple[float, float, float] = dataclasses.field(default=(0.0, 0.0, 1.0),
+                                                       metadata={"json": False})
 
     kind: ClassVar[str] = ""
     stage_names: ClassVar[tuple[str, ...]] = ()
@@ -152,7 +156,7 @@ class Task:
 
     def lifted(self, ev: TaskEvidence) -> np.ndarray:
         """The object rose at least ``lift_height`` above its start at some step, (...) bool."""
-        z = ev.object_pos[..., 2]
+        z = np.asarray(ev.object_pos) @ np.asarray(self.up, dtype=float)
         if z.shape[-1] == 0:
             return np.zeros(z.shape[:-1], dtype=bool)
         return (z.max(axis=-1) - z[..., 0]) >= self.lift_height
@@ -170,6 +174,8 @@ class Task:
         out: dict[str, Any] = {"kind": self.kind, "stages": list(self.stage_names),
                                "description": self.describe()}
         for f in dataclasses.fields(self):
+            if not f.metadata.get("json", True):
+                continue
             value = getattr(self, f.name)
             out[f.name] = list(value) if isinstance(value, tuple) else value
         return out

@@ -535,8 +535,10 @@ class Twin:
         return lifted_flags(carried, self.object_height(states)[:carried.size])
 
     def object_height(self, states: np.ndarray) -> np.ndarray:
-        """The object's height [m] in integration states (T, nstate) of ``STATE_SPEC``, (T,)."""
-        return self.qpos(states)[:, self.object_qposadr + 2]
+        """The object's height [m] (along the task's up, against gravity) in integration
+        states (T, nstate) of ``STATE_SPEC``, (T,)."""
+        adr = self.object_qposadr
+        return self.qpos(states)[:, adr:adr + 3] @ np.asarray(self.task.up, dtype=float)
 
     def qpos(self, states: np.ndarray) -> np.ndarray:
         """The positions in integration states (T, nstate) of ``STATE_SPEC``, (T, nq) (a

@@ -620,3 +620,12 @@ def test_a_scenario_file_with_a_byte_order_mark_loads(tmp_path):
     path = folder / "scenario.toml"
     path.write_bytes(b"\xef\xbb\xbf" + path.read_bytes())
     assert load_scenario(folder).name == "aloha_transfer_cube"
+
+
+def test_the_tasks_up_is_against_the_models_gravity(tmp_path):
+    option = '<option timestep="0.002" integrator="implicitfast" cone="elliptic" impratio="10"/>'
+    sideways = option.replace('impratio="10"/>', 'impratio="10" gravity="0 -9.81 0"/>')
+    source = bundled_scenario_path("panda_pick_place").parent
+    folder = _copy(tmp_path, {"scene.xml": [(option, sideways)]}, source=source)
+    assert load_scenario(folder).task.up == (0.0, 1.0, 0.0)
+    assert load_scenario(source).task.up == (0.0, 0.0, 1.0)

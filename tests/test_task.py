@@ -149,3 +149,21 @@ def test_a_lift_height_for_a_handover_is_warned_unused():
                       r".*the value is not used"):
         task = task_from_table(table, ["left", "right"])
     assert isinstance(task, HandoverTask)
+
+
+def test_a_lift_is_measured_against_gravity():
+    """A model whose gravity points along −y lifts along +y: a rise in z is no lift there
+    (the rule read z whatever the model's gravity)."""
+    n = 50
+    rise = np.concatenate([np.zeros(n), np.full(n, 0.1)])
+    touch = np.ones((2 * n, 1), bool)
+    support = np.r_[np.ones(n, bool), np.zeros(n, bool)]
+    along_z = _run(rise, touch, support)
+    along_y = TaskEvidence(contact_gripper=touch, contact_support=support,
+                           object_pos=np.c_[np.zeros(2 * n), rise, np.zeros(2 * n)],
+                           object_vel=np.zeros((2 * n, 3)), dt=DT)
+    hold = PickHoldTask(grippers=("hand",), gripper="hand")
+    y_up = PickHoldTask(grippers=("hand",), gripper="hand", up=(0.0, 1.0, 0.0))
+    assert hold.lifted(along_z) and not hold.lifted(along_y)
+    assert y_up.lifted(along_y) and not y_up.lifted(along_z)
+    assert "up" not in y_up.to_json()  # the model's, not a task setting
