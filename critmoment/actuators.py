@@ -25,7 +25,9 @@ import numpy as np
 
 __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
            "gripper_gap", "closing_ends", "moves_geoms", "position_target", "body_chain",
-           "common_ancestor", "collision_geoms", "geom_pairs", "filtered_actuators"]
+           "common_ancestor", "collision_geoms", "geom_pairs", "filtered_actuators",
+           "ContactParameters", "contact_parameters", "dynamic_partners",
+           "grip_friction_sources", "source_friction"]
 
 
 def collision_geoms(model: mujoco.MjModel) -> np.ndarray:
@@ -44,6 +46,136 @@ def geom_pairs(model: mujoco.MjModel, geoms: Sequence[int]) -> np.ndarray:
     contacts between the two bodies)."""
     geoms = np.asarray(list(geoms), dtype=int)
     return np.flatnonzero(np.isin(model.pair_geom1, geoms) | np.isin(model.pair_geom2, geoms))
+
+
+@dataclasses.dataclass(frozen=True)
+class ContactParameters:
+    """The parameters of a contact between two geoms, as MuJoCo sets them.
+
+    Attributes:
+        condim: contact dimensionality.
+        friction: (5,) sliding, sliding, torsional, rolling, rolling.
+        solref: (2,) and solimp: (5,) the solver's reference and impedance.
+        margin, gap: distances [m].
+    """
+
+    condim: int
+    friction: tuple[float, ...]
+    solref: tuple[float, ...]
+    solimp: tuple[float, ...]
+    margin: float
+    gap: float
+
+
+def contact_parameters(model: mujoco.MjModel, g1: int, g2: int) -> ContactParameters:
+    """MuJoCo's parameters for a dynamic (not ``<pair>``) contact between geoms ``g1`` and
+    ``g2``: every one of the geom of higher priority, or at equal priority the larger condim,
+    the element-wise larger friction, solref and solimp weighted by ``solmix`` (the smaller
+    solref where either is a direct, negative one); margin and gap the sums of the two
+    geoms' (MuJoCo 4; its contacts' ``includemargin`` is that margin)."""
+    p1, p2 = int(model.geom_priority[g1]), int(model.geom_priority[g2])
+    if p1 != p2:
+        g = g1 if p1 > p2 else g2
+        condim = int(model.geom_condim[g])
+        fr = model.geom_friction[g]
+        solref, solimp = model.geom_solref[g], model.geom_solimp[g]
+    else:
+        condim = int(max(model.geom_condim[g1], model.geom_condim[g2]))
+        fr = np.maximum(model.geom_friction[g1], model.geom_friction[g2])
+        m1, m2 = float(model.geom_solmix[g1]), float(model.geom_solmix[g2])
+        tiny = mujoco.mjMINVAL
+        if m1 >= tiny and m2 >= tiny:
+            mix = m1 / (m1 + m2)
+        elif m1 < tiny and m2 < tiny:
+            mix = 0.5
+        else:
+            mix = 0.0 if m1 < tiny else 1.0
+        r1, r2 = model.geom_solref[g1], model.geom_solref[g2]
+        solref = (mix * r1 + (1 - mix) * r2 if r1[0] > 0 and r2[0] > 0
+                  else np.minimum(r1, r2))
+        solimp = mix * model.geom_solimp[g1] + (1 - mix) * model.geom_solimp[g2]
+    return ContactParameters(
+        condim=condim,
+        friction=(float(fr[0]), float(fr[0]), float(fr[1]), float(fr[2]), float(fr[2])),
+        solref=tuple(float(v) for v in solref), solimp=tuple(float(v) for v in solimp),
+        margin=float(model.geom_margin[g1] + model.geom_margin[g2]),
+        gap=float(model.geom_gap[g1] + model.geom_gap[g2]))
+
+
+def dynamic_partners(model: mujoco.MjModel, geom: int) -> list[int]:
+    """The geoms MuJoCo's dynamic collision may pair with ``geom``: their contype and
+    conaffinity bits match, they sit on another body that is neither welded to it nor its
+    parent (unless the parent is the world), and no ``<exclude>`` or explicit ``<pair>``
+    joins the two bodies."""
+    b = int(model.geom_bodyid[geom])
+    weld = int(model.body_weldid[b])
+    parent_weld = int(model.body_weldid[model.body_parentid[weld]])
+    filter_parent = not (model.opt.disableflags & mujoco.mjtDisableBit.mjDSBL_FILTERPARENT)
+    skip = set(model.exclude_signature.tolist()) | set(model.pair_signature.tolist())
+    out = []
+    for x in range(model.ngeom):
+        bx = int(model.geom_bodyid[x])
+        if bx == b or not (model.geom_contype[geom] & model.geom_conaffinity[x]
+                           or model.geom_contype[x] & model.geom_conaffinity[geom]):
+            continue
+        wx = int(model.body_weldid[bx])
+        if wx == weld:
+            continue
+        if filter_parent and weld != 0 and wx != 0 and (
+                wx == parent_weld or weld == int(model.body_weldid[model.body_parentid[wx]])):
+            continue
+        lo, hi = sorted((b, bx))
+        if (lo << 16) + hi in skip:
+            continue
+        out.append(x)
+    return out
+
+
+def grip_friction_sources(model: mujoco.MjModel, object_body: int, pad_geoms: Sequence[int]
+                          ) -> list[tuple[str, tuple[int, ...]]]:
+    """Where the sliding friction of each contact the object's geoms can make with
+    ``pad_geoms`` comes from: an explicit pair (``("pair", (p,))``), the geom of higher
+    priority (``("geom", (g,))``) or, at equal priority, the larger of the two (``("max",
+    (g1, g2))``). Bodies joined by an explicit pair have no other contacts (MuJoCo skips
+    their dynamic ones). None found: the object geom's own."""
+    colliding = collision_geoms(model)
+    obj = [int(g) for g in np.flatnonzero(model.geom_bodyid == object_body) if colliding[g]]
+    pads = sorted({int(g) for g in pad_geoms})
+    sources = []
+    for o in obj:
+        partners = set(dynamic_partners(model, o))
+        for g in pads:
+            pair = [p for p in geom_pairs(model, [o])
+                    if {int(model.pair_geom1[p]), int(model.pair_geom2[p])} == {o, g}]
+            if pair:
+                sources.append(("pair", (int(pair[0]),)))
+            elif g not in partners:
+                continue
+            elif model.geom_priority[o] != model.geom_priority[g]:
+                top = o if model.geom_priority[o] > model.geom_priority[g] else g
+                sources.append(("geom", (top,)))
+            else:
+                sources.append(("max", (o, g)))
+    return sorted(set(sources)) or [("geom", (obj[0] if obj else 0,))]
+
+
+def source_friction(sources: Sequence[tuple[str, tuple[int, ...]]], geom_friction: np.ndarray,
+                    pair_friction: np.ndarray) -> np.ndarray:
+    """The lowest sliding friction over ``sources`` (:func:`grip_friction_sources`), per
+    simulation, from ``geom_friction`` (n, ngeom, 3) and ``pair_friction`` (n, npair, 5)
+    (n may be 1 for either)."""
+    geom, pair = np.asarray(geom_friction), np.asarray(pair_friction)
+    n = max(geom.shape[0], pair.shape[0])
+    values = []
+    for kind, ids in sources:
+        if kind == "pair":
+            values.append(np.broadcast_to(pair[:, ids[0], 0], (n,)))
+        elif kind == "geom":
+            values.append(np.broadcast_to(geom[:, ids[0], 0], (n,)))
+        else:
+            values.append(np.broadcast_to(np.maximum(geom[:, ids[0], 0], geom[:, ids[1], 0]),
+                                          (n,)))
+    return np.min(values, axis=0)
 
 
 class ActuatorKind(enum.Enum):

@@ -31,6 +31,7 @@ from collections.abc import Sequence
 import mujoco
 import numpy as np
 
+from critmoment import actuators as act_info
 from critmoment.exceptions import CritmomentWarning, ParameterError
 
 __all__ = [
@@ -146,20 +147,13 @@ class ContactModelReport:
 
 def _pair_parameters(model: mujoco.MjModel, g1: int, g2: int) -> tuple[np.ndarray, np.ndarray]:
     """Effective solref (2,) and solimp (5,) of a contact between geoms g1 and g2: an
-    explicit ``<pair>`` wins, else MuJoCo's mix (solmix-weighted solref, solimp from the
-    geom of higher priority or mixed)."""
+    explicit ``<pair>`` wins, else MuJoCo's rule
+    (:func:`critmoment.actuators.contact_parameters`)."""
     for p in range(model.npair):
         if {int(model.pair_geom1[p]), int(model.pair_geom2[p])} == {g1, g2}:
             return model.pair_solref[p].copy(), model.pair_solimp[p].copy()
-    pr1, pr2 = model.geom_priority[g1], model.geom_priority[g2]
-    if pr1 != pr2:
-        g = g1 if pr1 > pr2 else g2
-        return model.geom_solref[g].copy(), model.geom_solimp[g].copy()
-    m1, m2 = model.geom_solmix[g1], model.geom_solmix[g2]
-    w = 0.5 if m1 + m2 <= 0 else m1 / (m1 + m2)
-    solref = w * model.geom_solref[g1] + (1 - w) * model.geom_solref[g2]
-    solimp = w * model.geom_solimp[g1] + (1 - w) * model.geom_solimp[g2]
-    return solref, solimp
+    mixed = act_info.contact_parameters(model, g1, g2)
+    return np.array(mixed.solref), np.array(mixed.solimp)
 
 
 def inspect_contact_model(model: mujoco.MjModel, *, object_geom: str | int,

@@ -540,14 +540,16 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
             lines.append(f"# {a.name} = {lim:g}   (from the MJCF)")
     mass = float(obj["mass"])
     mu = float(model.geom_friction[model.geom(object_geom).id, 0])
-    # explicit <pair>s between the object and a gripper set the grip's friction themselves
-    pads = {model.geom(name).id for g in grippers for name in g.geoms}
-    pairs = [p for p in act_info.geom_pairs(model, [model.geom(object_geom).id])
-             if {int(model.pair_geom1[p]), int(model.pair_geom2[p])} & pads]
-    if pairs:
-        mu = float(model.pair_friction[pairs, 0].min())
-        guesses.append(f"nominal friction {mu:g}: the sliding friction of the object's "
-                       f"explicit contact pairs with the gripper (the parameter sets theirs)")
+    # what the model's grip contacts really use: explicit pairs' friction, or the pads' own
+    # where they have the higher priority, or the larger of the two
+    pads = [model.geom(name).id for g in grippers for name in g.geoms]
+    grip = float(act_info.source_friction(
+        act_info.grip_friction_sources(model, bid, pads), model.geom_friction[None],
+        model.pair_friction[None])[0])
+    if grip != mu:
+        mu = grip
+        guesses.append(f"nominal friction {mu:g}: what the model's grip contacts use (not "
+                       f"the object geom's own {float(model.geom_friction[model.geom(object_geom).id, 0]):g})")
     # the box reaches up to the model's own friction (a grippy pair of 2.5), within reason
     mu_hi = min(max(1.5, mu), 10.0)
     mu_nom = min(max(mu, 0.2), mu_hi)

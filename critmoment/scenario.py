@@ -819,14 +819,53 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
         if body is not None:
             own = _rigid_geoms(body)
             if any(g.name in friction_geoms for g in own):
-                top = max((g.priority for g in geoms), default=0)
-                for g in own:
-                    g.priority = top + 1
+                _govern_object_friction(spec, own)
     for name in com_bodies:
         body = spec.body(name)
         if body is not None:
             body.simple = 0
     return spec
+
+
+def _govern_object_friction(spec: mujoco.MjSpec, own: list) -> None:
+    """Make the object's friction the friction of every contact it makes, and change nothing
+    else about those contacts.
+
+    Where the object's geoms already set every parameter of their contacts (they have the
+    highest priority, or their partners' parameters equal theirs), they get a priority above
+    every other geom. Otherwise raising it would also hand the object's condim, solref and
+    solimp to contacts whose own are different (a stiff fingertip's solref 0.004 became the
+    object's 0.02): each contact the object can make becomes an explicit ``<pair>`` with the
+    parameters MuJoCo gives it (:func:`critmoment.actuators.contact_parameters`), whose
+    sliding friction the friction parameter then writes."""
+    try:
+        model = spec.compile()
+    except Exception:  # noqa: BLE001 - the caller's compile reports it, with the names
+        return
+    ids = [model.geom(g.name).id for g in own]
+    combos, same = [], True
+    for g in ids:
+        if not (model.geom_contype[g] or model.geom_conaffinity[g]):
+            continue
+        fr = model.geom_friction[g]
+        for x in act_info.dynamic_partners(model, g):
+            mixed = act_info.contact_parameters(model, g, x)
+            combos.append((g, x, mixed))
+            same &= (mixed.condim == int(model.geom_condim[g])
+                     and mixed.friction == (fr[0], fr[0], fr[1], fr[2], fr[2])
+                     and mixed.solref == tuple(model.geom_solref[g])
+                     and mixed.solimp == tuple(model.geom_solimp[g]))
+    if same:
+        top = max((g.priority for g in spec.geoms), default=0)
+        for g in own:
+            g.priority = top + 1
+        return
+    for g, x, mixed in combos:
+        spec.add_pair(name=f"{GENERATED}pair:{model.geom(g).name}:{model.geom(x).name}",
+                      geomname1=model.geom(g).name, geomname2=model.geom(x).name,
+                      condim=mixed.condim, friction=list(mixed.friction),
+                      solref=list(mixed.solref), solimp=list(mixed.solimp),
+                      margin=mixed.margin, gap=mixed.gap)
 
 
 def _rigid_geoms(body) -> list:

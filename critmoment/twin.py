@@ -249,51 +249,47 @@ class Twin:
                         f" at the start); expected a range the simulation holds")
 
     def _warn_replaced_pairs(self, model: mujoco.MjModel) -> None:
+        """Warn where the friction parameter's nominal replaces the friction the model's own
+        grip contacts have: an explicit pair's in the MJCF, or the one MuJoCo's rule gives
+        a contact critmoment made a pair of (``critmoment:pair:``)."""
+        from critmoment.scenario import GENERATED
+
         box = self.scenario.box
+        pads = {model.geom(name).id for grip in self.scenario.grippers for name in grip.geoms}
         for p, pairs, nominal in zip(box.parameters, self._param_pairs, box.nominal,
                                      strict=True):
-            own = model.pair_friction[pairs, 0]
-            if pairs.size and not np.allclose(own, nominal):
-                each = ", ".join(
-                    f"{model.geom(int(model.pair_geom1[i])).name}–"
-                    f"{model.geom(int(model.pair_geom2[i])).name} {f:g}"
-                    for i, f in zip(pairs, own, strict=True))
-                warnings.warn(
-                    f"[uncertainty.{p.name}]: explicit contact pairs of its geom(s) set their "
-                    f"own friction in the MJCF ({each}), which MuJoCo uses instead of the "
-                    f"geoms'; the parameter sets those pairs' sliding friction too, so the "
-                    f"audited runs use its nominal {nominal:g} there (set the nominal to the "
-                    f"pairs' value to audit the model's own contacts)", CritmomentWarning,
-                    stacklevel=4)
+            grip = [i for i in pairs
+                    if {int(model.pair_geom1[i]), int(model.pair_geom2[i])} & pads]
+            shown = grip or list(pairs)
+            own = model.pair_friction[shown, 0]
+            if not shown or np.allclose(own, nominal):
+                continue
+            made = all(model.pair(int(i)).name.startswith(GENERATED) for i in shown)
+            values = sorted({round(float(f), 6) for f in own})
+            # the ones the nominal changes, named geoms first
+            differ = [i for i, f in zip(shown, own, strict=True) if not np.isclose(f, nominal)]
+            shown = sorted(differ, key=lambda i: (
+                model.geom(int(model.pair_geom1[i])).name.startswith(GENERATED)
+                + model.geom(int(model.pair_geom2[i])).name.startswith(GENERATED), i))
+            own = model.pair_friction[shown, 0]
+            each = ", ".join(
+                f"{model.geom(int(model.pair_geom1[i])).name}–"
+                f"{model.geom(int(model.pair_geom2[i])).name} {f:g}"
+                for i, f in zip(shown[:4], own[:4], strict=True))
+            more = f" and {len(shown) - 4} more" if len(shown) > 4 else ""
+            source = ("by MuJoCo's rule for the two geoms (the gripper's have the higher "
+                      "priority, or the larger friction)" if made else
+                      "from explicit <pair>s in the MJCF")
+            warnings.warn(
+                f"[uncertainty.{p.name}]: the model's {'grip ' if grip else ''}contacts have "
+                f"sliding friction {', '.join(f'{v:g}' for v in values)} ({each}{more}), "
+                f"{source}; the parameter sets them, so the audited runs use its nominal "
+                f"{nominal:g} there (set the nominal to the model's value to audit the model "
+                f"as it is)", CritmomentWarning, stacklevel=4)
 
     def _friction_sources(self, model: mujoco.MjModel) -> list[tuple[str, tuple[int, ...]]]:
-        """Where the friction of each contact between the object and a gripper comes from:
-        an explicit pair (``("pair", (p,))``), the geom of higher priority (``("geom",
-        (g,))``) or, at equal priority, the larger of the two (``("max", (g1, g2))``). Bodies
-        joined by an explicit pair have no other contacts (MuJoCo skips their dynamic ones)."""
-        colliding = act_info.collision_geoms(model)
-        obj = [g for g in np.flatnonzero(model.geom_bodyid == self.object_body_id)
-               if colliding[g]]
-        pads = {model.geom(name).id for grip in self.scenario.grippers for name in grip.geoms}
-        signatures = set(model.pair_signature.tolist())
-        sources = []
-        for o in obj:
-            for g in sorted(pads):
-                pair = [p for p in act_info.geom_pairs(model, [o])
-                        if {int(model.pair_geom1[p]), int(model.pair_geom2[p])} == {o, g}]
-                b1, b2 = sorted((int(model.geom_bodyid[o]), int(model.geom_bodyid[g])))
-                if pair:
-                    sources.append(("pair", (pair[0],)))
-                elif (b1 << 16) + b2 in signatures or not (
-                        model.geom_contype[o] & model.geom_conaffinity[g]
-                        or model.geom_contype[g] & model.geom_conaffinity[o]):
-                    continue
-                elif model.geom_priority[o] != model.geom_priority[g]:
-                    top = o if model.geom_priority[o] > model.geom_priority[g] else g
-                    sources.append(("geom", (int(top),)))
-                else:
-                    sources.append(("max", (int(o), int(g))))
-        return sorted(set(sources)) or [("geom", (self.object_geom_id,))]
+        pads = [model.geom(name).id for grip in self.scenario.grippers for name in grip.geoms]
+        return act_info.grip_friction_sources(model, self.object_body_id, pads)
 
     def grip_friction(self, geom_friction: np.ndarray | None = None,
                       pair_friction: np.ndarray | None = None) -> np.ndarray:
@@ -317,16 +313,7 @@ class Twin:
         n = max(geom.shape[0], pair.shape[0])
         if self.model.opt.enableflags & mujoco.mjtEnableBit.mjENBL_OVERRIDE:
             return np.full(n, float(self.model.opt.o_friction[0]))  # every contact's
-        values = []
-        for kind, ids in self._grip_sources:
-            if kind == "pair":
-                values.append(np.broadcast_to(pair[:, ids[0], 0], (n,)))
-            elif kind == "geom":
-                values.append(np.broadcast_to(geom[:, ids[0], 0], (n,)))
-            else:
-                values.append(np.broadcast_to(np.maximum(geom[:, ids[0], 0],
-                                                         geom[:, ids[1], 0]), (n,)))
-        return np.min(values, axis=0)
+        return act_info.source_friction(self._grip_sources, geom, pair)
 
     def _targets(self, p, index: int, model: mujoco.MjModel) -> tuple[int, ...]:
         """The ids parameter ``p`` (resolved to ``index``) writes."""

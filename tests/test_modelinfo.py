@@ -322,9 +322,10 @@ def test_a_scenario_whose_only_hinges_are_fingers_is_an_error(tmp_path):
 
 
 def test_init_names_a_round_objects_largest_geom(tmp_path):
-    """A cylinder with a small box knob: the cylinder is the object geom (its friction is
-    the nominal), though a cylinder's third size entry is 0 (the volumes of the geoms'
-    bounding boxes decide, not the product of ``geom_size``)."""
+    """A cylinder with a small box knob: the cylinder is the object geom, though a
+    cylinder's third size entry is 0 (the volumes of the geoms' bounding boxes decide, not
+    the product of ``geom_size``). The nominal friction is what the grip's contacts use:
+    MuJoCo's larger of the object's 0.9 and the fingers' default 1."""
     text = arm_xml(gripper="slides").replace(
         '<geom name="cube" type="box" size="0.02 0.02 0.02" mass="0.1" friction="0.8"/>',
         '<geom name="body" type="cylinder" size="0.02 0.02" mass="0.1" friction="0.9"/>\n'
@@ -337,7 +338,7 @@ def test_init_names_a_round_objects_largest_geom(tmp_path):
     sc = load_scenario(tmp_path / "cyl.toml")
     assert sc.object_geom == "body"
     friction = next(p for p in sc.box.parameters if p.name == "friction")
-    assert friction.nominal == pytest.approx(0.9)
+    assert friction.nominal == pytest.approx(1.0)
 
 
 def test_an_object_whose_geoms_hang_on_a_child_body_is_refused(tmp_path):
@@ -368,7 +369,7 @@ def test_an_object_whose_geoms_hang_on_a_child_body_is_refused(tmp_path):
 def test_an_objects_fixed_parts_merge_with_fusestatic(tmp_path):
     """A part fixed to the object (no joint between, as gymnasium-robotics' kitchen kettle):
     the error says how MuJoCo merges it; with ``fusestatic`` the scenario loads and the
-    part's geom, now the object's, gets the priority its friction parameter needs. A part
+    part's geom, now the object's, has its contacts set by its friction parameter. A part
     on a joint of its own is an articulated object: refused as such."""
     shell = ('<geom name="core" type="sphere" size="0.002" mass="0.01"/>\n'
              '      <body name="shell">{joint}<geom name="cube" type="box" size="0.02 0.02 0.02" '
@@ -388,8 +389,10 @@ def test_an_objects_fixed_parts_merge_with_fusestatic(tmp_path):
     model = Twin(sc).model
     box = model.geom("cube").id
     assert model.geom_bodyid[box] == model.body("cube").id
-    others = [g for g in range(model.ngeom) if model.geom_bodyid[g] != model.body("cube").id]
-    assert model.geom_priority[box] > model.geom_priority[others].max()
+    # its contacts' friction is the parameter's: explicit pairs (the fingers' friction 1
+    # is above the part's 0.8, so raising its priority would change the contacts)
+    pairs = act_info.geom_pairs(model, [box])
+    assert pairs.size and (model.pair_friction[pairs, 0] == 1.0).all()
     hinged = arm_xml(gripper="slides").replace(
         plain, shell.format(joint='<joint name="lid" type="hinge"/>'))
     (tmp_path / "hinged.xml").write_text(hinged)
@@ -471,3 +474,40 @@ def test_init_maps_joint_targets_through_a_geared_servos_gear(tmp_path):
     data = twin.initial_data(start=np.array([0.02, -0.03, 1.0]))  # (ranges ±3°)
     assert data.ctrl[1] == pytest.approx(-0.06)
     assert data.qpos[twin.model.joint("elbow").qposadr[0]] == pytest.approx(-0.03)
+
+
+def test_contact_parameters_are_the_ones_mujoco_gives_its_contacts():
+    """MuJoCo's rule for two geoms' contact (priority, else max condim and friction,
+    solmix-weighted solver parameters, the smaller of two direct solrefs, summed margins),
+    checked against the contacts MuJoCo makes."""
+    boxes = [
+        'priority="1" condim="4" friction="0.3 0.01 0.001" solref="0.004 1"',
+        'condim="1" friction="2 0.02 0.002" solmix="3" solimp="0.8 0.9 0.002 0.4 3"',
+        'condim="6" friction="0.1 0.2 0.3" solmix="0" solref="0.03 0.7"',
+        'solref="-5000 -50" margin="0.002" gap="0.001"',
+        'priority="-1" friction="5 5 5"',
+    ]
+    bodies = "".join(
+        f'<body pos="{0.2 * i} 0 0.05"><freejoint/><geom name="b{i}" type="box" '
+        f'size="0.02 0.02 0.02" {attrs}/></body>' for i, attrs in enumerate(boxes))
+    model = mujoco.MjModel.from_xml_string(f"""
+<mujoco><worldbody>
+  <geom name="floor" type="plane" size="2 2 0.1" friction="0.7 0.05 0.005" solmix="1"
+        solref="0.01 0.9" solimp="0.95 0.99 0.001 0.5 2" condim="3" margin="0.001"/>
+  {bodies}
+</worldbody></mujoco>""")
+    data = mujoco.MjData(model)
+    for _ in range(200):
+        mujoco.mj_step(model, data)
+    floor = model.geom("floor").id
+    seen = set()
+    for c in data.contact[:data.ncon]:
+        box = c.geom2 if c.geom1 == floor else c.geom1
+        want = act_info.contact_parameters(model, floor, box)
+        assert c.dim == want.condim
+        np.testing.assert_allclose(c.friction, want.friction, rtol=0, atol=1e-15)
+        np.testing.assert_allclose(c.solref, want.solref, rtol=0, atol=1e-15)
+        np.testing.assert_allclose(c.solimp, want.solimp, rtol=0, atol=1e-15)
+        assert c.includemargin == pytest.approx(want.margin, abs=1e-15)
+        seen.add(model.geom(box).name)
+    assert seen == {f"b{i}" for i in range(len(boxes))}

@@ -292,14 +292,33 @@ def test_named_parameter_with_kind(tmp_path):
 
 
 def test_friction_parameter_works_on_the_model_as_shipped(tmp_path):
-    # the shipped MJCF gives the cube no priority: MuJoCo would mix friction with max() and
-    # the parameter could not lower it; critmoment's own copy raises the cube's priority
+    """The shipped MJCF gives the cube no priority: MuJoCo would mix friction with max() and
+    the parameter could not lower it. Raising the cube's priority would also give its
+    condim and solver parameters to every contact it makes, so critmoment's copy makes each
+    of the cube's contacts an explicit pair with the parameters MuJoCo gives it, and the
+    parameter writes their friction."""
+    import mujoco
+
+    from critmoment import actuators as act_info
+
     folder = _copy(tmp_path, {"scene.xml": [('priority="1"', 'priority="0"')]})
-    s = load_scenario(folder)
-    model = s.load_model()
+    plain = mujoco.MjModel.from_xml_path(str(folder / "scene.xml"))
+    twin = Twin(load_scenario(folder))
+    model = twin.copy_model()
     box = model.geom("box").id
-    others = [i for i in range(model.ngeom) if i != box]
-    assert model.geom_priority[box] > model.geom_priority[others].max()
+    partners = act_info.dynamic_partners(plain, plain.geom("box").id)
+    assert len(act_info.geom_pairs(model, [box])) == len(partners) > 10
+    assert model.geom_priority[box] == 0
+    twin.write_parameters(model, [[0.05, 0.3]])
+    data = twin.initial_data(start=np.zeros(14), model=model)
+    mujoco.mj_forward(model, data)
+    table = [c for c in data.contact[:data.ncon] if box in (c.geom1, c.geom2)]
+    assert table
+    mixed = act_info.contact_parameters(plain, plain.geom("box").id, plain.geom("table").id)
+    for c in table:
+        assert c.friction[0] == c.friction[1] == 0.3
+        assert tuple(c.solref) == mixed.solref and tuple(c.solimp) == mixed.solimp
+        assert c.dim == mixed.condim
 
 
 def test_friction_parameter_on_a_geom_that_never_wins_is_rejected(tmp_path):

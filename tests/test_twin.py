@@ -301,7 +301,8 @@ def test_a_friction_parameter_writes_the_explicit_pairs_too(tmp_path):
     theta, pair_mu = 35.0, 0.9  # tan 35° = 0.70: the pair's 0.9 would hold the box
     folder = _write(tmp_path / "mu", {"slope.xml": _slope_xml(theta, 3, pair_mu),
                                       "scenario.toml": SLOPE_TOML})
-    with pytest.warns(UserWarning, match=r"explicit contact pairs .*box 0\.9.* nominal 0\.5"):
+    with pytest.warns(UserWarning, match=r"sliding friction 0\.9 \(slope–box 0\.9\), from "
+                      r"explicit <pair>s in the MJCF.* nominal 0\.5"):
         twin = Twin(load_scenario(folder))
     assert twin.model.pair_friction[0, 0] == twin.model.pair_friction[0, 1] == SLOPE_MU
     assert twin.object_friction() == SLOPE_MU
