@@ -138,7 +138,7 @@ def cmd_demo(args) -> int:
 
 def cmd_rollout(args) -> int:
     from critmoment import report
-    from critmoment.feasibility import FitWarning, check_fit
+    from critmoment.feasibility import FitWarning, check_feasibility, check_fit
     from critmoment.recording import rollout
 
     with _staged(args, "rollout") as out:
@@ -148,9 +148,13 @@ def cmd_rollout(args) -> int:
         # the run's own fit (an object never touched, a gripper that never closes, a
         # start inside the table): the likely reason a run does not complete its task
         fit = check_fit(traj, rec, twin)
-        for msg in fit:
+        # what analyze would refuse the run for (a joint that cannot follow, a force that
+        # oscillates), said here as warnings: the run itself is what was asked for
+        infeasible = check_feasibility(rec, twin, raise_on_failure=False).problems
+        for msg in (*fit, *infeasible):
             warnings.warn(msg, FitWarning, stacklevel=1)
-        summary = {**rec.summary(), "fit_warnings": list(fit)}
+        summary = {**rec.summary(), "fit_warnings": list(fit),
+                   "feasibility_problems": list(infeasible)}
         if out is not None:
             rec.save(out / "recording.npz")
             fig = report.plot_recording(rec)

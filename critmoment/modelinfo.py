@@ -109,8 +109,12 @@ class ModelInfo:
             ctrl = (f"ctrl {a.ctrlrange[0]:g}..{a.ctrlrange[1]:g}" if a.ctrlrange
                     else "ctrl unlimited")
             force = f"force limit {lim:g}" if lim is not None else "no force limit"
-            lines.append(f"  {a.name}: {a.kind.value} on {a.transmission} {a.target} "
-                         f"{('(' + a.joint_type + ')') if a.joint_type else ''}, {ctrl}, {force}")
+            if lim is None and a.kind is act_info.ActuatorKind.MOTOR and a.ctrlrange:
+                # a torque command's range bounds its force (× the gear)
+                force = f"force at most {max(abs(v) for v in a.ctrlrange) * abs(a.gain):g} (ctrl × gear)"
+            joint = f" ({a.joint_type})" if a.joint_type else ""
+            lines.append(f"  {a.name}: {a.kind.value} on {a.transmission} {a.target}{joint}, "
+                         f"{ctrl}, {force}")
         lines.append(f"gripper candidates ({len(self.grippers)}):")
         for g in self.grippers:
             lines.append(f"  {g.name}: body {g.body}, actuators {', '.join(g.actuators)} "

@@ -331,3 +331,20 @@ def test_a_trajectory_naming_an_unknown_scenario_is_warned_of(traj_file, tmp_pat
     assert main(["rollout", str(path)]) == 0
     err = capsys.readouterr().err
     assert "meta names scenario 'my_robot', which is not a bundled one" in err
+
+
+def test_rollout_warns_of_what_analyze_would_refuse(traj_file, tmp_path, capsys):
+    """A shoulder limit the motion exceeds: analyze exits 2 (the twin cannot follow);
+    rollout runs what was asked, exit 0, and says so (it said nothing)."""
+    import shutil
+
+    from critmoment.scenario import bundled_scenario_path
+
+    folder = tmp_path / "weak"
+    shutil.copytree(bundled_scenario_path().parent, folder)
+    toml = folder / "scenario.toml"
+    toml.write_text(toml.read_text().replace("shoulder = 20.0", "shoulder = 2.0"))
+    assert main(["rollout", str(traj_file), "--scenario", str(folder), "--json"]) == 0
+    out, err = capsys.readouterr()
+    assert "cannot reproduce the nominal motion: actuator 'right/shoulder'" in err
+    assert any("right/shoulder" in p for p in json.loads(out)["feasibility_problems"])
