@@ -205,7 +205,7 @@ class AuditReport:
         verification: the verification stage's summary (``fraction``, ``cost_from``,
             ``rollouts``, ``failed``, ``near``, ``unlifted``, ... and ``region``, the safe
             region's check), or None when it did not run.
-        region_check: the check of the stated safe region on its corners and edges
+        region_check: the check of the stated safe region on its corners, edges and inside
             (:func:`check_region`), or None when no region was claimed.
         feasibility: the twin's feasibility and the trajectory's fit on the nominal rollout
             (:func:`critmoment.feasibility.preflight`), or None when not checked.
@@ -892,11 +892,14 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
                  margin: float = 0.01, max_rounds: int = 4,
                  reference: NominalReference | None = None,
                  every_point: bool = True) -> vd.RegionCheck:
-    """Check a claimed safe region on its corners and edges, and shrink it until it holds.
+    """Check a claimed safe region on its corners, edges and inside, and shrink it until it
+    holds.
 
     Each round evaluates the region's corners and edges (:func:`critmoment.verdict.
     region_points`, ``per_edge`` points per edge, corners included, 4× denser on edges where
-    the cost comes within ``verify × threshold``, unless a coarse point already fails) by
+    the cost comes within ``verify × threshold``, unless a coarse point already fails) and
+    points inside it (:func:`critmoment.verdict.interior_points`: an outcome need not be
+    monotone in the parameters) by
     sparse evaluation at the audit's moments. While a point fails there in a way sparse
     evaluation decides alone, the region shrinks at once. Once none does, every point is
     decided as a sample of the sweep is, by :func:`sample_runs` and
@@ -949,12 +952,15 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         if current is None:
             break
         rounds = rnd
+        inside = vd.interior_points(current, box)
         pts, edges = vd.region_points(current, box, per_edge=per_edge)
+        pts = np.vstack([pts, inside])
         res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
         n_sparse += pts.shape[0]
         hot = vd.hot_edges(edges, res.worst_cost(), near=near_cost)
         if hot and not (_sparse_fails(res, options).any() and rnd < max_rounds):
             pts, edges = vd.region_points(current, box, per_edge=per_edge, dense=hot)
+            pts = np.vstack([pts, inside])
             res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
             n_sparse += pts.shape[0]
         rolled, chained = np.zeros(pts.shape[0], bool), np.zeros(pts.shape[0], bool)
@@ -987,12 +993,14 @@ def _own_run_points(pts: np.ndarray, region: Mapping[str, tuple[float, float]], 
                     per_edge: int, res: sp.SparseResult, options: vd.DecisionOptions,
                     every_point: bool) -> np.ndarray:
     """(p,) bool: the checked points decided on their own run. With ``every_point``, all;
-    else the corners and the coarse edge points (``per_edge`` per edge), and the points
-    between them the sweep's path would roll out (a pass within ``verify × threshold``, a
-    failure only a rollout decides); the others keep their sparse decision."""
+    else the corners, the coarse edge points (``per_edge`` per edge) and the interior
+    points, and the points between them the sweep's path would roll out (a pass within
+    ``verify × threshold``, a failure only a rollout decides); the others keep their sparse
+    decision."""
     if every_point:
         return np.ones(pts.shape[0], bool)
     coarse, _ = vd.region_points(region, box, per_edge=per_edge)
+    coarse = np.vstack([coarse, vd.interior_points(region, box)])
     scale = np.maximum(np.abs(box.high - box.low), 1e-300)
     near = np.abs(pts[:, None, :] - coarse[None, :, :]) <= 1e-9 * scale
     own = near.all(axis=2).any(axis=1)

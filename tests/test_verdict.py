@@ -369,7 +369,7 @@ def test_decide_asks_for_the_region_check_then_states_it_with_its_evidence():
     final = vd.decide(vd.Evidence(**{**ev.__dict__, "region": check}), OPT)
     assert final.safe_region == first.region_to_check
     assert final.safe_region_text.startswith("safe for mass ≤")
-    assert (f"checked at {len(pts)} points of its corners and edges by sparse evaluation and "
+    assert (f"checked at {len(pts)} points of its corners, edges and inside by sparse evaluation and "
             f"on each point's own run: {len(pts) - 4} chained through the moments, 4 full "
             "rollouts") in final.safe_region_text
     assert check.to_json()["own_runs_last_round"] == len(pts)
