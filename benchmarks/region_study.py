@@ -4,9 +4,10 @@
 
 For each case the audit (``critmoment.analysis.analyze``, Sobol seed = the trajectory's
 seed) states a safe sub-box of the uncertainty box, or none. Where it states one, the
-region's corners and ``--per-edge`` points per edge (``verdict.region_points``) are run in
-full (``groundtruth.brute_force``), and every point whose real run fails is listed with its
-parameter values and outcome. Cases:
+region's corners, ``--per-edge`` points per edge (``verdict.region_points``) and
+``--inside`` points inside it (a scrambled Sobol set, seed 7, not the audit's own inside
+points) are run in full (``groundtruth.brute_force``), and every point whose real run fails
+is listed with its parameter values and outcome. Cases:
 
 * ``aloha``: the bundled ALOHA scenario, ``demos.scripted_transfer(seed)`` for seeds 0-9,
   128 samples;
@@ -31,6 +32,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+from scipy.stats import qmc
 
 import critmoment as cm
 from critmoment import demos, panda_demo
@@ -86,7 +88,7 @@ def build_cases(quick: bool, xarm_dir: Path | None) -> list[Case]:
     return cases
 
 
-def study(case: Case, per_edge: int) -> dict:
+def study(case: Case, per_edge: int, inside: int = 16) -> dict:
     t_start = time.perf_counter()
     trajectory = case.make_trajectory()
     report = analyze(trajectory, twin=case.twin,
@@ -110,6 +112,11 @@ def study(case: Case, per_edge: int) -> dict:
     if report.safe_region is not None:
         box = case.twin.scenario.box
         points, _ = vd.region_points(report.safe_region, box, per_edge=per_edge)
+        lo = np.array([report.safe_region[n][0] for n in box.names])
+        hi = np.array([report.safe_region[n][1] for n in box.names])
+        u = qmc.Sobol(d=box.ndim, scramble=True, seed=7).random(inside) if inside else None
+        if u is not None:
+            points = np.vstack([points, lo + u * (hi - lo)])
         truth = brute_force(trajectory, twin=case.twin, samples=points, nthread=0)
         result["rollout_points"] = int(points.shape[0])
         result["nominal_completed"] = bool(truth.nominal_completed)
@@ -139,6 +146,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quick", action="store_true", help="seed 0 of each case, no xarm")
+    parser.add_argument("--inside", type=int, default=16,
+                        help="points inside each stated region, run in full (default 16)")
     parser.add_argument("--per-edge", type=int, default=5,
                         help="points per edge of the region, corners included")
     parser.add_argument("--xarm", type=Path, default=Path("/tmp/probeA/xarm"),
@@ -149,7 +158,7 @@ def main() -> None:
     xarm_dir = args.xarm if args.xarm.is_dir() else None
     results = {}
     for case in build_cases(args.quick, xarm_dir):
-        results[case.name] = study(case, args.per_edge)
+        results[case.name] = study(case, args.per_edge, args.inside)
         print(format_line(case.name, results[case.name]), flush=True)
     with_region = [r for r in results.values() if r["safe_region"] is not None]
     print(f"cases {len(results)}, with a stated region {len(with_region)}, points rolled out "
