@@ -584,7 +584,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
                                         nominal_completed=rec.completed,
                                         exhaustive=opt.exhaustive, nthread=opt.nthread,
                                         reference=roll.nominal(),
-                                        every_point=bool((failed & runs.chained).any()))
+                                        every_point=bool((failed & runs.chained).any()),
+                                        known=samples[(runs.chained | runs.rerun) & ~failed])
         decision = vd.decide(dataclasses.replace(evidence, region=region_check), dopt)
         if verification is not None:
             verification["region"] = region_check.to_json()
@@ -891,7 +892,7 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
                  exhaustive: bool = False, nthread: int = 0, per_edge: int = 3,
                  margin: float = 0.01, max_rounds: int = 4,
                  reference: NominalReference | None = None,
-                 every_point: bool = True) -> vd.RegionCheck:
+                 every_point: bool = True, known: np.ndarray | None = None) -> vd.RegionCheck:
     """Check a claimed safe region on its corners, edges and inside, and shrink it until it
     holds.
 
@@ -935,6 +936,9 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
             sparse evaluation (:func:`analyze` asks for every point where a sample that
             passed its sparse evaluation failed on its own run: there the sparse passes do
             not stand for the runs).
+        known: parameter values (m, k) that already passed on their own runs (the sweep's
+            chained or rolled-out samples): those inside a round's region stand for as many
+            of its inside points (:func:`critmoment.verdict.interior_points`).
 
     Returns:
         The :class:`~critmoment.verdict.RegionCheck`.
@@ -953,6 +957,10 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
             break
         rounds = rnd
         inside = vd.interior_points(current, box)
+        # the sweep's samples in the region that passed on their own runs are checked points
+        # inside it already: as many fewer new ones
+        n_known = int(vd.within(known, current, box).sum()) if known is not None else 0
+        inside = inside[:max(0, inside.shape[0] - n_known)]
         pts, edges = vd.region_points(current, box, per_edge=per_edge)
         pts = np.vstack([pts, inside])
         res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
@@ -981,7 +989,8 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         if not fails.any():
             return vd.RegionCheck(region=current, points=pts, failed=fails, rolled_out=rolled,
                                   rounds=rnd, n_sparse=n_sparse, n_rollouts=n_rollouts,
-                                  n_chained=n_chained, chained=chained, first_claim=first)
+                                  n_chained=n_chained, chained=chained, first_claim=first,
+                                  known_inside=n_known)
         current = vd.round_inward(vd.shrink_region(current, pts[fails], box, sides,
                                                    margin=margin, passing=pts[~fails]), box)
     return vd.RegionCheck(region=None, points=pts, failed=fails, rolled_out=rolled,

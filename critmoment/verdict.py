@@ -65,6 +65,7 @@ __all__ = [
     "fail_sides",
     "safe_subbox",
     "interior_points",
+    "within",
     "candidate_region",
     "region_points",
     "hot_edges",
@@ -745,6 +746,15 @@ def region_points(region: Mapping[str, tuple[float, float]], box: UncertaintyBox
     return np.array(pts), edges
 
 
+def within(points: np.ndarray, region: Mapping[str, tuple[float, float]],
+           box: UncertaintyBox) -> np.ndarray:
+    """(n,) bool: which of ``points`` (n, k) lie in ``region`` (its faces included)."""
+    points = np.asarray(points, dtype=np.float64).reshape(-1, box.ndim)
+    lo = np.array([region[name][0] for name in box.names])
+    hi = np.array([region[name][1] for name in box.names])
+    return ((points >= lo) & (points <= hi)).all(axis=1)
+
+
 def interior_points(region: Mapping[str, tuple[float, float]], box: UncertaintyBox
                     ) -> np.ndarray:
     """Points inside the region, 2^(k+1) of them (8 for two parameters): the first points
@@ -920,6 +930,8 @@ class RegionCheck:
         n_chained: points carried on their own state through the moments (chained
             segments, each its own run from the start) over every round.
         chained: which points of the last round were chained, (p,) bool, or None.
+        known_inside: the sweep's samples inside the region that passed on their own runs;
+            they count among its inside points (fewer new ones are checked).
     """
 
     region: Mapping[str, tuple[float, float]] | None
@@ -932,6 +944,7 @@ class RegionCheck:
     first_claim: Mapping[str, tuple[float, float]] | None = None
     n_chained: int = 0
     chained: np.ndarray | None = None
+    known_inside: int = 0
 
     @property
     def own_runs(self) -> int:
@@ -960,7 +973,7 @@ class RegionCheck:
                 "points": int(self.points.shape[0]), "sparse": self.n_sparse,
                 "rollouts": self.n_rollouts, "chained": self.n_chained,
                 "rollouts_last_round": int(self.rolled_out.sum()),
-                "own_runs_last_round": self.own_runs}
+                "own_runs_last_round": self.own_runs, "known_inside": self.known_inside}
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -1212,6 +1225,10 @@ def region_text(region: Mapping[str, tuple[float, float]] | None, box: Uncertain
             f"{own - rolled} chained through the moments" if own > rolled else "",
             f"{rolled} full rollout{'s' if rolled != 1 else ''}" if rolled else "") if part)
         where = "its corners, edges and inside"
+        known = int(getattr(check, "known_inside", 0))
+        if known:
+            runs += (f"; and the sweep's {known} sample{'s' if known != 1 else ''} inside it "
+                     f"passed on {'their' if known != 1 else 'its'} own run{'s' if known != 1 else ''}")
         if own == p:
             evidence = (f" (checked at {p} points of {where} by sparse evaluation and on "
                         f"each point's own run: {runs})")

@@ -536,3 +536,21 @@ def test_blocked_grid_equals_the_point_by_point_test():
             inside = bad[None] < cuts[:, None]
         expected = inside.all(axis=2).any(axis=1)
         assert np.array_equal(vd._blocked_grid(bad, cands, margin), expected)
+
+
+@pytest.mark.parametrize("make_box, n", [(_box, 8), (_box3, 16)])
+def test_interior_points_lie_strictly_inside_and_spread(make_box, n):
+    box = make_box()
+    region = {p.name: (p.low + 0.1 * (p.high - p.low), p.low + 0.6 * (p.high - p.low))
+              for p in box.parameters}
+    pts = vd.interior_points(region, box)
+    assert pts.shape == (n, box.ndim)
+    assert vd.within(pts, region, box).all()
+    lo = np.array([region[p][0] for p in box.names])
+    hi = np.array([region[p][1] for p in box.names])
+    assert ((pts > lo) & (pts < hi)).all()  # none on a face: those are the edges' points
+    # each half of every parameter's range holds some of them
+    mid = (lo + hi) / 2
+    assert ((pts < mid).any(axis=0) & (pts > mid).any(axis=0)).all()
+    np.testing.assert_array_equal(pts, vd.interior_points(region, box))  # deterministic
+    assert not vd.within(np.array([[hi[0] * 1.01] + list(mid[1:])]), region, box)[0]
