@@ -956,7 +956,9 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         if current is None:
             break
         rounds = rnd
-        inside = vd.interior_points(current, box)
+        # where the sweep's own runs overturned a sparse pass the motion depends on its path:
+        # four times as many points inside
+        inside = vd.interior_points(current, box, scale=4 if every_point else 1)
         # the sweep's samples in the region that passed on their own runs are checked points
         # inside it already: as many fewer new ones
         n_known = int(vd.within(known, current, box).sum()) if known is not None else 0
@@ -1009,7 +1011,7 @@ def _own_run_points(pts: np.ndarray, region: Mapping[str, tuple[float, float]], 
     if every_point:
         return np.ones(pts.shape[0], bool)
     coarse, _ = vd.region_points(region, box, per_edge=per_edge)
-    coarse = np.vstack([coarse, vd.interior_points(region, box)])
+    coarse = np.vstack([coarse, vd.interior_points(region, box)])  # (every_point: all anyway)
     scale = np.maximum(np.abs(box.high - box.low), 1e-300)
     near = np.abs(pts[:, None, :] - coarse[None, :, :]) <= 1e-9 * scale
     own = near.all(axis=2).any(axis=1)

@@ -755,24 +755,28 @@ def within(points: np.ndarray, region: Mapping[str, tuple[float, float]],
     return ((points >= lo) & (points <= hi)).all(axis=1)
 
 
-def interior_points(region: Mapping[str, tuple[float, float]], box: UncertaintyBox
-                    ) -> np.ndarray:
-    """Points inside the region, 2^(k+1) of them (8 for two parameters): the first points
-    of an unscrambled Sobol sequence after its origin, spread in prior quantiles. A region
+def interior_points(region: Mapping[str, tuple[float, float]], box: UncertaintyBox, *,
+                    scale: int = 1) -> np.ndarray:
+    """Points inside the region, ``scale`` × 2^(k+1) of them (8 for two parameters): the
+    first points of an unscrambled Sobol sequence after its origin, spread in prior
+    quantiles. A region
     whose corners and edges pass can still fail inside where the outcome is not monotone in
     the parameters (a drop on robosuite's Panda + Robotiq 2F-85 at (0.111 kg, μ 1.33) inside
     a region whose 8 corner and edge points passed).
 
     Returns:
-        (2^(k+1), k) points, deterministic for a region.
+        (scale × 2^(k+1), k) points, deterministic for a region; the first 2^(k+1) are the
+        same for every ``scale`` (a power of two).
     """
     from scipy.stats import qmc
 
     k = box.ndim
     if k == 0:
         return np.zeros((0, 0))
-    n = 2 ** (k + 1)
-    u = qmc.Sobol(d=k, scramble=False).random_base2(k + 2)[1:n + 1]
+    if scale < 1 or scale & (scale - 1):
+        raise ParameterError(f"scale: expected a power of two >= 1, got {scale!r}")
+    n = scale * 2 ** (k + 1)
+    u = qmc.Sobol(d=k, scramble=False).random_base2(int(np.log2(n)) + 1)[1:n + 1]
     lo = np.array([region[name][0] for name in box.names])
     hi = np.array([region[name][1] for name in box.names])
     u_lo, u_hi = box.to_unit(lo[None])[0], box.to_unit(hi[None])[0]
