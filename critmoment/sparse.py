@@ -1348,8 +1348,8 @@ class SparseEvaluator:
             if keep_state:
                 state = batch.state.copy()
         warned = batch.warning[:, :, 1].copy()
-        decided = self._decide(buf, slip, length, mu, k,
-                               final=extras == 0 if per_sim else extra == 0)
+        final = extras == 0
+        decided = self._decide(buf, slip, length, mu, k, final=final)
         follow = run[decided.follow[run] & ~raised[run] & ~(warned[run] > 0).any(axis=1)
                      & (extras[run] > 0)]
         if follow.size and extra:
@@ -1360,7 +1360,13 @@ class SparseEvaluator:
                     batch, (k[part] if per_sim else k) + h, int(e), part, raised)
                 length[part] = h + e
             warned = batch.warning[:, :, 1].copy()
-            decided = self._decide(buf, slip, length, mu, k, final=True)
+            # only the simulations followed have no more steps to take: the others keep
+            # their first decision (a sample's failure must not depend on which other
+            # samples share its batch: a slip at the horizon's last step read as a contact
+            # failure once a neighbour was followed)
+            final = final.copy()
+            final[follow] = True
+            decided = self._decide(buf, slip, length, mu, k, final=final)
         # rows never stepped are zero, hence finite
         diverged = raised | (warned > 0).any(axis=1) | ~np.isfinite(buf).all(axis=(1, 2))
         diverged[length == 0] = False

@@ -853,6 +853,30 @@ def test_pairs_stepped_together_equal_each_moment_alone(scenario, twin, demo_rec
     assert many[1].failure.tolist() == together.failure[2:].tolist()
 
 
+def test_a_samples_decision_does_not_depend_on_the_samples_beside_it(scenario, twin,
+                                                                   demo_recording):
+    # a pair whose contact excursion is still open at the horizon's end is followed a few
+    # steps further; the others in its batch keep their first decision. Once, the re-decision
+    # after a follow-up treated every pair as followed to the end, so a slip at the
+    # horizon's last step became a contact failure whenever another pair of the batch (a
+    # neighbour sample, or the same sample at another moment) was followed (robosuite's
+    # Panda + Robotiq 2F-85, elliptic cone: 9 heavy cubes that really succeed were called
+    # unsafe without their own rollout). The tolerances here make such pairs common.
+    rec = demo_recording
+    from critmoment.analysis import audit_evaluator, audit_moments
+
+    _, steps = audit_moments(rec, twin, audit_evaluator(rec, twin)[0], 8)
+    ev = SparseEvaluator(rec, twin, horizon=2, slip_tolerance=1e-6, nthread=1)
+    samples = sparse.sweep_samples(scenario.box, n=16, seed=3)
+    together = ev.evaluate(steps, samples)
+    assert (together.failure == sparse.Failure.SLIP).any()
+    for j in range(samples.shape[0]):
+        for i, k in enumerate(steps):
+            alone = ev.evaluate([k], samples[j:j + 1])
+            assert alone.failure[0, 0] == together.failure[i, j], (k, j)
+            assert alone.excursion[0, 0] == together.excursion[i, j], (k, j)
+
+
 def test_first_failure_shared_out_between_threads_equals_one_thread(scenario, twin,
                                                                    demo_recording, tiny,
                                                                    caplog):
