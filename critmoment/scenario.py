@@ -700,24 +700,11 @@ def _spec_targets(box: UncertaintyBox) -> dict[str, tuple[str, ...]]:
                                 if isinstance(p, ComOffsetParameter))}
 
 
-def _collides(model: mujoco.MjModel, a: int, b: int) -> bool:
-    """Whether MuJoCo's dynamic contacts (the geoms' bits) can join geoms ``a`` and ``b``; an
-    explicit pair between their bodies replaces those (``pair_signature``)."""
-    ba, bb = int(model.geom_bodyid[a]), int(model.geom_bodyid[b])
-    signature = (min(ba, bb) << 16) + max(ba, bb)
-    if np.any(model.pair_signature == signature):
-        return False
-    return bool((model.geom_contype[a] & model.geom_conaffinity[b])
-                or (model.geom_contype[b] & model.geom_conaffinity[a]))
-
-
 def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
     """A parameter must change what it claims to change on the compiled model."""
     if isinstance(p, FrictionParameter):
-        body = model.geom_bodyid[index]
-        rivals = [i for i in range(model.ngeom)
-                  if model.geom_bodyid[i] != body and _collides(model, index, i)
-                  and model.geom_priority[i] >= model.geom_priority[index]]
+        rivals = [i for i in act_info.dynamic_partners(model, index)
+                  if model.geom_priority[i] >= model.geom_priority[index]]
         if model.opt.enableflags & mujoco.mjtEnableBit.mjENBL_OVERRIDE:
             raise ScenarioError(
                 f"[uncertainty.{p.name}]: the model enables the contact override (<option> "
