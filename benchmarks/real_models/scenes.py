@@ -45,7 +45,8 @@ WHEELS = {
         "robosuite/models/assets/grippers/obj_meshes/rethink_gripper/",
         "robosuite/models/assets/robots/iiwa/",
         "robosuite/models/assets/grippers/robotiq_gripper_140.xml",
-        "robosuite/models/assets/grippers/meshes/robotiq_140_gripper/")),
+        "robosuite/models/assets/grippers/meshes/robotiq_140_gripper/",
+        "robosuite/models/assets/robots/ur5e/")),
 }
 
 #: the Interbotix vx300s URDF efforts [N·m] (reference/aloha_facts.md)
@@ -152,6 +153,12 @@ ROBOTS = {
         arm="robots/iiwa/robot.xml", gripper="grippers/robotiq_gripper_140.xml",
         base=(-0.56, 0.0, 0.8), joints=tuple(f"joint_{i}" for i in range(1, 8)),
         kp=(800, 800, 600, 600, 250, 150, 50), kv=(40, 40, 25, 25, 4, 3, 1)),
+    "ur5e_robotiq85": dict(
+        arm="robots/ur5e/robot.xml", gripper="grippers/robotiq_gripper_85.xml",
+        base=(-0.56, 0.0, 0.8),
+        joints=("shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint", "wrist_1_joint",
+                "wrist_2_joint", "wrist_3_joint"),
+        kp=(800, 800, 600, 250, 150, 50), kv=(40, 40, 25, 4, 3, 1)),
 }
 
 #: the cube added to the robosuite scenes: half edge [m], mass [kg], where it rests [m]
@@ -208,8 +215,11 @@ def robosuite_scene(robot: str) -> Path:
             servo = arm.add_actuator(name=f"{joint.name}_servo", target=joint.name,
                                      trntype=mujoco.mjtTrn.mjTRN_JOINT)
             servo.set_to_position(kp=float(cfg["kp"][i]), kv=float(cfg["kv"][i]))
-            servo.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
-            servo.ctrlrange = joint.range
+            if joint.range[0] < joint.range[1]:
+                servo.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
+                servo.ctrlrange = joint.range
+            else:  # a continuous joint (the Kinova Gen3's 1, 3, 5, 7): no target range
+                servo.ctrllimited = mujoco.mjtLimited.mjLIMITED_FALSE
             servo.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
             servo.forcerange = np.array([-limit, limit])
     base = arm.body("base")

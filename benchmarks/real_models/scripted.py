@@ -251,6 +251,8 @@ REST = {
     "sawyer_rethink": np.array([0.0, -1.18, 0.0, 2.18, 0.0, 0.57, 3.3161]),
     # robosuite's own initial pose of this arm
     "iiwa_robotiq140": np.array([0.0, 0.650, 0.0, -1.890, 0.0, 0.600, 0.0]),
+    # robosuite's own initial pose of this arm
+    "ur5e_robotiq85": np.array([-0.470, -1.735, 2.480, -2.275, -1.590, -1.991]),
 }
 
 
