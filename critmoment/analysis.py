@@ -569,7 +569,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_failed=bool(res_all.failed_any[0]) if steps.size else False,
         nominal_unlifted=bool(res_all.failed_unlifted_only[0]) if steps.size else False,
         nominal_stage=(int(rec.stage.max()), int(rec.stage[-1])),
-        completion_rule=f"needed: {twin.task.describe()}",
+        completion_rule=_completion_rule(rec, twin),
         moments=tuple(moment_reports), worst_failed=worst_failed_sparse,
         worst_unlifted=worst_unlifted,
         worst_rollouts_failed=worst_failed, trend=_trend(curves, box))
@@ -605,6 +605,13 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         contact_model=contact, load_bound=load_bound,
         force_ratio_untrusted=_untrusted(rec, evaluator, steps),
         unlimited_motors=twin.unlimited_motors)
+
+
+def _completion_rule(rec: Recording, twin: Twin) -> str:
+    """The task's rule in words, and what the nominal run lacks of it."""
+    rule = f"needed: {twin.task.describe()}"
+    short = rec.shortfalls()
+    return f"{rule}; the nominal run: {'; '.join(short)}" if short else rule
 
 
 def _worst_case(res: sp.SparseResult, row: int, search: Mapping | None, box

@@ -169,6 +169,8 @@ def cmd_rollout(args) -> int:
                  f"{summary['max_stage']}, final stage {summary['final_stage']} "
                  f"({'completed' if summary['completed'] else 'NOT completed'}); first step "
                  f"per stage {{{firsts}}}")
+    if summary["shortfalls"]:
+        _Stdout.emit(f"short of the task: {'; '.join(summary['shortfalls'])}")
     from critmoment.safety import format_fos
 
     _Stdout.emit(f"min FOS contact {format_fos(summary['min_fos_contact'], '.3f')}, min FOS "

@@ -425,10 +425,24 @@ class Recording:
         if self.task is None:
             raise ParameterError("this recording carries no task; expected one from rollout() "
                                  "or Recording.load(path, twin)")
-        return bool(self.task.success(TaskEvidence(
+        return bool(self.task.success(self.task_evidence()))
+
+    def task_evidence(self) -> TaskEvidence:
+        """What this run shows of the object, for the task's rule."""
+        if self.task is None:
+            raise ParameterError("this recording carries no task; expected one from rollout() "
+                                 "or Recording.load(path, twin)")
+        return TaskEvidence(
             contact_gripper=self.signals.contact_gripper,
             contact_support=self.signals.contact_support, object_pos=self.signals.object_pos,
-            object_vel=self.signals.object_vel, dt=self.dt)))
+            object_vel=self.signals.object_vel, dt=self.dt)
+
+    def shortfalls(self) -> list[str]:
+        """What this run lacks of the task's rule, in words (:meth:`Task.shortfalls`);
+        empty when it completes the task."""
+        if self.completed:
+            return []
+        return self.task.shortfalls(self.task_evidence())
 
     def stage_first_step(self) -> dict[int, int | None]:
         """First step at which each stage 1..4 is reached (None if never)."""
@@ -449,6 +463,7 @@ class Recording:
             "max_stage": int(sig.stage.max()),
             "final_stage": int(sig.stage[-1]),
             "completed": self.completed,
+            "shortfalls": self.shortfalls(),
             "stage_first_step": {str(k): v for k, v in self.stage_first_step().items()},
             "min_fos_contact": float(finite_c.min()) if finite_c.size else None,
             "min_fos_motor": float(sig.fos_motor.min()),

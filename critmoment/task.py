@@ -154,6 +154,35 @@ class Task:
         """Whether each run achieved the task, (...) bool."""
         raise NotImplementedError
 
+    def shortfalls(self, ev: TaskEvidence) -> list[str]:
+        """What one run (evidence with no leading shape) lacks of :meth:`success`, each part
+        of the rule it misses in words with the value measured; empty when it succeeds."""
+        raise NotImplementedError
+
+    def _rise(self, ev: TaskEvidence) -> float:
+        z = np.asarray(ev.object_pos) @ np.asarray(self.up, dtype=float)
+        return float(z.max() - z[0]) if z.size else 0.0
+
+    def _lift_shortfall(self, ev: TaskEvidence) -> list[str]:
+        if bool(self.lifted(ev)):
+            return []
+        return [f"the object rose {self._rise(ev) * 1e3:.0f} mm at most (a lift is "
+                f"{self.lift_height * 1e3:.0f} mm)"]
+
+    def _end_shortfalls(self, ev: TaskEvidence, gripper: str | None, verb: str) -> list[str]:
+        """``gripper`` must touch the object, and no support, over the final window."""
+        out = []
+        if gripper is not None:
+            touch = ev.contact_gripper[..., self.grippers.index(gripper)]
+            if not bool(self._final(touch, ev, "any")):
+                last = np.flatnonzero(touch)
+                when = (f" (it let go at t = {(last[-1] + 1) * ev.dt:.2f} s)" if last.size
+                        else " (it never touched it)")
+                out.append(f"{gripper} does not {verb} the object at the end{when}")
+        if not bool(self._final(~ev.contact_support, ev, "all")):
+            out.append("the object rests on its support at the end")
+        return out
+
     def lifted(self, ev: TaskEvidence) -> np.ndarray:
         """The object rose at least ``lift_height`` above its start at some step, (...) bool."""
         z = np.asarray(ev.object_pos) @ np.asarray(self.up, dtype=float)
@@ -254,6 +283,9 @@ class HandoverTask(Task):
         recv = ev.contact_gripper[..., self.grippers.index(self.receiver)]
         return self._final(recv, ev, "any") & self._final(~ev.contact_support, ev, "all")
 
+    def shortfalls(self, ev):
+        return self._end_shortfalls(ev, self.receiver, "hold")
+
     def describe(self):
         return (f"hand-over: {self.picker} lifts the object off its support, {self.receiver} "
                 f"takes it over and holds it off the support to the end")
@@ -326,6 +358,24 @@ class PickPlaceTask(Task):
         speed = np.linalg.norm(ev.object_vel[..., -1, :], axis=-1) if ev.n_steps else 0.0
         return self.lifted(ev) & at_goal & released & (speed <= self.rest_speed)
 
+    def shortfalls(self, ev):
+        out = self._lift_shortfall(ev)
+        if not bool(self._final(self._at_goal(ev.object_pos), ev, "all")):
+            distance = np.linalg.norm(ev.object_pos - np.asarray(self.goal), axis=-1)
+            at = np.flatnonzero(distance <= self.tolerance)
+            since = (f"; it was within it until t = {(at[-1] + 1) * ev.dt:.2f} s" if at.size
+                     else "")
+            out.append(f"the object ends {distance[-1] * 1e3:.0f} mm from the goal (tolerance "
+                       f"{self.tolerance * 1e3:.0f} mm{since})")
+        touch = ev.contact_gripper.any(axis=-1)
+        if bool(self._final(touch, ev, "any")):
+            out.append("a gripper still touches the object at the end")
+        speed = float(np.linalg.norm(ev.object_vel[-1])) if ev.n_steps else 0.0
+        if speed > self.rest_speed:
+            out.append(f"the object still moves at {speed:.3g} m/s at the end (at rest: "
+                       f"{self.rest_speed:g} m/s)")
+        return out
+
     def describe(self):
         g = ", ".join(f"{v:.3f}" for v in self.goal)
         return (f"pick and place: {self.gripper} lifts the object at least "
@@ -389,6 +439,9 @@ class PickHoldTask(Task):
         touch = ev.contact_gripper[..., self.grippers.index(self.gripper)]
         return (self.lifted(ev) & self._final(touch, ev, "any")
                 & self._final(~ev.contact_support, ev, "all"))
+
+    def shortfalls(self, ev):
+        return self._lift_shortfall(ev) + self._end_shortfalls(ev, self.gripper, "hold")
 
     def describe(self):
         return (f"pick and hold: {self.gripper} lifts the object at least "

@@ -58,6 +58,44 @@ def test_pick_place_success_needs_lift_goal_release_and_rest():
     assert not PLACE.success(_pick_place_run(v_end=0.5))        # still moving (tipping over)
 
 
+def test_the_shortfalls_of_a_run_name_each_part_of_the_rule_it_misses():
+    assert PLACE.shortfalls(_pick_place_run()) == []
+    far = PLACE.shortfalls(_pick_place_run(place_x=0.1))
+    assert far == ["the object ends 200 mm from the goal (tolerance 30 mm)"]
+    assert PLACE.shortfalls(_pick_place_run(release=False)) == [
+        "a gripper still touches the object at the end"]
+    assert PLACE.shortfalls(_pick_place_run(lift=0.005)) == [
+        "the object rose 5 mm at most (a lift is 20 mm)"]
+    assert PLACE.shortfalls(_pick_place_run(v_end=0.5)) == [
+        "the object still moves at 0.5 m/s at the end (at rest: 0.05 m/s)"]
+    # placed, then dragged off the goal: when it left is said
+    ev = _pick_place_run()
+    pos = ev.object_pos.copy()
+    pos[-50:, 0] = 0.4
+    dragged = TaskEvidence(ev.contact_gripper, ev.contact_support, pos, ev.object_vel, DT)
+    assert not PLACE.success(dragged)
+    assert PLACE.shortfalls(dragged) == [
+        "the object ends 100 mm from the goal (tolerance 30 mm; it was within it until "
+        "t = 0.70 s)"]
+    # hold and hand-over: who let go, and when; resting on the support
+    hold = PickHoldTask(grippers=("hand",), gripper="hand")
+    z = np.concatenate([np.full(100, 0.02), np.full(100, 0.1)])
+    touch = np.ones((200, 1), bool)
+    touch[150:] = False
+    support = np.concatenate([np.ones(100, bool), np.zeros(100, bool)])
+    assert hold.shortfalls(_run(z, touch, support)) == [
+        "hand does not hold the object at the end (it let go at t = 0.30 s)"]
+    support[-30:] = True
+    touch[:] = True
+    assert hold.shortfalls(_run(z, touch, support)) == [
+        "the object rests on its support at the end"]
+    swap = HandoverTask(grippers=("left", "right"), picker="right", receiver="left")
+    never = np.zeros((200, 2), bool)
+    never[:, 1] = True
+    assert swap.shortfalls(_run(z, never, np.zeros(200, bool))) == [
+        "left does not hold the object at the end (it never touched it)"]
+
+
 def test_pick_place_stages():
     ev = _pick_place_run()
     stage = PLACE.stage(ev.contact_gripper, ev.contact_support, ev.object_pos)
