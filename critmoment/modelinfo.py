@@ -168,6 +168,48 @@ def _is_gripper_actuator(model: mujoco.MjModel, info: act_info.ActuatorInfo) -> 
     return any(_GRIPPER_WORDS.search(n or "") for n in names)
 
 
+def _carries_a_finger(model: mujoco.MjModel, actuator: int, moved: list[int],
+                      candidates: dict[int, list[int]]) -> bool:
+    """Whether the bodies ``actuator`` moves carry the moving bodies of other gripper-like
+    actuators on two or more branches (two fingers, neither on the other): then it turns or
+    shifts the whole hand (a wrist), and is no finger itself. A finger's proximal joint
+    carries only its own distal links, one branch, and stays a candidate."""
+    below = np.zeros(model.nbody, bool)
+    for b in moved:
+        below |= _subtree(model, b)
+    carried = sorted({b for other, bodies in candidates.items() if other != actuator
+                      for b in bodies if below[b] and b not in moved})
+    return any(not (_subtree(model, a)[b] or _subtree(model, b)[a])
+               for i, a in enumerate(carried) for b in carried[i + 1:])
+
+
+def _stuck_hint(model: mujoco.MjModel, actuators: list[int]) -> str:
+    """Why a gripper's joints may not move: dry friction above what the actuator can push,
+    held hard by the noslip solver."""
+    parts = []
+    for a in actuators:
+        if model.actuator_trntype[a] != mujoco.mjtTrn.mjTRN_JOINT:
+            continue
+        j = int(model.actuator_trnid[a, 0])
+        loss = float(model.dof_frictionloss[model.jnt_dofadr[j]])
+        if loss > 0:
+            push = ""
+            if (model.actuator_gaintype[a] == mujoco.mjtGain.mjGAIN_FIXED
+                    and model.actuator_biastype[a] == mujoco.mjtBias.mjBIAS_AFFINE
+                    and model.actuator_ctrllimited[a]):
+                # a position servo: its force at the largest error its range allows
+                span = float(np.ptp(model.actuator_ctrlrange[a]))
+                push = (f", its actuator pushes at most "
+                        f"{abs(model.actuator_gainprm[a, 0]) * span:.3g} over its range")
+            parts.append(f"joint {model.joint(j).name!r} has frictionloss {loss:g}{push}")
+    if not parts:
+        return ""
+    hard = (f" and noslip_iterations = {model.opt.noslip_iterations} makes that dry friction "
+            "hard (no creep)" if model.opt.noslip_iterations else "")
+    return (f" ({'; '.join(parts)}{hard}: a servo whose force stays under it cannot move the "
+            f"finger)")
+
+
 def _short(name: str, taken: set[str]) -> str:
     base = re.sub(r"[^A-Za-z0-9_]+", "_", name).strip("_") or "gripper"
     out, k = base, 2
@@ -181,12 +223,14 @@ def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
                    ) -> tuple[list[GripperGuess], list[str]]:
     notes: list[str] = []
     groups: dict[int, list[int]] = {}
+    candidates = {info.index: _moved_bodies(model, info.index) for info in infos
+                  if _is_gripper_actuator(model, info)}
     for info in infos:
-        if not _is_gripper_actuator(model, info):
-            continue
-        moved = _moved_bodies(model, info.index)
+        moved = candidates.get(info.index)
         if not moved:
             continue
+        if _carries_a_finger(model, info.index, moved, candidates):
+            continue  # a wrist that turns the whole hand (ALOHA's wrist_rotate on gripper_link)
         # the hand: the body that carries the moving fingers (parent of a lone finger)
         hand = act_info.common_ancestor(model, moved)
         if len(moved) == 1:
@@ -203,8 +247,11 @@ def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
             continue
         try:
             closed, open_ = act_info.closing_ends(model, acts, geoms, keyframe=keyframe)
-        except ValueError:
-            continue  # named like a gripper, but it does not open and close one
+        except ValueError as exc:  # named like a gripper, but it does not open and close one
+            notes.append(f"actuators {[model.actuator(a).name for a in acts]} on body "
+                         f"{model.body(hand).name!r} look like a gripper, but {exc}"
+                         f"{_stuck_hint(model, acts)}")
+            continue
         name = model.body(hand).name or f"body{hand}"
         guesses.append(GripperGuess(
             name=_short(name.split("/")[0] if "/" in name else name, taken), body=name,
@@ -399,9 +446,11 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                        f"all of them)")
     grippers = [g for g in info.grippers]
     if not grippers:
+        why = [n for n in info.notes if "look like a gripper" in n]
         raise ScenarioError(
             "found no gripper: expected actuators on slide joints, tendons, or joints/bodies "
-            "named like grip/finger/jaw/claw/hand; write [grippers.*] by hand")
+            "named like grip/finger/jaw/claw/hand that open and close their geoms"
+            + (f" ({'; '.join(why)})" if why else "") + "; write [grippers.*] by hand")
     data = mujoco.MjData(model)
     if key is not None:
         mujoco.mj_resetDataKeyframe(model, data, key)

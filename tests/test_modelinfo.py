@@ -511,3 +511,87 @@ def test_contact_parameters_are_the_ones_mujoco_gives_its_contacts():
         assert c.includemargin == pytest.approx(want.margin, abs=1e-15)
         seen.add(model.geom(box).name)
     assert seen == {f"b{i}" for i in range(len(boxes))}
+
+
+def _wrist_model(tmp_path, *, noslip: int):
+    """The slide-finger arm with a wrist that turns the whole hand (an ALOHA-like
+    ``wrist_rotate`` on a body named like a gripper), fingers with 100 N of dry friction
+    against servos that push 6 N at most, and a collision geom on the forearm beside it."""
+    xml = arm_xml(gripper="slides")
+    xml = xml.replace('<option timestep="0.002"',
+                      f'<option noslip_iterations="{noslip}" timestep="0.002"')
+    xml = xml.replace('<body name="hand" pos="0.1 0 0">',
+                      '<geom name="cover" type="box" pos="0.09 0.04 0" size="0.01 0.01 0.01"/>\n'
+                      '        <body name="hand" pos="0.1 0 0">\n'
+                      '          <joint name="wrist_rotate" type="hinge" axis="1 0 0" '
+                      'range="-3.14 3.14" frictionloss="20"/>')
+    xml = xml.replace('range="0 0.03" damping="5"/>', 'range="0 0.03" damping="5" '
+                      'frictionloss="100"/>')
+    xml = xml.replace('<position name="finger_a_act"',
+                      '<position name="wrist_act" joint="wrist_rotate" kp="50" '
+                      'ctrlrange="-3.14 3.14"/>\n    <position name="finger_a_act"')
+    xml = xml.replace('<key qpos="0 0 0 0 0.3', '<key qpos="0 0 0 0 0 0.3')
+    path = tmp_path / f"wrist{noslip}.xml"
+    path.write_text(xml)
+    return path
+
+
+def test_a_wrist_that_turns_the_hand_is_no_gripper_and_stuck_fingers_are_explained(tmp_path):
+    # without noslip the fingers creep through their soft dry friction and close: the
+    # gripper is the two fingers, never the wrist that carries them both
+    info = inspect_model(_wrist_model(tmp_path, noslip=0))
+    assert [g.actuators for g in info.grippers] == [("finger_a_act", "finger_b_act")]
+    # noslip makes the 100 N hard: the fingers cannot move, so there is no gripper, and the
+    # wrist (which then stops short of its ends and seemed to "close" the hand's geoms) is
+    # not taken for one; init says why
+    info = inspect_model(_wrist_model(tmp_path, noslip=20))
+    assert info.grippers == ()
+    with pytest.raises(ScenarioError, match=r"found no gripper.*frictionloss 100.*pushes at "
+                                            r"most 6.*noslip_iterations = 20"):
+        init_scenario(_wrist_model(tmp_path, noslip=20), object_body="cube",
+                      task="pick_place", goal_site="goal", out=tmp_path / "s.toml")
+
+
+def test_a_fingers_proximal_joint_that_carries_its_own_tip_stays_a_gripper(tmp_path):
+    # two fingers of two hinges each: a proximal actuator carries its own distal link (one
+    # branch), unlike a wrist, which carries both fingers
+    def finger(side, y):
+        return f"""
+          <body name="{side}_finger_proximal" pos="0 {y} -0.03">
+            <joint name="{side}_knuckle" type="hinge" axis="1 0 0" range="-0.6 0.6"
+                   damping="0.5"/>
+            <geom name="{side}_link" type="box" pos="0 0 -0.02" size="0.008 0.004 0.02"
+                  mass="0.02"/>
+            <body name="{side}_finger_distal" pos="0 0 -0.04">
+              <joint name="{side}_tip" type="hinge" axis="1 0 0" range="-0.6 0.6"
+                     damping="0.5"/>
+              <geom name="{side}_pad" type="box" pos="0 0 -0.015" size="0.008 0.004 0.015"
+                    mass="0.01"/>
+            </body>
+          </body>"""
+    xml = f"""
+<mujoco>
+  <option timestep="0.002"/>
+  <worldbody>
+    <geom name="table" type="box" pos="0 0 -0.02" size="0.3 0.3 0.02"/>
+    <body name="hand" pos="0 0 0.2">
+      <geom name="palm" type="box" size="0.02 0.04 0.01" mass="0.2"/>
+      {finger("a", 0.03)}{finger("b", -0.03)}
+    </body>
+    <body name="cube" pos="0 0 0.02">
+      <freejoint/>
+      <geom name="cube" type="box" size="0.02 0.02 0.02" mass="0.1"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="a_knuckle_act" joint="a_knuckle" kp="5" ctrlrange="-0.6 0.6"/>
+    <position name="a_tip_act" joint="a_tip" kp="2" ctrlrange="-0.6 0.6"/>
+    <position name="b_knuckle_act" joint="b_knuckle" kp="5" ctrlrange="-0.6 0.6"/>
+    <position name="b_tip_act" joint="b_tip" kp="2" ctrlrange="-0.6 0.6"/>
+  </actuator>
+</mujoco>"""
+    path = tmp_path / "hand.xml"
+    path.write_text(xml)
+    info = inspect_model(path)
+    assert [(g.body, g.actuators) for g in info.grippers] == [
+        ("hand", ("a_knuckle_act", "b_knuckle_act"))]
