@@ -677,7 +677,13 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     timer = stage or (lambda name: contextlib.nullcontext())
     n = samples.shape[0]
     moments = steps.size > 0 and sweep is not None
-    reruns = vd.samples_to_rerun(sweep, options, nominal_completed=nominal_completed)
+    nominal_failed = None
+    if moments and not nominal_completed:
+        # where the nominal run itself fails, the samples restored there inherit its state
+        nominal = evaluator.evaluate(steps, evaluator.twin.scenario.box.nominal[None])
+        nominal_failed = np.asarray(nominal.failed[:, 0], dtype=bool)
+    reruns = vd.samples_to_rerun(sweep, options, nominal_completed=nominal_completed,
+                                 nominal_failed=nominal_failed)
     rerun = reruns.any
     # one physics thread beside this one, with all of MuJoCo's threads, running the
     # rollouts and then the chain (divisible across threads, it ends the overlap; a batch of
@@ -728,7 +734,8 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     else:
         suspect = np.zeros(n, bool)
     return vd.SampleRuns(reruns=reruns, chained=chained, chained_failed=chained_failed,
-                         suspect=suspect, rerun_failed=rerun_failed), extra
+                         suspect=suspect, rerun_failed=rerun_failed,
+                         nominal_failed=nominal_failed), extra
 
 
 class _Once:

@@ -775,6 +775,9 @@ def _verification_text(v) -> str:
     if v.get("slipping"):
         text += (f"; {v['slipping']} failing only by a slip under the ground truth's "
                  f"tolerance re-run in full, {v['slipping_failed']} of them fail")
+    if v.get("inherited"):
+        text += (f"; {v['inherited']} failing only at moments where the nominal run fails too "
+                 f"re-run in full, {v['inherited_failed']} of them fail")
     if v.get("chained"):
         text += (f"; {v['chained']} passing at every moment carried on their own state "
                  f"(chained segments), {v['chained_failed']} of them fail there")

@@ -59,6 +59,7 @@ __all__ = [
     "Reruns",
     "SampleRuns",
     "samples_to_rerun",
+    "inherited_failures",
     "failing_samples",
     "samples_to_chain",
     "worst_cases_to_rerun",
@@ -226,6 +227,8 @@ class SampleEvidence:
         chained: which samples were carried on their own state through the moments
             (:func:`samples_to_chain`), (n,) bool, or None.
         chained_failed: they failed there, (n,) bool; read where ``chained``.
+        nominal_failed: the nominal parameters fail at each audited moment (their sparse
+            evaluation from the nominal state), (m,) bool, or None when not measured.
     """
 
     sweep: SparseResult | None
@@ -234,6 +237,7 @@ class SampleEvidence:
     rerun_failed: np.ndarray | None = None
     chained: np.ndarray | None = None
     chained_failed: np.ndarray | None = None
+    nominal_failed: np.ndarray | None = None
 
     @property
     def n_samples(self) -> int:
@@ -248,11 +252,14 @@ class Reruns(NamedTuple):
     unlifted: np.ndarray  #: fail only unlifted (``SparseResult.failed_unlifted_only``)
     sticking: np.ndarray  #: fail only sticking (``SparseResult.failed_sticking_only``)
     slipping: np.ndarray  #: fail only by short slips (``SparseResult.failed_slip_only``)
+    #: fail only at moments where the nominal parameters fail too, in a nominal run that does
+    #: not complete its task (:func:`inherited_failures`)
+    inherited: np.ndarray
 
     @property
     def any(self) -> np.ndarray:
         """(n,) bool: any of them."""
-        return self.near | self.unlifted | self.sticking | self.slipping
+        return self.near | self.unlifted | self.sticking | self.slipping | self.inherited
 
 
 def _every_sample_fails(options: DecisionOptions, nominal_completed: bool) -> bool:
@@ -262,14 +269,39 @@ def _every_sample_fails(options: DecisionOptions, nominal_completed: bool) -> bo
     return options.require_task and not nominal_completed and not options.chain
 
 
+def inherited_failures(sweep: SparseResult, nominal_failed: np.ndarray | None, *,
+                       nominal_completed: bool) -> np.ndarray:
+    """(n,) bool: the samples that fail only at moments where the nominal parameters fail
+    too, while the nominal run does not complete its task.
+
+    Each sparse evaluation starts from the nominal run's state. Where that run has gone
+    wrong by a moment (a gripper that drags the object at the release, a wrist driven into
+    its limit), a sample restored there inherits the nominal run's trouble, which its own
+    run may never meet (robosuite's UR5e + Robotiq 2F-85 with an elliptic cone and impratio
+    1: four samples failed the sweep by the nominal run's wrist saturation at the release
+    and really placed their cube). Only their own run can say.
+    """
+    n = sweep.n_samples
+    if nominal_completed or nominal_failed is None or sweep.n_moments == 0:
+        return np.zeros(n, bool)
+    nominal_failed = np.asarray(nominal_failed, dtype=bool)
+    if nominal_failed.shape != (sweep.n_moments,):
+        raise ParameterError(f"nominal_failed: expected ({sweep.n_moments},) bool, got "
+                             f"shape {nominal_failed.shape}")
+    elsewhere = (sweep.failed & ~nominal_failed[:, None]).any(axis=0)
+    return sweep.failed_any & ~elsewhere
+
+
 def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
-                     nominal_completed: bool) -> Reruns:
+                     nominal_completed: bool, nominal_failed: np.ndarray | None = None
+                     ) -> Reruns:
     """The samples that sparse evaluation cannot decide, to be decided by their own rollout.
 
     Args:
         sweep: the sparse evaluations (m moments × n samples), or None.
         options: the decision options.
         nominal_completed: the nominal run completes the task.
+        nominal_failed: the nominal parameters fail at each moment, (m,) bool, or None.
 
     Returns:
         The :class:`Reruns`: samples that pass with a cost ≥ ``verify × threshold``,
@@ -282,9 +314,9 @@ def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
     n = 0 if sweep is None else sweep.n_samples
     none = np.zeros(n, bool)
     if sweep is None or sweep.n_moments == 0:
-        return Reruns(none, none.copy(), none.copy(), none.copy())
+        return Reruns(none, none.copy(), none.copy(), none.copy(), none.copy())
     if options.verify is None or _every_sample_fails(options, nominal_completed):
-        return Reruns(none, none.copy(), none.copy(), none.copy())
+        return Reruns(none, none.copy(), none.copy(), none.copy(), none.copy())
     cost = sweep.worst_cost()
     near = ~sweep.failed_any & (cost >= options.verify * options.threshold)
     unlifted = (sweep.failed_unlifted_only.copy() if options.verify_unlifted
@@ -293,7 +325,9 @@ def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
                 else none.copy())
     slipping = (sweep.failed_slip_only(options.slip_confirm) & ~sticking & ~unlifted
                 if options.verify_slip else none.copy())
-    return Reruns(near, unlifted, sticking, slipping)
+    inherited = (inherited_failures(sweep, nominal_failed, nominal_completed=nominal_completed)
+                 & ~(unlifted | sticking | slipping))
+    return Reruns(near, unlifted, sticking, slipping, inherited)
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -318,6 +352,7 @@ class SampleRuns:
     chained_failed: np.ndarray
     suspect: np.ndarray
     rerun_failed: np.ndarray
+    nominal_failed: np.ndarray | None = None
 
     @property
     def rerun(self) -> np.ndarray:
@@ -329,7 +364,8 @@ class SampleRuns:
         """The :class:`SampleEvidence` of these runs and the sweep they complete."""
         return SampleEvidence(sweep=sweep, nominal_completed=nominal_completed,
                               rerun=self.rerun, rerun_failed=self.rerun_failed,
-                              chained=self.chained, chained_failed=self.chained_failed)
+                              chained=self.chained, chained_failed=self.chained_failed,
+                              nominal_failed=self.nominal_failed)
 
     def counts(self, failed: np.ndarray) -> dict[str, int]:
         """How many samples each kind of own run decided, and how many of them fail
@@ -338,7 +374,7 @@ class SampleRuns:
         those the failures rolled out (``chained_rolled_out``, ``chained_confirmed``) and
         the near passes rolled out (``chained_near``, ``chained_near_failed``)."""
         failed = np.asarray(failed, dtype=bool)
-        near, unlifted, sticking, slipping = self.reruns
+        near, unlifted, sticking, slipping, inherited = self.reruns
         rolled_fail = self.suspect & self.chained_failed
         rolled_near = self.suspect & ~self.chained_failed
         return {"rollouts": int(self.rerun.sum()), "failed": int(failed[self.rerun].sum()),
@@ -349,6 +385,8 @@ class SampleRuns:
                 "sticking_failed": int(failed[sticking].sum()),
                 "slipping": int(slipping.sum()),
                 "slipping_failed": int(failed[slipping].sum()),
+                "inherited": int(inherited.sum()),
+                "inherited_failed": int(failed[inherited].sum()),
                 "chained": int(self.chained.sum()),
                 "chained_failed": int(self.chained_failed[self.chained].sum()),
                 "chained_rolled_out": int(rolled_fail.sum()),
@@ -386,7 +424,8 @@ def failing_samples(evidence: SampleEvidence, options: DecisionOptions) -> np.nd
         failed = np.array(sweep.failed_any, dtype=bool)
     if _every_sample_fails(options, evidence.nominal_completed):
         return np.ones(n, bool)
-    need = samples_to_rerun(sweep, options, nominal_completed=evidence.nominal_completed).any
+    need = samples_to_rerun(sweep, options, nominal_completed=evidence.nominal_completed,
+                            nominal_failed=evidence.nominal_failed).any
     if evidence.rerun is None:
         rerun = np.zeros(n, bool)
     else:
@@ -1109,8 +1148,9 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
     se = evidence.samples
     n = se.n_samples
     failed = failing_samples(se, options)
-    near, unlifted, sticking, slipping = samples_to_rerun(
-        se.sweep, options, nominal_completed=se.nominal_completed)
+    near, unlifted, sticking, slipping, _ = samples_to_rerun(
+        se.sweep, options, nominal_completed=se.nominal_completed,
+        nominal_failed=se.nominal_failed)
     n_fail = int(failed.sum())
     nominal_fails, nominal_squeeze, task_failed = _nominal_fails(evidence, options)
     if n:

@@ -114,6 +114,39 @@ def test_the_causes_count_the_samples_that_fail_only_on_their_own_path():
     assert not any("on their own path" in c for c in causes([False, False, False, False]))
 
 
+def test_failures_only_where_the_nominal_run_fails_too_are_decided_by_rollouts():
+    """A nominal run that does not complete its task: a sample restored from its state at a
+    moment where the nominal parameters fail too inherits that state (robosuite's UR5e +
+    Robotiq 2F-85, elliptic cone, impratio 1: the wrist saturates at the release in the
+    nominal run; four samples failed there by it and really placed the cube). Such a
+    sample is decided by its own rollout; one that also fails where the nominal run does
+    not stays a failure."""
+    chain = vd.DecisionOptions(threshold=THRESHOLD, chain=True)
+    samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0]])
+    # moment 0: the nominal fails there; moment 1: it does not
+    sweep = _sweep([[1.5, 0.1, 1.5, 0.1], [0.1, 1.5, 1.5, 0.1]], samples)
+    nominal_failed = np.array([True, False])
+    assert vd.inherited_failures(sweep, nominal_failed,
+                                 nominal_completed=False).tolist() == [True, False, False,
+                                                                       False]
+    assert not vd.inherited_failures(sweep, nominal_failed, nominal_completed=True).any()
+    assert not vd.inherited_failures(sweep, None, nominal_completed=False).any()
+    reruns = vd.samples_to_rerun(sweep, chain, nominal_completed=False,
+                                 nominal_failed=nominal_failed)
+    assert reruns.inherited.tolist() == [True, False, False, False]
+    assert reruns.any.tolist() == [True, False, False, False]
+    to_chain = vd.samples_to_chain(sweep, reruns.any, chain, nominal_completed=False)
+    base = dict(sweep=sweep, nominal_completed=False, chained=to_chain,
+                chained_failed=np.zeros(4, bool), nominal_failed=nominal_failed)
+    with pytest.raises(ParameterError, match="own rollout's outcome"):
+        vd.failing_samples(vd.SampleEvidence(**base), chain)
+    ev = vd.SampleEvidence(**base, rerun=reruns.any, rerun_failed=np.zeros(4, bool))
+    # sample 0 placed its cube on its own run; 1 and 2 fail where the nominal did not
+    assert vd.failing_samples(ev, chain).tolist() == [False, True, True, False]
+    with pytest.raises(ParameterError, match="nominal_failed"):
+        vd.inherited_failures(sweep, np.array([True]), nominal_completed=False)
+
+
 def test_a_nominal_run_that_fails_its_task_leaves_each_sample_to_its_own_run():
     """The nominal parameters fail the task (UNSAFE either way); with the chained segments
     each sample that passes the moments is decided by its own run, which ends with the
@@ -175,7 +208,7 @@ def test_sticking_failures_are_decided_by_rollouts():
     sweep = _sweep(cost, samples, unlifted=unl, sticking=stick)
     np.testing.assert_array_equal(sweep.failed_sticking_only,
                                   [True, True, True, False, False])
-    near, unlifted, sticking, _ = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
+    near, unlifted, sticking, *_ = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
     assert sticking.tolist() == [True, True, True, False, False] and not near.any()
     assert unlifted.tolist() == [False, False, False, True, False]
     with pytest.raises(ParameterError, match="own rollout"):
