@@ -94,6 +94,9 @@ def test_nominal_beyond_the_critical_mass_is_unsafe(demo_traj, scenario):
     assert r.verdict is Verdict.UNSAFE
     assert not r.passes() and not r.passes(0.99)
     assert any("nominal" in c for c in r.failure_causes)
+    # the cause says what the nominal run lacks of the task, measured
+    assert any("task is not completed" in c and "the nominal run: " in c
+               for c in r.failure_causes), r.failure_causes
 
 
 def test_report_json_schema_and_html(nominal_report, tmp_path):

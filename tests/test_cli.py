@@ -30,6 +30,7 @@ def test_rollout_json(traj_file, capsys, tmp_path):
         assert key in doc
     assert doc["fit_warnings"] == []
     assert doc["steps"] == 4000 and doc["final_stage"] == 4
+    assert doc["completed"] is True and doc["shortfalls"] == []
     assert set(doc["stage_first_step"]) == {"1", "2", "3", "4"}
     assert (tmp_path / "recording.npz").is_file() and (tmp_path / "signals.png").is_file()
 
@@ -54,6 +55,14 @@ def test_rollout_names_why_a_run_never_touches_its_object(tmp_path, capsys):
     assert "never touches the object" in doc["fit_warnings"][0]
     assert "critmoment rollout: warning:" in captured.err
     assert "never touches the object" in captured.err
+    # and what the task's rule misses, measured
+    assert doc["completed"] is False
+    assert doc["shortfalls"] == [
+        "left does not hold the object at the end (it never touched it)",
+        "the object rests on its support at the end"]
+    assert main(["rollout", str(path)]) == 0
+    assert ("short of the task: left does not hold the object at the end (it never "
+            "touched it); the object rests on its support at the end") in capsys.readouterr().out
 
 
 def test_moments_json(traj_file, capsys):
