@@ -46,7 +46,7 @@ WHEELS = {
         "robosuite/models/assets/robots/iiwa/",
         "robosuite/models/assets/grippers/robotiq_gripper_140.xml",
         "robosuite/models/assets/grippers/meshes/robotiq_140_gripper/",
-        "robosuite/models/assets/robots/ur5e/")),
+        "robosuite/models/assets/robots/ur5e/", "robosuite/models/assets/robots/kinova3/")),
 }
 
 #: the Interbotix vx300s URDF efforts [N·m] (reference/aloha_facts.md)
@@ -159,6 +159,12 @@ ROBOTS = {
         joints=("shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint", "wrist_1_joint",
                 "wrist_2_joint", "wrist_3_joint"),
         kp=(800, 800, 600, 250, 150, 50), kv=(40, 40, 25, 4, 3, 1)),
+    "kinova3_robotiq85": dict(
+        arm="robots/kinova3/robot.xml", gripper="grippers/robotiq_gripper_85.xml",
+        base=(-0.56, 0.0, 0.8), joints=tuple(f"Actuator{i}" for i in range(1, 8)),
+        # the Kinova's light links: a kv of 30 on its base joint made MuJoCo's explicit
+        # damping oscillate between the force limits (critmoment refused the run)
+        kp=(300, 300, 300, 300, 120, 80, 40), kv=(8, 8, 6, 6, 1, 0.5, 0.3)),
 }
 
 #: the cube added to the robosuite scenes: half edge [m], mass [kg], where it rests [m]

@@ -43,7 +43,9 @@ class Arm:
         ids = [m.joint(j).id for j in self.joints]
         self.qadr = m.jnt_qposadr[ids]
         self.dofs = m.jnt_dofadr[ids]
-        self.lo, self.hi = m.jnt_range[ids, 0], m.jnt_range[ids, 1]
+        limited = m.jnt_limited[ids].astype(bool)  # a continuous joint has no range
+        self.lo = np.where(limited, m.jnt_range[ids, 0], -np.inf)
+        self.hi = np.where(limited, m.jnt_range[ids, 1], np.inf)
         self.body = m.body(self.hand).id
         acts = []
         for j in self.joints:
@@ -251,8 +253,9 @@ REST = {
     "sawyer_rethink": np.array([0.0, -1.18, 0.0, 2.18, 0.0, 0.57, 3.3161]),
     # robosuite's own initial pose of this arm
     "iiwa_robotiq140": np.array([0.0, 0.650, 0.0, -1.890, 0.0, 0.600, 0.0]),
-    # robosuite's own initial pose of this arm
+    # robosuite's own initial poses of these arms
     "ur5e_robotiq85": np.array([-0.470, -1.735, 2.480, -2.275, -1.590, -1.991]),
+    "kinova3_robotiq85": np.array([0.0, 0.650, 0.0, 1.890, 0.0, 0.600, -np.pi / 2]),
 }
 
 
