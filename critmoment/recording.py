@@ -422,9 +422,6 @@ class Recording:
     @property
     def completed(self) -> bool:
         """The scenario's task succeeded in this run (:meth:`critmoment.task.Task.success`)."""
-        if self.task is None:
-            raise ParameterError("this recording carries no task; expected one from rollout() "
-                                 "or Recording.load(path, twin)")
         return bool(self.task.success(self.task_evidence()))
 
     def task_evidence(self) -> TaskEvidence:
@@ -439,9 +436,8 @@ class Recording:
 
     def shortfalls(self) -> list[str]:
         """What this run lacks of the task's rule, in words (:meth:`Task.shortfalls`);
-        empty when it completes the task."""
-        if self.completed:
-            return []
+        empty when it completes the task (each task's shortfalls are the parts of its
+        success rule)."""
         return self.task.shortfalls(self.task_evidence())
 
     def stage_first_step(self) -> dict[int, int | None]:

@@ -159,14 +159,18 @@ class Task:
         of the rule it misses in words with the value measured; empty when it succeeds."""
         raise NotImplementedError
 
-    def _rise(self, ev: TaskEvidence) -> float:
+    def _rise(self, ev: TaskEvidence) -> np.ndarray:
+        """The object's largest rise above its start along ``up`` [m], (...); 0 for a run
+        with no step."""
         z = np.asarray(ev.object_pos) @ np.asarray(self.up, dtype=float)
-        return float(z.max() - z[0]) if z.size else 0.0
+        if z.shape[-1] == 0:
+            return np.zeros(z.shape[:-1])
+        return z.max(axis=-1) - z[..., 0]
 
     def _lift_shortfall(self, ev: TaskEvidence) -> list[str]:
         if bool(self.lifted(ev)):
             return []
-        return [f"the object rose {self._rise(ev) * 1e3:.0f} mm at most (a lift is "
+        return [f"the object rose {float(self._rise(ev)) * 1e3:.0f} mm at most (a lift is "
                 f"{self.lift_height * 1e3:.0f} mm)"]
 
     def _end_shortfalls(self, ev: TaskEvidence, gripper: str | None, verb: str) -> list[str]:
@@ -185,10 +189,9 @@ class Task:
 
     def lifted(self, ev: TaskEvidence) -> np.ndarray:
         """The object rose at least ``lift_height`` above its start at some step, (...) bool."""
-        z = np.asarray(ev.object_pos) @ np.asarray(self.up, dtype=float)
-        if z.shape[-1] == 0:
-            return np.zeros(z.shape[:-1], dtype=bool)
-        return (z.max(axis=-1) - z[..., 0]) >= self.lift_height
+        if ev.n_steps == 0:
+            return np.zeros(ev.contact_support.shape[:-1], dtype=bool)
+        return self._rise(ev) >= self.lift_height
 
     def _final(self, flags: np.ndarray, ev: TaskEvidence, how: str) -> np.ndarray:
         w = ev.window(self.settle_time)

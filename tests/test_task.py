@@ -94,6 +94,14 @@ def test_the_shortfalls_of_a_run_name_each_part_of_the_rule_it_misses():
     never[:, 1] = True
     assert swap.shortfalls(_run(z, never, np.zeros(200, bool))) == [
         "left does not hold the object at the end (it never touched it)"]
+    # a run lacks something exactly when it fails (Recording.shortfalls relies on it)
+    runs = [(PLACE, _pick_place_run(**kw)) for kw in (
+        {}, {"place_x": 0.1}, {"release": False}, {"lift": 0.005}, {"v_end": 0.5})]
+    runs += [(PLACE, dragged), (hold, _run(z, np.ones((200, 1), bool),
+                                           np.arange(200) < 100)),
+             (hold, _run(z, touch, support)), (swap, _run(z, never, np.zeros(200, bool)))]
+    for task, ev in runs:
+        assert (task.shortfalls(ev) == []) == bool(task.success(ev))
 
 
 def test_pick_place_stages():
