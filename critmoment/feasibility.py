@@ -64,6 +64,9 @@ DAMPING_SHARE = 0.5
 #: from which the saturation is called a numerical oscillation (a stiff servo under an
 #: explicit integrator), not a load
 FLIP_SHARE = 0.25
+#: the share of the lag tolerance a servo's dry-friction band (frictionloss / stiffness) must
+#: reach for the message to name the joint's friction as the likely cause
+FRICTION_BAND_SHARE = 0.5
 #: penetration of the object into another geom at the start that gets a fit warning [m]
 START_PENETRATION = 0.002
 #: fall of the object after its last touch by a gripper that gets a fit warning [m]
@@ -571,6 +574,12 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
                      f"{e.target_speed:.3g} {e.unit}/s it trails by about (kv + joint damping) "
                      f"/ kp × speed = {e.damping_lag:.3g} {e.unit} at steady state; slow the "
                      f"motion down, or audit a twin whose servo gains match the robot's")
+        elif (band := _friction_band(model, e)) >= FRICTION_BAND_SHARE * tol:
+            cause = (f"the joint's dry friction: its frictionloss {e.frictionloss:g} {fu} "
+                     f"holds it until the servo's error reaches frictionloss / stiffness = "
+                     f"{band:.3g} {e.unit}, so the servo stops short of its targets by up to "
+                     f"that much; a twin whose joint friction and servo gains match the "
+                     f"robot's (lower frictionloss or higher kp) tracks them")
         elif model.jnt_limited[joint]:
             cause = ("the joint is blocked (a contact or its range) or the servo is too "
                      "soft (kp) for the motion; check the model's kp/kv and the trajectory's "
@@ -596,6 +605,17 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
         out = [msg.replace("the twin cannot reproduce the nominal motion: ",
                            "the nominal motion is held back by a contact: ") for msg in out]
     return out
+
+
+def _friction_band(model: mujoco.MjModel, e: JointFeasibility) -> float:
+    """How far a position servo's error must grow before it overcomes its joint's dry
+    friction: frictionloss / (gear² × kp) in the joint's units (0 for other actuators)."""
+    a = model.actuator(e.actuator).id
+    stiffness = -float(model.actuator_biasprm[a, 1]) * float(model.actuator_gear[a, 0]) ** 2
+    if e.frictionloss <= 0 or stiffness <= 0 or (
+            model.actuator_biastype[a] != mujoco.mjtBias.mjBIAS_AFFINE):
+        return 0.0
+    return e.frictionloss / stiffness
 
 
 def _oscillation(e: JointFeasibility, fu: str) -> str:

@@ -197,10 +197,16 @@ def _stuck_hint(model: mujoco.MjModel, actuators: list[int]) -> str:
             if (model.actuator_gaintype[a] == mujoco.mjtGain.mjGAIN_FIXED
                     and model.actuator_biastype[a] == mujoco.mjtBias.mjBIAS_AFFINE
                     and model.actuator_ctrllimited[a]):
-                # a position servo: its force at the largest error its range allows
+                # a position servo: its force at the largest error its range allows, at
+                # most its force range, as a joint torque
                 span = float(np.ptp(model.actuator_ctrlrange[a]))
-                push = (f", its actuator pushes at most "
-                        f"{abs(model.actuator_gainprm[a, 0]) * span:.3g} over its range")
+                most = abs(model.actuator_gainprm[a, 0]) * span
+                if model.actuator_forcelimited[a]:
+                    most = min(most, float(np.max(np.abs(model.actuator_forcerange[a]))))
+                most *= abs(float(model.actuator_gear[a, 0]))
+                if most > loss:
+                    continue  # it can push through: the friction is not why it stays
+                push = f", its actuator pushes at most {most:.3g} over its range"
             parts.append(f"joint {model.joint(j).name!r} has frictionloss {loss:g}{push}")
     if not parts:
         return ""

