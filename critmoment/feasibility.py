@@ -664,6 +664,11 @@ def _check_units(trajectory: Trajectory, twin: Twin) -> None:
     actions = np.asarray(trajectory.actions, dtype=np.float64)
     conv = twin.scenario.actions
     lo, hi = twin.channel_lower, twin.channel_upper
+    # every value within ±100: perhaps motor positions normalised to -100..100 (grippers
+    # 0..100), as LeRobot's calibrated SO-100/SO-101 and Koch arms record them
+    percent = (" or motor units normalised to -100..100 (grippers 0..100, as LeRobot's "
+               "calibrated arms record them)" if actions.size and
+               float(np.abs(actions).max()) <= 100.0 else "")
     for c, label in enumerate(conv.labels):
         col = actions[:, c]
         cmin, cmax = float(col.min()), float(col.max())
@@ -672,14 +677,14 @@ def _check_units(trajectory: Trajectory, twin: Twin) -> None:
                 raise TrajectoryError(
                     f"channel {label!r} is a normalised gripper (0 closed .. 1 open), the "
                     f"trajectory's values span {cmin:.4g}..{cmax:.4g}: raw gripper units "
-                    f"(metres, 0..255)? normalise them, or this trajectory is for another "
-                    f"scenario")
+                    f"(metres, 0..255){percent}? normalise them, or this trajectory is for "
+                    f"another scenario")
             continue
         hinge = np.isfinite(lo[c]) and np.isfinite(hi[c]) and hi[c] - lo[c] <= 2 * np.pi + 1e-6
         if hinge and max(abs(cmin), abs(cmax)) > 2 * np.pi + 0.5:
             raise TrajectoryError(
                 f"channel {label!r} spans {cmin:.4g}..{cmax:.4g}, its joint range is "
-                f"{lo[c]:.4g}..{hi[c]:.4g} rad: degrees instead of radians?")
+                f"{lo[c]:.4g}..{hi[c]:.4g} rad: degrees instead of radians{percent}?")
 
 
 def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *,

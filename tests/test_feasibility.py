@@ -352,8 +352,20 @@ def test_gripper_values_in_raw_units_are_named(twin, demo_traj):
         check_fit(Trajectory(actions=raw, fps=demo_traj.fps), None, twin)
     degrees = np.array(demo_traj.actions)
     degrees[:, 1] = np.degrees(degrees[:, 1]) + 60.0
-    with pytest.raises(TrajectoryError, match="degrees instead of radians"):
+    with pytest.raises(TrajectoryError, match="degrees instead of radians") as exc:
         check_fit(Trajectory(actions=degrees, fps=demo_traj.fps), None, twin)
+    assert "-100..100" in str(exc.value)  # all within ±100: LeRobot's units would fit too
+    degrees[:, 2] = np.degrees(degrees[:, 2]) + 120.0  # beyond ±100 only degrees fit
+    with pytest.raises(TrajectoryError, match="degrees instead of radians") as exc:
+        check_fit(Trajectory(actions=degrees, fps=demo_traj.fps), None, twin)
+    assert "-100..100" not in str(exc.value)
+    # every value within ±100 (LeRobot's calibrated SO-100 records -100..100, grippers
+    # 0..100): either unit is named
+    percent = np.clip(np.array(demo_traj.actions) * 30.0, -100.0, 100.0)
+    percent[:, [6, 13]] = 100.0 * np.array(demo_traj.actions)[:, [6, 13]]
+    with pytest.raises(TrajectoryError, match=r"degrees instead of radians or motor units "
+                                              r"normalised to -100\.\.100"):
+        check_fit(Trajectory(actions=percent, fps=demo_traj.fps), None, twin)
 
 
 # -- the CLI ---------------------------------------------------------------------------------
