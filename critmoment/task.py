@@ -32,7 +32,9 @@ Kinds:
 
 "Off the support" and "touched" are read over a final window of ``settle_time`` so that
 contact chatter of a firm grasp (a contact flag that flickers for a step) does not
-decide a run.
+decide a run. A run that starts with the object already carried (touched by a gripper at
+its first step and off every support over its first ``settle_time``: an action chunk
+audited mid-carry) starts lifted: its object was lifted before the chunk began, and may only go down from there.
 """
 
 from __future__ import annotations
@@ -188,10 +190,19 @@ class Task:
         return out
 
     def lifted(self, ev: TaskEvidence) -> np.ndarray:
-        """The object rose at least ``lift_height`` above its start at some step, (...) bool."""
+        """The object rose at least ``lift_height`` above its start at some step, or the run
+        starts with it already carried (:meth:`carried_at_start`), (...) bool."""
         if ev.n_steps == 0:
             return np.zeros(ev.contact_support.shape[:-1], dtype=bool)
-        return self._rise(ev) >= self.lift_height
+        return (self._rise(ev) >= self.lift_height) | self.carried_at_start(ev)
+
+    def carried_at_start(self, ev: TaskEvidence) -> np.ndarray:
+        """The run starts with the object carried: touched by a gripper at the first step and
+        off every support over the first ``settle_time`` (an action chunk that begins
+        mid-carry), (...) bool."""
+        w = ev.window(self.settle_time)
+        touched = ev.contact_gripper[..., 0, :].any(axis=-1)
+        return touched & ~ev.contact_support[..., :w].any(axis=-1)
 
     def _final(self, flags: np.ndarray, ev: TaskEvidence, how: str) -> np.ndarray:
         w = ev.window(self.settle_time)

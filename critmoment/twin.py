@@ -111,7 +111,9 @@ def lifted_flags(carried: np.ndarray, height: np.ndarray, rise: float = LIFT_RIS
 
     A run of consecutive carried steps counts as a lift when the object rises more than
     ``rise`` above its height at the run's start; a squeeze that tips the object off its
-    support without raising it (a few steps, under a millimetre) does not.
+    support without raising it (a few steps, under a millimetre) does not. A run carried
+    from the first step on counts as a lift too: the object was lifted before the
+    trajectory began (an action chunk that starts mid-carry) and may only go down.
 
     Args:
         carried: (T,) bool, from :func:`carried_flags`.
@@ -130,7 +132,7 @@ def lifted_flags(carried: np.ndarray, height: np.ndarray, rise: float = LIFT_RIS
     out = carried.copy()
     edges = np.flatnonzero(np.diff(np.concatenate([[False], carried, [False]]).astype(np.int8)))
     for start, stop in zip(edges[::2], edges[1::2], strict=True):
-        if height[start:stop].max() - height[start] <= rise:
+        if start > 0 and height[start:stop].max() - height[start] <= rise:
             out[start:stop] = False
     return out
 

@@ -213,3 +213,25 @@ def test_a_lift_is_measured_against_gravity():
     assert hold.lifted(along_z) and not hold.lifted(along_y)
     assert y_up.lifted(along_y) and not y_up.lifted(along_z)
     assert "up" not in y_up.to_json()  # the model's, not a task setting
+
+
+def test_a_chunk_that_starts_mid_carry_starts_lifted():
+    """An action chunk audited mid-carry starts with the object held off its support; it
+    only goes down (to the goal): its lift happened before the chunk. Held on the table at
+    the start, or touched only later, the rule still asks for the rise."""
+    n = 100
+    z = np.linspace(0.08, 0.02, 2 * n)  # carried down from 8 cm, set on the table
+    x = np.full(2 * n, 0.3)
+    touch = np.r_[np.ones(n, bool), np.zeros(n, bool)][:, None]  # released at step n
+    support = np.r_[np.zeros(n, bool), np.ones(n, bool)]
+    chunk = _run(z, touch, support, x=x)
+    assert PLACE.carried_at_start(chunk) and PLACE.lifted(chunk) and PLACE.success(chunk)
+    assert PLACE.shortfalls(chunk) == []
+    # the same path with the object on its support at the start: no lift, no success
+    on_table = _run(z, touch, np.ones(2 * n, bool), x=x)
+    assert not PLACE.carried_at_start(on_table) and not PLACE.success(on_table)
+    assert any("rose" in s for s in PLACE.shortfalls(on_table))
+    # untouched at the start (a gripper only reaches it later): no head start either
+    late = _run(z, np.r_[np.zeros(10, bool), np.ones(n - 10, bool), np.zeros(n, bool)][:, None],
+                support, x=x)
+    assert not PLACE.carried_at_start(late) and not PLACE.lifted(late)

@@ -642,6 +642,11 @@ def test_lifted_flags_keep_the_runs_that_rise():
     assert lifted.astype(int).tolist() == [0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 0, 0]
     assert not (lifted & ~carried).any()
     assert lifted_flags(carried, height, rise=0.02).sum() == 0
+    # carried from the first step (a chunk that starts mid-carry): lifted before it began,
+    # though it only goes down
+    down = np.array([0.08, 0.07, 0.05, 0.03, 0.02, 0.02])
+    assert lifted_flags(np.array([1, 1, 1, 1, 0, 0], bool), down).tolist() == [
+        True, True, True, True, False, False]
     with pytest.raises(ParameterError, match=r"same shape \(T,\), got \(12,\) and \(11,\)"):
         lifted_flags(carried, height[:-1])
 
