@@ -1004,3 +1004,25 @@ def test_the_nominal_cost_with_both_terms_calibrates_the_contact_criterion(tmp_p
         check = cm.validate(traj, twin=twin, n_samples=16, seed=0)
     assert check.confusion == {"true_safe": 6, "false_safe": 0, "true_unsafe": 10,
                                "false_unsafe": 0}
+
+
+def test_a_grip_that_shifts_and_settles_is_for_its_own_run_to_decide(twin, demo_traj,
+                                                                      demo_recording):
+    """Restored at lift-off from the nominal state with a heavier, less grippy cube, a grip
+    can shift into a new equilibrium and stop: the force ratio reads a contact failure over
+    the whole window while the cube moves some tens of µm and then stays. Followed a little
+    further, such a failure is a sticking one (its sample's own run decides: this one
+    really completes the hand-over); a cube that keeps sliding stays a failure that stops
+    its sample."""
+    from critmoment.analysis import audit_evaluator
+    from critmoment.groundtruth import brute_force
+
+    ev, _ = audit_evaluator(demo_recording, twin)
+    lift = 1707  # the demo's lift-off moment
+    samples = np.array([[0.5669, 0.7217], [3.0, 0.3]])
+    res = ev.evaluate([lift], samples)
+    assert res.failure[0].tolist() == [sparse.Failure.CONTACT] * 2
+    assert res.sticking_failure[0].tolist() == [True, False]
+    assert res.slip[0, 0] < 1e-4  # tens of µm within the window
+    real = brute_force(demo_traj, twin=twin, samples=samples[:1])
+    assert not real.failed[0]
