@@ -285,7 +285,7 @@ def sensitivity_function(evaluator: sp.SparseEvaluator, box) -> Callable[[np.nda
         steps = np.asarray(steps, dtype=np.int64)
         if steps.size == 0:
             return np.zeros(0)
-        res = evaluator.evaluate(steps, probe)
+        res = evaluator.evaluate(steps, probe, settle=False)
         return np.mean(np.minimum(res.cost, 10.0), axis=1)
 
     return score
@@ -404,7 +404,7 @@ def _curves(evaluator, steps: np.ndarray, box, n: int) -> dict[int, dict[str, sp
         samples[:, [i for i in range(box.ndim) if i != j]] = box.nominal[
             [i for i in range(box.ndim) if i != j]]
         grids.append((steps, samples))
-    for p, res in zip(box.parameters, evaluator.evaluate_many(grids), strict=True):
+    for p, res in zip(box.parameters, evaluator.evaluate_many(grids, settle=False), strict=True):
         for row, s in enumerate(steps):
             out[int(s)][p.name] = _select(res, row)
     return out

@@ -1258,7 +1258,7 @@ def run_searches(evaluator, searches: Sequence[Generator]) -> list[SearchResult]
             advance(i)
         while pending:
             order = list(pending)
-            answers = evaluator.evaluate_many([pending[i] for i in order])
+            answers = evaluator.evaluate_many([pending[i] for i in order], settle=False)
             for i, res in zip(order, answers, strict=True):
                 advance(i, res)
     return results
@@ -1350,7 +1350,7 @@ def surrogate_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = Non
     mesh = np.meshgrid(*[axis] * box.ndim, indexing="ij")
     unit = np.stack([g.reshape(-1) for g in mesh], axis=1)
     points = np.clip(box.from_unit(unit), box.low, box.high)  # ends exact despite rounding
-    cost = evaluator.evaluate(steps_arr, points).cost.max(axis=0)
+    cost = evaluator.evaluate(steps_arr, points, settle=False).cost.max(axis=0)
     order = np.argsort(-np.where(np.isnan(cost), -np.inf, cost), kind="stable")
     g_best = int(order[0])
     names = box.names
@@ -1373,7 +1373,7 @@ def surrogate_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = Non
             cand_unit.append(np.clip(np.asarray(sol["x"]).reshape(-1), 0.0, 1.0))
     cand_points = (np.clip(box.from_unit(np.array(cand_unit)), box.low, box.high) if cand_unit
                    else np.zeros((0, box.ndim)))
-    cand_cost = (evaluator.evaluate(steps_arr, cand_points).cost.max(axis=0) if cand_unit
+    cand_cost = (evaluator.evaluate(steps_arr, cand_points, settle=False).cost.max(axis=0) if cand_unit
                  else np.zeros(0))
     best_point, best_cost, source = points[g_best], float(cost[g_best]), "grid"
     if cand_cost.size and float(np.max(cand_cost)) > best_cost:
@@ -1525,7 +1525,8 @@ def verify(evaluator, step: Any, analytic: AnalyticWorstCase | AnalyticBounds,
     """
     k, bounds, points, samples = _points_to_verify(evaluator, step, analytic, search,
                                                    include_nominal)
-    return _verification(evaluator, k, bounds, points, evaluator.evaluate([k], samples))
+    res = evaluator.evaluate([k], samples, settle=False)
+    return _verification(evaluator, k, bounds, points, res)
 
 
 def _points_to_verify(evaluator, step: Any, analytic: AnalyticWorstCase | AnalyticBounds,
@@ -1658,7 +1659,8 @@ def audit_moments(evaluator, steps: Sequence[Any], *,
         for k in ks])
     checks = [_points_to_verify(evaluator, k, w, f, True)
               for k, w, f in zip(ks, worsts, found, strict=True)]
-    answers = evaluator.evaluate_many([([k], samples) for k, _, _, samples in checks])
+    answers = evaluator.evaluate_many([([k], samples) for k, _, _, samples in checks],
+                                     settle=False)
     out = []
     for (k, b, points, _), worst, f, res in zip(checks, worsts, found, answers, strict=True):
         analytic = b.summary()

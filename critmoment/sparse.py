@@ -237,6 +237,10 @@ SETTLE_TIME = 0.15
 #: audited from mid-carry: 1.5–2.7 mm in 50 ms, then flat), where a real slide keeps
 #: going (from rest under a constant net force it moves most at the end)
 SETTLED_SHARE = 0.1
+#: blocks of ``persistence`` in which a followed slip may move more than in the block before
+#: (the shift's own acceleration after the restore) before it is taken for a slide and no
+#: longer followed
+SETTLE_SPEEDUPS = 2
 
 
 @dataclasses.dataclass(frozen=True)
@@ -948,7 +952,7 @@ class SparseEvaluator:
 
     # -- evaluation ----------------------------------------------------------------
     def evaluate(self, steps: Any, samples: Any, *, keep_raw: bool = False,
-                 first_failure: bool = False) -> SparseResult:
+                 first_failure: bool = False, settle: bool = True) -> SparseResult:
         """Evaluate every sample at every moment.
 
         Args:
@@ -964,6 +968,11 @@ class SparseEvaluator:
                 full evaluation; the values of a failing pair are those of the steps up to
                 the failure. For a verdict this skips most of the stepping wherever much of
                 the box fails.
+            settle: follow the contact failures whose measured slip is small to see whether
+                they settle (``sticking_failure``, ``SETTLE_TIME``). Without it a settled
+                failure is an ordinary one: for callers that read costs and failures only
+                (critical values, searches, the moments' ranking), not which failures only
+                a sample's own run decides.
 
         Returns:
             The :class:`SparseResult`. Its arrays are read-only: the evaluator keeps the
@@ -975,19 +984,23 @@ class SparseEvaluator:
         """
         steps = self.check_steps(steps)
         samples = self.check_samples(samples)
+        settle = bool(settle)
         if keep_raw:
-            return self._evaluate(steps, samples, keep_raw=True, first_failure=first_failure)
+            return self._evaluate(steps, samples, keep_raw=True, first_failure=first_failure,
+                                  settle=settle)
         if not first_failure:
-            return self._evaluate_checked([(steps, samples)])[0]
-        key = (steps.tobytes(), samples.shape, samples.tobytes(), True)
+            return self._evaluate_checked([(steps, samples)], settle=settle)[0]
+        key = (steps.tobytes(), samples.shape, samples.tobytes(), True, settle)
         res = self._memo.get(key)
         if res is None:
-            res = self._remember(key, self._first_failures(steps.copy(), samples.copy()))
+            res = self._remember(key, self._first_failures(steps.copy(), samples.copy(),
+                                                           settle=settle))
         else:
             self._memo.move_to_end(key)
         return res
 
-    def evaluate_many(self, requests: Sequence[tuple[Any, Any]]) -> list[SparseResult]:
+    def evaluate_many(self, requests: Sequence[tuple[Any, Any]], *, settle: bool = True
+                      ) -> list[SparseResult]:
         """Several :meth:`evaluate` calls (without ``keep_raw`` or ``first_failure``) in one:
         every (moment, sample) pair of every request is stepped in the same batches, each
         simulation from its own moment, so that many small calls (a few samples at one
@@ -996,6 +1009,7 @@ class SparseEvaluator:
 
         Args:
             requests: (steps, samples) pairs, as :meth:`evaluate` takes them.
+            settle: as :meth:`evaluate`'s.
 
         Returns:
             One :class:`SparseResult` per request, in order.
@@ -1005,12 +1019,13 @@ class SparseEvaluator:
             SimulationDivergedError: a sample diverged and the policy is RAISE.
         """
         return self._evaluate_checked(
-            [(self.check_steps(st), self.check_samples(sa)) for st, sa in requests])
+            [(self.check_steps(st), self.check_samples(sa)) for st, sa in requests],
+            settle=bool(settle))
 
-    def _evaluate_checked(self, checked: list[tuple[np.ndarray, np.ndarray]]
-                          ) -> list[SparseResult]:
+    def _evaluate_checked(self, checked: list[tuple[np.ndarray, np.ndarray]], *,
+                          settle: bool = True) -> list[SparseResult]:
         """:meth:`evaluate_many` of validated (steps, samples) requests."""
-        keys = [(st.tobytes(), sa.shape, sa.tobytes(), False) for st, sa in checked]
+        keys = [(st.tobytes(), sa.shape, sa.tobytes(), False, settle) for st, sa in checked]
         done: dict[tuple, SparseResult] = {}
         todo: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
         for key, (st, sa) in zip(keys, checked, strict=True):
@@ -1022,19 +1037,23 @@ class SparseEvaluator:
         if todo:
             # the same call again (the audit's 1-D curves are also the critical values'
             # grid): the same, immutable result
-            for key, res in zip(todo, self._evaluate_grids(list(todo.values())), strict=True):
+            for key, res in zip(todo, self._evaluate_grids(list(todo.values()), settle=settle),
+                                strict=True):
                 done[key] = self._remember(key, res)
         return [done[key] for key in keys]
 
-    def _first_failures(self, steps: np.ndarray, samples: np.ndarray) -> SparseResult:
+    def _first_failures(self, steps: np.ndarray, samples: np.ndarray, *, settle: bool = True
+                        ) -> SparseResult:
         """First-failure evaluation, with the samples shared out (:meth:`_shared_out`):
         between the moments one thread decides its samples in Python while the other
         steps, where one batch on all MuJoCo threads left them idle (each sample's
         evaluation is its own: the result is the same)."""
         results = self._shared_out(samples.shape[0], _SPLIT_LEAST, lambda f, r: f._evaluate(
-            steps, samples[r], keep_raw=False, first_failure=True, offset=int(r[0])))
+            steps, samples[r], keep_raw=False, first_failure=True, offset=int(r[0]),
+            settle=settle))
         if results is None:
-            return self._evaluate(steps, samples, keep_raw=False, first_failure=True)
+            return self._evaluate(steps, samples, keep_raw=False, first_failure=True,
+                                  settle=settle)
         return _join_samples(results)
 
     def _parts(self, n: int, least: int) -> int:
@@ -1072,14 +1091,14 @@ class SparseEvaluator:
             self._memo.popitem(last=False)
         return res
 
-    def _evaluate_grids(self, grids: list[tuple[np.ndarray, np.ndarray]]
-                        ) -> list[SparseResult]:
+    def _evaluate_grids(self, grids: list[tuple[np.ndarray, np.ndarray]], *,
+                        settle: bool = True) -> list[SparseResult]:
         """Every sample at every moment of each (steps, samples) grid, all pairs of all
         grids stepped together (in batches of at most ``chunk`` simulations)."""
         h = self.horizon
         ks = np.concatenate([np.repeat(st, sa.shape[0]) for st, sa in grids])
         xs = np.concatenate([np.tile(sa, (st.shape[0], 1)) for st, sa in grids])
-        pairs, raised, warned = self._evaluate_pairs(ks, xs)
+        pairs, raised, warned = self._evaluate_pairs(ks, xs, settle=settle)
         results, start = [], 0
         for steps, samples in grids:
             m, n = steps.shape[0], samples.shape[0]
@@ -1101,7 +1120,7 @@ class SparseEvaluator:
                 evaluated=None, settings=self.settings, **out))
         return results
 
-    def _evaluate_pairs(self, ks: np.ndarray, samples: np.ndarray
+    def _evaluate_pairs(self, ks: np.ndarray, samples: np.ndarray, *, settle: bool = True
                         ) -> tuple[dict[str, np.ndarray], np.ndarray, np.ndarray]:
         """Sample p at moment ks[p], for every p: the per-pair values of a
         :class:`SparseResult` ((P, ...) each), and which pairs MuJoCo raised or warned for."""
@@ -1117,7 +1136,8 @@ class SparseEvaluator:
             sl = slice(start, min(total, start + chunk))
             batch, mu = self._batch(samples[sl])
             k = ks[sl]
-            sim = self._simulate(batch, k, np.arange(batch.nsim), mu, keep_state=False)
+            sim = self._simulate(batch, k, np.arange(batch.nsim), mu, keep_state=False,
+                                 settle=settle)
             view = {name: value[None, sl] for name, value in out.items()}
             self._score(sim.scored(h), sim.diverged, view, 0, slice(None),
                         at=k[:, None] + np.arange(h)[None, :])
@@ -1126,7 +1146,7 @@ class SparseEvaluator:
         return out, raised, warned
 
     def _evaluate(self, steps: np.ndarray, samples: np.ndarray, *, keep_raw: bool,
-                  first_failure: bool, offset: int = 0) -> SparseResult:
+                  first_failure: bool, offset: int = 0, settle: bool = True) -> SparseResult:
         twin, h = self.twin, self.horizon
         m, n = steps.shape[0], samples.shape[0]
         nsd = twin.nsensordata
@@ -1150,7 +1170,7 @@ class SparseEvaluator:
                 if first_failure:
                     evaluated[i, sl] = alive
                 sim = self._simulate(batch, k, run, mu, keep_state=keep_raw,
-                                     stop_early=first_failure and not keep_raw)
+                                     stop_early=first_failure and not keep_raw, settle=settle)
                 last, at = None, k + np.arange(h)[None, :]
                 if first_failure:
                     # a sample stops at its first failing step (with the flags of real
@@ -1306,7 +1326,7 @@ class SparseEvaluator:
 
     def _simulate(self, batch: mujoco.batch.Batch, k: int, run: np.ndarray,
                   mu: np.ndarray | float, *, keep_state: bool, restore: bool = True,
-                  stop_early: bool = False, watch=None) -> _Simulated:
+                  stop_early: bool = False, watch=None, settle: bool = True) -> _Simulated:
         """Restore step k in the simulations ``run``, step the horizon, follow the ones an
         open contact excursion or the creep horizon asks for, and decide each. Without
         ``restore`` the simulations go on from their own states (they must stand at step k)
@@ -1316,7 +1336,9 @@ class SparseEvaluator:
         simulations' own history). With ``stop_early`` the horizon is stepped in blocks of
         ``persistence`` steps and a simulation whose failure is decided stops (its later
         rows stay zero). ``k`` may also be one step per simulation of the batch (nsim,),
-        restored: each simulation is then decided at its own step, as alone."""
+        restored: each simulation is then decided at its own step, as alone. With
+        ``settle`` (restored, stepping) the contact failures whose small slip settles are
+        sticking ones (:meth:`_settled`)."""
         h, nsim = self.horizon, batch.nsim
         per_sim = np.ndim(k) > 0  # a start step per simulation (restored), (nsim,)
         if per_sim:
@@ -1384,7 +1406,7 @@ class SparseEvaluator:
         diverged = raised | (warned > 0).any(axis=1) | ~np.isfinite(buf).all(axis=(1, 2))
         diverged[length == 0] = False
         settled = np.zeros(nsim, bool)
-        if restore and self.mode is SparseMode.STEP:
+        if settle and restore and self.mode is SparseMode.STEP:
             settled = self._settled(batch, k, run[~diverged[run]], decided, slip, length)
         failure = np.where(diverged, Failure.DIVERGED, decided.failure).astype(np.int8)
         stop = (decided.stop & ~settled) | diverged
@@ -1403,8 +1425,8 @@ class SparseEvaluator:
         gripper holding it alone at every step, slid less than ``slip_tolerance`` by the end
         of their decision and then settled: followed in blocks of ``persistence`` for up to
         ``SETTLE_TIME``, it moved at most ``SETTLED_SHARE`` of its whole slip over the last
-        ``persistence`` (one that slides past twice the tolerance is not followed further).
-        One that does not slow down from one block to the next is sliding, not settling, and
+        ``persistence``. One that slides past the tolerance, or moves more than in the
+        block before in more than ``SETTLE_SPEEDUPS`` blocks, is sliding, not settling, and
         is not followed further. Whether a settled sample really fails is for its own run to
         say (a sticking failure)."""
         nsim, width = slip.shape
@@ -1431,6 +1453,7 @@ class SparseEvaluator:
             # how far each moved over the last ``persistence`` of its decision
             before = np.abs(seen[active, last - 1]
                             - seen[active, np.maximum(last - 1 - p, 0)])
+            faster = np.zeros(active.size, np.int64)  # blocks that moved more than the last
             done = 0
             while active.size and done + p <= min(most, self.n_steps - begin):
                 if not self._alone[begin + done:begin + done + p].any(axis=-1).all():
@@ -1448,9 +1471,10 @@ class SparseEvaluator:
                 total = track[rows].max(axis=1)
                 now = fine & (moved <= SETTLED_SHARE * total)
                 out[active[now]] = True
-                slowing = moved < before[rows]
+                faster[rows] += moved >= before[rows]
                 before[rows] = moved
-                active = active[~now & fine & slowing & (total <= 2 * tol)]
+                active = active[~now & fine & (total <= tol)
+                                & (faster[rows] <= SETTLE_SPEEDUPS)]
         return out
 
     def _decide(self, buf: np.ndarray, slip: np.ndarray, length: np.ndarray, mu: np.ndarray,
@@ -1879,7 +1903,8 @@ def _curves(engine: SparseEvaluator, steps: np.ndarray, bases: np.ndarray, axes:
     for (j, _), members in groups.items():
         c0, i0 = members[0]
         rows = sorted({i for _, i in members})
-        res = engine.evaluate(steps[rows], _curve_samples(bases[c0, i0, j], j, axes))
+        res = engine.evaluate(steps[rows], _curve_samples(bases[c0, i0, j], j, axes),
+                              settle=False)
         fails, dominant = res.fails(criterion, limit=limit), res.dominant
         for c, i in members:
             failed[c, i, j] = fails[rows.index(i)]
@@ -1907,7 +1932,7 @@ def _worst_others(engine: SparseEvaluator, steps: np.ndarray, axes: np.ndarray,
             for end in ends:
                 base = box.nominal.copy()
                 base[q] = end[q]
-                res = engine.evaluate(steps, _curve_samples(base, j, axes))
+                res = engine.evaluate(steps, _curve_samples(base, j, axes), settle=False)
                 bad = np.clip(_badness(res, criterion), -1e300, 1e300)
                 score.append((res.fails(criterion, limit=limit).sum(axis=1), bad.mean(axis=1)))
             (f_lo, b_lo), (f_hi, b_hi) = score
@@ -2047,7 +2072,7 @@ def _refine(engine: SparseEvaluator, steps: np.ndarray, brackets: list[_Bracket]
             samples[np.arange(samples.shape[0]), cols] = points.reshape(-1)
             rounds.append((group, points, (steps[i:i + 1], samples)))
         # every moment's points of this round in one batch call
-        answers = engine.evaluate_many([request for _, _, request in rounds])
+        answers = engine.evaluate_many([request for _, _, request in rounds], settle=False)
         for (group, points, _), res in zip(rounds, answers, strict=True):
             fail = res.fails(criterion, limit=limit)[0].reshape(len(group), split)
             dominant = res.dominant[0].reshape(len(group), split)

@@ -751,7 +751,8 @@ def test_a_contact_failure_inside_an_elliptic_cone_is_a_sticking_one(scenario, t
     sticking failure, which does not stop the sample (it is evaluated at the later
     moments) and, alone, leaves the sample to its own rollout; a contact failure that
     reached the cone is not one. On a pyramidal cone, where a sliding contact's ratio is
-    not 1, there are none."""
+    not 1, there are none. (Without ``settle``: a contact failure on the cone whose small
+    slip settles is a sticking one too, tested below.)"""
     from critmoment import analysis, demos
     from critmoment import verdict as vd
 
@@ -762,7 +763,7 @@ def test_a_contact_failure_inside_an_elliptic_cone_is_a_sticking_one(scenario, t
     ev = SparseEvaluator(rec, twin)
     _, steps = analysis.audit_moments(rec, twin, ev, 8)
     samples = sparse.sweep_samples(scenario.box, n=256, seed=3)
-    res = ev.evaluate(steps, samples, first_failure=True)
+    res = ev.evaluate(steps, samples, first_failure=True, settle=False)
     contact = res.failure == sparse.Failure.CONTACT
     stick = res.sticking_failure
     assert stick.any() and (contact & ~stick).any()
@@ -785,7 +786,8 @@ def test_a_contact_failure_inside_an_elliptic_cone_is_a_sticking_one(scenario, t
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         prec = rollout.rollout(traj, twin=pyramidal)
-    pres = SparseEvaluator(prec, pyramidal).evaluate(steps, samples[:64], first_failure=True)
+    pres = SparseEvaluator(prec, pyramidal).evaluate(steps, samples[:64], first_failure=True,
+                                                     settle=False)
     assert (pres.failure == sparse.Failure.CONTACT).any() and not pres.sticking_failure.any()
 
 
@@ -794,7 +796,9 @@ def test_a_contact_failure_whose_object_stayed_still_is_a_sticking_one(scenario,
     """On an elliptic cone a contact failure whose object, measured in its holding gripper
     at every step decided, moved no more than STILL_SLIP is a sticking one whatever its
     force ratio; one measured at no step (two grippers hold it) is not; and on the demo,
-    whose contact failures all slid 20 µm or more, the default changes nothing."""
+    whose contact failures all slid 20 µm or more, the default changes nothing. (Without
+    ``settle``, which makes a settling contact failure a sticking one whatever this rule
+    says.)"""
     from critmoment import analysis, demos
 
     traj = demos.scripted_transfer(3, twin=twin)
@@ -806,7 +810,7 @@ def test_a_contact_failure_whose_object_stayed_still_is_a_sticking_one(scenario,
 
     def sweep(still):
         monkeypatch.setattr(sparse, "STILL_SLIP", still)
-        return SparseEvaluator(rec, twin).evaluate(steps, samples)
+        return SparseEvaluator(rec, twin).evaluate(steps, samples, settle=False)
 
     default, none, every = sweep(sparse.STILL_SLIP), sweep(0.0), sweep(1.0)
     contact = none.failure == sparse.Failure.CONTACT
