@@ -16,6 +16,10 @@ see docs/real_models.md (nineteenth round).
    friction 0.1-1.5): ``validate --samples 64``; ``analyze`` of the same motion resampled to
    LeRobot's 30 fps (400 Hz physics: 13.3 steps per action), and the region it states run in
    full at 32 Sobol points inside it and its 4 corners.
+4. The same pick-and-place audited from mid-carry: an action chunk from control step 400 (8 s
+   in, the cube held 7.5 cm up) whose ``qpos0`` is the nominal run's state there:
+   ``rollout`` (the chunk completes the task) and ``validate --samples 64`` on init's box
+   and on the wide box.
 
 Usage::
 
@@ -78,6 +82,7 @@ def _pick_place(mjcf: Path, work: Path, args) -> dict:
     if rc:
         raise RuntimeError(f"init failed:\n{out}")
     text = toml.read_text()
+    (work / "pick_place_init.toml").write_text(text)
     for old, new in (("range = [0.025, 1.0]   # [kg]\nnominal = 0.05",
                       "range = [0.5, 4.0]   # [kg]\nnominal = 0.6"),
                      ("range = [0.2, 1.5]", "range = [0.1, 1.5]")):
@@ -108,6 +113,34 @@ def _pick_place(mjcf: Path, work: Path, args) -> dict:
         row["region_rollouts"] = {"points": len(points), "failed": int(bf.failed.sum())}
     print(json.dumps(row))
     return row
+
+
+def _chunk(work: Path, args) -> list[dict]:
+    """Section 4 of the module docstring (after :func:`_pick_place`, whose files it reads)."""
+    toml_init = work / "pick_place_init.toml"
+    twin = cm.Twin(cm.load_scenario(toml_init))
+    traj = cm.load_trajectory(work / "pick_place.npz")
+    rec = cm.rollout(traj, twin=twin)
+    k = 400
+    data = mujoco.MjData(twin.model)
+    mujoco.mj_setState(twin.model, data, rec.states[int(round(k / traj.fps / rec.dt))],
+                       mujoco.mjtState.mjSTATE_INTEGRATION)
+    path = work / "pick_place_chunk.npz"
+    save_trajectory(Trajectory(actions=traj.actions[k:], fps=traj.fps, qpos0=data.qpos.copy(),
+                               source=f"pick_place from control step {k}"), path)
+    rc, out = _cli("rollout", str(path), "--scenario", str(toml_init), "--json")
+    done = json.loads(out[out.index("{"):out.rindex("}") + 1]).get("completed")
+    rows = []
+    for box, toml in (("init", toml_init), ("wide", work / "pick_place.toml")):
+        rc, out = _cli("validate", str(path), "--scenario", str(toml), "--samples",
+                       str(args.samples), "--seed", str(args.seed), "--json")
+        res = json.loads(out[out.index("{"):out.rindex("}") + 1])
+        row = {"case": f"pick_place chunk, {box} box", "chunk_completed": done,
+               "outcomes": res["outcomes"], "confusion": res["confusion"],
+               "agreement": res["agreement"]}
+        print(json.dumps(row))
+        rows.append(row)
+    return rows
 
 
 def main() -> None:
@@ -149,6 +182,7 @@ def main() -> None:
             rows.append(row)
             print(json.dumps(row))
     rows.append(_pick_place(trackable, work, args))
+    rows += _chunk(work, args)
     (work / "results.json").write_text(json.dumps(rows, indent=1))
     print(f"results: {work / 'results.json'}")
 

@@ -770,8 +770,9 @@ def _verification_text(v) -> str:
         text += (f"; {v['unlifted']} failing only where the object is squeezed off its "
                  f"support without a lift re-run in full, {v['unlifted_failed']} of them fail")
     if v.get("sticking"):
-        text += (f"; {v['sticking']} failing only with the grip inside its friction cone re-run "
-                 f"in full, {v['sticking_failed']} of them fail")
+        text += (f"; {v['sticking']} failing only where the grip holds (inside its friction "
+                 f"cone, or settled after a small shift) re-run in full, "
+                 f"{v['sticking_failed']} of them fail")
     if v.get("slipping"):
         text += (f"; {v['slipping']} failing only by a slip under the ground truth's "
                  f"tolerance re-run in full, {v['slipping_failed']} of them fail")

@@ -240,7 +240,7 @@ SETTLED_SHARE = 0.1
 #: blocks of ``persistence`` in which a followed slip may move more than in the block before
 #: (the shift's own acceleration after the restore) before it is taken for a slide and no
 #: longer followed
-SETTLE_SPEEDUPS = 2
+SETTLE_SPEEDUPS = 3
 
 
 @dataclasses.dataclass(frozen=True)
