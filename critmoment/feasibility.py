@@ -198,6 +198,9 @@ class JointFeasibility:
         damping_lag: the lag the servo's velocity damping alone gives at that speed, at
             steady state: (kv + joint damping / gear²) / kp × speed [rad or m] (0 when there
             is no stretch).
+        friction_band: how far a position servo's error must grow before it overcomes the
+            joint's dry friction, frictionloss / (kp × gear²) [rad or m] (0 for other
+            actuators).
         force_flips: of the consecutive steps both at the force limit, the fraction whose
             force changes sign (a numerical oscillation between +limit and −limit, not a
             load).
@@ -225,6 +228,7 @@ class JointFeasibility:
     target_speed: float = 0.0
     force_flips: float = 0.0
     damping_lag: float = 0.0
+    friction_band: float = 0.0
 
     def to_json(self) -> dict:
         """JSON-able dict (kind as its value, non-finite numbers as None)."""
@@ -395,7 +399,8 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         is_gripper = a in grippers
         max_lag = max_lag_time = span = float("nan")
         lag_start, lag_len, lag_in_run = 0, 0, 0.0
-        speed = damping_lag = 0.0
+        speed = damping_lag = band = 0.0
+        friction = float(m.dof_frictionloss[m.jnt_dofadr[j]])
         if kind is _Kind.POSITION and int(m.jnt_type[j]) in (
                 int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)):
             gain = m.actuator_gainprm[a, 0]
@@ -410,6 +415,8 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             span = float(np.ptp(target)) if n else 0.0
             lag_start, lag_len = _longest_run(lag > tol)
             lag_in_run = float(lag[lag_start:lag_start + lag_len].max()) if lag_len else 0.0
+            if b1 < 0:
+                band = friction / (-b1 * gear ** 2)
             if lag_len and n > 1 and b1 < 0:
                 part = target[lag_start:lag_start + lag_len + 1]
                 speed = float(np.abs(np.diff(part)).max(initial=0.0)) / dt
@@ -421,7 +428,6 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         both = saturated[1:] & saturated[:-1]
         flips = both & (np.sign(force[1:, a]) != np.sign(force[:-1, a]))
         force_flips = float(flips.sum()) / max(1, int(both.sum()))
-        friction = float(m.dof_frictionloss[m.jnt_dofadr[j]])
         entry = JointFeasibility(
             actuator=name, joint=jname, kind=kind.value, unit=unit, gripper=is_gripper,
             max_lag=max_lag, max_lag_time=max_lag_time, lag_duration=lag_len * dt,
@@ -429,7 +435,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             saturation_duration=sat_len * dt, saturation_start=sat_start * dt if sat_len else None,
             saturation_total=float(saturated.sum()) * dt, force_limit=limit, limit_source=source,
             frictionloss=friction, target_span=span, note=note, target_speed=speed,
-            damping_lag=damping_lag, force_flips=force_flips)
+            damping_lag=damping_lag, friction_band=band, force_flips=force_flips)
         stretch = _failing_stretch(entry, tol, abs(gear), options)
         if stretch is not None:
             blocked = _blocking_contact(m, states, *stretch, joint=j)
@@ -574,10 +580,10 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
                      f"{e.target_speed:.3g} {e.unit}/s it trails by about (kv + joint damping) "
                      f"/ kp × speed = {e.damping_lag:.3g} {e.unit} at steady state; slow the "
                      f"motion down, or audit a twin whose servo gains match the robot's")
-        elif (band := _friction_band(model, e)) >= FRICTION_BAND_SHARE * tol:
+        elif e.friction_band >= FRICTION_BAND_SHARE * tol:
             cause = (f"the joint's dry friction: its frictionloss {e.frictionloss:g} {fu} "
                      f"holds it until the servo's error reaches frictionloss / stiffness = "
-                     f"{band:.3g} {e.unit}, so the servo stops short of its targets by up to "
+                     f"{e.friction_band:.3g} {e.unit}, so the servo stops short of its targets by up to "
                      f"that much; a twin whose joint friction and servo gains match the "
                      f"robot's (lower frictionloss or higher kp) tracks them")
         elif model.jnt_limited[joint]:
@@ -605,17 +611,6 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
         out = [msg.replace("the twin cannot reproduce the nominal motion: ",
                            "the nominal motion is held back by a contact: ") for msg in out]
     return out
-
-
-def _friction_band(model: mujoco.MjModel, e: JointFeasibility) -> float:
-    """How far a position servo's error must grow before it overcomes its joint's dry
-    friction: frictionloss / (gear² × kp) in the joint's units (0 for other actuators)."""
-    a = model.actuator(e.actuator).id
-    stiffness = -float(model.actuator_biasprm[a, 1]) * float(model.actuator_gear[a, 0]) ** 2
-    if e.frictionloss <= 0 or stiffness <= 0 or (
-            model.actuator_biastype[a] != mujoco.mjtBias.mjBIAS_AFFINE):
-        return 0.0
-    return e.frictionloss / stiffness
 
 
 def _oscillation(e: JointFeasibility, fu: str) -> str:

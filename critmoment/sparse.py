@@ -1431,9 +1431,10 @@ class SparseEvaluator:
         say (a sticking failure)."""
         nsim, width = slip.shape
         out = np.zeros(nsim, bool)
-        start = (np.asarray(k) if np.ndim(k) else np.full(nsim, int(k))) + length
+        first = np.asarray(k) if np.ndim(k) else np.full(nsim, int(k))
+        start = first + length  # where each one's decision ended
         valid = np.arange(width)[None, :] < length[:, None]
-        at = np.minimum(start[:, None] - length[:, None] + np.arange(width), self.n_steps - 1)
+        at = np.minimum(first[:, None] + np.arange(width), self.n_steps - 1)
         measured = (self._alone[at].any(axis=-1) | ~valid).all(axis=1)
         seen = np.where(valid, slip, 0.0)
         tol = self.settings.slip_tolerance
@@ -1444,37 +1445,34 @@ class SparseEvaluator:
         most = int(np.ceil(SETTLE_TIME / float(self.twin.model.opt.timestep)))
         raised = np.zeros(nsim, bool)
         for begin in (int(b) for b in np.unique(start[cand])):
-            active = cand[start[cand] == begin]
+            group = cand[start[cand] == begin]
             # each one's slip so far, then what the follow adds: (c, width + most)
-            track = np.zeros((active.size, width + most))
-            track[:, :width] = seen[active]
-            row = {int(a): i for i, a in enumerate(active)}
-            last = length[active].copy()  # each one's next column in track
+            track = np.zeros((group.size, width + most))
+            track[:, :width] = seen[group]
+            last = length[group].copy()  # each one's next column in track
             # how far each moved over the last ``persistence`` of its decision
-            before = np.abs(seen[active, last - 1]
-                            - seen[active, np.maximum(last - 1 - p, 0)])
-            faster = np.zeros(active.size, np.int64)  # blocks that moved more than the last
+            before = np.abs(track[np.arange(group.size), last - 1]
+                            - track[np.arange(group.size), np.maximum(last - 1 - p, 0)])
+            faster = np.zeros(group.size, np.int64)  # blocks that moved more than the last
+            live = np.arange(group.size)  # rows of ``group`` still followed
             done = 0
-            while active.size and done + p <= min(most, self.n_steps - begin):
+            while live.size and done + p <= min(most, self.n_steps - begin):
                 if not self._alone[begin + done:begin + done + p].any(axis=-1).all():
                     break  # the nominal run hands the object over: not measured alone
+                ids = group[live]
                 batch.warning[...] = 0
-                _, more = self._roll(batch, begin + done, p, active, raised)
-                rows = np.array([row[int(a)] for a in active])
-                cols = last[rows][:, None] + np.arange(p)
-                track[rows[:, None], cols] = more
-                last[rows] += p
+                _, more = self._roll(batch, begin + done, p, ids, raised)
+                track[live[:, None], last[live][:, None] + np.arange(p)] = more
+                last[live] += p
                 done += p
-                fine = ~raised[active] & ~(batch.warning[active, :, 1] > 0).any(axis=1)
-                end = track[rows, last[rows] - 1]
-                moved = np.abs(end - track[rows, last[rows] - 1 - p])
-                total = track[rows].max(axis=1)
+                fine = ~raised[ids] & ~(batch.warning[ids, :, 1] > 0).any(axis=1)
+                moved = np.abs(track[live, last[live] - 1] - track[live, last[live] - 1 - p])
+                total = track[live].max(axis=1)
                 now = fine & (moved <= SETTLED_SHARE * total)
-                out[active[now]] = True
-                faster[rows] += moved >= before[rows]
-                before[rows] = moved
-                active = active[~now & fine & (total <= tol)
-                                & (faster[rows] <= SETTLE_SPEEDUPS)]
+                out[ids[now]] = True
+                faster[live] += moved >= before[live]
+                before[live] = moved
+                live = live[~now & fine & (total <= tol) & (faster[live] <= SETTLE_SPEEDUPS)]
         return out
 
     def _decide(self, buf: np.ndarray, slip: np.ndarray, length: np.ndarray, mu: np.ndarray,

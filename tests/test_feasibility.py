@@ -451,6 +451,7 @@ def test_a_lag_from_the_joints_dry_friction_is_named_so(tmp_path):
     report = check_feasibility(rec, twin, raise_on_failure=False)
     entry = report.joint("hinge")
     assert entry.frictionloss == 30.0 and entry.lag_in_run > 0.3
+    assert entry.friction_band == pytest.approx(30.0 / 50.0)
     with pytest.raises(InfeasibleTwinError, match=r"likely cause: the joint's dry friction: "
                        r"its frictionloss 30 N·m holds it until the servo's error reaches "
                        r"frictionloss / stiffness = 0\.6 rad"):
