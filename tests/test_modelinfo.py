@@ -572,10 +572,67 @@ def test_a_wrist_roll_that_turns_a_one_jaw_gripper_is_no_gripper(tmp_path):
     path.write_text(xml)
     info = inspect_model(path)
     assert [(g.body, g.actuators) for g in info.grippers] == [("gripper", ("jaw_act",))]
-    assert any("wrist_roll_act" in n and "wrist" in n for n in info.notes)
+    assert any("wrist_roll_act" in n and "a wrist" in n for n in info.notes)
     result = init_scenario(path, object_body="cube", task="pick_place", goal_site="goal",
                            out=tmp_path / "s.toml")
     assert "wrist_roll_act" not in result.text.split("[grippers.")[1].split("[")[0]
+
+
+def test_fingers_rooted_on_links_of_their_own_are_one_gripper(tmp_path):
+    # robosuite's three-finger Robotiq: two outer fingers on bases that a scissor joint
+    # spreads (one actuated, the other coupled by an equality), the middle one on a fixed
+    # root; each finger closes by its own actuator. One gripper of the three, on the palm,
+    # at the end of an arm joint; the scissor is no gripper (it carries one finger whole)
+    def finger(name, pos, joint):
+        root = (f'<joint name="{name}_base" type="hinge" axis="0 1 0" range="-0.3 0.3" '
+                f'damping="0.1"/>' if joint else "")
+        return f"""
+          <body name="{name}_link_0" pos="{pos}">
+            {root}
+            <geom name="{name}_root" type="box" size="0.006 0.006 0.004" mass="0.01"/>
+            <body name="{name}_link_1" pos="0 0 -0.02">
+              <joint name="{name}_joint_1" type="hinge" axis="1 0 0" range="0 1.2"
+                     damping="0.05"/>
+              <geom name="{name}_pad" type="box" pos="0 0 -0.02" size="0.006 0.004 0.02"
+                    mass="0.02"/>
+            </body>
+          </body>"""
+    xml = f"""
+<mujoco>
+  <option timestep="0.002"/>
+  <worldbody>
+    <geom name="table" type="box" pos="0 0 -0.02" size="0.3 0.3 0.02"/>
+    <body name="link7" pos="0 0 0.3">
+      <joint name="joint7" type="hinge" axis="0 0 1" range="-3 3" damping="1"/>
+      <geom name="flange" type="cylinder" size="0.03 0.01" mass="0.3"/>
+      <body name="palm" pos="0 0 -0.03">
+        <geom name="palm" type="box" size="0.03 0.04 0.01" mass="0.2"/>
+        {finger("finger_1", "0 0.03 -0.01", True)}{finger("finger_2", "0 -0.03 -0.01", True)}
+        {finger("middle", "0.02 0 -0.01", False)}
+      </body>
+    </body>
+    <body name="cube" pos="0 0 0.02">
+      <freejoint/>
+      <geom name="cube" type="box" size="0.02 0.02 0.02" mass="0.1"/>
+    </body>
+  </worldbody>
+  <equality>
+    <joint joint1="finger_2_base" joint2="finger_1_base" polycoef="0 -1 0 0 0"/>
+  </equality>
+  <actuator>
+    <position name="joint7_act" joint="joint7" kp="50" ctrlrange="-3 3"/>
+    <position name="finger_1" joint="finger_1_joint_1" kp="2" ctrlrange="0 1.2"/>
+    <position name="finger_2" joint="finger_2_joint_1" kp="2" ctrlrange="0 1.2"/>
+    <position name="middle_finger" joint="middle_joint_1" kp="2" ctrlrange="0 1.2"/>
+    <position name="finger_scissor" joint="finger_1_base" kp="2" ctrlrange="-0.3 0.3"/>
+  </actuator>
+</mujoco>"""
+    path = tmp_path / "three_finger.xml"
+    path.write_text(xml)
+    info = inspect_model(path)
+    assert [(g.body, sorted(g.actuators)) for g in info.grippers] == [
+        ("palm", ["finger_1", "finger_2", "middle_finger"])]
+    assert any("finger_scissor" in n and "not a gripper" in n for n in info.notes)
 
 
 def test_a_fingers_proximal_joint_that_carries_its_own_tip_stays_a_gripper(tmp_path):
