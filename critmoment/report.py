@@ -377,15 +377,18 @@ def summary_text(report) -> str:
              f"{lo:.3f}–{hi:.3f}) over {report.sweep.n_samples if report.sweep else 0} samples "
              f"of the box; nominal max cost {report.nominal_cost:.3f} "
              f"(threshold {report.scenario.cost.threshold:g})"]
+    untrusted = set(getattr(report, "force_ratio_untrusted", ()))
     for i, mr in enumerate(report.moments, 1):
         m = mr.moment
         crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
                          if v is not None) or "never crosses"
         worst = ", ".join(f"{k}={v:.3g}" for k, v in mr.worst_case.items())
+        # a force ratio the cost does not use (contact chatter) is not shown bare beside it
+        trust = " (not trusted)" if int(m.step) in untrusted else ""
         lines.append(f"  {i}. {m.label.value:12s} step {m.step:5d} (t = {m.time:.2f} s): max cost "
-                     f"{mr.max_cost:.3f} at {worst}; min FOS contact {format_fos(mr.min_fos_contact)}, "
-                     f"motor {format_fos(mr.min_fos_motor)}; fails {mr.fail_fraction:.0%} of the box "
-                     f"(reached by {mr.reached:.0%}); critical: {crit}")
+                     f"{mr.max_cost:.3f} at {worst}; min FOS contact {format_fos(mr.min_fos_contact)}"
+                     f"{trust}, motor {format_fos(mr.min_fos_motor)}; fails {mr.fail_fraction:.0%} "
+                     f"of the box here (reached by {mr.reached:.0%}); critical: {crit}")
     v = report.verification
     if v is not None:
         lines.append(f"  verification: {_verification_text(v)}")
@@ -395,9 +398,9 @@ def summary_text(report) -> str:
                  f"{e['first_failing_time']:.2f} s" if e["first_failing_time"] is not None
                  else f"{e['mass']:.3g} kg: no motor saturates" for e in lb["masses"]]
         lines.append("  analytic motor bound over the whole motion: " + "; ".join(parts))
-    untrusted = getattr(report, "force_ratio_untrusted", ())
     if untrusted:
-        lines.append(f"  contact force ratio not trusted at steps {', '.join(map(str, untrusted))}"
+        lines.append(f"  contact force ratio not trusted at steps "
+                     f"{', '.join(map(str, report.force_ratio_untrusted))}"
                      f": the nominal grip sits on the friction cone there although its run "
                      f"completes (contact chatter); measured slip and motor loads decide")
     unlimited = getattr(report, "unlimited_motors", ())

@@ -101,6 +101,21 @@ def cost(fos_contact: np.ndarray, fos_motor: np.ndarray, params: CostParams) -> 
     return c + m
 
 
+def sustained_fos(fos: np.ndarray, steps: int) -> np.ndarray:
+    """The FOS held over ``steps`` consecutive steps from each step on, (T,) from (T,): the
+    highest value of each window (a window that runs past the end is shorter). An
+    excursion shorter than ``steps`` (contact chatter) does not lower it, as the sparse
+    decision counts a contact-FOS excursion only when it persists (``[sparse]
+    persistence``)."""
+    fos = np.asarray(fos, dtype=float)
+    steps = max(1, int(steps))
+    if fos.size == 0 or steps == 1:
+        return fos.copy()
+    padded = np.concatenate([fos, np.full(steps - 1, np.nan)])
+    windows = np.lib.stride_tricks.sliding_window_view(padded, steps)
+    return np.nanmax(windows, axis=-1)
+
+
 def task_stage(touch_picker: np.ndarray, touch_receiver: np.ndarray,
                touch_support: np.ndarray) -> np.ndarray:
     """ACT's transfer-cube reward 0..4 from contact flags (each (...) bool).

@@ -769,7 +769,7 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
         warnings.warn(
             f"{str(path)!r}: ignoring unknown key(s) {unknown}; known keys are "
             f"{sorted(_NPZ_KEYS)}",
-            UserWarning,
+            CritmomentWarning,
             stacklevel=3,
         )
     if "actions" not in data:
@@ -1034,7 +1034,7 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
         warnings.warn(
             f"{str(path)!r}: no dataset /observations/qpos, so the start state is "
             f"unknown (found datasets {sorted(found)})",
-            UserWarning,
+            CritmomentWarning,
             stacklevel=3,
         )
     elif qpos.ndim != 2 or actions.ndim != 2 or qpos.shape[1] != actions.shape[1]:
@@ -1042,13 +1042,13 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
             f"{str(path)!r}: /observations/qpos has shape {qpos.shape}, expected "
             f"(T, {actions.shape[-1] if actions.ndim else '?'}) in the action "
             f"convention; start state left unknown",
-            UserWarning,
+            CritmomentWarning,
             stacklevel=3,
         )
     elif qpos.shape[0] == 0:
         warnings.warn(
             f"{str(path)!r}: /observations/qpos is empty; start state left unknown",
-            UserWarning,
+            CritmomentWarning,
             stacklevel=3,
         )
     else:
@@ -1444,7 +1444,7 @@ def _load_lerobot_files(
         warnings.warn(
             f"LeRobot data {source!r}: no meta/info.json 'fps' and no 'timestamp' "
             f"column found, and no fps= given; assuming {DEFAULT_FPS:g} Hz",
-            UserWarning,
+            CritmomentWarning,
             stacklevel=3,
         )
         rate = DEFAULT_FPS
@@ -1462,7 +1462,7 @@ def _load_lerobot_files(
                 f"{str(chosen_file)!r}{ep_text}: 'observation.state' has "
                 f"{state.shape[0]} values, expected {actions.shape[1]} to match "
                 f"'action'; start state left unknown",
-                UserWarning,
+                CritmomentWarning,
                 stacklevel=3,
             )
 
@@ -1583,7 +1583,7 @@ def check_ranges(
       in time), its value and the range.
     * ``CLIP``: return a copy with every value outside ``[lower, upper]``
       clipped (values within the tolerance included, so the result is exactly
-      in range) and issue one :class:`UserWarning` giving the number of
+      in range) and issue one :class:`~critmoment.exceptions.CritmomentWarning` giving the number of
       clipped values per channel. When only within-tolerance values needed
       clipping, no warning is issued and the count is logged at INFO level.
     * ``WARN``: issue one warning with the same summary; return the input.
@@ -1649,7 +1649,7 @@ def check_ranges(
         if pol is RangePolicy.WARN:
             warnings.warn(
                 f"actions out of range (tolerance {tol:g}), kept unchanged: {summary()}",
-                UserWarning,
+                CritmomentWarning,
                 stacklevel=2,
             )
             return traj_or_actions
@@ -1664,7 +1664,7 @@ def check_ranges(
             warnings.warn(
                 f"clipped {int(per_channel.sum())} action value(s) to their range "
                 f"(per channel: {detail}); beyond tolerance {tol:g}: {summary()}",
-                UserWarning,
+                CritmomentWarning,
                 stacklevel=2,
             )
         else:
@@ -1709,7 +1709,8 @@ def upsample(
 
     When ``lower``/``upper`` are given, any result outside them (spline
     overshoot past a joint limit, or samples already out of range) is clipped
-    to the bound and one :class:`UserWarning` reports the count per channel.
+    to the bound and one :class:`~critmoment.exceptions.CritmomentWarning` reports the count
+    per channel.
 
     Args:
         actions: (T, na) actions, or a Trajectory (then ``fps`` defaults to
@@ -1817,7 +1818,7 @@ def upsample(
         warnings.warn(
             f"upsampled controls left [lower, upper] and were clipped to it in "
             f"{int(per_channel.sum())} of {out.size} values: " + "; ".join(parts),
-            UserWarning,
+            CritmomentWarning,
             stacklevel=2,
         )
     return out

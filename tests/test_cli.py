@@ -33,6 +33,10 @@ def test_rollout_json(traj_file, capsys, tmp_path):
     assert doc["completed"] is True and doc["shortfalls"] == []
     assert set(doc["stage_first_step"]) == {"1", "2", "3", "4"}
     assert (tmp_path / "recording.npz").is_file() and (tmp_path / "signals.png").is_file()
+    # held over the persistence window, a dip counts only when it lasts: never lower
+    assert doc["persistence"] == pytest.approx(0.02) and doc["threshold"] == 0.9
+    assert doc["min_fos_contact_sustained"] >= doc["min_fos_contact"]
+    assert doc["max_cost_sustained"] <= doc["max_cost"]
 
 
 def test_rollout_names_why_a_run_never_touches_its_object(tmp_path, capsys):

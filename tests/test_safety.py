@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from critmoment.safety import contact_fos, cost, motor_fos, task_stage
+from critmoment.safety import contact_fos, cost, motor_fos, sustained_fos, task_stage
 from critmoment.scenario import CostParams
 
 # ---------------------------------------------------------------------------
@@ -223,3 +223,17 @@ def test_format_fos_caps_the_ratio_of_an_unloaded_joint():
     assert format_fos(5.42e20) == "> 1000"
     assert format_fos(float("inf")) == "inf"
     assert format_fos(None) == format_fos(float("nan")) == "n/a"
+
+
+def test_sustained_fos_ignores_chatter_shorter_than_the_window_and_keeps_a_held_dip():
+    fos = np.full(100, 5.0)
+    fos[10] = 1.0            # one step of chatter
+    fos[40:45] = 0.8         # 5 steps, shorter than the 10-step window
+    fos[70:85] = 0.9         # 15 steps: held over a whole window
+    held = sustained_fos(fos, 10)
+    assert held.shape == fos.shape
+    assert held.min() == pytest.approx(0.9)
+    assert np.flatnonzero(held == 0.9).tolist() == list(range(70, 76))
+    assert held[:40].min() == 5.0 and held[-5:].min() == 5.0  # the short tail: what is left
+    np.testing.assert_array_equal(sustained_fos(fos, 1), fos)
+    assert np.isinf(sustained_fos(np.full(5, np.inf), 3)).all()  # no contact stays +inf
