@@ -471,6 +471,38 @@ def _joint_channel_map(model: mujoco.MjModel, a: int) -> tuple[float, float]:
     return scale, -zero * scale + 0.0  # (no negative zero in the file)
 
 
+#: the bandwidth of the joint servos init guesses for torque motors [Hz]
+SERVO_HZ = 5.0
+
+
+def _servo_lines(model: mujoco.MjModel, motors, key: int | None) -> list[str]:
+    """``[servos.<motor>]`` tables with guessed gains: each joint a critically damped
+    :data:`SERVO_HZ` oscillator on its own inertia (the mass matrix's diagonal, armature
+    included, at the start pose): kp = M ω², kv = 2 M ω."""
+    data = mujoco.MjData(model)
+    if key is not None:
+        mujoco.mj_resetDataKeyframe(model, data, key)
+    mujoco.mj_forward(model, data)
+    full = np.zeros((model.nv, model.nv))
+    mujoco.mj_fullM(model, data, full)
+    omega = 2.0 * np.pi * SERVO_HZ
+    lines = ["", "# The torque motors are driven as joint-position servos, the joint controller of",
+             "# the real robot: torque = kp (target - q) - kv q', within the motor's own limit.",
+             f"# Guessed: a critically damped {SERVO_HZ:g} Hz joint; put your controller's gains here."]
+    for a in motors:
+        joint = int(model.actuator_trnid[a.index, 0])
+        inertia = float(full[model.jnt_dofadr[joint], model.jnt_dofadr[joint]])
+        kp, kv = inertia * omega ** 2, 2.0 * inertia * omega
+        unit = "N·m/rad, N·m·s/rad" if a.joint_type == "hinge" else "N/m, N·s/m"
+        lines += [f"[servos.{_toml_key(a.name)}]", f"kp = {kp:.4g}   # [{unit}]",
+                  f"kv = {kv:.4g}"]
+    return lines
+
+
+def _toml_key(name: str) -> str:
+    return name if re.fullmatch(r"[A-Za-z0-9_-]+", name) else _toml_str(name)
+
+
 def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                   supports: Sequence[str] = (), out: str | Path | None = None,
                   goal: Sequence[float] | None = None, goal_site: str | None = None,
@@ -595,7 +627,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     # channels: each gripper's actuators in one normalised channel, every other actuator one
     gripper_of = {a: g for g in grippers for a in g.actuators}
     channels, done = [], set()
-    unusable = []
+    unusable, servo_motors = [], []
     for a in info.actuators:
         if a.name in done:
             continue
@@ -605,13 +637,20 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
             channels.append(("gripper", g))
         elif a.kind.tracks_position:
             channels.append(("joint", a))
+        elif (a.kind is act_info.ActuatorKind.MOTOR and a.transmission == "joint"
+              and a.joint_type in ("hinge", "slide")):
+            # a torque motor: the trajectory's joint targets go through a joint servo, the
+            # controller the real robot runs ([servos], gains guessed below)
+            channels.append(("joint", a))
+            servo_motors.append(a)
         else:
             unusable.append(a)
     if unusable:
         raise ScenarioError(
             "actuators " + ", ".join(f"{a.name} ({a.kind.value})" for a in unusable)
             + " are not position servos: a joint-position trajectory cannot drive them; "
-            "critmoment audits position-controlled robots")
+            "critmoment audits position-controlled robots (torque motors on joints it drives "
+            "through [servos])")
     lines = [f"# critmoment scenario for {model_path.name}, written by `critmoment init`.",
              "# Every name is checked against the compiled model when this file is loaded.",
              "", f"name = {_toml_str(model_path.stem)}",
@@ -665,12 +704,26 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     lines.append("# Force limits [N·m or N] for the motor factor of safety. Defaults come from the")
     lines.append("# MJCF's forcerange/actuatorfrcrange; give the datasheet's values here.")
     lines.append("[limits]")
+    servo_names = {a.name for a in servo_motors}
     for a, lim in zip(info.actuators, info.default_limits, strict=True):
-        if lim is None:
+        if a.name in servo_names and model.actuator_ctrllimited[a.index]:
+            # a torque motor's own bound: its control range times its gain ([servos] makes
+            # it the servo's force range)
+            most = float(np.max(np.abs(model.actuator_ctrlrange[a.index]))
+                         * abs(model.actuator_gainprm[a.index, 0]))
+            lim = most if lim is None else min(lim, most)
+            lines.append(f"# {a.name} = {lim:g}   (the torque motor's control range, from the MJCF)")
+        elif lim is None:
             lines.append(f"# {a.name} = ...   # no limit in the MJCF: unlimited until you set one")
             checks.append(f"actuator {a.name!r} has no force limit in the MJCF: set [limits]")
         else:
             lines.append(f"# {a.name} = {lim:g}   (from the MJCF)")
+    if servo_motors:
+        lines += _servo_lines(model, servo_motors, key)
+        guesses.append(f"joint servos for the torque motors {', '.join(a.name for a in servo_motors)}"
+                       f" (kp, kv for a {SERVO_HZ:g} Hz critically damped joint)")
+        checks.append("[servos]: the gains of the robot's own joint controller (the torque "
+                      "motors track the trajectory through them)")
     mass = float(obj["mass"])
     mu = float(model.geom_friction[model.geom(object_geom).id, 0])
     # what the model's grip contacts really use: explicit pairs' friction, or the pads' own

@@ -17,6 +17,8 @@ Models load as they ship. critmoment compiles its own copy through ``mujoco.MjSp
   two geoms' friction with ``max`` unless one has the higher priority). The pads' own
   friction then no longer acts on the object's contacts; it still acts on every other
   contact of the pads;
+* makes the torque motors that ``[servos]`` names joint-position servos (:class:`Servos`):
+  the joint controller the real robot runs around a torque-controlled model's motors;
 * compiles a body whose centre of mass the box moves (``com_offset``) as not ``simple``:
   MuJoCo treats a body whose inertial frame is its own as simple, and refuses a centre of
   mass moved off that frame at run time (``mj_setConstGroups``: "sameframe no longer
@@ -72,6 +74,8 @@ __all__ = [
     "load_scenario",
     "scenario_from_dict",
     "prepare_spec",
+    "ServoGains",
+    "Servos",
     "bundled_scenario_path",
     "BUNDLED_SCENARIOS",
     "unknown_keys_error",
@@ -460,6 +464,41 @@ _CONVENTIONS = {"aloha14": _aloha14, "explicit": _explicit}
 
 
 @dataclasses.dataclass(frozen=True)
+class ServoGains:
+    """A joint-position servo's gains in joint units: torque (or force) =
+    ``kp`` (target - q) - ``kv`` q̇ [N·m/rad and N·m·s/rad on a hinge; N/m and N·s/m on a
+    slide]."""
+
+    kp: float
+    kv: float
+
+
+@dataclasses.dataclass(frozen=True)
+class Servos:
+    """``[servos]``: the model's torque motors driven as joint-position servos, the joint
+    controller a torque-controlled robot runs (robosuite's arms, gym-hil's Panda ship torque
+    motors; their policies' joint targets go through such a controller).
+
+    Each converted motor (a ``motor`` on a hinge or slide joint) keeps its joint, gear and
+    force bound: its actuator becomes ``kp``/``kv`` in joint units, its control the joint's
+    target (the joint's range, in radians or metres), and its force range the force the
+    motor could give (its control range times its gain, within its own force range). Its
+    motor FOS is measured against that bound, as for any servo.
+
+    Attributes:
+        default: gains for every torque motor on a joint not in ``gains``, or None (then
+            only those in ``gains`` are converted).
+        gains: per actuator name.
+    """
+
+    default: ServoGains | None = None
+    gains: Mapping[str, ServoGains] = dataclasses.field(default_factory=dict)
+
+    def __bool__(self) -> bool:
+        return self.default is not None or bool(self.gains)
+
+
+@dataclasses.dataclass(frozen=True)
 class Scenario:
     """A validated scenario.
 
@@ -487,6 +526,7 @@ class Scenario:
         description: free text.
         settle: an object that starts touching nothing falls onto its support before the
             audit's clock starts (``[object] settle``, default true).
+        servos: torque motors driven as joint-position servos (``[servos]``).
     """
 
     name: str
@@ -508,6 +548,7 @@ class Scenario:
     limit_sources: Mapping[str, str] = dataclasses.field(default_factory=dict)
     description: str = ""
     settle: bool = True
+    servos: Servos = Servos()
 
     @property
     def gripper_names(self) -> tuple[str, ...]:
@@ -532,7 +573,8 @@ class Scenario:
 
     def load_spec(self) -> mujoco.MjSpec:
         """The scenario's MJCF as critmoment's own MjSpec (see :func:`prepare_spec`)."""
-        return prepare_spec(self.mjcf, object_body=self.object_body, **_spec_targets(self.box))
+        return prepare_spec(self.mjcf, object_body=self.object_body, servos=self.servos,
+                            **_spec_targets(self.box))
 
     def load_model(self) -> mujoco.MjModel:
         """Compile the scenario's MJCF (without critmoment's sensors)."""
@@ -755,8 +797,77 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
 # ---------------------------------------------------------------------------
 
 
+def _motor_on_joint(spec: mujoco.MjSpec, a) -> bool:
+    """A plain torque motor (fixed gain, no bias, no dynamics) on a hinge or slide joint."""
+    if a.trntype != mujoco.mjtTrn.mjTRN_JOINT or a.gaintype != mujoco.mjtGain.mjGAIN_FIXED:
+        return False
+    if a.biastype != mujoco.mjtBias.mjBIAS_NONE or a.dyntype != mujoco.mjtDyn.mjDYN_NONE:
+        return False
+    joint = spec.joint(a.target)
+    return joint is not None and joint.type in (mujoco.mjtJoint.mjJNT_HINGE,
+                                                mujoco.mjtJoint.mjJNT_SLIDE)
+
+
+def _limited(flag, low: float, high: float, auto: bool) -> bool:
+    if flag == mujoco.mjtLimited.mjLIMITED_TRUE:
+        return True
+    return flag == mujoco.mjtLimited.mjLIMITED_AUTO and auto and low < high
+
+
+def _make_servos(spec: mujoco.MjSpec, servos: Servos) -> None:
+    """Turn the torque motors ``servos`` names into joint-position servos (see
+    :class:`Servos`)."""
+    motors = {a.name: a for a in spec.actuators if _motor_on_joint(spec, a)}
+    for name in servos.gains:
+        if name not in motors:
+            kinds = {a.name for a in spec.actuators}
+            what = ("is not a torque motor on a hinge or slide joint (a servo already, or "
+                    "another transmission)" if name in kinds else "is no actuator of the model")
+            raise ScenarioError(
+                f"[servos.{name}]: expected a torque motor on a joint, but {name!r} {what}; "
+                f"the model's torque motors on joints: {_listing(sorted(motors)) or '(none)'}")
+    auto = bool(spec.compiler.autolimits)
+    for name, a in motors.items():
+        gains = servos.gains.get(name, servos.default)
+        if gains is None:
+            continue
+        joint = spec.joint(a.target)
+        g = float(a.gear[0])
+        if not g:
+            raise ScenarioError(f"[servos]: actuator {name!r} has gear 0; it moves nothing")
+        # the force the motor can give: its control range times its gain, within its own
+        # force range
+        bounds = []
+        if _limited(a.ctrllimited, *a.ctrlrange, auto):
+            bounds.append(np.sort(float(a.gainprm[0]) * np.asarray(a.ctrlrange, float)))
+        if _limited(a.forcelimited, *a.forcerange, auto):
+            bounds.append(np.asarray(a.forcerange, float))
+        # torque = g F with F = (kp/g) target - (kp/g²) length - (kv/g²) length rate, the
+        # length being g q: kp and kv act on the joint, the control is the joint's target
+        a.gainprm = np.zeros_like(a.gainprm)
+        a.biasprm = np.zeros_like(a.biasprm)
+        a.gainprm[0] = gains.kp / g
+        a.biasprm[1] = -gains.kp / g ** 2
+        a.biasprm[2] = -gains.kv / g ** 2
+        a.biastype = mujoco.mjtBias.mjBIAS_AFFINE
+        low, high = (float(v) for v in joint.range)
+        if _limited(joint.limited, low, high, auto):
+            scale = (math.pi / 180.0 if spec.compiler.degree
+                     and joint.type == mujoco.mjtJoint.mjJNT_HINGE else 1.0)
+            a.ctrlrange = np.array([low, high]) * scale  # (a servo's ctrlrange is not converted)
+            a.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
+        else:
+            a.ctrllimited = mujoco.mjtLimited.mjLIMITED_FALSE
+        if bounds:
+            a.forcerange = np.array([max(b[0] for b in bounds), min(b[1] for b in bounds)])
+            a.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
+        else:
+            a.forcelimited = mujoco.mjtLimited.mjLIMITED_FALSE
+
+
 def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
                  friction_geoms: Sequence[str] = (), com_bodies: Sequence[str] = (),
+                 servos: Servos | None = None,
                  what: str = "[model] mjcf") -> mujoco.MjSpec:
     """The MJCF as an MjSpec, made ready for critmoment (see the module docstring).
 
@@ -767,6 +878,7 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
         friction_geoms: geoms whose friction the uncertainty box varies.
         com_bodies: bodies whose centre of mass the uncertainty box moves (compiled as not
             simple).
+        servos: torque motors to drive as joint-position servos (``[servos]``), or None.
         what: where the path came from, for messages.
 
     Raises:
@@ -811,6 +923,8 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
         body = spec.body(name)
         if body is not None:
             body.simple = 0
+    if servos:
+        _make_servos(spec, servos)
     return spec
 
 
@@ -1002,8 +1116,11 @@ def _check_channel_kinds(actions: ActionConvention, resolver: _ActuatorResolver)
                     f"[actions] channel {actions.labels[c]!r}: actuator {a!r} is "
                     f"{'an' if kind[0] in 'aeiou' else 'a'} {kind} actuator (ctrl is a "
                     f"{command} command), but the action convention gives joint-position targets; "
-                    "audit a position-controlled model, or convert the actions to this "
-                    "actuator's controls")
+                    + ("drive the torque motor as a joint servo with [servos] kp, kv (the "
+                       "robot's joint controller; `critmoment init` writes them)"
+                       if kind == "motor" else
+                       "audit a position-controlled model, or convert the actions to this "
+                       "actuator's controls"))
 
 
 def _check_gripper_controls(actions: ActionConvention, model: mujoco.MjModel) -> None:
@@ -1245,7 +1362,33 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
 
 
 _TOP = ("name", "description", "model", "object", "grippers", "support", "actions", "task",
-        "limits", "uncertainty", "cost", "sparse")
+        "limits", "uncertainty", "cost", "sparse", "servos")
+
+
+def _servos(raw: Mapping[str, Any]) -> Servos:
+    """``[servos]``: ``kp``/``kv`` for every torque motor on a joint, and/or
+    ``[servos.<actuator>]`` tables with their own."""
+    table = _get(raw, "servos", dict, "scenario", {})
+
+    def gains(t: Mapping[str, Any], where: str) -> ServoGains:
+        _keys(t, where, ("kp", "kv"))
+        kp = _number(t, "kp", where, positive=True)
+        kv = _number(t, "kv", where)
+        if kv < 0:
+            raise ScenarioError(f"{where} kv: expected a damping >= 0, got {kv!r}")
+        return ServoGains(kp=kp, kv=kv)
+
+    per = {k: v for k, v in table.items() if isinstance(v, Mapping)}
+    flat = {k: v for k, v in table.items() if k not in per}
+    default = None
+    if flat:
+        _keys(flat, "[servos]", ("kp", "kv"))
+        if "kp" not in flat or "kv" not in flat:
+            raise ScenarioError("[servos]: expected both kp and kv (the default gains of every "
+                                "torque motor on a joint), or [servos.<actuator>] tables only")
+        default = gains(flat, "[servos]")
+    return Servos(default=default,
+                  gains={k: gains(v, f"[servos.{k}]") for k, v in per.items()})
 
 
 def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None = None) -> Scenario:
@@ -1264,7 +1407,8 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         raise ScenarioError("[uncertainty]: expected at least one parameter table")
     box = UncertaintyBox(tuple(_parameter(n, s) for n, s in unc.items()))
 
-    spec = prepare_spec(mjcf, object_body=object_body, **_spec_targets(box))
+    servos = _servos(raw)
+    spec = prepare_spec(mjcf, object_body=object_body, servos=servos, **_spec_targets(box))
     model = compile_spec(spec, mjcf)
     box = _with_units(box, model)
     object_geom = _object_geom(object_t, model, object_body)
@@ -1354,7 +1498,7 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         grippers=grippers, support_geoms=tuple(support), actions=actions, fps=fps,
         range_policy=policy, task=task, limits=limits, box=box, cost=cost, sparse=sparse,
         limit_sources=sources, description=str(_get(raw, "description", str, "scenario", "")),
-        settle=_get(object_t, "settle", bool, "[object]", True))
+        settle=_get(object_t, "settle", bool, "[object]", True), servos=servos)
     scenario.validate_names(model)
     idle = scenario.undriven_actuators(model)
     if idle:

@@ -102,9 +102,27 @@ def test_init_handover_needs_two_grippers_and_pick_place_a_goal(tmp_path):
                       goal_site="goal")
 
 
-def test_init_refuses_torque_motors(tmp_path):
-    with pytest.raises(ScenarioError, match=r"shoulder_act \(motor\).*not position servos"):
-        init_scenario(_write(tmp_path, motor=True), object_body="cube", task="pick_hold")
+def test_init_drives_torque_motors_through_joint_servos(tmp_path):
+    # a torque-controlled arm: init writes [servos] gains for each motor (a critically
+    # damped 5 Hz joint on its own inertia) and the scenario loads with them
+    path = _write(tmp_path, motor=True)
+    result = init_scenario(path, object_body="cube", task="pick_hold",
+                           out=tmp_path / "scenario.toml")
+    assert "[servos.shoulder_act]" in result.text and "[servos.elbow_act]" in result.text
+    assert any("[servos]" in c for c in result.checks)
+    assert "# shoulder_act = 50   (the torque motor's control range" in result.text
+    sc = load_scenario(tmp_path)
+    gains = sc.servos.gains["shoulder_act"]
+    model = mujoco.MjModel.from_xml_path(str(path))
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, 0)
+    mujoco.mj_forward(model, data)
+    full = np.zeros((model.nv, model.nv))
+    mujoco.mj_fullM(model, data, full)
+    omega = 2 * np.pi * 5.0
+    assert gains.kp == pytest.approx(full[0, 0] * omega ** 2, rel=1e-3)
+    assert gains.kv == pytest.approx(2 * full[0, 0] * omega, rel=1e-3)
+    assert sc.limits["shoulder_act"] == 50.0 and sc.limit_sources["shoulder_act"] == "mjcf"
 
 
 def test_a_joint_channel_on_a_torque_motor_is_an_error(tmp_path):
@@ -130,7 +148,7 @@ range = [0.05, 1.0]
 nominal = 0.1
 """)
     with pytest.raises(ScenarioError, match=r"actuator 'shoulder_act' is a motor actuator .*"
-                                            r"joint-position targets"):
+                                            r"joint-position targets.*\[servos\] kp, kv"):
         load_scenario(tmp_path)
 
 
