@@ -482,13 +482,28 @@ def _servo_lines(model: mujoco.MjModel, motors, key: int | None) -> list[str]:
     data = mujoco.MjData(model)
     if key is not None:
         mujoco.mj_resetDataKeyframe(model, data, key)
+    # the start pose, each limited hinge or slide inside its range (a model without a
+    # keyframe may start at qpos 0 outside it: the Menagerie Panda's joint4)
+    moved = []
+    for j in range(model.njnt):
+        if model.jnt_limited[j] and int(model.jnt_type[j]) in (int(mujoco.mjtJoint.mjJNT_HINGE),
+                                                               int(mujoco.mjtJoint.mjJNT_SLIDE)):
+            adr = model.jnt_qposadr[j]
+            low, high = model.jnt_range[j]
+            if not low <= data.qpos[adr] <= high:
+                data.qpos[adr] = 0.5 * (low + high)
+                moved.append(model.joint(j).name)
     mujoco.mj_forward(model, data)
     full = np.zeros((model.nv, model.nv))
     mujoco.mj_fullM(model, data, full)
     omega = 2.0 * np.pi * SERVO_HZ
+    pose = "the keyframe's pose" if key is not None else "qpos0"
+    if moved:
+        pose += f", with {', '.join(moved)} at mid-range (outside its range there)"
     lines = ["", "# The torque motors are driven as joint-position servos, the joint controller of",
              "# the real robot: torque = kp (target - q) - kv q', within the motor's own limit.",
-             f"# Guessed: a critically damped {SERVO_HZ:g} Hz joint; put your controller's gains here."]
+             f"# Guessed: a critically damped {SERVO_HZ:g} Hz joint on its inertia at {pose};",
+             "# the inertia changes with the pose: put your controller's gains here."]
     for a in motors:
         joint = int(model.actuator_trnid[a.index, 0])
         inertia = float(full[model.jnt_dofadr[joint], model.jnt_dofadr[joint]])
