@@ -195,6 +195,9 @@ class JointFeasibility:
             object, the support), which is a fact of the motion, not of the twin.
         target_speed: the target's highest speed over the lag stretch [rad/s or m/s]
             (0 when there is none).
+        load_lag: the sag a position servo's stiffness gives under the largest force it
+            exerts over the lag stretch (gravity, the object it holds): force / (stiffness ×
+            gear) [rad or m] (0 when there is no stretch).
         damping_lag: the lag the servo's velocity damping alone gives at that speed, at
             steady state: (kv + joint damping / gear²) / kp × speed [rad or m] (0 when there
             is no stretch).
@@ -229,6 +232,7 @@ class JointFeasibility:
     force_flips: float = 0.0
     damping_lag: float = 0.0
     friction_band: float = 0.0
+    load_lag: float = 0.0
 
     def to_json(self) -> dict:
         """JSON-able dict (kind as its value, non-finite numbers as None)."""
@@ -399,7 +403,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         is_gripper = a in grippers
         max_lag = max_lag_time = span = float("nan")
         lag_start, lag_len, lag_in_run = 0, 0, 0.0
-        speed = damping_lag = band = 0.0
+        speed = damping_lag = band = load_lag = 0.0
         friction = float(m.dof_frictionloss[m.jnt_dofadr[j]])
         if kind is _Kind.POSITION and int(m.jnt_type[j]) in (
                 int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)):
@@ -423,6 +427,8 @@ def check_feasibility(recording: Recording, twin: Twin, *,
                 kv = max(0.0, -float(m.actuator_biasprm[a, 2]))
                 damping = float(m.dof_damping[m.jnt_dofadr[j]])
                 damping_lag = (kv + damping / gear ** 2) / (-b1) * speed
+                exerted = np.abs(force[lag_start:lag_start + lag_len, a])
+                load_lag = float(exerted.max(initial=0.0)) / (-b1 * abs(gear))
         saturated = np.abs(force[:, a]) >= options.saturation_fraction * limit
         sat_start, sat_len = _longest_run(saturated)
         both = saturated[1:] & saturated[:-1]
@@ -435,7 +441,8 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             saturation_duration=sat_len * dt, saturation_start=sat_start * dt if sat_len else None,
             saturation_total=float(saturated.sum()) * dt, force_limit=limit, limit_source=source,
             frictionloss=friction, target_span=span, note=note, target_speed=speed,
-            damping_lag=damping_lag, friction_band=band, force_flips=force_flips)
+            damping_lag=damping_lag, friction_band=band, force_flips=force_flips,
+            load_lag=load_lag)
         stretch = _failing_stretch(entry, tol, abs(gear), options)
         if stretch is not None:
             blocked = _blocking_contact(m, states, *stretch, joint=j)
@@ -586,6 +593,12 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
                      f"{e.friction_band:.3g} {e.unit}, so the servo stops short of its targets by up to "
                      f"that much; a twin whose joint friction and servo gains match the "
                      f"robot's (lower frictionloss or higher kp) tracks them")
+        elif e.load_lag >= DAMPING_SHARE * e.lag_in_run:
+            cause = (f"the load the servo holds (gravity, the object): under the force it "
+                     f"gives there, its stiffness lets the joint sag by force / kp = "
+                     f"{e.load_lag:.3g} {e.unit}; the robot's controller holds it closer "
+                     f"(gravity compensation, stiffer gains): feed that load forward in the "
+                     f"targets, or audit a twin whose servo gains match the robot's")
         elif model.jnt_limited[joint]:
             cause = ("the joint is blocked (a contact or its range) or the servo is too "
                      "soft (kp) for the motion; check the model's kp/kv and the trajectory's "
