@@ -283,20 +283,51 @@ def force_limit(model: mujoco.MjModel, i: int) -> float | None:
     two ends (a one-sided range gives its one side).
     """
     if model.actuator_forcelimited[i]:
-        lo, hi = model.actuator_forcerange[i]
-        ends = [abs(v) for v in (lo, hi) if v != 0]
-        if ends:
-            return float(min(ends))
+        limit = range_limit(model.actuator_forcerange[i])
+        if limit is not None:
+            return limit
     if int(model.actuator_trntype[i]) in (int(mujoco.mjtTrn.mjTRN_JOINT),
                                           int(mujoco.mjtTrn.mjTRN_JOINTINPARENT)):
         j = model.actuator_trnid[i, 0]
         if model.jnt_actfrclimited[j]:
-            lo, hi = model.jnt_actfrcrange[j]
-            ends = [abs(v) for v in (lo, hi) if v != 0]
-            gear = abs(model.actuator_gear[i, 0]) or 1.0
-            if ends:
-                return float(min(ends) / gear)
+            limit = range_limit(model.jnt_actfrcrange[j])
+            if limit is not None:
+                return limit / (abs(model.actuator_gear[i, 0]) or 1.0)
     return None
+
+
+def range_limit(bounds: Sequence[float]) -> float | None:
+    """The limit a force range ``(low, high)`` sets: the smaller magnitude of its non-zero
+    ends (a one-sided range gives its one side), or None when both ends are 0."""
+    ends = [abs(float(v)) for v in bounds if v != 0]
+    return min(ends) if ends else None
+
+
+def motor_force_range(ctrlrange: Sequence[float], gain: float, forcerange: Sequence[float], *,
+                      ctrl_limited: bool, force_limited: bool) -> np.ndarray | None:
+    """The force ``(low, high)`` a torque motor can give (before its gear): its control
+    range times its gain, within its own force range; None when neither bounds it."""
+    bounds = []
+    if ctrl_limited:
+        bounds.append(np.sort(float(gain) * np.asarray(ctrlrange, float)))
+    if force_limited:
+        bounds.append(np.asarray(forcerange, float))
+    if not bounds:
+        return None
+    return np.array([max(b[0] for b in bounds), min(b[1] for b in bounds)])
+
+
+def motor_limit(model: mujoco.MjModel, i: int) -> float | None:
+    """The force limit [N·m or N, before the gear] of torque motor ``i`` when ``[servos]``
+    drives it as a joint servo: its control range times its gain, within its force range
+    (:func:`motor_force_range`, what :func:`critmoment.scenario.prepare_spec` gives the
+    servo), else :func:`force_limit`."""
+    bounds = motor_force_range(
+        model.actuator_ctrlrange[i], float(model.actuator_gainprm[i, 0]),
+        model.actuator_forcerange[i], ctrl_limited=bool(model.actuator_ctrllimited[i]),
+        force_limited=bool(model.actuator_forcelimited[i]))
+    limit = range_limit(bounds) if bounds is not None else None
+    return limit if limit is not None else force_limit(model, i)
 
 
 def describe(model: mujoco.MjModel, i: int) -> ActuatorInfo:

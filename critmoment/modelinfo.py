@@ -80,6 +80,9 @@ class ModelInfo:
     sites: tuple[str, ...]
     keyframes: tuple[str, ...]
     notes: tuple[str, ...]
+    #: per actuator: a torque motor's limit from its control range
+    #: (:func:`critmoment.actuators.motor_limit`), None for the others
+    motor_limits: tuple[float | None, ...] = ()
 
     def to_json(self) -> dict:
         return {
@@ -109,9 +112,13 @@ class ModelInfo:
             ctrl = (f"ctrl {a.ctrlrange[0]:g}..{a.ctrlrange[1]:g}" if a.ctrlrange
                     else "ctrl unlimited")
             force = f"force limit {lim:g}" if lim is not None else "no force limit"
-            if lim is None and a.kind is act_info.ActuatorKind.MOTOR and a.ctrlrange:
-                # a torque command's range bounds its force (× the gear)
-                force = f"force at most {max(abs(v) for v in a.ctrlrange) * abs(a.gain):g} (ctrl × gear)"
+            most = self.motor_limits[a.index] if self.motor_limits else None
+            if lim is None and most is not None:
+                # a torque command's range bounds its force
+                force = f"force at most {most:g} (ctrl × gain"
+                gear = abs(a.gain)  # a motor's gain in the listing is its gear
+                force += (f"; {most * gear:g} at the joint, gear {gear:g})" if gear != 1.0
+                          else ")")
             joint = f" ({a.joint_type})" if a.joint_type else ""
             lines.append(f"  {a.name}: {a.kind.value} on {a.transmission} {a.target}{joint}, "
                          f"{ctrl}, {force}")
@@ -383,7 +390,10 @@ def inspect_model(path: str | Path) -> ModelInfo:
         grippers=tuple(grippers),
         sites=tuple(model.site(i).name for i in range(model.nsite) if model.site(i).name),
         keyframes=tuple(model.key(i).name or str(i) for i in range(model.nkey)),
-        notes=tuple(notes))
+        notes=tuple(notes),
+        motor_limits=tuple(act_info.motor_limit(model, i)
+                           if a.kind is act_info.ActuatorKind.MOTOR else None
+                           for i, a in enumerate(infos)))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -722,11 +732,8 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     servo_names = {a.name for a in servo_motors}
     for a, lim in zip(info.actuators, info.default_limits, strict=True):
         if a.name in servo_names and model.actuator_ctrllimited[a.index]:
-            # a torque motor's own bound: its control range times its gain ([servos] makes
-            # it the servo's force range)
-            most = float(np.max(np.abs(model.actuator_ctrlrange[a.index]))
-                         * abs(model.actuator_gainprm[a.index, 0]))
-            lim = most if lim is None else min(lim, most)
+            # a torque motor's own bound ([servos] makes it the servo's force range)
+            lim = act_info.motor_limit(model, a.index)
             lines.append(f"# {a.name} = {lim:g}   (the torque motor's control range, from the MJCF)")
         elif lim is None:
             lines.append(f"# {a.name} = ...   # no limit in the MJCF: unlimited until you set one")

@@ -837,11 +837,10 @@ def _make_servos(spec: mujoco.MjSpec, servos: Servos) -> None:
             raise ScenarioError(f"[servos]: actuator {name!r} has gear 0; it moves nothing")
         # the force the motor can give: its control range times its gain, within its own
         # force range
-        bounds = []
-        if _limited(a.ctrllimited, *a.ctrlrange, auto):
-            bounds.append(np.sort(float(a.gainprm[0]) * np.asarray(a.ctrlrange, float)))
-        if _limited(a.forcelimited, *a.forcerange, auto):
-            bounds.append(np.asarray(a.forcerange, float))
+        bounds = act_info.motor_force_range(
+            a.ctrlrange, float(a.gainprm[0]), a.forcerange,
+            ctrl_limited=_limited(a.ctrllimited, *a.ctrlrange, auto),
+            force_limited=_limited(a.forcelimited, *a.forcerange, auto))
         # torque = g F with F = (kp/g) target - (kp/g²) length - (kv/g²) length rate, the
         # length being g q: kp and kv act on the joint, the control is the joint's target
         a.gainprm = np.zeros_like(a.gainprm)
@@ -858,8 +857,8 @@ def _make_servos(spec: mujoco.MjSpec, servos: Servos) -> None:
             a.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
         else:
             a.ctrllimited = mujoco.mjtLimited.mjLIMITED_FALSE
-        if bounds:
-            a.forcerange = np.array([max(b[0] for b in bounds), min(b[1] for b in bounds)])
+        if bounds is not None:
+            a.forcerange = bounds
             a.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
         else:
             a.forcelimited = mujoco.mjtLimited.mjLIMITED_FALSE

@@ -11,6 +11,7 @@ from inline_models import arm_xml
 
 import critmoment as cm
 from critmoment import actuators as act_info
+from critmoment import modelinfo
 from critmoment.exceptions import ScenarioError
 from critmoment.scenario import ServoGains, Servos, compile_spec, load_scenario, prepare_spec
 
@@ -152,3 +153,25 @@ def test_servos_table_is_checked(tmp_path):
         load_scenario(_motor_scenario(tmp_path, "[servos]\nkp = 0.0\nkv = 1.0\n"))
     with pytest.raises(ScenarioError, match=r"unknown key.*'ki'"):
         load_scenario(_motor_scenario(tmp_path, "[servos]\nkp = 1.0\nkv = 1.0\nki = 2.0\n"))
+
+
+@pytest.mark.parametrize(("ctrlrange", "forcerange", "limit"), [
+    ("-2 4", None, 2.0),  # an asymmetric control range: its smaller side
+    ("-5 5", "-3 8", 3.0),  # the motor's own force range cuts one side
+    ("0 6", None, 6.0),  # one-sided
+])
+def test_inspect_init_and_the_twin_give_a_torque_motor_one_limit(tmp_path, ctrlrange,
+                                                                  forcerange, limit):
+    # the limit inspect prints and init writes for a motor is the one the twin's servo gets
+    xml = PENDULUM.replace('ctrlrange="-5 5"', f'ctrlrange="{ctrlrange}"'
+                           + (f' forcerange="{forcerange}"' if forcerange else ""))
+    path = tmp_path / "pendulum.xml"
+    path.write_text(xml)
+    shipped = mujoco.MjModel.from_xml_path(str(path))
+    servo = compile_spec(prepare_spec(path, servos=Servos(default=ServoGains(kp=100.0, kv=5.0))),
+                         path)
+    assert act_info.motor_limit(shipped, 0) == pytest.approx(limit)
+    assert act_info.force_limit(servo, 0) == pytest.approx(limit)
+    text = modelinfo.inspect_model(path).text()
+    if forcerange is None:
+        assert f"force at most {limit:g} (ctrl × gain; {2 * limit:g} at the joint, gear 2)" in text
