@@ -153,7 +153,7 @@ def cmd_rollout(args) -> int:
         infeasible = check_feasibility(rec, twin, raise_on_failure=False).problems
         for msg in (*fit, *infeasible):
             warnings.warn(msg, FitWarning, stacklevel=1)
-        summary = {**rec.summary(), **_sustained(rec, twin), "fit_warnings": list(fit),
+        summary = {**rec.summary(), **rec.sustained(twin.scenario), "fit_warnings": list(fit),
                    "feasibility_problems": list(infeasible)}
         if out is not None:
             rec.save(out / "recording.npz")
@@ -186,27 +186,6 @@ def cmd_rollout(args) -> int:
         _Stdout.emit(f"wrote {out / 'recording.npz'}, {out / 'signals.png'}, "
                      f"{out / 'rollout.json'}")
     return EXIT_OK
-
-
-def _sustained(rec, twin) -> dict:
-    """The contact FOS and cost of the run held over the scenario's ``[sparse]
-    persistence`` (a one-step dip, contact chatter, does not count): what the audit's
-    nominal cost compares with, where the one-step figures of ``Recording.summary`` can
-    cross the threshold on a grasp that holds."""
-    import numpy as np
-
-    from critmoment import safety
-
-    sc = twin.scenario
-    steps = max(1, int(round(sc.sparse.persistence / rec.dt)))
-    sig = rec.signals
-    held = safety.sustained_fos(sig.fos_grasp, steps)
-    finite = held[np.isfinite(held)]
-    cost = safety.cost(held, sig.fos_motor, sc.cost)
-    return {"persistence": steps * rec.dt,
-            "min_fos_contact_sustained": float(finite.min()) if finite.size else None,
-            "max_cost_sustained": float(cost.max()) if cost.size else 0.0,
-            "threshold": float(sc.cost.threshold)}
 
 
 def cmd_moments(args) -> int:

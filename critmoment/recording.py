@@ -25,6 +25,7 @@ import mujoco
 import mujoco.batch
 import numpy as np
 
+from critmoment import safety
 from critmoment import trajectory as trajectory_mod
 from critmoment.exceptions import (
     CritmomentWarning,
@@ -467,6 +468,21 @@ class Recording:
             "max_cost": float(sig.cost.max()),
             "max_cost_step": int(np.argmax(sig.cost)),
         }
+
+    def sustained(self, scenario: Scenario) -> dict:
+        """The contact FOS and cost held over ``scenario``'s ``[sparse] persistence`` (a
+        one-step dip, contact chatter, does not count): what the audit's nominal cost
+        compares with, where the one-step figures of :meth:`summary` can cross the
+        threshold on a grasp that holds."""
+        steps = max(1, int(round(scenario.sparse.persistence / self.dt)))
+        sig = self.signals
+        held = safety.sustained_fos(sig.fos_grasp, steps)
+        finite = held[np.isfinite(held)]
+        cost = safety.cost(held, sig.fos_motor, scenario.cost)
+        return {"persistence": steps * self.dt,
+                "min_fos_contact_sustained": float(finite.min()) if finite.size else None,
+                "max_cost_sustained": float(cost.max()) if cost.size else 0.0,
+                "threshold": float(scenario.cost.threshold)}
 
     def save(self, path: str | Path) -> Path:
         """Write the recording to an ``.npz`` file (signals are recomputed on load)."""
