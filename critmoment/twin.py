@@ -160,6 +160,27 @@ def _sensor_name(*parts: str) -> str:
     return "critmoment:" + ":".join(parts)
 
 
+def _channel_range(model: mujoco.MjModel, a: int, scale: float, offset: float
+                   ) -> tuple[float, float]:
+    """The channel values whose joint target lies in the range of the joint actuator ``a``
+    drives, its control ``offset + scale·value``: the joint's range mapped back through
+    the servo's own target (:func:`critmoment.actuators.position_target`: a servo geared
+    2:1 holds its joint at ctrl / 2), or through ctrl itself for an actuator that tracks no
+    position; unbounded for an unlimited joint or another transmission."""
+    if int(model.actuator_trntype[a]) not in (int(mujoco.mjtTrn.mjTRN_JOINT),
+                                              int(mujoco.mjtTrn.mjTRN_JOINTINPARENT)):
+        return -np.inf, np.inf
+    joint = model.actuator_trnid[a, 0]
+    if not model.jnt_limited[joint]:
+        return -np.inf, np.inf
+    q0 = act_info.position_target(model, a, offset)
+    q1 = act_info.position_target(model, a, offset + scale)
+    if q0 is None or q1 is None or q1 == q0:
+        q0, q1 = offset, offset + scale
+    lo, hi = ((float(v) - q0) / (q1 - q0) for v in model.jnt_range[joint])
+    return min(lo, hi), max(lo, hi)
+
+
 class Twin:
     """A scenario bound to its compiled model.
 
@@ -458,13 +479,10 @@ class Twin:
             if conv.normalised[c]:
                 lower[c], upper[c] = 0.0, 1.0
                 continue
-            joint = model.actuator_trnid[acts[0], 0]
-            if model.jnt_limited[joint]:
-                lo, hi = model.jnt_range[joint]
-                s, o = conv.scales[c][0], conv.offsets[c][0]
-                lower[c], upper[c] = sorted(((lo - o) / s, (hi - o) / s))
-            else:
-                lower[c], upper[c] = -np.inf, np.inf
+            lower[c], upper[c] = -np.inf, np.inf
+            for a, s, o in zip(acts, conv.scales[c], conv.offsets[c], strict=True):
+                lo, hi = _channel_range(model, int(a), s, o)
+                lower[c], upper[c] = max(lower[c], lo), min(upper[c], hi)
         self.channel_lower, self.channel_upper = lower, upper
         self.channel_normalised = np.array(conv.normalised)
 

@@ -16,6 +16,7 @@ import mujoco
 import mujoco.batch
 import numpy as np
 import pytest
+from inline_models import arm_xml
 from scenarios import one_actuator_toml
 
 from critmoment.exceptions import ParameterError, TrajectoryError
@@ -729,3 +730,51 @@ def test_a_qpos0_far_outside_a_joints_range_is_an_error(twin):
     with pytest.raises(TrajectoryError, match=r"joint 'left/waist' at 50 rad, outside its "
                        r"range \[-3.14158, 3.14158\]"):
         twin.initial_data(qpos0=qpos0)
+
+
+def test_a_geared_servos_channel_spans_its_joints_range(tmp_path):
+    # a position servo geared 2:1 holds its joint at ctrl / 2; with ctrl = 2·(joint
+    # target) (init's scales = [2]) the channel's values are joint targets and span the
+    # joint's own range, not half of it (valid targets were clipped, and the audit then
+    # blamed the motors)
+    xml = arm_xml().replace('joint="shoulder" kp="400"', 'joint="shoulder" gear="2" kp="400"')
+    (tmp_path / "arm.xml").write_text(xml)
+    (tmp_path / "scenario.toml").write_text("""
+[model]
+mjcf = "arm.xml"
+[object]
+body = "cube"
+[grippers.hand]
+body = "hand"
+[support]
+geoms = ["table"]
+[actions]
+convention = "explicit"
+[[actions.channel]]
+actuators = ["shoulder_act"]
+scales = [2.0]
+[[actions.channel]]
+actuators = ["elbow_act"]
+[[actions.channel]]
+actuators = ["finger_a_act", "finger_b_act"]
+normalised = true
+scales = [0.03, 0.03]
+offsets = [0.0, 0.0]
+[task]
+kind = "pick_hold"
+[uncertainty.mass]
+body = "cube"
+range = [0.05, 1.0]
+nominal = 0.1
+""")
+    twin = Twin(load_scenario(tmp_path))
+    joint = math.radians(3.0)  # MJCF's default degrees
+    np.testing.assert_allclose([twin.channel_lower[0], twin.channel_upper[0]], [-joint, joint])
+    np.testing.assert_allclose([twin.channel_lower[1], twin.channel_upper[1]], [-joint, joint])
+    # a target at the joint's end reaches the joint's end
+    model = twin.model
+    data = twin.initial_data()
+    data.ctrl[:] = twin.controls(np.array([0.9 * joint, 0.0, 1.0]))
+    for _ in range(2000):
+        mujoco.mj_step(model, data)
+    assert data.qpos[model.joint("shoulder").qposadr[0]] == pytest.approx(0.9 * joint, abs=2e-3)
