@@ -164,6 +164,22 @@ def _moved_bodies(model: mujoco.MjModel, i: int) -> list[int]:
     return []
 
 
+def _finger_geoms(model: mujoco.MjModel, grippers) -> set[int]:
+    """The grippers' collision geoms on bodies that move in their gripper's body (a joint
+    between them and it: the fingers, not the palm)."""
+    found = set()
+    for g in grippers:
+        root = model.body(g.body).id
+        for name in g.geoms:
+            geom = model.geom(name).id
+            b = int(model.geom_bodyid[geom])
+            while b not in (0, root) and not model.body_jntnum[b]:
+                b = int(model.body_parentid[b])
+            if b not in (0, root):
+                found.add(geom)
+    return found
+
+
 def _is_gripper_actuator(model: mujoco.MjModel, info: act_info.ActuatorInfo) -> bool:
     if info.transmission == "tendon":
         return True
@@ -749,14 +765,16 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     mass = float(obj["mass"])
     mu = float(model.geom_friction[model.geom(object_geom).id, 0])
     # what the model's grip contacts really use: explicit pairs' friction, or the pads' own
-    # where they have the higher priority, or the larger of the two
-    pads = [model.geom(name).id for g in grippers for name in g.geoms]
+    # where they have the higher priority, or the larger of the two; the fingers' contacts
+    # hold the object, a palm's (of other friction) only where it touches
+    geoms = [model.geom(name).id for g in grippers for name in g.geoms]
+    pads = [g for g in geoms if g in _finger_geoms(model, grippers)] or geoms
     grip = float(act_info.source_friction(
         act_info.grip_friction_sources(model, bid, pads), model.geom_friction[None],
         model.pair_friction[None])[0])
     if grip != mu:
         mu = grip
-        guesses.append(f"nominal friction {mu:g}: what the model's grip contacts use (not "
+        guesses.append(f"nominal friction {mu:g}: what the model's finger contacts use (not "
                        f"the object geom's own {float(model.geom_friction[model.geom(object_geom).id, 0]):g})")
     # the box reaches up to the model's own friction (a grippy pair of 2.5), within reason
     mu_hi = min(max(1.5, mu), 10.0)

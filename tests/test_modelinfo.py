@@ -724,3 +724,19 @@ def test_a_joints_dry_friction_is_blamed_only_when_the_servo_cannot_push_through
         assert "joint 'roll' has frictionloss 30, its actuator pushes at most 20" in hint
     else:
         assert hint == ""
+
+
+def test_init_takes_the_nominal_friction_from_the_fingers_not_the_palm(tmp_path):
+    # pads of friction 1.2 on a palm of 1.0 (the cube's own 0.8): the fingers hold the
+    # object, so their contacts' friction is the nominal, not the palm's lower one
+    xml = arm_xml().replace('friction="1.0"', 'friction="1.2"').replace(
+        '<geom name="palm" type="box" size="0.02 0.04 0.01" mass="0.2"/>',
+        '<geom name="palm" type="box" size="0.02 0.04 0.01" mass="0.2" friction="1.0"/>')
+    assert xml.count('friction="1.2"') == 2 and 'mass="0.2" friction="1.0"' in xml
+    model_path = tmp_path / "arm.xml"
+    model_path.write_text(xml)
+    with pytest.warns(Warning, match="grip contacts have sliding friction 1, 1.2"):
+        init_scenario(model_path, object_body="cube", task="pick_hold",
+                      out=tmp_path / "scenario.toml")
+    sc = load_scenario(tmp_path / "scenario.toml")
+    assert sc.box.nominal[sc.box.names.index("friction")] == pytest.approx(1.2)
