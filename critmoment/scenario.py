@@ -1223,6 +1223,35 @@ def _down(model: mujoco.MjModel) -> np.ndarray:
     return gravity / norm if norm > 0 else np.array([0.0, 0.0, -1.0])
 
 
+def _check_goal_site_fixed(model: mujoco.MjModel, site: int) -> None:
+    """The goal is read once, at the start pose: a goal site on a body that joints move (an
+    arm's link, the gripper) is an error; on a free body (a loose bin) a warning.
+
+    Raises:
+        ScenarioError: naming the site, its body and the joint that moves it.
+    """
+    name = model.site(site).name
+    b = int(model.site_bodyid[site])
+    while b:
+        for j in range(model.body_jntadr[b], model.body_jntadr[b] + model.body_jntnum[b]):
+            if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE:
+                warnings.warn(
+                    f"[task] goal_site: site {name!r} is on the free body "
+                    f"{model.body(b).name!r}; the goal is its position at the start pose and "
+                    f"does not follow the body if it moves", ScenarioWarning, stacklevel=2)
+                return
+            raise ScenarioError(
+                f"[task] goal_site: site {name!r} is on body "
+                f"{model.body(int(model.site_bodyid[site])).name!r}, which joint "
+                f"{model.joint(j).name or j!r} moves; expected a site fixed in the world (the "
+                f"goal is read once, at the start pose), or give goal = [x, y, z]")
+        if model.body_mocapid[b] >= 0:
+            raise ScenarioError(
+                f"[task] goal_site: site {name!r} is on the mocap body {model.body(b).name!r}, "
+                f"which moves; expected a site fixed in the world, or give goal = [x, y, z]")
+        b = int(model.body_parentid[b])
+
+
 def _check_goal_reach(model: mujoco.MjModel, goal: Sequence[float], gripper: Gripper,
                       object_body: str, key_id: int | None, *, slack: float) -> None:
     """A pick-and-place goal the carrying gripper cannot bring the object to, at any joint
@@ -1461,6 +1490,7 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         if sid < 0:
             sites = [model.site(i).name for i in range(model.nsite)]
             raise ScenarioError(f"[task] goal_site: unknown site {name!r}; valid: {_listing(sites)}")
+        _check_goal_site_fixed(model, sid)
         data = mujoco.MjData(model)
         if key_id is not None:
             mujoco.mj_resetDataKeyframe(model, data, key_id)

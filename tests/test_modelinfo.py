@@ -740,3 +740,19 @@ def test_init_takes_the_nominal_friction_from_the_fingers_not_the_palm(tmp_path)
                       out=tmp_path / "scenario.toml")
     sc = load_scenario(tmp_path / "scenario.toml")
     assert sc.box.nominal[sc.box.names.index("friction")] == pytest.approx(1.2)
+
+
+def test_a_goal_site_must_be_fixed_in_the_world(tmp_path):
+    # the goal is read once at the start pose: a site on the arm's hand would be a goal
+    # that never was where the hand ended up
+    xml = arm_xml().replace('<geom name="palm"', '<site name="tcp" pos="0 0 -0.05"/>\n'
+                            '          <geom name="palm"')
+    model_path = tmp_path / "arm.xml"
+    model_path.write_text(xml)
+    with pytest.raises(ScenarioError, match=r"goal_site: site 'tcp' is on body 'hand', which "
+                                            r"joint 'elbow' moves; expected a site fixed"):
+        init_scenario(model_path, object_body="cube", task="pick_place", goal_site="tcp",
+                      out=tmp_path / "scenario.toml")
+    assert not (tmp_path / "scenario.toml").exists()
+    init_scenario(model_path, object_body="cube", task="pick_place", goal_site="goal",
+                  out=tmp_path / "scenario.toml")
