@@ -113,6 +113,8 @@ def _load(args):
 
     traj = load_trajectory(args.trajectory, episode=args.episode, object_pose=args.object_pose)
     scenario = load_scenario(_scenario_for(args.scenario, traj))
+    if scenario.fps_given:  # the action rate where the file records none
+        traj = traj.with_rate_from(scenario.fps)
     twin = Twin(scenario)
     budget.check_rollout(traj, twin)
     return twin, traj

@@ -549,6 +549,8 @@ class Scenario:
     description: str = ""
     settle: bool = True
     servos: Servos = Servos()
+    #: ``[actions] fps`` was given (else ``fps`` is the 50 Hz default)
+    fps_given: bool = False
 
     @property
     def gripper_names(self) -> tuple[str, ...]:
@@ -1525,7 +1527,7 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         name=str(_get(raw, "name", str, "scenario", base.name)), path=path, mjcf=mjcf,
         keyframe=keyframe, object_body=object_body, object_geom=object_geom,
         grippers=grippers, support_geoms=tuple(support), actions=actions, fps=fps,
-        range_policy=policy, task=task, limits=limits, box=box, cost=cost, sparse=sparse,
+        fps_given="fps" in actions_t, range_policy=policy, task=task, limits=limits, box=box, cost=cost, sparse=sparse,
         limit_sources=sources, description=str(_get(raw, "description", str, "scenario", "")),
         settle=_get(object_t, "settle", bool, "[object]", True), servos=servos)
     scenario.validate_names(model)

@@ -269,6 +269,17 @@ class Trajectory:
     object_pose: np.ndarray | None = None
     meta: dict = field(default_factory=dict)
     source: str = ""
+    #: the file recorded no rate: ``fps`` is :data:`DEFAULT_FPS`, assumed (a scenario's
+    #: ``[actions] fps`` replaces it, :meth:`with_rate_from`)
+    fps_assumed: bool = field(default=False, compare=False)
+
+    def with_rate_from(self, fps: float | None) -> Trajectory:
+        """This trajectory at ``fps`` (a scenario's ``[actions] fps``) where its file
+        recorded no rate, else itself (a recorded rate is authoritative)."""
+        if not self.fps_assumed or fps is None or fps == self.fps:
+            return self
+        logger.info("%s: no recorded rate; the scenario's %g Hz", self.source, fps)
+        return replace(self, fps=float(fps), fps_assumed=False)
 
     def __post_init__(self) -> None:
         try:
@@ -800,7 +811,6 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
     rate = _given_or_recorded(fps, file_fps, repr(str(path)))
     if rate is None:
         logger.info("%s records no frame rate; assuming %g Hz", path, DEFAULT_FPS)
-        rate = DEFAULT_FPS
 
     meta: dict = {}
     if "meta" in data:
@@ -834,12 +844,13 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
 
     return Trajectory(
         actions=actions,
-        fps=rate,
+        fps=DEFAULT_FPS if rate is None else rate,
         start=data.get("start"),
         qpos0=data.get("qpos0"),
         object_pose=data.get("object_pose"),
         meta=meta,
         source=str(path),
+        fps_assumed=rate is None,
     )
 
 
@@ -1078,6 +1089,7 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
         object_pose=object_pose,
         meta=meta,
         source=str(path),
+        fps_assumed=fps is None,
     )
 
 
@@ -1447,7 +1459,6 @@ def _load_lerobot_files(
             CritmomentWarning,
             stacklevel=3,
         )
-        rate = DEFAULT_FPS
 
     start = None
     if "observation.state" in table.column_names and table.num_rows:
@@ -1472,7 +1483,8 @@ def _load_lerobot_files(
     for key in ("codebase_version", "robot_type"):
         if key in info:
             meta[key] = _json_value(info[key])
-    return Trajectory(actions=actions, fps=rate, start=start, meta=meta, source=source)
+    return Trajectory(actions=actions, fps=DEFAULT_FPS if rate is None else rate, start=start,
+                      meta=meta, source=source, fps_assumed=rate is None)
 
 
 # ---------------------------------------------------------------------------

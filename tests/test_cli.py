@@ -372,3 +372,33 @@ def test_rollout_warns_of_what_analyze_would_refuse(traj_file, tmp_path, capsys)
     out, err = capsys.readouterr()
     assert "cannot reproduce the nominal motion: actuator 'right/shoulder'" in err
     assert any("right/shoulder" in p for p in json.loads(out)["feasibility_problems"])
+
+
+def test_the_scenarios_fps_sets_the_rate_of_a_file_that_records_none(traj_file, capsys,
+                                                                      tmp_path):
+    from pathlib import Path
+
+    import critmoment
+
+    # the first 100 actions without 'fps' or 'time': 50 Hz assumed, unless the scenario's
+    # [actions] fps says otherwise (it was parsed and ignored)
+    with np.load(traj_file) as z:
+        fields = {k: z[k] for k in z.files if k not in ("fps", "time")}
+    fields["actions"] = fields["actions"][:100]
+    bare = tmp_path / "bare.npz"
+    np.savez(bare, **fields)
+    bundled = Path(critmoment.__file__).parent.parent / "models" / "aloha_transfer_cube"
+    text = (bundled / "scenario.toml").read_text()
+    text = text.replace('mjcf = "scene.xml"', f'mjcf = "{(bundled / "scene.xml").as_posix()}"')
+    assert "fps = 50.0" in text
+    (tmp_path / "s25.toml").write_text(text.replace("fps = 50.0", "fps = 25.0"))
+    durations = {}
+    for name, scenario in (("default", "aloha_transfer_cube"),
+                           ("25", str(tmp_path / "s25.toml"))):
+        assert main(["rollout", str(bare), "--scenario", scenario, "--json"]) in (0, 1)
+        durations[name] = json.loads(capsys.readouterr().out)["duration"]
+    assert durations == {"default": pytest.approx(2.0), "25": pytest.approx(4.0)}
+    # a recorded rate stays authoritative
+    assert main(["rollout", str(traj_file), "--scenario", str(tmp_path / "s25.toml"),
+                 "--json"]) in (0, 1)
+    assert json.loads(capsys.readouterr().out)["duration"] == pytest.approx(8.0)
