@@ -679,5 +679,25 @@ def _error(command: str, message: str, args) -> None:
         pass
 
 
+def run() -> None:
+    """The ``critmoment`` console command: :func:`main`, then exit with its code. Once
+    ``main`` has returned, its outputs are whole and the code is decided: a Ctrl-C during
+    the interpreter's shutdown is then ignored instead of ending the process by the signal
+    (the verdict's exit code lost); one just before is exit 2, interrupted."""
+    import signal
+
+    code = EXIT_ERROR
+    try:
+        code = main()
+    except KeyboardInterrupt:
+        print("critmoment: interrupted", file=sys.stderr)
+    try:
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            signal.signal(sig, signal.SIG_IGN)
+    except (ValueError, OSError):  # not the main thread, or no signals here
+        pass
+    sys.exit(code)
+
+
 if __name__ == "__main__":  # pragma: no cover
-    sys.exit(main())
+    run()

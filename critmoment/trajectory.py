@@ -326,7 +326,10 @@ class Trajectory:
             if start.shape != (n_channels,):
                 raise TrajectoryError(
                     f"start: expected shape ({n_channels},) (one value per action "
-                    f"channel), got shape {start.shape}"
+                    f"channel), got shape {start.shape}; the actions and the start "
+                    f"disagree on the number of channels ({n_channels} vs "
+                    f"{start.shape[-1] if start.ndim else 1}): check which matches the "
+                    f"scenario's action convention"
                 )
             _check_finite_vector(start, what="start")
             object.__setattr__(self, "start", _read_only(start))

@@ -402,3 +402,29 @@ def test_the_scenarios_fps_sets_the_rate_of_a_file_that_records_none(traj_file, 
     assert main(["rollout", str(traj_file), "--scenario", str(tmp_path / "s25.toml"),
                  "--json"]) in (0, 1)
     assert json.loads(capsys.readouterr().out)["duration"] == pytest.approx(8.0)
+
+
+def test_the_console_command_keeps_the_exit_code_once_main_has_returned(monkeypatch, capsys):
+    import signal
+
+    from critmoment import cli
+
+    saved = {sig: signal.getsignal(sig) for sig in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        monkeypatch.setattr(cli, "main", lambda: 1)
+        with pytest.raises(SystemExit) as done:
+            cli.run()
+        assert done.value.code == 1
+        # a Ctrl-C during the interpreter's shutdown no longer replaces the verdict's code
+        assert signal.getsignal(signal.SIGINT) == signal.SIG_IGN
+
+        def interrupted():
+            raise KeyboardInterrupt
+
+        monkeypatch.setattr(cli, "main", interrupted)
+        with pytest.raises(SystemExit) as done:
+            cli.run()
+        assert done.value.code == 2 and "interrupted" in capsys.readouterr().err
+    finally:
+        for sig, handler in saved.items():
+            signal.signal(sig, handler)
