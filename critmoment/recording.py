@@ -114,6 +114,12 @@ def check_task_window(twin: Twin, traj: Trajectory) -> None:
             f"[task] settle_time: {twin.task.settle_time:g} s, but the trajectory{_source(traj)} "
             f"lasts {duration:g} s; expected a final window shorter than the motion (default "
             f"0.05 s)")
+    persistence = twin.scenario.sparse.persistence
+    if persistence >= duration:
+        raise ScenarioError(
+            f"[sparse] persistence: {persistence:g} s, but the trajectory{_source(traj)} lasts "
+            f"{duration:g} s; expected a time a contact-FOS excursion must last to count "
+            f"(default 0.02 s), shorter than the motion (else no excursion ever counts)")
 
 
 def checked_start(twin: Twin, traj: Trajectory, *, range_policy: str | None = None,

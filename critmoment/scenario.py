@@ -828,6 +828,10 @@ def _make_servos(spec: mujoco.MjSpec, servos: Servos) -> None:
             raise ScenarioError(
                 f"[servos.{name}]: expected a torque motor on a joint, but {name!r} {what}; "
                 f"the model's torque motors on joints: {_listing(sorted(motors)) or '(none)'}")
+    if servos.default is not None and not motors:
+        warnings.warn("[servos]: default kp, kv given, but the model has no torque motor on a "
+                      "joint to drive as a servo; they change nothing", ScenarioWarning,
+                      stacklevel=3)
     auto = bool(spec.compiler.autolimits)
     for name, a in motors.items():
         gains = servos.gains.get(name, servos.default)

@@ -648,3 +648,14 @@ def test_the_tasks_up_is_against_the_models_gravity(tmp_path):
     folder = _copy(tmp_path, {"scene.xml": [(option, sideways)]}, source=source)
     assert load_scenario(folder).task.up == (0.0, 1.0, 0.0)
     assert load_scenario(source).task.up == (0.0, 0.0, 1.0)
+
+
+def test_a_persistence_as_long_as_the_motion_is_an_error(tmp_path, demo_traj):
+    """No contact-FOS excursion could ever last that long: the criterion would be off."""
+    from critmoment.analysis import AnalyzeOptions, analyze
+
+    folder = _toml(tmp_path, ("[sparse]", "[sparse]\npersistence = 100.0"))
+    with pytest.raises(ScenarioError, match=r"\[sparse\] persistence: 100 s, but the "
+                       r"trajectory .*lasts 8 s"):
+        analyze(demo_traj, twin=Twin(load_scenario(folder)),
+                options=AnalyzeOptions(n_samples=8, check_feasibility=False))

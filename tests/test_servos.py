@@ -175,3 +175,11 @@ def test_inspect_init_and_the_twin_give_a_torque_motor_one_limit(tmp_path, ctrlr
     text = modelinfo.inspect_model(path).text()
     if forcerange is None:
         assert f"force at most {limit:g} (ctrl × gain; {2 * limit:g} at the joint, gear 2)" in text
+
+
+def test_default_servo_gains_on_a_model_without_torque_motors_warn(tmp_path):
+    path = tmp_path / "arm.xml"
+    path.write_text(arm_xml())
+    with pytest.warns(Warning, match=r"\[servos\]: default kp, kv given, but the "
+                                                  r"model has no torque motor"):
+        prepare_spec(path, servos=Servos(default=ServoGains(kp=100.0, kv=5.0)))
