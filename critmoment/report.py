@@ -785,6 +785,12 @@ def _verification_text(v) -> str:
     if v.get("chained"):
         text += (f"; {v['chained']} passing at every moment carried on their own state "
                  f"(chained segments), {v['chained_failed']} of them fail there")
+        if v.get("chained_rolled_out"):
+            # the chain's doubtful failures, decided by their own full rollout
+            text += (f" ({v['chained_rolled_out']} of those re-run in full, "
+                     f"{v['chained_confirmed']} confirmed: "
+                     f"{v['chained_failed'] - v['chained_rolled_out'] + v['chained_confirmed']}"
+                     f" fail)")
     return text
 
 

@@ -216,3 +216,15 @@ def test_a_special_file_is_never_replaced_as_an_output(tmp_path):
     with pytest.raises(OutputError, match="special file"):
         StagedOutput(fifo, command="demo", kind="file")
     assert not fifo.is_file() and fifo.exists()
+
+
+def test_the_verification_line_counts_the_chain_failures_its_rollouts_overruled():
+    # 12 chained failures, 2 doubtful ones re-run in full and 1 confirmed: 11 fail, as the
+    # causes' line says; the line said only "12 of them fail there"
+    from critmoment.report import _verification_text
+
+    text = _verification_text({"near": 9, "cost_from": 0.72, "near_failed": 7, "chained": 16,
+                               "chained_failed": 12, "chained_rolled_out": 2,
+                               "chained_confirmed": 1})
+    assert text.endswith("12 of them fail there (2 of those re-run in full, 1 confirmed: "
+                         "11 fail)")
