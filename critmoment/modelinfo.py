@@ -164,6 +164,35 @@ def _moved_bodies(model: mujoco.MjModel, i: int) -> list[int]:
     return []
 
 
+def _far_targets(model: mujoco.MjModel) -> list[str]:
+    """Position servos whose control range pulls their limited hinge or slide joint far
+    outside its range (by more than the range's width): a ctrlrange in degrees (MuJoCo
+    never converts one, whatever the compiler's angle), or a gear the range ignores."""
+    notes = []
+    for a in range(model.nu):
+        if not model.actuator_ctrllimited[a] or int(model.actuator_trntype[a]) != int(
+                mujoco.mjtTrn.mjTRN_JOINT):
+            continue
+        j = int(model.actuator_trnid[a, 0])
+        if not model.jnt_limited[j]:
+            continue
+        ends = [act_info.position_target(model, a, float(c)) for c in model.actuator_ctrlrange[a]]
+        if None in ends:
+            continue
+        lo, hi = (float(v) for v in model.jnt_range[j])
+        width = hi - lo
+        if min(ends) < lo - width or max(ends) > hi + width:
+            unit = "rad" if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_HINGE else "m"
+            notes.append(
+                f"actuator {model.actuator(a).name or a!r}: its ctrlrange "
+                f"[{model.actuator_ctrlrange[a, 0]:g}, {model.actuator_ctrlrange[a, 1]:g}] pulls "
+                f"joint {model.joint(j).name or j!r} to [{min(ends):.3g}, {max(ends):.3g}] "
+                f"{unit}, far outside its range [{lo:.3g}, {hi:.3g}] {unit} (gear "
+                f"{model.actuator_gear[a, 0]:g}): MuJoCo never converts a ctrlrange from "
+                f"degrees; give it in radians (times the gear)")
+    return notes
+
+
 def _finger_geoms(model: mujoco.MjModel, grippers) -> set[int]:
     """The grippers' collision geoms on bodies that move in their gripper's body (a joint
     between them and it: the fingers, not the palm)."""
@@ -392,6 +421,7 @@ def inspect_model(path: str | Path) -> ModelInfo:
     if unnamed_geoms:
         notes.append(f"{unnamed_geoms} of {model.ngeom} geoms are unnamed; critmoment names them "
                      "critmoment:geom:<id> in its own copy (give grippers by body)")
+    notes += _far_targets(model)
     cone = "elliptic" if model.opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC else "pyramidal"
     if cone == "pyramidal" or model.opt.impratio < 2:
         notes.append(f"soft friction model (cone {cone}, impratio {model.opt.impratio:g}): "

@@ -756,3 +756,15 @@ def test_a_goal_site_must_be_fixed_in_the_world(tmp_path):
     assert not (tmp_path / "scenario.toml").exists()
     init_scenario(model_path, object_body="cube", task="pick_place", goal_site="goal",
                   out=tmp_path / "scenario.toml")
+
+
+def test_inspect_notes_a_servo_ctrlrange_far_outside_its_joints_range(tmp_path):
+    # the inline jaw's hinge spans -0.2..1 degrees (MJCF's default unit), its servo's
+    # ctrlrange -0.2..1 radians (MuJoCo never converts a ctrlrange): 57 times the range
+    jaw = _write(tmp_path, gripper="jaw")
+    assert any("actuator 'jaw_act': its ctrlrange [-0.2, 1] pulls joint 'jaw' to [-0.2, 1] "
+               "rad, far outside its range [-0.00349, 0.0175] rad" in n
+               and "never converts a ctrlrange from degrees" in n
+               for n in inspect_model(jaw).notes)
+    slides = _write(tmp_path, gripper="slides")
+    assert not any("never converts a ctrlrange" in n for n in inspect_model(slides).notes)
