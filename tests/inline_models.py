@@ -108,3 +108,39 @@ def arm_xml(*, gripper: str = "slides", named: bool = True, motor: bool = False,
   </keyframe>
 </mujoco>
 """
+
+
+def arm_scenario_toml(mjcf: str = "arm.xml", *, shoulder: str = "", extra: str = "") -> str:
+    """A pick-and-hold scenario for :func:`arm_xml`'s slide-finger arm: one channel per arm
+    joint (``shoulder`` adds lines to the first, e.g. ``scales = [2.0]``), the fingers on
+    one normalised channel, the cube's mass uncertain; ``extra`` is appended (``[servos]``
+    tables)."""
+    return f"""
+[model]
+mjcf = "{mjcf}"
+[object]
+body = "cube"
+[grippers.hand]
+body = "hand"
+[support]
+geoms = ["table"]
+[actions]
+convention = "explicit"
+[[actions.channel]]
+actuators = ["shoulder_act"]
+{shoulder}
+[[actions.channel]]
+actuators = ["elbow_act"]
+[[actions.channel]]
+actuators = ["finger_a_act", "finger_b_act"]
+normalised = true
+scales = [0.03, 0.03]
+offsets = [0.0, 0.0]
+[task]
+kind = "pick_hold"
+[uncertainty.mass]
+body = "cube"
+range = [0.05, 1.0]
+nominal = 0.1
+{extra}
+"""

@@ -7,7 +7,7 @@ import math
 import mujoco
 import numpy as np
 import pytest
-from inline_models import arm_xml
+from inline_models import arm_scenario_toml, arm_xml
 
 import critmoment as cm
 from critmoment import actuators as act_info
@@ -85,34 +85,7 @@ def test_servos_name_only_torque_motors_on_joints(tmp_path):
 
 def _motor_scenario(tmp_path, servos: str):
     (tmp_path / "arm.xml").write_text(arm_xml(motor=True))
-    (tmp_path / "scenario.toml").write_text(f"""
-[model]
-mjcf = "arm.xml"
-[object]
-body = "cube"
-[grippers.hand]
-body = "hand"
-[support]
-geoms = ["table"]
-[actions]
-convention = "explicit"
-[[actions.channel]]
-actuators = ["shoulder_act"]
-[[actions.channel]]
-actuators = ["elbow_act"]
-[[actions.channel]]
-actuators = ["finger_a_act", "finger_b_act"]
-normalised = true
-scales = [0.03, 0.03]
-offsets = [0.0, 0.0]
-[task]
-kind = "pick_hold"
-[uncertainty.mass]
-body = "cube"
-range = [0.05, 1.0]
-nominal = 0.1
-{servos}
-""")
+    (tmp_path / "scenario.toml").write_text(arm_scenario_toml(extra=servos))
     return tmp_path
 
 

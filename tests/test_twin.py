@@ -16,7 +16,7 @@ import mujoco
 import mujoco.batch
 import numpy as np
 import pytest
-from inline_models import arm_xml
+from inline_models import arm_scenario_toml, arm_xml
 from scenarios import one_actuator_toml
 
 from critmoment.exceptions import ParameterError, TrajectoryError
@@ -739,34 +739,7 @@ def test_a_geared_servos_channel_spans_its_joints_range(tmp_path):
     # blamed the motors)
     xml = arm_xml().replace('joint="shoulder" kp="400"', 'joint="shoulder" gear="2" kp="400"')
     (tmp_path / "arm.xml").write_text(xml)
-    (tmp_path / "scenario.toml").write_text("""
-[model]
-mjcf = "arm.xml"
-[object]
-body = "cube"
-[grippers.hand]
-body = "hand"
-[support]
-geoms = ["table"]
-[actions]
-convention = "explicit"
-[[actions.channel]]
-actuators = ["shoulder_act"]
-scales = [2.0]
-[[actions.channel]]
-actuators = ["elbow_act"]
-[[actions.channel]]
-actuators = ["finger_a_act", "finger_b_act"]
-normalised = true
-scales = [0.03, 0.03]
-offsets = [0.0, 0.0]
-[task]
-kind = "pick_hold"
-[uncertainty.mass]
-body = "cube"
-range = [0.05, 1.0]
-nominal = 0.1
-""")
+    (tmp_path / "scenario.toml").write_text(arm_scenario_toml(shoulder="scales = [2.0]"))
     twin = Twin(load_scenario(tmp_path))
     joint = math.radians(3.0)  # MJCF's default degrees
     np.testing.assert_allclose([twin.channel_lower[0], twin.channel_upper[0]], [-joint, joint])
