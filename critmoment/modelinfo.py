@@ -25,6 +25,7 @@ import dataclasses
 import math
 import os
 import re
+import warnings
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -32,7 +33,7 @@ import mujoco
 import numpy as np
 
 from critmoment import actuators as act_info
-from critmoment.exceptions import ScenarioError
+from critmoment.exceptions import CritmomentWarning, ScenarioError
 from critmoment.scenario import GENERATED, compile_spec, load_scenario, prepare_spec
 from critmoment.task import TASK_KINDS
 from critmoment.twin import Twin
@@ -656,6 +657,12 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         for s in supports:
             if s not in names:
                 raise ScenarioError(f"--support: unknown geom {s!r}")
+        resting = _resting_supports(model, bid, key)
+        if resting and not set(supports) & set(resting):
+            # the task's "off the support" would read the object as lifted from the start
+            warnings.warn(f"--support {', '.join(supports)}: the object {object_body!r} does not "
+                          f"rest on it once settled; it rests on {', '.join(resting)}",
+                          CritmomentWarning, stacklevel=2)
     by_distance = sorted(grippers, key=lambda g: dist[g.name])
     task_lines = [f"kind = {_toml_str(task)}"]
     # an option the task does not use is a mistake in the command, not something to drop

@@ -768,3 +768,14 @@ def test_inspect_notes_a_servo_ctrlrange_far_outside_its_joints_range(tmp_path):
                for n in inspect_model(jaw).notes)
     slides = _write(tmp_path, gripper="slides")
     assert not any("never converts a ctrlrange" in n for n in inspect_model(slides).notes)
+
+
+def test_init_warns_of_a_support_the_object_does_not_rest_on(tmp_path):
+    xml = arm_xml().replace('<site name="goal"', '<geom name="shelf" type="box" '
+                            'pos="-0.5 0.5 0.2" size="0.1 0.1 0.01"/>\n    <site name="goal"')
+    model_path = tmp_path / "arm.xml"
+    model_path.write_text(xml)
+    with pytest.warns(Warning, match=r"--support shelf: the object 'cube' does not rest on it "
+                                     r"once settled; it rests on table"):
+        init_scenario(model_path, object_body="cube", task="pick_hold", supports=["shelf"],
+                      out=tmp_path / "scenario.toml")
