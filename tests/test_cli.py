@@ -376,9 +376,7 @@ def test_rollout_warns_of_what_analyze_would_refuse(traj_file, tmp_path, capsys)
 
 def test_the_scenarios_fps_sets_the_rate_of_a_file_that_records_none(traj_file, capsys,
                                                                       tmp_path):
-    from pathlib import Path
-
-    import critmoment
+    from critmoment.scenario import bundled_scenario_path
 
     # the first 100 actions without 'fps' or 'time': 50 Hz assumed, unless the scenario's
     # [actions] fps says otherwise (it was parsed and ignored)
@@ -387,7 +385,7 @@ def test_the_scenarios_fps_sets_the_rate_of_a_file_that_records_none(traj_file, 
     fields["actions"] = fields["actions"][:100]
     bare = tmp_path / "bare.npz"
     np.savez(bare, **fields)
-    bundled = Path(critmoment.__file__).parent.parent / "models" / "aloha_transfer_cube"
+    bundled = bundled_scenario_path("aloha_transfer_cube").parent
     text = (bundled / "scenario.toml").read_text()
     text = text.replace('mjcf = "scene.xml"', f'mjcf = "{(bundled / "scene.xml").as_posix()}"')
     assert "fps = 50.0" in text
