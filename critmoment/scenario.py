@@ -697,6 +697,13 @@ class Scenario:
                     f"{_listing(keys)} or an index 0..{model.nkey - 1}")
         written: dict[tuple, str] = {}
         obj = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, self.object_body)
+        reach = _body_reach(model, obj)
+        if reach is not None and self.sparse.slip_tolerance >= 2.0 * reach:
+            raise ScenarioError(
+                f"[sparse] slip_tolerance: {self.sparse.slip_tolerance:g} m, but the object "
+                f"{self.object_body!r} is at most {2.0 * reach:.3g} m across; expected a "
+                f"motion in the grip well under the object's size (default 0.005 m): a slip "
+                f"that large has carried the object out of the grip, so none would count")
         for p in self.box.parameters:
             try:
                 index = p.resolve(model)
@@ -782,6 +789,16 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
             f"[uncertainty.{p.name}]: body {p.target!r} is fixed to the world (no joint "
             "between it and the world), so its mass or centre of mass changes nothing; "
             "name a body that moves (the object, or a link of the arm)")
+    elif isinstance(p, ComOffsetParameter) and (reach := _body_reach(model, index)) is not None:
+        ipos = model.body_ipos[index]
+        far = [v for v in (p.low, p.high)
+               if np.linalg.norm(ipos + np.array([v, 0.0, 0.0])) > reach]
+        if far:
+            raise ScenarioError(
+                f"[uncertainty.{p.name}]: an offset of {far[0]:g} m along x puts the centre of "
+                f"mass of body {p.target!r} outside every geom it has (they lie within "
+                f"{reach:.3g} m of its frame); expected a range within the body, whose centre "
+                f"of mass lies inside its matter (is the range in mm?)")
     elif isinstance(p, MassParameter) and not model.body_mass[index] > 0:
         raise ScenarioError(
             f"[uncertainty.{p.name}]: body {p.target!r} has no mass in the MJCF "
@@ -792,6 +809,17 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
             f"[uncertainty.{p.name}]: actuator {p.target!r} has no forcerange in the MJCF "
             "(forcelimited false), so a force limit parameter would change nothing; add "
             "forcerange/forcelimited to the actuator")
+
+
+def _body_reach(model: mujoco.MjModel, body: int) -> float | None:
+    """The radius about a body's frame that holds all its own geoms (their bounding
+    spheres), or None for a body without geoms. A rigid body's centre of mass lies inside
+    its matter, so inside this sphere."""
+    geoms = np.flatnonzero(model.geom_bodyid == body)
+    if geoms.size == 0:
+        return None
+    return float(np.max(np.linalg.norm(model.geom_pos[geoms], axis=1)
+                        + model.geom_rbound[geoms]))
 
 
 # ---------------------------------------------------------------------------

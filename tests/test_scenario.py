@@ -659,3 +659,27 @@ def test_a_persistence_as_long_as_the_motion_is_an_error(tmp_path, demo_traj):
                        r"trajectory .*lasts 8 s"):
         analyze(demo_traj, twin=Twin(load_scenario(folder)),
                 options=AnalyzeOptions(n_samples=8, check_feasibility=False))
+
+
+@pytest.mark.parametrize("offset", ["[-100.0, 100.0]", "[-0.01, 0.05]"])
+def test_a_centre_of_mass_outside_the_body_is_an_error(tmp_path, offset):
+    """A CoM offset of ±100 m (or 5 cm on the 4 cm cube) was audited: every sample tipped
+    the cube before any grasp and the report blamed the grip. A rigid body's centre of mass
+    lies inside its matter; ±1 cm on the cube stays accepted."""
+    edits = (('[uncertainty.friction]\ngeom = "box"', '[uncertainty.com_offset]\nbody = "box"'),
+             ("range = [0.2, 1.5]", f"range = {offset}"), ("nominal = 1.0", "nominal = 0.0"))
+    with pytest.raises(ScenarioError, match=r"\[uncertainty.com_offset\]: an offset of "
+                       r"[-0-9.]+ m along x puts the centre of mass of body 'box' outside "
+                       r"every geom it has \(they lie within 0.0346 m"):
+        load_scenario(_toml(tmp_path, *edits))
+    ok = _toml(tmp_path / "ok", edits[0], ("range = [0.2, 1.5]", "range = [-0.01, 0.01]"),
+               edits[2])
+    assert load_scenario(ok).box.high[-1] == 0.01
+
+
+def test_a_slip_tolerance_beyond_the_objects_size_is_an_error(tmp_path):
+    """slip_tolerance = 1e9 m was accepted: no slip could ever count."""
+    folder = _toml(tmp_path, ("horizon = 10\n", "horizon = 10\nslip_tolerance = 1e9\n"))
+    with pytest.raises(ScenarioError, match=r"\[sparse\] slip_tolerance: 1e\+09 m, but the "
+                       r"object 'box' is at most 0.0693 m across"):
+        load_scenario(folder)
