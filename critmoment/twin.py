@@ -610,7 +610,10 @@ class Twin:
             pose = np.asarray(object_pose, dtype=np.float64)
             if pose.shape != (7,):
                 raise TrajectoryError(f"expected object_pose (7,) xyz + quat wxyz, got {pose.shape}")
-            data.qpos[self.object_qposadr:self.object_qposadr + 7] = pose
+            adr = self.object_qposadr
+            if qpos0 is not None:
+                _warn_pose_disagreement(qpos0[adr:adr + 7], pose)
+            data.qpos[adr:adr + 7] = pose
         data.qvel[:] = 0
         if start is not None:
             data.ctrl[:] = self.controls(np.asarray(start)[None])[0]
@@ -800,6 +803,27 @@ def quiet_mujoco_log() -> Iterator[None]:
         config = mujoco.MjLogConfig.get()
         config.logto_file, config.logto_console = before
         config.set()
+
+
+#: how far qpos0's object pose may lie from an object_pose given beside it before the
+#: override is warned of [m], [rad]
+POSE_AGREEMENT = (1e-3, np.radians(1.0))
+
+
+def _warn_pose_disagreement(in_qpos0: np.ndarray, pose: np.ndarray) -> None:
+    """qpos0 and object_pose both place the object: object_pose wins, which is what a
+    caller overriding a recorded pose means, but a file whose two records disagree is more
+    often a slip (a pose in another frame, a stale field), so say which pose is used."""
+    shift = float(np.linalg.norm(in_qpos0[:3] - pose[:3]))
+    dot = abs(float(np.dot(in_qpos0[3:] / np.linalg.norm(in_qpos0[3:]),
+                           pose[3:] / np.linalg.norm(pose[3:]))))
+    turn = 2.0 * float(np.arccos(min(dot, 1.0)))
+    if shift > POSE_AGREEMENT[0] or turn > POSE_AGREEMENT[1]:
+        warnings.warn(
+            f"object_pose {np.round(pose[:3], 4).tolist()} (m) replaces the object's pose in "
+            f"qpos0, {np.round(in_qpos0[:3], 4).tolist()}: they differ by {shift * 1e3:.1f} mm "
+            f"and {np.degrees(turn):.1f} deg; the run starts from object_pose (drop one of the "
+            f"two if that is not meant)", CritmomentWarning, stacklevel=3)
 
 
 def _check_qpos_quaternions(model: mujoco.MjModel, qpos: np.ndarray) -> None:

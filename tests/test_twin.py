@@ -10,6 +10,7 @@ Small scenes are written inline (MJCF + scenario.toml in tmp folders):
 from __future__ import annotations
 
 import math
+import warnings
 from pathlib import Path
 
 import mujoco
@@ -751,3 +752,22 @@ def test_a_geared_servos_channel_spans_its_joints_range(tmp_path):
     for _ in range(2000):
         mujoco.mj_step(model, data)
     assert data.qpos[model.joint("shoulder").qposadr[0]] == pytest.approx(0.9 * joint, abs=2e-3)
+
+
+def test_qpos0_and_object_pose_that_disagree_are_warned_of(twin):
+    """Both place the object; object_pose wins (a caller's override), silently until now,
+    so a file whose two records disagree started from a pose the user did not check."""
+    from critmoment.exceptions import CritmomentWarning
+
+    qpos0 = twin.initial_data(settle=False).qpos.copy()
+    adr = twin.object_qposadr
+    pose = qpos0[adr:adr + 7].copy()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        twin.initial_data(qpos0=qpos0, object_pose=pose, settle=False)
+    moved = pose.copy()
+    moved[1] += 0.05
+    with pytest.warns(CritmomentWarning, match=r"replaces the object's pose in qpos0.*differ "
+                      r"by 50.0 mm and 0.0 deg; the run starts from object_pose"):
+        data = twin.initial_data(qpos0=qpos0, object_pose=moved, settle=False)
+    np.testing.assert_allclose(data.qpos[adr:adr + 7], moved)
