@@ -34,7 +34,13 @@ from critmoment.exceptions import ParameterError
 from critmoment.feasibility import FeasibilityReport, check_fit, preflight
 from critmoment.groundtruth import NominalReference, brute_force, reference_from_recording
 from critmoment.moments import Moment, MomentDetector, MomentLabel
-from critmoment.recording import Recording, check_task_window, model_hash, rollout
+from critmoment.recording import (
+    Recording,
+    at_scenario_rate,
+    check_task_window,
+    model_hash,
+    rollout,
+)
 from critmoment.scenario import Scenario
 from critmoment.trajectory import Trajectory, check_trajectory, input_identity
 from critmoment.twin import Twin, resolve_twin
@@ -449,6 +455,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     if seed is not None:
         opt = dataclasses.replace(opt, seed=budget.check_seed(seed))
     twin = resolve_twin(scenario, twin)
+    trajectory = at_scenario_rate(trajectory, twin)
     sc = twin.scenario
     budget.check_audit(trajectory, twin, opt)  # seed domain, rollout and sweep size
     box = sc.box

@@ -107,15 +107,15 @@ def _scenario_for(given, traj):
 
 
 def _load(args):
+    from critmoment.recording import at_scenario_rate
     from critmoment.scenario import load_scenario
     from critmoment.trajectory import load_trajectory
     from critmoment.twin import Twin
 
     traj = load_trajectory(args.trajectory, episode=args.episode, object_pose=args.object_pose)
     scenario = load_scenario(_scenario_for(args.scenario, traj))
-    if scenario.fps_given:  # the action rate where the file records none
-        traj = traj.with_rate_from(scenario.fps)
     twin = Twin(scenario)
+    traj = at_scenario_rate(traj, twin)  # the action rate where the file records none
     budget.check_rollout(traj, twin)
     return twin, traj
 

@@ -100,6 +100,15 @@ def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None =
     return twin.controls(targets)
 
 
+def at_scenario_rate(traj: Trajectory, twin: Twin) -> Trajectory:
+    """The trajectory at the scenario's ``[actions] fps`` where its file recorded no rate
+    (:meth:`Trajectory.with_rate_from`); a recorded rate, or a scenario that states none,
+    leaves it as it is. Every entry point (``analyze``, ``rollout``, ``validate``, the CLI)
+    applies it, so a library call reads a file as the command line does."""
+    sc = twin.scenario
+    return traj.with_rate_from(sc.fps) if sc.fps_given else traj
+
+
 def check_task_window(twin: Twin, traj: Trajectory) -> None:
     """The task's final window (``settle_time``) must be shorter than the motion, or its
     success rule reaches back to the start, where the object rests untouched on its
@@ -569,6 +578,7 @@ def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
     """
     traj = trajectory_mod.check_trajectory(traj)
     twin = resolve_twin(scenario, twin)
+    traj = at_scenario_rate(traj, twin)
     controls = prepare_controls(twin, traj, range_policy=range_policy)
     state0 = initial_state(twin, traj)
     out = simulate(twin, state0, controls, record_state=True, nthread=1)

@@ -58,7 +58,7 @@ from critmoment.groundtruth import (
     rerun_in_full,
 )
 from critmoment.moments import Moment
-from critmoment.recording import Recording, rollout
+from critmoment.recording import Recording, at_scenario_rate, rollout
 from critmoment.trajectory import Trajectory, check_trajectory, input_identity
 from critmoment.twin import Twin, carried_flags, resolve_twin
 from critmoment.verdict import failing_samples
@@ -590,7 +590,7 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
         The :class:`ValidationResult`.
     """
     twin = resolve_twin(None, twin)
-    check_trajectory(traj)
+    traj = at_scenario_rate(check_trajectory(traj), twin)
     box = twin.scenario.box
     if samples is None:
         n_samples = _check_int("n_samples", n_samples, 1)

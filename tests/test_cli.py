@@ -400,6 +400,11 @@ def test_the_scenarios_fps_sets_the_rate_of_a_file_that_records_none(traj_file, 
     assert main(["rollout", str(traj_file), "--scenario", str(tmp_path / "s25.toml"),
                  "--json"]) in (0, 1)
     assert json.loads(capsys.readouterr().out)["duration"] == pytest.approx(8.0)
+    # the library reads the file as the command line does
+    from critmoment import load_scenario, load_trajectory, rollout
+
+    rec = rollout(load_trajectory(bare), load_scenario(tmp_path / "s25.toml"))
+    assert (len(rec.states) - 1) * rec.dt == pytest.approx(4.0)
 
 
 def test_the_console_command_keeps_the_exit_code_once_main_has_returned(monkeypatch, capsys):
