@@ -637,6 +637,11 @@ def _quote(names: Sequence[str]) -> str:
     return " and ".join(f"'{n}'" for n in names)
 
 
+#: a gripper contact (or a gap in one) shorter than this [s] is described as a brush (or
+#: chatter) in its event's reason, not as a grasp (or release)
+BRIEF_CONTACT = 0.1
+
+
 def detect_contact_events(recording: Any, *, debounce_time: float = 0.01) -> list[Moment]:
     """Contact events from the debounced contact flags of a recording.
 
@@ -695,16 +700,26 @@ def detect_contact_events(recording: Any, *, debounce_time: float = 0.01) -> lis
         else:
             add(s, MomentLabel.DROP, "object touches table again without gripper contact (dropped)")
 
+    brief = max(1, int(round(BRIEF_CONTACT / dt)))
     for g, name in enumerate(names):
         col = grp[:, g]
-        for s in np.flatnonzero(col[1:] != col[:-1]) + 1:
-            s = int(s)
+        switches = [int(s) for s in np.flatnonzero(col[1:] != col[:-1]) + 1]
+        for k, s in enumerate(switches):
             others = _holders(grp[s], names, exclude=g)
+            # a contact that ends (or a gap that closes) soon after is a brush or chatter,
+            # not a grasp or a release: the event stays, its reason says what it was
+            lasts = switches[k + 1] - s if k + 1 < len(switches) else n_steps
+            short = f"{lasts * dt * 1e3:.0f} ms" if lasts < brief else ""
             if col[s]:
-                why = f"gripper '{name}' touches object"
+                why = (f"gripper '{name}' touches object" if not short else
+                       f"gripper '{name}' touches object for {short} only (a brush, not a hold)")
                 if others:
                     why += f" while {_quote(others)} holds it"
                 add(s, MomentLabel.GRASP, why, name)
+            elif short:
+                add(s, MomentLabel.HAND_OVER if others else MomentLabel.RELEASE,
+                    f"gripper '{name}' loses contact with the object for {short}, then touches "
+                    f"it again (contact chatter, not a release)", name)
             elif others:
                 add(s, MomentLabel.HAND_OVER,
                     f"gripper '{name}' releases object while {_quote(others)} holds it (hand-over)", name)

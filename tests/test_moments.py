@@ -224,6 +224,28 @@ def test_lift_off_and_hand_over_steps_are_exact():
     assert events[2].reason == "gripper 'right' touches object while 'left' holds it"
 
 
+def test_a_brush_and_chatter_are_not_called_a_grasp_and_a_release():
+    """A finger brushing the object on the way out, and a grip that loses contact for a
+    few tens of ms while closing, were reported as "touches object" and "releases object
+    onto the table". The events keep their steps and labels (the audit's moments do not
+    move); their reasons say what happened."""
+    rec = pick_and_handover()
+    rec.contact_gripper[440:470, 0] = True  # the left fingers close: 60 ms, a 60 ms gap, hold
+    rec.contact_gripper[3700:3720, 1] = True  # the right fingers brush it leaving: 40 ms
+    events = detect_contact_events(rec)
+    reasons = {(m.step, m.label): m.reason for m in events}
+    assert reasons[(440, MomentLabel.GRASP)] == (
+        "gripper 'left' touches object for 60 ms only (a brush, not a hold)")
+    assert reasons[(470, MomentLabel.RELEASE)] == (
+        "gripper 'left' loses contact with the object for 60 ms, then touches it again "
+        "(contact chatter, not a release)")
+    assert reasons[(500, MomentLabel.GRASP)] == "gripper 'left' touches object"
+    assert reasons[(3700, MomentLabel.GRASP)] == (
+        "gripper 'right' touches object for 40 ms only (a brush, not a hold)")
+    assert reasons[(3720, MomentLabel.RELEASE)] == "gripper 'right' releases object onto the table"
+    assert reasons[(3500, MomentLabel.RELEASE)] == "gripper 'right' releases object onto the table"
+
+
 def test_three_step_flicker_is_ignored():
     clean = detect_contact_events(pick_and_handover())
     chattering = detect_contact_events(pick_and_handover(chatter=True), debounce_time=0.01)
