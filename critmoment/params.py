@@ -73,6 +73,26 @@ class Parameter:
     minimum: ClassVar[float] = -np.inf
 
     def __post_init__(self):
+        for field in ("name", "target"):
+            value = getattr(self, field)
+            if not isinstance(value, str) or not value:
+                raise ParameterError(
+                    f"parameter {field}: expected a non-empty string, got {value!r}")
+        for field in ("low", "high", "nominal"):
+            value = getattr(self, field)
+            if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float,
+                                                                             np.number)):
+                raise ParameterError(
+                    f"parameter {self.name!r} {field}: expected a number, got {value!r}")
+            object.__setattr__(self, field, float(value))
+        if not isinstance(self.prior, Prior):
+            try:
+                object.__setattr__(self, "prior", Prior(self.prior))
+            except (ValueError, TypeError):
+                raise ParameterError(
+                    f"parameter {self.name!r} prior: expected one of "
+                    f"{[p.value for p in Prior]} (or critmoment.params.Prior), got "
+                    f"{self.prior!r}") from None
         values = (self.low, self.high, self.nominal)
         if not all(np.isfinite(v) for v in values):
             raise ParameterError(
@@ -299,6 +319,16 @@ class UncertaintyBox:
     parameters: tuple[Parameter, ...]
 
     def __post_init__(self):
+        params = self.parameters
+        if isinstance(params, Parameter) or not isinstance(params, (tuple, list)):
+            raise ParameterError(f"UncertaintyBox parameters: expected a tuple of Parameter, "
+                                 f"got {type(params).__name__}")
+        bad = [type(p).__name__ for p in params if not isinstance(p, Parameter)]
+        if bad or not params:
+            raise ParameterError(
+                f"UncertaintyBox parameters: expected at least one critmoment Parameter "
+                f"(MassParameter, FrictionParameter, ...), got {bad or 'none'}")
+        object.__setattr__(self, "parameters", tuple(params))
         names = [p.name for p in self.parameters]
         if len(set(names)) != len(names):
             raise ParameterError(f"parameter names must be unique, got {names}")

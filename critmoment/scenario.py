@@ -194,6 +194,12 @@ MAX_COST_EXPONENT = 50.0
 FOS_BAND = (0.5, 2.0)
 
 
+def _is_number(value: Any) -> bool:
+    """A real number, not a bool (``True`` is 1 to Python, never to a scenario)."""
+    return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(
+        value, (bool, np.bool_))
+
+
 @dataclasses.dataclass(frozen=True)
 class CostParams:
     """Constants of the cost C = A·exp(−α(FOS_c − 1)) + B·exp(−β(FOS_m − 1)) (thesis eq. 15)."""
@@ -207,7 +213,7 @@ class CostParams:
     def __post_init__(self):
         for key in ("A", "B", "alpha", "beta", "threshold"):
             value = getattr(self, key)
-            if not (np.isfinite(value) and value > 0):
+            if not _is_number(value) or not (np.isfinite(value) and value > 0):
                 raise ScenarioError(f"[cost] {key}: expected a finite number > 0, got {value!r}")
         for key in ("alpha", "beta"):
             value = getattr(self, key)
@@ -315,10 +321,12 @@ class SparseSettings:
                 or self.creep_horizon < 0):
             raise ScenarioError(
                 f"[sparse] creep_horizon: expected an integer >= 0, got {self.creep_horizon!r}")
-        if not (math.isfinite(self.persistence) and self.persistence >= 0):
+        if not (_is_number(self.persistence) and math.isfinite(self.persistence)
+                and self.persistence >= 0):
             raise ScenarioError(
                 f"[sparse] persistence: expected a time >= 0 s, got {self.persistence!r}")
-        if not (math.isfinite(self.slip_tolerance) and self.slip_tolerance > 0):
+        if not (_is_number(self.slip_tolerance) and math.isfinite(self.slip_tolerance)
+                and self.slip_tolerance > 0):
             raise ScenarioError(
                 f"[sparse] slip_tolerance: expected a distance > 0 m, got {self.slip_tolerance!r}")
 
@@ -551,6 +559,53 @@ class Scenario:
     servos: Servos = Servos()
     #: ``[actions] fps`` was given (else ``fps`` is the 50 Hz default)
     fps_given: bool = False
+
+    def __post_init__(self):
+        # load_scenario builds these checked; a Scenario built or replaced in code gets the
+        # same structure checked here (names against the model: Twin, validate_names)
+        def bad(field: str, expected: str, got: Any) -> ScenarioError:
+            return ScenarioError(f"Scenario {field}: expected {expected}, got "
+                                 f"{type(got).__name__} {got!r}"[:400])
+
+        for field in ("name", "object_body", "object_geom"):
+            value = getattr(self, field)
+            if not isinstance(value, str) or (field != "name" and not value):
+                raise bad(field, "a non-empty string", value)
+        if not isinstance(self.mjcf, (str, os.PathLike)):
+            raise bad("mjcf", "the path of the MJCF scene", self.mjcf)
+        object.__setattr__(self, "mjcf", Path(self.mjcf))
+        grippers = self.grippers
+        if not isinstance(grippers, (tuple, list)) or not grippers or not all(
+                isinstance(g, Gripper) and g.geoms for g in grippers):
+            raise bad("grippers", "at least one Gripper with its geoms", grippers)
+        if len({g.name for g in grippers}) != len(grippers):
+            raise bad("grippers", "grippers of different names", [g.name for g in grippers])
+        object.__setattr__(self, "grippers", tuple(grippers))
+        support = self.support_geoms
+        if (isinstance(support, str) or not isinstance(support, (tuple, list)) or not support
+                or not all(isinstance(g, str) and g for g in support)):
+            raise bad("support_geoms", "the names of the supports' geoms (table, bin, floor): "
+                      "without them lift-off, place and drop cannot be told", support)
+        object.__setattr__(self, "support_geoms", tuple(support))
+        for field, kind in (("actions", ActionConvention), ("task", Task),
+                            ("box", UncertaintyBox), ("cost", CostParams),
+                            ("sparse", SparseSettings), ("servos", Servos)):
+            if not isinstance(getattr(self, field), kind):
+                raise bad(field, f"a {kind.__name__}", getattr(self, field))
+        if not (_is_number(self.fps) and math.isfinite(self.fps) and self.fps > 0):
+            raise bad("fps", "an action rate > 0 Hz", self.fps)
+        if self.range_policy not in ("error", "clip", "warn"):
+            raise bad("range_policy", "one of 'error', 'clip', 'warn'", self.range_policy)
+        for field in ("settle", "fps_given"):
+            if not isinstance(getattr(self, field), bool):
+                raise bad(field, "True or False", getattr(self, field))
+        if not isinstance(self.limits, Mapping):
+            raise bad("limits", "a mapping of actuator name to force limit", self.limits)
+        for actuator, value in self.limits.items():
+            if not (isinstance(actuator, str) and _is_number(value) and value > 0):
+                raise ScenarioError(
+                    f"Scenario limits: expected a force limit > 0 (N or N·m; inf for none) per "
+                    f"actuator name, got {actuator!r}: {value!r}")
 
     @property
     def gripper_names(self) -> tuple[str, ...]:
@@ -1316,6 +1371,41 @@ def _check_goal_reach(model: mujoco.MjModel, goal: Sequence[float], gripper: Gri
         f" m, the fixed base of the arm that carries gripper {gripper.name!r}; at any joint "
         f"values that arm brings the object at most {farthest:.3g} m from there; expected a "
         f"goal in world coordinates, in metres, that the arm can reach")
+
+
+def start_out_of_reach(model: mujoco.MjModel, scenario: Scenario, position: np.ndarray,
+                       *, slack: float = 0.05, factor: float = 10.0) -> str | None:
+    """Why no gripper of ``scenario`` can ever touch an object whose centre starts at
+    ``position``, more than ``factor`` times as far from every arm's base as the arm
+    reaches (a pose in millimetres or centimetres), or None. An object merely out of reach
+    (set aside on purpose, a motion audited without it) is the nominal run's "never touches
+    the object" warning, not an error; nor where some gripper's reach has no bound. An
+    object above a gripper's reach may fall into it, as a goal above a bin may
+    (:func:`_check_goal_reach`)."""
+    key_id = scenario.keyframe_id(model)
+    position = np.asarray(position, dtype=float)
+    down = _down(model) if np.linalg.norm(model.opt.gravity) > 0 else np.zeros(3)
+    best = None
+    for gripper in scenario.grippers:
+        carry = _carry_reach(model, gripper, scenario.object_body, key_id)
+        if carry is None:
+            return None
+        for anchor, radius in carry[0]:
+            lift = max(0.0, float(np.dot(position - anchor, down)))
+            gap = (float(np.linalg.norm(position - lift * down - anchor))
+                   - factor * (radius + slack))
+            if gap <= 0.0:
+                return None
+            if best is None or gap < best[0]:
+                best = (gap, anchor, radius + slack)
+    if best is None:
+        return None
+    _, anchor, farthest = best
+    return (f"the object starts at ({', '.join(f'{v:g}' for v in position)}) m, "
+            f"{np.linalg.norm(position - anchor):.3g} m from ({', '.join(f'{v:.3f}' for v in anchor)})"
+            f" m, the fixed base of the nearest arm, which at any joint values reaches at most "
+            f"{farthest:.3g} m from there: no gripper can ever touch it, by far; expected the "
+            f"object's start pose in world coordinates, in metres (is it in mm?)")
 
 
 def _check_lift_reach(model: mujoco.MjModel, lift_height: float, gripper: Gripper,

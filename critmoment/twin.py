@@ -21,6 +21,7 @@ from __future__ import annotations
 import contextlib
 import copy
 import dataclasses
+import math
 import os
 import types
 import warnings
@@ -195,7 +196,7 @@ class Twin:
             read-only; use :meth:`copy_model` for a model to modify.
     """
 
-    def __init__(self, scenario: Scenario | str | os.PathLike | None):
+    def __init__(self, scenario: Scenario | str | os.PathLike | None = None):
         from critmoment.scenario import Scenario as _Scenario
         from critmoment.scenario import load_scenario
 
@@ -437,6 +438,13 @@ class Twin:
         self.object_body_id = model.body(sc.object_body).id
         self.object_geom_id = model.geom(sc.object_geom).id
         self.object_qposadr = int(model.jnt_qposadr[model.body_jntadr[self.object_body_id]])
+        missing = [model.actuator(i).name for i in range(model.nu)
+                   if model.actuator(i).name not in sc.limits]
+        if missing:
+            raise ScenarioError(
+                f"Scenario limits: expected a force limit for every actuator (inf for none; "
+                f"load_scenario fills them from [limits] and the MJCF), missing "
+                f"{missing[:8]}{' ...' if len(missing) > 8 else ''}")
         self.limits = np.array([sc.limits[model.actuator(i).name] for i in range(model.nu)])
         # the arm's joint actuators enter the motor FOS (eq. 13-14): on hinges, and on the
         # arm's slides (a lift, a gantry axis); a gripper's fingers, on either kind of joint,
@@ -606,6 +614,9 @@ class Twin:
                     if model.jnt_limited[j]:
                         q = np.clip(q, *model.jnt_range[j])
                     data.qpos[model.jnt_qposadr[j]] = q
+        if object_pose is not None or qpos0 is not None:
+            self._check_object_start(model, object_pose if object_pose is not None
+                                     else qpos0[self.object_qposadr:self.object_qposadr + 3])
         if object_pose is not None:
             pose = np.asarray(object_pose, dtype=np.float64)
             if pose.shape != (7,):
@@ -625,6 +636,20 @@ class Twin:
         if self.scenario.settle if settle is None else settle:
             self.settle_object(model, data)
         return data
+
+    def _check_object_start(self, model: mujoco.MjModel, pose) -> None:
+        """An object start no gripper can reach is an error (a pose in mm), not an audit in
+        which every sample fails. Checked once per start position."""
+        position = tuple(float(v) for v in np.asarray(pose, dtype=float).reshape(-1)[:3])
+        checked = self.__dict__.setdefault("_starts_checked", set())
+        if position in checked or len(position) != 3 or not all(map(math.isfinite, position)):
+            return
+        from critmoment.scenario import start_out_of_reach
+
+        why = start_out_of_reach(model, self.scenario, np.array(position))
+        if why:
+            raise TrajectoryError(why)
+        checked.add(position)
 
     @staticmethod
     def get_state(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:

@@ -771,3 +771,17 @@ def test_qpos0_and_object_pose_that_disagree_are_warned_of(twin):
                       r"by 50.0 mm and 0.0 deg; the run starts from object_pose"):
         data = twin.initial_data(qpos0=qpos0, object_pose=moved, settle=False)
     np.testing.assert_allclose(data.qpos[adr:adr + 7], moved)
+
+
+def test_an_object_start_no_gripper_can_reach_is_an_error(twin):
+    """An object pose in millimetres (446.3, 150, 568.6) ran 256 full rollouts into an
+    UNSAFE verdict, "the object ends 494467 mm from the goal"; now the start is refused,
+    naming how far the arms reach. A start merely out of reach (an object set aside on
+    purpose) stays allowed: the nominal run warns that it is never touched."""
+    far = np.array([446.3, 150.0, 568.6, 1.0, 0.0, 0.0, 0.0])
+    with pytest.raises(TrajectoryError, match=r"the object starts at \(446.3, 150, 568.6\) m, "
+                       r".* reaches at most [0-9.]+ m from there: no gripper can ever touch "
+                       r"it, by far.*\(is it in mm\?\)"):
+        twin.initial_data(object_pose=far, settle=False)
+    twin.initial_data(object_pose=np.array([0.2, 0.5, 0.05, 1.0, 0.0, 0.0, 0.0]), settle=False)
+    twin.initial_data(object_pose=np.array([3.0, 0.5, 0.05, 1.0, 0.0, 0.0, 0.0]), settle=False)

@@ -1,0 +1,97 @@
+"""Objects built or changed in code get the checks a scenario.toml gets: a wrong type or a
+missing part is a CritmomentError naming the field, never a traceback deep in the audit or
+a silent answer (a fuzz round found `prior="loguniform"` sampled as uniform and
+`support_geoms=()` audited into a different verdict)."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import pytest
+
+from critmoment.exceptions import ParameterError, ScenarioError
+from critmoment.params import MassParameter, Prior, UncertaintyBox
+from critmoment.scenario import CostParams, SparseSettings
+
+
+def test_a_prior_given_by_name_is_the_prior(scenario):
+    mass = dataclasses.replace(scenario.box.parameters[0], prior="loguniform")
+    assert mass.prior is Prior.LOGUNIFORM
+    with pytest.raises(ParameterError, match=r"parameter 'mass' prior: expected one of "
+                       r"\['uniform', 'loguniform'\].*got 'bogus'"):
+        dataclasses.replace(mass, prior="bogus")
+    with pytest.raises(ParameterError, match="prior"):
+        dataclasses.replace(mass, prior=None)
+
+
+@pytest.mark.parametrize(("changes", "match"), [
+    ({"low": "0.1"}, r"parameter 'm' low: expected a number, got '0.1'"),
+    ({"high": None}, r"parameter 'm' high: expected a number, got None"),
+    ({"nominal": True}, r"parameter 'm' nominal: expected a number, got True"),
+    ({"name": ""}, r"parameter name: expected a non-empty string, got ''"),
+    ({"target": 3}, r"parameter target: expected a non-empty string, got 3"),
+])
+def test_a_parameter_of_the_wrong_type_is_named(changes, match):
+    fields = {"name": "m", "target": "box", "low": 0.1, "high": 1.0, "nominal": 0.5, **changes}
+    with pytest.raises(ParameterError, match=match):
+        MassParameter(**fields)
+
+
+def test_a_box_holds_parameters():
+    with pytest.raises(ParameterError, match="expected at least one critmoment Parameter"):
+        UncertaintyBox(())
+    with pytest.raises(ParameterError, match=r"got \['dict'\]"):
+        UncertaintyBox(({"name": "mass"},))
+
+
+@pytest.mark.parametrize(("changes", "match"), [
+    ({"support_geoms": ()}, r"Scenario support_geoms: expected the names of the supports"),
+    ({"support_geoms": "table"}, r"Scenario support_geoms"),
+    ({"settle": "no"}, r"Scenario settle: expected True or False, got str 'no'"),
+    ({"fps": -1.0}, r"Scenario fps: expected an action rate > 0 Hz, got float -1.0"),
+    ({"fps": math.nan}, r"Scenario fps"),
+    ({"grippers": ()}, r"Scenario grippers: expected at least one Gripper"),
+    ({"task": None}, r"Scenario task: expected a Task, got NoneType None"),
+    ({"cost": None}, r"Scenario cost: expected a CostParams"),
+    ({"box": None}, r"Scenario box: expected a UncertaintyBox"),
+    ({"range_policy": "bogus"}, r"Scenario range_policy: expected one of 'error', 'clip', "
+                                r"'warn', got str 'bogus'"),
+    ({"object_body": ""}, r"Scenario object_body: expected a non-empty string"),
+])
+def test_a_scenario_changed_in_code_is_checked(scenario, changes, match):
+    with pytest.raises(ScenarioError, match=match):
+        scenario.replace(**changes)
+
+
+@pytest.mark.parametrize("value", [math.nan, -5.0, 0.0, "20"])
+def test_a_force_limit_changed_in_code_must_be_positive(scenario, value):
+    limits = {**scenario.limits, "left/elbow": value}
+    with pytest.raises(ScenarioError, match=r"Scenario limits: expected a force limit > 0 .*"
+                       r"'left/elbow'"):
+        scenario.replace(limits=limits)
+
+
+def test_a_twin_needs_a_limit_for_every_actuator(scenario):
+    from critmoment.twin import Twin
+
+    with pytest.raises(ScenarioError, match=r"expected a force limit for every actuator .*"
+                       r"missing \['left/waist'"):
+        Twin(scenario.replace(limits={}))
+
+
+def test_the_bundled_twin_is_the_default():
+    from critmoment.twin import Twin
+
+    assert Twin().scenario.name == "aloha_transfer_cube"
+
+
+@pytest.mark.parametrize(("make", "match"), [
+    (lambda: CostParams(A="x"), r"\[cost\] A: expected a finite number > 0, got 'x'"),
+    (lambda: CostParams(threshold=None), r"\[cost\] threshold"),
+    (lambda: SparseSettings(persistence="x"), r"\[sparse\] persistence: expected a time"),
+    (lambda: SparseSettings(slip_tolerance=None), r"\[sparse\] slip_tolerance"),
+])
+def test_cost_and_sparse_settings_of_the_wrong_type_are_named(make, match):
+    with pytest.raises(ScenarioError, match=match):
+        make()
