@@ -488,8 +488,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("model", help="MJCF scene file")
     p.add_argument("--object", required=True, metavar="BODY", help="the free body to audit")
     p.add_argument("--task", required=True, choices=list(TASK_KINDS), help="task kind")
-    p.add_argument("--support", action="append", metavar="GEOM",
-                   help="a support geom (repeat; default: what the object rests on)")
+    p.add_argument("--support", action="extend", nargs="+", metavar="GEOM",
+                   help="support geoms (--support table shelf, or repeated; default: what "
+                        "the object rests on, and at a pick_place goal what lies under it)")
     p.add_argument("--goal", nargs=3, type=_real, metavar=("X", "Y", "Z"),
                    help="pick_place: goal position of the object [m]")
     p.add_argument("--goal-site", default=None, help="pick_place: a site marking the goal")

@@ -496,6 +496,39 @@ def _resting_supports(model: mujoco.MjModel, object_body: int, key: int | None) 
     return found
 
 
+def _under_goal(model: mujoco.MjModel, data: mujoco.MjData, goal, goal_site: str | None,
+                object_body: int, grippers) -> str | None:
+    """The named collision geom straight below a pick_place goal (a shelf, a tray, a bin's
+    floor), within 0.5 m: where the object is placed, a support; None if there is none, or
+    the goal site is unknown (the scenario's load names that)."""
+    if goal is None:
+        sid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_SITE, goal_site or "")
+        if sid < 0:
+            return None
+        goal = data.site_xpos[sid]
+    gravity = np.asarray(model.opt.gravity, dtype=float)
+    down = gravity / np.linalg.norm(gravity) if np.linalg.norm(gravity) > 0 else np.array(
+        [0.0, 0.0, -1.0])
+    hit = np.zeros(1, np.int32)
+    # collision geoms only (a visual mesh is no support): rays see every geom, so skip the
+    # ones that collide with nothing, and the gripper's, by stepping past them
+    origin = np.asarray(goal, dtype=float).copy()
+    fingers = {n for g in grippers for n in g.geoms}
+    travelled = 0.0
+    while travelled < 0.5:
+        dist = mujoco.mj_ray(model, data, origin, down, None, 1, object_body, hit)
+        if dist < 0 or travelled + dist > 0.5:
+            return None
+        geom = int(hit[0])
+        name = model.geom(geom).name
+        if ((model.geom_contype[geom] or model.geom_conaffinity[geom]) and name
+                and name not in fingers):
+            return name
+        travelled += dist + 1e-6
+        origin = origin + (dist + 1e-6) * down
+    return None
+
+
 def _check_out(out_path: Path, overwrite: bool) -> None:
     """``init --out``: a file path in an existing folder, not an existing file unless
     ``overwrite``; checked before anything is written.
@@ -645,6 +678,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         guesses.append(f"gripper {g.name!r}: body {g.body!r} ({len(g.geoms)} collision geoms), "
                        f"actuators {', '.join(g.actuators)}, closed at {list(g.closed)}, open "
                        f"at {list(g.open)} (measured), {dist[g.name]:.3f} m from the object")
+    guessed_supports = not supports
     if not supports:
         supports = _resting_supports(model, bid, key)
         supports = [s for s in supports if not any(s in g.geoms for g in grippers)]
@@ -699,6 +733,11 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                 task_lines.append("goal = [" + ", ".join(_num(v) for v in goal) + "]   # [m]")
             else:
                 task_lines.append(f"goal_site = {_toml_str(goal_site)}")
+            below = _under_goal(model, data, goal, goal_site, bid, grippers)
+            if guessed_supports and below and below not in supports:
+                supports = [*supports, below]
+                guesses.append(f"support {below!r}: what lies under the goal (the object is "
+                               f"placed on it)")
             task_lines += ["tolerance = 0.03        # [m] distance of the object's centre from "
                            "the goal", "rest_speed = 0.05       # [m/s] at the end"]
         task_lines.append("lift_height = 0.02      # [m] least rise that counts as a lift")

@@ -3,6 +3,8 @@ as they ship: named and unnamed elements, three gripper mechanisms, torque motor
 
 from __future__ import annotations
 
+import warnings
+
 import mujoco
 import numpy as np
 import pytest
@@ -779,3 +781,42 @@ def test_init_warns_of_a_support_the_object_does_not_rest_on(tmp_path):
                                      r"once settled; it rests on table"):
         init_scenario(model_path, object_body="cube", task="pick_hold", supports=["shelf"],
                       out=tmp_path / "scenario.toml")
+
+
+def test_init_counts_what_lies_under_a_pick_place_goal_as_a_support(tmp_path):
+    """A goal on a tray was written with [support] only the table the object starts on: a
+    cube set down on the tray then read as never placed on a support."""
+    xml = arm_xml().replace('<site name="goal"', '<geom name="tray" type="box" '
+                            'pos="0.3 0.2 0.03" size="0.05 0.05 0.01"/>\n    <site name="goal"')
+    model_path = tmp_path / "arm.xml"
+    model_path.write_text(xml)
+    out = tmp_path / "scenario.toml"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = init_scenario(model_path, object_body="cube", task="pick_place",
+                          goal=(0.3, 0.2, 0.06), out=out)
+    assert 'geoms = ["table", "tray"]' in out.read_text()
+    assert any("support 'tray': what lies under the goal" in g for g in r.guesses)
+    # a goal over open table adds nothing; supports given by hand are kept as given
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        init_scenario(model_path, object_body="cube", task="pick_place", goal=(0.1, -0.2, 0.02),
+                      out=out, overwrite=True)
+        assert 'geoms = ["table"]' in out.read_text()
+        init_scenario(model_path, object_body="cube", task="pick_place", supports=["table"],
+                      goal=(0.3, 0.2, 0.06), out=out, overwrite=True)
+    assert 'geoms = ["table"]' in out.read_text()
+
+
+def test_init_takes_several_supports_after_one_flag(tmp_path):
+    """docs/cli.md writes [--support GEOM ...]; `--support table tray` was "unrecognized
+    arguments: tray"."""
+    xml = arm_xml().replace('<site name="goal"', '<geom name="tray" type="box" '
+                            'pos="0.3 0.2 0.03" size="0.05 0.05 0.01"/>\n    <site name="goal"')
+    (tmp_path / "arm.xml").write_text(xml)
+    out = tmp_path / "scenario.toml"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        assert main(["init", str(tmp_path / "arm.xml"), "--object", "cube", "--task",
+                     "pick_hold", "--support", "table", "tray", "--out", str(out)]) == 0
+    assert 'geoms = ["table", "tray"]' in out.read_text()
