@@ -186,6 +186,7 @@ class ActuatorKind(enum.Enum):
     VELOCITY = "velocity"      # gain kv·ctrl, bias −kv·velocity
     INTVELOCITY = "intvelocity"  # a servo on the integral of ctrl: ctrl is a velocity
     MOTOR = "motor"            # force = gear·ctrl: a torque (or force) command
+    ADHESION = "adhesion"      # <adhesion>: a suction/magnet pull on a body's contacts, gain·ctrl
     OTHER = "other"            # muscles, dampers, user dynamics
 
     @property
@@ -264,6 +265,8 @@ def _kind(model: mujoco.MjModel, i: int) -> ActuatorKind:
                    int(mujoco.mjtDyn.mjDYN_FILTEREXACT)):
         return ActuatorKind.OTHER  # muscles, user dynamics
     if gain_t == fixed and bias_t == mujoco.mjtBias.mjBIAS_NONE:
+        if int(model.actuator_trntype[i]) == int(mujoco.mjtTrn.mjTRN_BODY):
+            return ActuatorKind.ADHESION  # MuJoCo's only body transmission
         return ActuatorKind.MOTOR
     if gain_t == fixed and bias_t == affine:
         if b[1] != 0 and np.isclose(b[1], -g[0]) and b[0] == 0:
@@ -342,6 +345,8 @@ def describe(model: mujoco.MjModel, i: int) -> ActuatorInfo:
         target = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_TENDON, tid) or ""
     elif transmission == "site":
         target = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_SITE, tid) or ""
+    elif transmission == "body":
+        target = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_BODY, tid) or f"#{tid}"
     kind = _kind(model, i)
     gain = float(model.actuator_gainprm[i, 0])
     if kind is ActuatorKind.MOTOR:
@@ -495,8 +500,9 @@ def closing_ends(model: mujoco.MjModel, actuators: Sequence[int], geom_ids: Sequ
             gaps.append(gripper_gap(model, actuators, ctrl, geom_ids, keyframe=keyframe))
         if abs(gaps[1] - gaps[0]) < tolerance:
             raise ValueError(
-                f"actuator {model.actuator(i).name!r} moves the gripper's geoms "
-                f"{abs(gaps[1] - gaps[0]) * 1e3:.2f} mm over its control range {lo}..{hi}")
+                f"actuator {model.actuator(i).name!r} opens or closes the gap between the "
+                f"gripper's geoms by {abs(gaps[1] - gaps[0]) * 1e3:.2f} mm over its control "
+                f"range {lo:g}..{hi:g} (it may move them all together, as an arm axis does)")
         c, o = (lo, hi) if gaps[0] < gaps[1] else (hi, lo)
         closed.append(c)
         open_.append(o)

@@ -120,6 +120,8 @@ class ModelInfo:
                 gear = abs(a.gain)  # a motor's gain in the listing is its gear
                 force += (f"; {most * gear:g} at the joint, gear {gear:g})" if gear != 1.0
                           else ")")
+            if a.kind is act_info.ActuatorKind.ADHESION and a.ctrlrange:
+                force = f"adhesion force up to {abs(a.gain) * max(map(abs, a.ctrlrange)):g} N"
             joint = f" ({a.joint_type})" if a.joint_type else ""
             lines.append(f"  {a.name}: {a.kind.value} on {a.transmission} {a.target}{joint}, "
                          f"{ctrl}, {force}")
@@ -664,6 +666,10 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     grippers = [g for g in info.grippers]
     if not grippers:
         why = [n for n in info.notes if "look like a gripper" in n]
+        why += [f"actuator {a.name!r} is an <adhesion> (suction) on body {a.target!r}: init does "
+                f"not guess a suction gripper; give it [grippers.<name>] with that body and a "
+                f"normalised channel (closed = [1], open = [0])"
+                for a in info.actuators if a.kind is act_info.ActuatorKind.ADHESION]
         raise ScenarioError(
             "found no gripper: expected actuators on slide joints, tendons, or joints/bodies "
             "named like grip/finger/jaw/claw/hand that open and close their geoms"

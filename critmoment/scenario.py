@@ -379,7 +379,7 @@ def _explicit(table: Mapping[str, Any], resolve, model=None, grippers=(), keyfra
             f"'label'; got {entries!r}")
     channels, scales, offsets, normalised, labels = [], [], [], [], []
     for i, entry in enumerate(entries):
-        where = f"[[actions.channel]] #{i}"
+        where = f"[[actions.channel]] table {i + 1} of {len(entries)}"
         _keys(entry, where, _CHANNEL_KEYS)
         names = _names(entry, "actuators", where)
         acts = tuple(resolve(a, where) for a in names)

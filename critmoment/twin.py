@@ -457,12 +457,12 @@ class Twin:
             for i in range(model.nu)])
         #: actuators on the arm's hinge joints (a gripper's hinge fingers are not)
         self.rotational = on_arm & hinge
-        if not self.rotational.any():
+        if not on_arm.any():
             fingers = [model.actuator(i).name for i in np.flatnonzero(hinge)]
             raise ScenarioError(
-                "expected at least one actuator on a hinge joint of the arm (not a gripper's "
-                "finger), found none" + (f"; the hinge actuators {fingers} drive a "
-                                         f"gripper's fingers" if fingers else "")
+                "expected at least one actuator on a hinge or slide joint of the arm (not a "
+                "gripper's finger), found none" + (f"; the hinge actuators {fingers} drive a "
+                                                   f"gripper's fingers" if fingers else "")
                 + _mocap_hint(model))
         #: actuators on slide joints of the arm (a lift, a gantry axis; not a gripper's
         #: fingers): in the motor checks with the rotational ones, their force in N

@@ -327,18 +327,23 @@ def test_a_hinge_finger_is_out_of_the_motor_checks_as_a_slide_finger_is(tmp_path
     assert rec.signals.fos_motor[-1] > 1.0
 
 
-def test_a_scenario_whose_only_hinges_are_fingers_is_an_error(tmp_path):
+def test_an_arm_of_slides_only_is_audited_on_its_slides(tmp_path):
+    """A Cartesian gantry (every arm joint a slide, a hinge jaw) was refused, "expected at
+    least one actuator on a hinge joint of the arm", though the motor checks cover slides
+    (a lift, a gantry axis): its axes are now the motor-checked actuators, the jaw is not."""
     text = arm_xml(gripper="jaw")
     for joint in ("shoulder", "elbow"):
         text = text.replace(f'<joint name="{joint}" type="hinge"', f'<joint name="{joint}" '
                                                                    f'type="slide"')
     path = tmp_path / "gantry.xml"
     path.write_text(text)
-    # init binds what it writes to a twin: it refuses, and writes nothing
-    with pytest.raises(ScenarioError, match=r"hinge joint of the arm .*'jaw_act'.* drive a "
-                                            r"gripper's fingers"):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
         init_scenario(path, object_body="cube", task="pick_hold", out=tmp_path / "g.toml")
-    assert not (tmp_path / "g.toml").exists()
+        twin = Twin(load_scenario(tmp_path / "g.toml"))
+    checked = [n for n, m in zip(twin.actuator_names, twin.motors, strict=True) if m]
+    assert checked == ["shoulder_act", "elbow_act"] and not twin.rotational.any()
+    assert twin.arm_slides == ("shoulder_act", "elbow_act")
 
 
 def test_init_names_a_round_objects_largest_geom(tmp_path):
@@ -820,3 +825,19 @@ def test_init_takes_several_supports_after_one_flag(tmp_path):
         assert main(["init", str(tmp_path / "arm.xml"), "--object", "cube", "--task",
                      "pick_hold", "--support", "table", "tray", "--out", str(out)]) == 0
     assert 'geoms = ["table", "tray"]' in out.read_text()
+
+
+def test_an_adhesion_actuator_is_named_as_one(tmp_path):
+    """A suction cup (<adhesion body="cup">) was listed as "motor on body , ..." and init
+    said only that no gripper was found."""
+    xml = arm_xml().replace('<geom name="palm"', '<body name="cup"><geom name="cup_pad" '
+                            'type="cylinder" size="0.015 0.005" pos="0 0 -0.015"/></body>\n'
+                            '          <geom name="palm"')
+    xml = xml.replace("</actuator>", '  <adhesion name="suction" body="cup" ctrlrange="0 1" '
+                      'gain="3"/>\n  </actuator>')
+    (tmp_path / "arm.xml").write_text(xml)
+    info = inspect_model(tmp_path / "arm.xml")
+    cup = next(a for a in info.actuators if a.name == "suction")
+    assert (cup.kind, cup.transmission, cup.target) == (act_info.ActuatorKind.ADHESION, "body",
+                                                        "cup")
+    assert "suction: adhesion on body cup, ctrl 0..1, adhesion force up to 3 N" in info.text()
