@@ -554,7 +554,7 @@ def main(argv: list[str] | None = None) -> int:
             with _signals_held():
                 from critmoment.twin import quiet_mujoco_log
         except KeyboardInterrupt:
-            print("critmoment: interrupted; no output was written", file=sys.stderr)
+            print("critmoment: error: interrupted; no output was written", file=sys.stderr)
             return EXIT_ERROR
         except ImportError as exc:
             print(f"critmoment: error: {_one_line(str(exc))} (a dependency is missing or "
@@ -615,7 +615,7 @@ def _main(argv: list[str] | None) -> int:
     try:
         parser = build_parser()
     except KeyboardInterrupt:
-        print("critmoment: interrupted; no output was written", file=sys.stderr)
+        print("critmoment: error: interrupted; no output was written", file=sys.stderr)
         return EXIT_ERROR
     try:
         args, extra = parser.parse_known_args(argv)
@@ -691,7 +691,7 @@ def run() -> None:
     try:
         code = main()
     except KeyboardInterrupt:
-        print("critmoment: interrupted", file=sys.stderr)
+        print("critmoment: error: interrupted", file=sys.stderr)
     try:
         for sig in (signal.SIGINT, signal.SIGTERM):
             signal.signal(sig, signal.SIG_IGN)

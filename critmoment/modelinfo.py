@@ -33,7 +33,7 @@ import mujoco
 import numpy as np
 
 from critmoment import actuators as act_info
-from critmoment.exceptions import CritmomentWarning, ScenarioError
+from critmoment.exceptions import CritmomentWarning, OutputError, ScenarioError
 from critmoment.scenario import GENERATED, compile_spec, load_scenario, prepare_spec
 from critmoment.task import TASK_KINDS
 from critmoment.twin import Twin
@@ -889,7 +889,13 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     if out_path is not None:
         tmp = out_path.with_name(f".{out_path.name}.tmp")
         try:
-            tmp.write_text(text, encoding="utf-8")
+            try:
+                tmp.write_text(text, encoding="utf-8")
+            except OSError as exc:
+                raise OutputError(
+                    f"--out: cannot write the scenario file {out_path} in {out_path.parent} "
+                    f"({exc.strerror or exc}); expected a folder this process may write "
+                    f"to") from None
             # loads as written and binds to a twin, or the error says why
             Twin(load_scenario(tmp))
             os.replace(tmp, out_path)

@@ -213,6 +213,10 @@ class MassParameter(Parameter):
         arrays["body_inertia"][:, index] = base.body_inertia[index] * scale[:, None]
 
 
+#: MuJoCo's smallest friction coefficient (mjMINMU): a contact's friction is raised to it
+MIN_FRICTION = 1e-5
+
+
 @dataclasses.dataclass(frozen=True)
 class FrictionParameter(Parameter):
     """Sliding friction coefficient of a geom's contacts.
@@ -225,6 +229,14 @@ class FrictionParameter(Parameter):
     fields: ClassVar[tuple[str, ...]] = ("geom_friction",)
     unit: ClassVar[str] = ""
     minimum: ClassVar[float] = 0.0
+
+    def __post_init__(self):
+        super().__post_init__()
+        if self.low < MIN_FRICTION:
+            raise ParameterError(
+                f"parameter {self.name!r}: expected a friction coefficient >= {MIN_FRICTION:g} "
+                f"(MuJoCo raises any smaller one to that, mjMINMU), got range "
+                f"[{self.low:g}, {self.high:g}]")
 
     def resolve(self, model):
         return _resolve(model, mujoco.mjtObj.mjOBJ_GEOM, self.target, "geom")

@@ -95,3 +95,15 @@ def test_the_bundled_twin_is_the_default():
 def test_cost_and_sparse_settings_of_the_wrong_type_are_named(make, match):
     with pytest.raises(ScenarioError, match=match):
         make()
+
+
+def test_a_friction_below_mujocos_smallest_is_an_error():
+    """range = [1e-320, 1.5] ran into NaN gradients in the worst-case search (8 lines of
+    CasADi warnings) before a verdict: MuJoCo raises any friction below 1e-5 to 1e-5."""
+    from critmoment.params import FrictionParameter
+
+    with pytest.raises(ParameterError, match=r"expected a friction coefficient >= 1e-05 "
+                       r"\(MuJoCo raises any smaller one to that, mjMINMU\), got range "
+                       r"\[1e-300, 1.5\]"):
+        FrictionParameter("friction", "box", 1e-300, 1.5, 1.0)
+    assert FrictionParameter("friction", "box", 1e-5, 1.5, 1.0).low == 1e-5

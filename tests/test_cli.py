@@ -268,7 +268,7 @@ def test_ctrl_c_while_the_package_loads_exits_2_without_a_traceback(monkeypatch,
     monkeypatch.setitem(sys.modules, "critmoment.twin", Loading("critmoment.twin"))
     assert main(["rollout", "missing.npz"]) == 2
     err = capsys.readouterr().err
-    assert err == "critmoment: interrupted; no output was written\n"
+    assert err == "critmoment: error: interrupted; no output was written\n"
 
 
 def test_a_diverging_run_prints_one_line_and_writes_no_mujoco_log(tmp_path, capfd,
@@ -343,7 +343,7 @@ def test_a_signal_while_the_libraries_load_is_delivered_after_them(monkeypatch, 
         assert main(["rollout", "missing.npz"]) == 2
     finally:
         signal.signal(signal.SIGINT, previous)
-    assert capsys.readouterr().err == "critmoment: interrupted; no output was written\n"
+    assert capsys.readouterr().err == "critmoment: error: interrupted; no output was written\n"
 
 
 def test_a_trajectory_naming_an_unknown_scenario_is_warned_of(traj_file, tmp_path, capsys):

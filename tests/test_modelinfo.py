@@ -4,6 +4,7 @@ as they ship: named and unnamed elements, three gripper mechanisms, torque motor
 from __future__ import annotations
 
 import warnings
+from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -841,3 +842,17 @@ def test_an_adhesion_actuator_is_named_as_one(tmp_path):
     assert (cup.kind, cup.transmission, cup.target) == (act_info.ActuatorKind.ADHESION, "body",
                                                         "cup")
     assert "suction: adhesion on body cup, ctrl 0..1, adhesion force up to 3 N" in info.text()
+
+
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs /proc (Linux)")
+def test_init_out_in_a_folder_that_takes_no_files_names_the_out_path(capsys):
+    """`--out /proc/s.toml` said "'/proc/.s.toml.tmp': No such file or directory", naming a
+    temporary file the user never gave."""
+    from critmoment.scenario import bundled_scenario_path
+
+    scene = bundled_scenario_path("aloha_transfer_cube").parent / "scene.xml"
+    assert main(["init", str(scene), "--object", "box", "--task", "pick_hold", "--out",
+                 "/proc/s.toml"]) == 2
+    err = capsys.readouterr().err
+    assert "error: --out: cannot write the scenario file /proc/s.toml in /proc (" in err
+    assert ".tmp" not in err
