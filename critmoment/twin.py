@@ -897,6 +897,28 @@ def _check_qpos_ranges(model: mujoco.MjModel, qpos: np.ndarray, *, slack: float 
                 f"order, radians and metres)")
 
 
+def _scenario_label(scenario) -> str:
+    name = getattr(scenario, "name", None)
+    if isinstance(scenario, Twin):
+        name = scenario.scenario.name
+    return repr(name if isinstance(name, str) else str(scenario))
+
+
+def _same_scenario(scenario, twin: Twin) -> bool:
+    """Whether ``scenario`` (as :func:`resolve_twin` takes it) names ``twin``'s scenario."""
+    own = twin.scenario
+    if scenario is twin or scenario is own or scenario == own:
+        return True
+    if isinstance(scenario, (str, os.PathLike)):
+        text = os.fspath(scenario)
+        if text == own.name:
+            return True
+        if own.path is not None:
+            given = os.path.abspath(text)
+            return given in (os.path.abspath(own.path), os.path.abspath(own.path.parent))
+    return False
+
+
 def resolve_twin(scenario=None, twin: Twin | None = None) -> Twin:
     """The twin a library call runs on: ``twin`` if given, else one built from ``scenario``
     (a :class:`~critmoment.scenario.Scenario`, a :class:`Twin`, a path to a scenario.toml or
@@ -913,6 +935,11 @@ def resolve_twin(scenario=None, twin: Twin | None = None) -> Twin:
         if not isinstance(twin, Twin):
             raise ScenarioError(f"twin: expected a critmoment Twin, got "
                                 f"{type(twin).__name__}")
+        if scenario is not None and not _same_scenario(scenario, twin):
+            warnings.warn(
+                f"both a scenario ({_scenario_label(scenario)}) and a twin (of "
+                f"{twin.scenario.name!r}) were given; the twin's scenario is used (pass one "
+                f"of them)", CritmomentWarning, stacklevel=3)
         return twin
     if isinstance(scenario, Twin):
         return scenario

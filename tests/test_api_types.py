@@ -107,3 +107,21 @@ def test_a_friction_below_mujocos_smallest_is_an_error():
                        r"\[1e-300, 1.5\]"):
         FrictionParameter("friction", "box", 1e-300, 1.5, 1.0)
     assert FrictionParameter("friction", "box", 1e-5, 1.5, 1.0).low == 1e-5
+
+
+def test_a_scenario_beside_a_twin_of_another_is_warned_of(twin):
+    """analyze(traj, "panda_pick_place", twin=<ALOHA twin>) audited the ALOHA twin
+    silently (documented: the twin's scenario wins)."""
+    import warnings
+
+    from critmoment.exceptions import CritmomentWarning
+    from critmoment.twin import resolve_twin
+
+    with pytest.warns(CritmomentWarning, match=r"both a scenario \('panda_pick_place'\) and a "
+                      r"twin \(of 'aloha_transfer_cube'\) were given; the twin's scenario is "
+                      r"used"):
+        assert resolve_twin("panda_pick_place", twin) is twin
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for same in ("aloha_transfer_cube", twin.scenario, twin, twin.scenario.path):
+            assert resolve_twin(same, twin) is twin
