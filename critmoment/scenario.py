@@ -1487,7 +1487,7 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
         path = bundled_scenario_path()
     elif isinstance(path, str) and path in BUNDLED_SCENARIOS:
         path = bundled_scenario_path(path)
-    elif not isinstance(path, (str, os.PathLike)):
+    elif not isinstance(path, (str, os.PathLike)) or not os.fspath(path).strip():
         raise ScenarioError(f"scenario: expected a scenario.toml, its folder or a bundled "
                             f"scenario's name ({', '.join(BUNDLED_SCENARIOS)}), got "
                             f"{type(path).__name__} {path!r}")

@@ -125,3 +125,11 @@ def test_a_scenario_beside_a_twin_of_another_is_warned_of(twin):
         warnings.simplefilter("error")
         for same in ("aloha_transfer_cube", twin.scenario, twin, twin.scenario.path):
             assert resolve_twin(same, twin) is twin
+
+
+def test_an_empty_scenario_path_is_an_error_not_the_current_folder():
+    from critmoment.scenario import load_scenario
+
+    with pytest.raises(ScenarioError, match=r"scenario: expected a scenario.toml, its folder "
+                       r"or a bundled scenario's name .*got str ''"):
+        load_scenario("")
