@@ -1098,6 +1098,9 @@ def _parameter(name: str, spec: Any) -> Parameter:
             "(set kind = ... when the name is not a kind)")
     cls, target_key = PARAMETER_KINDS[kind]
     _keys(spec, where, ("kind", target_key, "object", "range", "nominal", "prior"))
+    if target_key != "object" and target_key in spec and "object" in spec:
+        raise ScenarioError(f"{where}: expected one of {target_key} = ... and object = ..., got "
+                            f"both ({spec[target_key]!r}, {spec['object']!r})")
     target = spec.get(target_key, spec.get("object"))
     if not isinstance(target, str):
         raise ScenarioError(f"{where}: expected {target_key} = \"<name>\", got {target!r}")

@@ -683,3 +683,12 @@ def test_a_slip_tolerance_beyond_the_objects_size_is_an_error(tmp_path):
     with pytest.raises(ScenarioError, match=r"\[sparse\] slip_tolerance: 1e\+09 m, but the "
                        r"object 'box' is at most 0.0693 m across"):
         load_scenario(folder)
+
+
+def test_an_uncertainty_table_naming_its_target_twice_is_an_error(tmp_path):
+    """body = "box" and object = "table" together: object was silently ignored."""
+    folder = _toml(tmp_path, ('[uncertainty.mass]\nbody = "box"',
+                              '[uncertainty.mass]\nbody = "box"\nobject = "table"'))
+    with pytest.raises(ScenarioError, match=r"\[uncertainty.mass\]: expected one of body = "
+                       r"\.\.\. and object = \.\.\., got both \('box', 'table'\)"):
+        load_scenario(folder)
