@@ -686,3 +686,24 @@ def test_an_act_episode_with_two_different_rates_is_refused(tmp_path):
     with pytest.raises(TrajectoryError, match=r"different rates \(fps = 50, frame_rate = 25\)"):
         load_trajectory(path)
     assert load_trajectory(path, fps=25).fps == 25
+
+
+def test_a_spline_grazing_a_limit_is_clipped_without_a_warning():
+    """A motion planned to a joint limit overshoots it by micrometres in the cubic spline
+    (6 µm on a SCARA's quill): clipped, but only an overshoot over 0.1 % of the range is
+    warned of."""
+    import warnings as _w
+
+    from critmoment.exceptions import CritmomentWarning
+    from critmoment.trajectory import upsample
+
+    lo, hi = np.array([-1.0]), np.array([1.0])
+    gentle = np.array([[0.99], [0.995], [1.0], [1.0], [0.995]])  # reaches the limit 1.0
+    with _w.catch_warnings():
+        _w.simplefilter("error")
+        out = upsample(gentle, fps=10.0, physics_dt=0.01, lower=lo, upper=hi)
+    assert out.max() == 1.0
+    steep = np.array([[0.0], [0.5], [1.0], [1.0], [0.5]])
+    with pytest.warns(CritmomentWarning, match=r"channel 0 \(cubic spline\): \d+ step\(s\), "
+                      r"worst by"):
+        upsample(steep, fps=10.0, physics_dt=0.01, lower=lo, upper=hi)
