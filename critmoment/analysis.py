@@ -22,6 +22,7 @@ import platform
 import sys
 import threading
 import time
+import warnings
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
@@ -30,9 +31,14 @@ import numpy as np
 from critmoment import budget, contactmodel, history
 from critmoment import sparse as sp
 from critmoment import verdict as vd
-from critmoment.exceptions import ParameterError
+from critmoment.exceptions import CritmomentWarning, ParameterError
 from critmoment.feasibility import FeasibilityReport, check_fit, preflight
-from critmoment.groundtruth import NominalReference, brute_force, reference_from_recording
+from critmoment.groundtruth import (
+    NominalReference,
+    OutcomeCriteria,
+    _brute_force,
+    reference_from_recording,
+)
 from critmoment.moments import Moment, MomentDetector, MomentLabel
 from critmoment.recording import (
     Recording,
@@ -66,6 +72,15 @@ log = logging.getLogger(__name__)
 
 REPORT_SCHEMA = "critmoment.report/1"
 
+#: upper bounds of the options that size work no physics-step limit counts alone (the
+#: work they add is counted by :func:`critmoment.budget.check_audit` too): the cost map's
+#: cells per axis (a 400 × 400 map is finer than its figure), the critical values' grid
+#: points per parameter, and the search's evaluations per moment (Optuna's TPE slows with
+#: every trial it has seen)
+MAX_MAP_RESOLUTION = 400
+MAX_CRITICAL_GRID = 1025
+MAX_SEARCH_TRIALS = 4096
+
 
 @dataclasses.dataclass(frozen=True)
 class AnalyzeOptions:
@@ -75,18 +90,22 @@ class AnalyzeOptions:
         seed: seeds the Sobol sweep and the search (same seed → same report).
         n_samples: Sobol samples of the box for P(success) (a power of 2 is best).
         max_moments: moments audited in depth (the most sensitive ones).
-        horizon: physics steps per sparse evaluation (default: the scenario's).
-        search_trials: simulated evaluations the Optuna search may spend per moment.
+        horizon: physics steps per sparse evaluation (default: the scenario's); at most half
+            of the recording (:func:`critmoment.budget.check_horizon`).
+        search_trials: simulated evaluations the Optuna search may spend per moment (at
+            most :data:`MAX_SEARCH_TRIALS`).
         search_patience: the search of a moment stops after this many batches (of 8
             samples) without a higher cost (None: it spends ``search_trials``).
         search: run the analytic bounds and the worst-case search.
-        critical_grid: grid points per parameter for the critical values.
+        critical_grid: grid points per parameter for the critical values (at most
+            :data:`MAX_CRITICAL_GRID`).
         confidence: confidence level of the P(success) interval.
         min_success: P(success) at which ``passes`` accepts a non-SAFE verdict.
-        nthread: threads for MuJoCo's batch (0: all CPUs). With 1 the audit runs in one
+        nthread: threads for MuJoCo's batch (0: all CPUs; at most
+            :data:`critmoment.budget.MAX_THREADS`). With 1 the audit runs in one
             thread throughout (its own runs do not overlap the other stages).
         map_resolution: cells per axis of the mass × friction cost map, the nearest Sobol
-            sample's cost per cell (0 to skip).
+            sample's cost per cell (0 to skip; at most :data:`MAX_MAP_RESOLUTION`).
         chain: carry every sample that passes at the moments without a rollout of its own on
             its own state through the moments (:func:`critmoment.history.chained_failures`,
             :func:`critmoment.verdict.samples_to_chain`): the sample's own history (a grip
@@ -139,11 +158,12 @@ class AnalyzeOptions:
         _option_int("n_samples", self.n_samples, 8)
         _option_int("max_moments", self.max_moments, 1)
         _option_int("horizon", self.horizon, 1, none=True)
-        _option_int("search_trials", self.search_trials, 1)
+        _option_int("search_trials", self.search_trials, 1, most=MAX_SEARCH_TRIALS)
         _option_int("search_patience", self.search_patience, 1, none=True)
-        _option_int("critical_grid", self.critical_grid, 5)
+        _option_int("critical_grid", self.critical_grid, 5, most=MAX_CRITICAL_GRID)
         _option_int("nthread", self.nthread, 0)
-        _option_int("map_resolution", self.map_resolution, 0)
+        budget.check_nthread(self.nthread)
+        _option_int("map_resolution", self.map_resolution, 0, most=MAX_MAP_RESOLUTION)
         _option_real("confidence", self.confidence, "in (0, 1)", lambda v: 0 < v < 1)
         _option_real("min_success", self.min_success, "in [0, 1]", lambda v: 0 <= v <= 1,
                      none=True)
@@ -157,8 +177,10 @@ class AnalyzeOptions:
                                      f"{type(value).__name__} {value!r}")
 
 
-def _option_int(name: str, value: Any, least: int, *, none: bool = False) -> None:
-    """An option that must be an integer >= ``least`` (or None where ``none``)."""
+def _option_int(name: str, value: Any, least: int, *, none: bool = False,
+                most: int | None = None) -> None:
+    """An option that must be an integer >= ``least`` (and <= ``most``; or None where
+    ``none``)."""
     if value is None and none:
         return
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)) \
@@ -166,6 +188,9 @@ def _option_int(name: str, value: Any, least: int, *, none: bool = False) -> Non
         raise ParameterError(f"{name}: expected an integer >= {least}"
                              f"{' or None' if none else ''}, got {type(value).__name__} "
                              f"{value!r}")
+    if most is not None and value > most:
+        raise ParameterError(f"{name}: expected an integer in [{least}, {most}] (the upper "
+                             f"bound of critmoment.analysis.AnalyzeOptions), got {value!r}")
 
 
 def _option_real(name: str, value: Any, expected: str, ok: Callable[[float], bool], *,
@@ -371,8 +396,18 @@ def audit_moments(recording: Recording, twin: Twin, evaluator: sp.SparseEvaluato
         raise ParameterError(f"max_moments: expected an integer >= 1, got {max_moments!r}")
     candidates = detect_moments(recording, twin, evaluator=evaluator,
                                 max_moments=max(8, int(max_moments)))
-    steps = np.array([min(m.step, recording.n_steps - evaluator.horizon)
-                      for m in candidates[:max_moments]], dtype=np.int64)
+    last = recording.n_steps - evaluator.horizon
+    steps = np.array([min(m.step, last) for m in candidates[:max_moments]], dtype=np.int64)
+    moved = [m for m in candidates[:max_moments] if m.step > last]
+    if moved:
+        dt = recording.dt
+        names = "; ".join(f"{m.label.value} at step {m.step} (t = {m.step * dt:.3f} s)"
+                          for m in moved)
+        warnings.warn(
+            f"{len(moved)} moment(s) lie within the horizon's {evaluator.horizon} steps of "
+            f"the recording's end and are audited from step {last} (t = {last * dt:.3f} s) "
+            f"instead, over the steps up to the end: {names}; a shorter horizon audits "
+            f"them where they happen", CritmomentWarning, stacklevel=2)
     return candidates, steps
 
 
@@ -446,8 +481,15 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
 
     Returns:
         The audit report.
+
+    Raises:
+        ParameterError: bad options, a ``progress`` that is neither a bool nor a callable,
+            or a horizon longer than half the recording.
+        ResourceLimitError: the rollout or the audit's simulations beyond the limits of
+            :mod:`critmoment.budget` (:func:`critmoment.budget.check_audit`).
     """
     check_trajectory(trajectory)
+    say = _progress(progress)
     if options is not None and not isinstance(options, AnalyzeOptions):
         raise ParameterError(f"options: expected AnalyzeOptions (critmoment.AnalyzeOptions"
                              f"(n_samples=..., ...)), got {type(options).__name__}")
@@ -457,10 +499,10 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     twin = resolve_twin(scenario, twin)
     trajectory = at_scenario_rate(trajectory, twin)
     sc = twin.scenario
+    check_task_window(twin, trajectory)  # a success rule no run of this length can meet
     budget.check_audit(trajectory, twin, opt)  # seed domain, rollout and sweep size
     box = sc.box
     threshold = sc.cost.threshold
-    say = _progress(progress)
     timings: dict[str, float] = {}
 
     def stage(name):
@@ -469,7 +511,6 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     with stage("rollout"):
         check_fit(trajectory, None, twin)  # width and units, naming the likely mistake
         rec = rollout(trajectory, twin=twin)
-        check_task_window(twin, trajectory)  # a success rule no run of this length can meet
         feasibility = preflight(trajectory, rec, twin) if opt.check_feasibility else None
     with stage("moments"):
         evaluator, contact = audit_evaluator(rec, twin, horizon=opt.horizon, chain=opt.chain,
@@ -1070,8 +1111,12 @@ class _Rollouts:
 
     def __call__(self, points: np.ndarray, nthread: int | None = None) -> np.ndarray:
         nthread = self.nthread if nthread is None else nthread
-        bf = brute_force(self.trajectory, twin=self.twin, samples=points, nthread=nthread,
-                         reference=self.nominal(), chunk=self.chunk)
+        # the audit's own runs: check_audit counted them before the audit started
+        bf = _brute_force(self.trajectory, twin=self.twin,
+                          samples=sp.check_samples(self.twin.scenario.box, points),
+                          criteria=OutcomeCriteria(), chunk=self.chunk,
+                          nthread=budget.check_nthread(nthread), reference=self.nominal(),
+                          t_start=time.perf_counter())
         self.reference = bf.reference
         return bf.failed
 
@@ -1133,10 +1178,26 @@ def _cost_map(res: sp.SparseResult, box, res_n: int):
     grid_u = np.linspace(0.0, 1.0, res_n)
     g0, g1 = np.meshgrid(grid_u, grid_u, indexing="ij")
     cells = np.stack([g0.ravel(), g1.ravel()], axis=1)
-    d2 = ((cells[:, None, :] - u[None, :, :]) ** 2).sum(axis=-1)
-    grid = worst[np.argmin(d2, axis=1)].reshape(g0.shape)
+    grid = worst[_nearest(cells, u)].reshape(g0.shape)
     axes = box.from_unit(np.tile(grid_u[:, None], (1, box.ndim)))
     return (box.names[0], axes[:, 0], box.names[1], axes[:, 1], grid)
+
+
+def _nearest(points: np.ndarray, sites: np.ndarray) -> np.ndarray:
+    """(p,) index of the nearest site (s, d) to each point (p, d), the lowest index among
+    equally near ones (as ``argmin`` of all distances), in O((p + s) log s) time and
+    O(p + s) memory: the cells × samples distance matrix of a 400² map and 10⁵ samples
+    would take 128 GB."""
+    from scipy.spatial import cKDTree
+
+    k = min(2, sites.shape[0])
+    dist, idx = cKDTree(sites).query(points, k=k)
+    if k == 1:
+        return np.asarray(idx, dtype=np.int64)
+    tie = dist[:, 1] <= dist[:, 0]
+    best = idx[:, 0].copy()
+    best[tie] = np.minimum(idx[tie, 0], idx[tie, 1])
+    return best.astype(np.int64)
 
 
 def _search_all(rec, twin, evaluator, steps, opt):
@@ -1183,9 +1244,17 @@ def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory) -> dict:
     }
 
 
-def _progress(progress):
+def _progress(progress) -> Callable[[str], None]:
+    """The progress callback: ``progress`` itself, stderr for True, nothing for False.
+
+    Raises:
+        ParameterError: anything but a bool or a callable (``5`` is not True).
+    """
     if callable(progress):
         return progress
+    if not isinstance(progress, (bool, np.bool_)):
+        raise ParameterError(f"progress: expected True, False or a callable taking a "
+                             f"message, got {type(progress).__name__} {progress!r}")
     if progress:
         return lambda msg: print(msg, file=sys.stderr, flush=True)
     return lambda msg: None

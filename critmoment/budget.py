@@ -16,8 +16,16 @@ The limits (defaults in brackets) are
 * ``max_steps`` [500,000]: physics steps of one full rollout, trajectory
   duration / physics time step (1000 s at 500 Hz);
 * ``max_batch_steps`` [50,000,000]: physics steps of an audit's batched
-  simulations, samples × moments × horizon for the sweep plus samples × rollout
-  steps for the full rollouts of ``validate``.
+  simulations: every sparse evaluation of :func:`critmoment.analysis.analyze`
+  (the moments' ranking, the sweep, the critical values, the searches, the check
+  of the safe region; each the horizon plus its persistence and settling steps)
+  plus the samples' own runs through the recording, or samples × rollout steps
+  for the full rollouts of ``validate``.
+
+Besides these limits, options that set the size of the work without a physics
+step count have fixed bounds (:data:`MAX_THREADS`; the audit's options in
+:class:`critmoment.analysis.AnalyzeOptions`), and the sparse horizon must leave
+at least half of the recording for the moments (:func:`check_horizon`).
 
 Each is raised by an environment variable (``CRITMOMENT_MAX_INPUT_BYTES``,
 ``CRITMOMENT_MAX_STEPS``, ``CRITMOMENT_MAX_BATCH_STEPS``), by the CLI options
@@ -48,11 +56,21 @@ __all__ = [
     "check_rollout",
     "check_audit",
     "check_validation",
+    "check_horizon",
+    "check_audit_horizon",
+    "check_nthread",
+    "check_step_count",
+    "audit_work",
     "SEED_MAX",
+    "MAX_THREADS",
 ]
 
 #: Seeds are unsigned 32-bit integers (numpy's SeedSequence, Optuna's samplers).
 SEED_MAX: int = 2**32 - 1
+
+#: Most MuJoCo threads one batch may ask for (four per CPU on larger machines): MuJoCo's
+#: thread pool allocates per thread, and 100,000 threads fail deep inside it.
+MAX_THREADS: int = max(256, 4 * (os.cpu_count() or 1))
 
 # (field, environment variable, CLI option, default)
 _LIMITS = (
@@ -237,8 +255,135 @@ def check_rollout(trajectory, twin) -> int:
                        what=f"rollout of {trajectory.source or 'the trajectory'}")
 
 
+def check_nthread(value: Any, *, what: str = "nthread") -> int:
+    """A MuJoCo thread count: an integer in [0, :data:`MAX_THREADS`] (0: all CPUs).
+
+    Raises:
+        ParameterError: not an integer, negative, or beyond :data:`MAX_THREADS`.
+    """
+    if isinstance(value, bool) or not isinstance(value, int) and not hasattr(value, "__index__"):
+        raise ParameterError(f"{what}: expected an integer in [0, {MAX_THREADS}] (0: all "
+                             f"CPUs), got {type(value).__name__} {value!r}")
+    number = int(value.__index__())
+    if number < 0:
+        raise ParameterError(f"{what}: expected an integer >= 0, got "
+                             f"{type(value).__name__} {value!r}")
+    if number > MAX_THREADS:
+        raise ParameterError(f"{what}: expected at most {MAX_THREADS} threads "
+                             f"(max(256, 4 x {os.cpu_count()} CPUs); 0 uses all CPUs), got "
+                             f"{number}")
+    return number
+
+
+def check_step_count(nstep: int, *, what: str, n: int = 1) -> None:
+    """Refuses ``n`` simulations of ``nstep`` physics steps each beyond the limits: one of
+    more than ``max_steps``, or more than ``max_batch_steps`` in all.
+
+    Raises:
+        ResourceLimitError: beyond a limit.
+    """
+    _refuse("max_steps", what=what, got=float(nstep), unit="physics steps")
+    if n > 1:
+        check_batch_steps(float(n) * float(nstep), what=what,
+                          detail=f"{n} simulations x {nstep} physics steps")
+
+
+def check_horizon(horizon: int, n_steps: int, timestep: float, *,
+                  what: str = "horizon") -> None:
+    """Refuses a sparse horizon that leaves less than half of the recording for moments.
+
+    A moment at step k is evaluated over steps [k, k + horizon): moments later than
+    ``n_steps − horizon`` would have to move earlier, to a time they do not happen at. An
+    audit whose horizon is longer than half the recording would move most of its moments
+    (with a horizon of 3990 steps in a recording of 4000, every moment to the first ten
+    steps), and one longer than the recording can evaluate none.
+
+    Args:
+        horizon: physics steps per sparse evaluation.
+        n_steps: physics steps of the recording.
+        timestep: physics time step [s].
+        what: the option, for the message.
+
+    Raises:
+        ParameterError: ``horizon`` > ``n_steps`` / 2.
+    """
+    if isinstance(horizon, bool) or not isinstance(horizon, int) and not hasattr(
+            horizon, "__index__") or int(horizon) < 1:
+        raise ParameterError(f"{what}: expected an integer >= 1 [physics steps], got "
+                             f"{type(horizon).__name__} {horizon!r}")
+    horizon = int(horizon.__index__())
+    most = int(n_steps) // 2
+    if horizon <= most:
+        return
+    dt = float(timestep)
+    recording = f"recording of {int(n_steps):,} steps = {n_steps * dt:g} s"
+    if horizon >= n_steps:
+        told = (f"it must be shorter than the {recording}, and at most half of it so that "
+                f"the moments are audited where they happen")
+    else:
+        told = (f"it would leave only steps [0, {n_steps - horizon}] of the {recording} "
+                f"for the moments, and move every later moment to step {n_steps - horizon}")
+    raise ParameterError(
+        f"{what}: expected at most half of the recording, {most:,} physics steps "
+        f"({most * dt:g} s), got {int(horizon):,} steps ({horizon * dt:g} s): {told}; "
+        f"lower --horizon (or [sparse] horizon in the scenario)")
+
+
+def audit_work(trajectory, twin, options) -> tuple[float, str]:
+    """The physics steps an audit may take in all, and how they add up, in words.
+
+    Every sparse evaluation steps the horizon, plus up to the persistence of a contact
+    excursion (or the creep horizon) past it; the sweep's and the region check's evaluations
+    may follow a contact failure for up to ``SETTLE_TIME`` more. The audit evaluates
+
+    * the ranking of up to 32 candidate moments on the 3^k probe of the box,
+    * the sweep, (samples + 1) × moments,
+    * the 1-D curves and the critical values' grid, 2 × critical_grid × k × moments, and
+      about 24 bisection points per parameter and moment,
+    * the search, search_trials × moments (with ``search``),
+    * the check of the safe region, up to 4 rounds of its corners, edges and inside
+      points (336 for two parameters) × moments,
+
+    and the samples' own runs: each may be carried through the whole recording (the chain,
+    the verification rollouts), samples × rollout steps. The result is an upper estimate:
+    samples that fail early stop, a region that holds at once takes one round.
+
+    Returns:
+        (physics steps, the terms in words).
+    """
+    from critmoment import sparse as sp
+
+    timestep = float(twin.model.opt.timestep)
+    n_steps = check_rollout(trajectory, twin)
+    horizon = int(options.horizon if options.horizon is not None else twin.scenario.horizon)
+    settings = sp.sparse_settings(twin.scenario)
+    persistence = max(1, int(round(settings.persistence / timestep)))
+    extension = max(persistence - 1, int(settings.creep_horizon) - horizon, 0)
+    settle = int(math.ceil(sp.SETTLE_TIME / timestep))
+    ndim = int(twin.scenario.box.ndim)
+    m = int(options.max_moments)
+    n = int(options.n_samples)
+    length = horizon + extension
+    ranking = 3.0 ** ndim * max(32, m)
+    sweep = (n + 1.0) * m
+    critical = 2.0 * options.critical_grid * ndim * m + 24.0 * ndim * m
+    search = float(options.search_trials) * m if options.search else 0.0
+    # the region check: up to 4 rounds of corners, edges (3 per edge, 4 times denser where
+    # the cost comes near the threshold) and 4 × 2^(k+1) points inside, per moment
+    region = 4.0 * (2 ** ndim + 12.0 * ndim * 2 ** (ndim - 1) + 4.0 * 2 ** (ndim + 1)) * m
+    runs = float(n) * n_steps
+    total = (ranking + critical + search) * length + (sweep + region) * (length + settle) + runs
+    words = (f"{n} samples x {m} moments x horizon {horizon} (+{extension} persistence, "
+             f"+{settle} settling steps) for the sweep, plus {ranking + critical + search + region:,.0f} "
+             f"evaluations for the ranking, the critical values (critical_grid "
+             f"{options.critical_grid}), the search (search_trials {options.search_trials}) "
+             f"and the region check, plus {n} samples' own runs of {n_steps:,} steps; lower "
+             f"--samples, --max-moments or --horizon")
+    return total, words
+
+
 def check_audit(trajectory, twin, options) -> None:
-    """Checks an audit's seed and size before it starts.
+    """Checks an audit's seed, threads, horizon and size before it starts.
 
     Args:
         trajectory: the :class:`~critmoment.trajectory.Trajectory`.
@@ -247,20 +392,44 @@ def check_audit(trajectory, twin, options) -> None:
         options: the :class:`~critmoment.analysis.AnalyzeOptions`.
 
     Raises:
-        ParameterError: a seed outside [0, 2³² − 1].
-        ResourceLimitError: the rollout or the sweep is beyond the active limits.
+        ParameterError: a seed outside [0, 2³² − 1], too many threads, or a horizon
+            longer than half the recording (:func:`check_horizon`).
+        ResourceLimitError: the rollout, or the audit's simulations in all
+            (:func:`audit_work`), beyond the active limits.
     """
     check_seed(options.seed, what="seed")
+    check_nthread(options.nthread)
     check_rollout(trajectory, twin)
-    horizon = options.horizon if options.horizon is not None else twin.scenario.horizon
-    sweep = float(options.n_samples) * float(options.max_moments) * float(horizon)
-    check_batch_steps(sweep, what="sparse sweep",
-                      detail=f"{options.n_samples} samples x {options.max_moments} moments x "
-                             f"horizon {horizon}; lower --samples, --max-moments or --horizon")
+    check_audit_horizon(trajectory, twin, options.horizon)
+    total, words = audit_work(trajectory, twin, options)
+    check_batch_steps(total, what="sparse sweep and the audit's other simulations",
+                      detail=words)
 
 
-def check_validation(trajectory, twin, *, n_samples: int) -> None:
+def check_audit_horizon(trajectory, twin, horizon: int | None = None) -> None:
+    """:func:`check_horizon` of an audit's horizon (``None``: the scenario's ``[sparse]
+    horizon``) against the rollout of ``trajectory`` in ``twin``, before the rollout.
+
+    A trajectory whose rows come faster than the physics steps is left to the rollout,
+    which refuses it naming both rates (its recording would be a few steps long, and a
+    horizon compared with them would only hide that).
+
+    Raises:
+        ParameterError: a horizon longer than half the recording.
+    """
+    timestep = float(twin.model.opt.timestep)
+    if float(trajectory.fps) * timestep > 1.0 + 1e-9:
+        return
+    n_steps = check_rollout(trajectory, twin)
+    check_horizon(twin.scenario.horizon if horizon is None else horizon, n_steps, timestep,
+                  what="[sparse] horizon" if horizon is None else "horizon")
+
+
+def check_validation(trajectory, twin, *, n_samples: int) -> int:
     """Checks that ``n_samples`` full rollouts of ``trajectory`` are within ``max_batch_steps``.
+
+    Returns:
+        The estimated physics steps of one rollout.
 
     Raises:
         ResourceLimitError: beyond the limit.
@@ -268,3 +437,4 @@ def check_validation(trajectory, twin, *, n_samples: int) -> None:
     steps = check_rollout(trajectory, twin)
     check_batch_steps(float(n_samples) * steps, what="brute-force full rollouts",
                       detail=f"{n_samples} samples x {steps} physics steps; lower --samples")
+    return steps

@@ -58,6 +58,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from critmoment import budget
 from critmoment.actuators import common_ancestor
 from critmoment.exceptions import ParameterError
 from critmoment.recording import (
@@ -598,19 +599,44 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
 
     Returns:
         The :class:`BruteForce` result.
+
+    Raises:
+        ParameterError: bad samples, criteria, chunk, threads or reference.
+        ResourceLimitError: the rollouts, one by one or all together, beyond the active
+            :mod:`critmoment.budget` limits (``max_steps``, ``max_batch_steps``).
     """
+    t_start = time.perf_counter()
+    traj, twin, samples, criteria, chunk, nthread = _brute_force_inputs(
+        traj, twin, samples, criteria, chunk, nthread)
+    budget.check_validation(traj, twin, n_samples=samples.shape[0])
+    return _brute_force(traj, twin=twin, samples=samples, criteria=criteria, chunk=chunk,
+                        nthread=nthread, reference=reference, t_start=t_start)
+
+
+def _brute_force_inputs(traj, twin, samples, criteria, chunk, nthread):
+    """:func:`brute_force`'s arguments, checked at the boundary."""
+    from critmoment.sparse import check_samples
     from critmoment.trajectory import check_trajectory
     from critmoment.twin import resolve_twin
 
-    t_start = time.perf_counter()
-    check_trajectory(traj)
+    traj = check_trajectory(traj)
     twin = resolve_twin(None, twin)
+    samples = check_samples(twin.scenario.box, samples)
+    if not isinstance(criteria, OutcomeCriteria):
+        raise ParameterError(f"criteria: expected an OutcomeCriteria "
+                             f"(critmoment.groundtruth.OutcomeCriteria(slip_tolerance=..., "
+                             f"...)), got {type(criteria).__name__} {criteria!r}")
+    return (traj, twin, samples, criteria, _check_int("chunk", chunk, 1),
+            budget.check_nthread(nthread))
+
+
+def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
+                 criteria: OutcomeCriteria, chunk: int, nthread: int,
+                 reference: NominalReference | None, t_start: float) -> BruteForce:
+    """:func:`brute_force` on checked arguments, without the budget's check: for the audit's
+    own verification rollouts, whose number :func:`critmoment.budget.check_audit` bounds
+    before the audit starts."""
     box = twin.scenario.box
-    samples = box.check_samples(samples)
-    if samples.shape[0] == 0:
-        raise ParameterError(f"samples: expected at least one row of {box.names}, got none")
-    chunk = _check_int("chunk", chunk, 1)
-    nthread = _check_int("nthread", nthread, 0)
     probe = _probe_of(twin)
     controls = prepare_controls(twin, traj)
     state0 = initial_state(twin, traj)

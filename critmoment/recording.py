@@ -25,7 +25,7 @@ import mujoco
 import mujoco.batch
 import numpy as np
 
-from critmoment import safety
+from critmoment import budget, safety
 from critmoment import trajectory as trajectory_mod
 from critmoment.exceptions import (
     CritmomentWarning,
@@ -117,6 +117,8 @@ def check_task_window(twin: Twin, traj: Trajectory) -> None:
     Raises:
         ScenarioError: naming both durations.
     """
+    if float(traj.fps) * float(twin.model.opt.timestep) > 1.0 + 1e-9:
+        return  # rows faster than the physics steps: the rollout refuses it, naming both rates
     duration = traj.n_steps / traj.fps
     if twin.task.settle_time >= duration:
         raise ScenarioError(
@@ -129,6 +131,12 @@ def check_task_window(twin: Twin, traj: Trajectory) -> None:
             f"[sparse] persistence: {persistence:g} s, but the trajectory{_source(traj)} lasts "
             f"{duration:g} s; expected a time a contact-FOS excursion must last to count "
             f"(default 0.02 s), shorter than the motion (else no excursion ever counts)")
+    creep = twin.scenario.sparse.creep_horizon * float(twin.model.opt.timestep)
+    if creep >= duration:
+        raise ScenarioError(
+            f"[sparse] creep_horizon: {twin.scenario.sparse.creep_horizon} physics steps = "
+            f"{creep:g} s, but the trajectory{_source(traj)} lasts {duration:g} s; expected "
+            f"a creep window shorter than the motion (0 for off)")
 
 
 def checked_start(twin: Twin, traj: Trajectory, *, range_policy: str | None = None,
@@ -203,17 +211,22 @@ def simulate(twin: Twin, state0: np.ndarray, controls: np.ndarray, *,
         ``sensordata`` (n, T, nsensordata), ``time`` (n, T) (time after each step),
         ``diverged`` (n,) bool, ``diverged_step`` (n,) int (−1 when fine),
         ``warnings`` (n,) str, and with ``record_state`` ``state`` (n, T, nstate).
+
+    Raises:
+        ParameterError: arrays of the wrong shape or kind, different numbers of
+            simulations, a reused ``batch`` of another size, or too many threads.
+        ResourceLimitError: more than ``max_steps`` per simulation, or ``max_batch_steps``
+            in all (:mod:`critmoment.budget`).
     """
-    state0 = np.asarray(state0, dtype=np.float64)
-    controls = np.asarray(controls, dtype=np.float64)
-    n = max(1 if samples is None else len(samples),
-            state0.shape[0] if state0.ndim == 2 else 1,
-            controls.shape[0] if controls.ndim == 3 else 1)
+    state0, controls, samples, n = _simulate_inputs(twin, state0, controls, samples)
     nstep = controls.shape[-2]
+    budget.check_step_count(nstep, n=n, what=f"simulate: {n} rollout(s) of {nstep:,} "
+                                             f"physics steps")
     if batch is None:
-        batch = mujoco.batch.Batch(twin.model, n, nthread=nthread)
+        batch = mujoco.batch.Batch(twin.model, n, nthread=budget.check_nthread(nthread))
     elif batch.nsim != n:
-        raise ValueError(f"batch has {batch.nsim} simulations, expected {n}")
+        raise ParameterError(f"batch: expected a Batch of {n} simulations (the samples, "
+                             f"states or controls given), got one of {batch.nsim}")
     if samples is not None:
         twin.write_parameters(batch, samples)
     batch.state[:] = state0
@@ -253,6 +266,41 @@ def simulate(twin: Twin, state0: np.ndarray, controls: np.ndarray, *,
     result["warnings"] = np.array([
         ", ".join(_WARNING_NAMES[w] for w in np.flatnonzero(counts[i])) for i in range(n)])
     return result
+
+
+def _simulate_inputs(twin: Twin, state0: Any, controls: Any, samples: Any
+                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, int]:
+    """:func:`simulate`'s arrays, checked: (state0, controls, samples, simulations)."""
+    from critmoment.sparse import check_samples
+
+    nstate = mujoco.mj_stateSize(twin.model, STATE_SPEC)
+    nu = twin.model.nu
+    arrays = {}
+    for name, value, shapes in (("state0", state0, f"({nstate},) or (n, {nstate})"),
+                                ("controls", controls, f"(T, {nu}) or (n, T, {nu})")):
+        try:
+            arr = np.asarray(value, dtype=np.float64)
+        except (TypeError, ValueError):
+            raise ParameterError(f"{name}: expected a real array of shape {shapes}, got "
+                                 f"{type(value).__name__}") from None
+        arrays[name] = arr
+    state0, controls = arrays["state0"], arrays["controls"]
+    if state0.ndim not in (1, 2) or state0.shape[-1] != nstate:
+        raise ParameterError(f"state0: expected shape ({nstate},) or (n, {nstate}) (the "
+                             f"twin's integration state), got {state0.shape}")
+    if controls.ndim not in (2, 3) or controls.shape[-1] != nu or controls.shape[-2] < 1:
+        raise ParameterError(f"controls: expected shape (T, {nu}) or (n, T, {nu}) with T >= 1 "
+                             f"(one row per physics step), got {controls.shape}")
+    if samples is not None:
+        samples = check_samples(twin.scenario.box, samples)
+    sizes = {name: size for name, size in (
+        ("samples", None if samples is None else samples.shape[0]),
+        ("state0", state0.shape[0] if state0.ndim == 2 else None),
+        ("controls", controls.shape[0] if controls.ndim == 3 else None)) if size is not None}
+    if len(set(sizes.values())) > 1:
+        raise ParameterError(f"samples, state0 and controls: expected the same number of "
+                             f"simulations n, got {sizes}")
+    return state0, controls, samples, max(sizes.values(), default=1)
 
 
 def task_completed(stage: np.ndarray, *, dt: float, debounce: float = 0.02) -> np.ndarray:
@@ -348,8 +396,8 @@ def batched_rollouts(twin: Twin, state0: np.ndarray, controls: np.ndarray, sampl
         rows = samples[start:start + size]
         batch = batches.get(rows.shape[0])
         if batch is None:
-            batch = batches[rows.shape[0]] = mujoco.batch.Batch(model, rows.shape[0],
-                                                                nthread=nthread)
+            batch = batches[rows.shape[0]] = mujoco.batch.Batch(
+                model, rows.shape[0], nthread=budget.check_nthread(nthread))
         out = simulate(twin, state0, controls, samples=rows, nthread=nthread, batch=batch)
         mu = np.broadcast_to(twin.grip_friction(batch.expanded("geom_friction"),
                                                 batch.expanded("pair_friction")),
@@ -497,6 +545,8 @@ class Recording:
         return {"persistence": steps * self.dt,
                 "min_fos_contact_sustained": float(finite.min()) if finite.size else None,
                 "max_cost_sustained": float(cost.max()) if cost.size else 0.0,
+                "max_cost_sustained_time": float(np.argmax(cost) * self.dt) if cost.size
+                else 0.0,
                 "threshold": float(scenario.cost.threshold)}
 
     def save(self, path: str | Path) -> Path:
@@ -575,10 +625,13 @@ def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
 
     Raises:
         SimulationDivergedError: the physics diverged; the message names the step.
+        ResourceLimitError: more physics steps than ``max_steps``
+            (:func:`critmoment.budget.check_rollout`), before anything is allocated.
     """
     traj = trajectory_mod.check_trajectory(traj)
     twin = resolve_twin(scenario, twin)
     traj = at_scenario_rate(traj, twin)
+    budget.check_rollout(traj, twin)  # as the CLI: 10⁶ rows would ask for 11 GiB of states
     controls = prepare_controls(twin, traj, range_policy=range_policy)
     state0 = initial_state(twin, traj)
     out = simulate(twin, state0, controls, record_state=True, nthread=1)

@@ -369,14 +369,29 @@ def plot_cost_map(report) -> Figure | None:
     return fig
 
 
+def _whole_run_cost(report) -> str:
+    """The nominal run's cost over every step, held over ``[sparse] persistence``, where it
+    is above the moments' figure (``rollout`` prints it; a reader comparing the two should
+    not find them contradict)."""
+    rec = getattr(report, "recording", None)
+    if rec is None:
+        return ""
+    held = rec.sustained(report.scenario)
+    if not held["max_cost_sustained"] > report.nominal_cost + 0.01:
+        return ""
+    return (f"; over the whole nominal run {held['max_cost_sustained']:.3f} (held "
+            f"{held['persistence'] * 1e3:g} ms, at t = {held['max_cost_sustained_time']:.2f} s)")
+
+
 def summary_text(report) -> str:
     """The terminal summary of an audit."""
     lo, hi = report.p_success_interval
     lines = [f"critmoment: {report.verdict.value} — {report.safe_region_text}",
              f"P(success) = {report.p_success:.3f} ({report.options.confidence:.0%} interval "
              f"{lo:.3f}–{hi:.3f}) over {report.sweep.n_samples if report.sweep else 0} samples "
-             f"of the box; nominal max cost {report.nominal_cost:.3f} "
-             f"(threshold {report.scenario.cost.threshold:g})"]
+             f"of the box; nominal max cost {report.nominal_cost:.3f} at the audited "
+             f"moments (threshold {report.scenario.cost.threshold:g})"
+             + _whole_run_cost(report)]
     untrusted = set(getattr(report, "force_ratio_untrusted", ()))
     for i, mr in enumerate(report.moments, 1):
         m = mr.moment
@@ -451,11 +466,18 @@ def write_report(report, out: str | Path, *, figures: Figures | str = Figures.SU
         The written paths by name (``json``, ``html`` and one per figure).
 
     Raises:
+        ParameterError: ``report`` is not an AuditReport, ``out`` is not a path, or
+            ``figures`` names no :class:`Figures`.
         OutputError: ``out`` is a file, lies under a file, is not writable, or the disk
             fills.
     """
+    from critmoment.analysis import AuditReport
+
+    if not isinstance(report, AuditReport):
+        raise ParameterError(f"report: expected an AuditReport (the result of "
+                             f"critmoment.analyze(...)), got {type(report).__name__}")
     which = Figures.parse(figures)
-    with StagedOutput(out, command="analyze", shared=True) as stage:
+    with StagedOutput(out, command="analyze", shared=True, option="output folder") as stage:
         names = write_report_files(report, stage.path, figures=which)
     return {k: stage.destination / v.name for k, v in names.items()}
 
@@ -517,11 +539,19 @@ def check_output_path(path: str | os.PathLike, *, kind: str = "folder",
         The destination as an absolute path (symlinks resolved).
 
     Raises:
+        ParameterError: ``path`` is not a str, bytes or os.PathLike.
         OutputError: the destination is of the other kind, lies under a file, cannot be
             created for lack of permission or because the file system is read-only, or
             (a folder) holds files that are not a critmoment output.
     """
-    raw = os.fspath(path)
+    if not isinstance(path, (str, bytes, os.PathLike)):
+        raise ParameterError(f"{option}: expected a {kind} path (str or os.PathLike), got "
+                             f"{type(path).__name__} {path!r}")
+    try:
+        raw = os.fsdecode(path)
+    except (TypeError, UnicodeDecodeError) as exc:  # a PathLike that returns no path
+        raise ParameterError(f"{option}: expected a {kind} path (str or os.PathLike), got "
+                             f"{type(path).__name__} ({exc})") from None
     if not raw:
         raise OutputError(f"{option}: expected a {kind} path, got an empty string")
     try:

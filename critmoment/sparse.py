@@ -102,7 +102,7 @@ import mujoco
 import mujoco.batch
 import numpy as np
 
-from critmoment import safety
+from critmoment import budget, safety
 from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
 from critmoment.params import UncertaintyBox
@@ -122,6 +122,7 @@ __all__ = [
     "DecisionSettings",
     "sparse_settings",
     "grip_frames",
+    "check_samples",
     "SparseResult",
     "SparseEvaluator",
     "evaluate",
@@ -574,6 +575,42 @@ def _check_fraction(name: str, value: Any) -> float:
     return float(value)
 
 
+def check_samples(box: UncertaintyBox, samples: Any, *, what: str = "samples") -> np.ndarray:
+    """Parameter samples as (n, k) float64, n >= 1, each value admissible for its parameter.
+
+    Args:
+        box: the uncertainty box (k parameters, in its column order).
+        samples: an array-like of real numbers, (n, k) (or (n,) for one parameter).
+        what: the argument, for messages.
+
+    Raises:
+        ParameterError: not numeric (strings, None, objects), the wrong shape, no rows, or
+            values a parameter does not admit (non-finite, out of its physical range).
+    """
+    expected = f"a real array of shape (n, {box.ndim}) for parameters {list(box.names)}"
+    if samples is None or isinstance(samples, (str, bytes, Mapping)):
+        raise ParameterError(f"{what}: expected {expected}, got {type(samples).__name__} "
+                             f"{_brief(samples)}")
+    try:
+        arr = np.asarray(samples)
+    except (TypeError, ValueError) as exc:  # ragged rows
+        raise ParameterError(f"{what}: expected {expected}, got {type(samples).__name__} "
+                             f"that numpy cannot make an array of ({exc})") from None
+    if arr.dtype == bool or arr.dtype.kind not in "iuf":
+        raise ParameterError(f"{what}: expected {expected}, got dtype {arr.dtype} "
+                             f"{_brief(samples)}")
+    samples = box.check_samples(arr)
+    if samples.shape[0] == 0:
+        raise ParameterError(f"{what}: expected at least one row of {list(box.names)}, got "
+                             f"shape {samples.shape}")
+    return samples
+
+
+def _brief(value: Any, limit: int = 80) -> str:
+    text = repr(value)
+    return text if len(text) <= limit else text[:limit - 3] + "..."
+
+
 def _as_steps(steps: Any) -> np.ndarray:
     """Moments as (m,) int64: ints, an int array, or objects with an int ``step`` (Moment)."""
     if isinstance(steps, (numbers.Integral, np.integer)) or hasattr(steps, "step"):
@@ -743,7 +780,7 @@ class SparseEvaluator:
         horizon = twin.scenario.horizon if horizon is None else horizon
         self.horizon = _check_int("horizon", horizon, 1)
         self.mode = _check_enum("mode", mode, SparseMode)
-        self.nthread = _check_int("nthread", nthread, 0)
+        self.nthread = budget.check_nthread(nthread)
         self.chunk = _check_int("chunk", chunk, 1)
         self.divergence = _check_enum("divergence", divergence, DivergencePolicy)
         if self.mode is SparseMode.SOLVE and self.horizon != 1:
@@ -772,6 +809,12 @@ class SparseEvaluator:
         self._states = np.ascontiguousarray(states)
         self._controls = np.ascontiguousarray(controls)
         self.n_steps = int(controls.shape[0])
+        if self.horizon > self.n_steps:
+            raise ParameterError(
+                f"horizon: expected at most the recording's {self.n_steps:,} physics steps "
+                f"({self.n_steps * float(model.opt.timestep):g} s), got {self.horizon:,} steps "
+                f"({self.horizon * float(model.opt.timestep):g} s): no moment leaves room for "
+                f"it; lower the horizon")
         self._ctrl = state_slice(twin.model, mujoco.mjtState.mjSTATE_CTRL)
         # carried steps of real lifts (the object rises): a failure only at carried steps
         # outside them (a squeeze that tips the object off its support) is marked
@@ -824,7 +867,7 @@ class SparseEvaluator:
         other._kin_data = None
         other.busy = None
         if nthread is not None:
-            other.nthread = _check_int("nthread", nthread, 0)
+            other.nthread = budget.check_nthread(nthread)
         return other
 
     def __repr__(self) -> str:
@@ -909,12 +952,7 @@ class SparseEvaluator:
 
     def check_samples(self, samples: Any) -> np.ndarray:
         """Validate parameter samples: (n, k) float64, n >= 1, each admissible."""
-        samples = self.box.check_samples(samples)
-        if samples.shape[0] == 0:
-            raise ParameterError(
-                f"samples: expected at least one row of {self.box.names}, got shape "
-                f"{samples.shape}")
-        return samples
+        return check_samples(self.box, samples)
 
     # -- batches -----------------------------------------------------------------
     def _threads(self) -> int:

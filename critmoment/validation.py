@@ -210,6 +210,8 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     Returns:
         The :class:`Prediction`.
     """
+    twin = resolve_twin(None, twin)
+    traj = at_scenario_rate(check_trajectory(traj), twin)
     if max_moments is None:
         max_moments = _AUDIT.max_moments
     max_moments = _check_int("max_moments", max_moments, 1)
@@ -218,7 +220,13 @@ def predict(traj: Trajectory, *, twin: Twin, samples: np.ndarray, horizon: int |
     audit = dataclasses.replace(_AUDIT, verify=verify, verify_unlifted=verify_unlifted,
                                 require_task=require_task, chain=bool(chain))
     dopt = decision_options(audit, twin.scenario.cost.threshold)
-    samples = twin.scenario.box.check_samples(samples)
+    samples = sp.check_samples(twin.scenario.box, samples)
+    nthread = budget.check_nthread(nthread)
+    # the samples' own runs may reach one full rollout each; a horizon must leave the
+    # recording room for its moments
+    budget.check_validation(traj, twin, n_samples=samples.shape[0])
+    if horizon is not None or mode is sp.SparseMode.STEP:  # SOLVE: the evaluator's horizon 1
+        budget.check_audit_horizon(traj, twin, horizon)
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
     check_fit(traj, None, twin)  # width and units, naming the likely mistake
@@ -592,6 +600,13 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
     twin = resolve_twin(None, twin)
     traj = at_scenario_rate(check_trajectory(traj), twin)
     box = twin.scenario.box
+    # every argument checked before the first rollout, not after the prediction's work
+    if not isinstance(criteria, OutcomeCriteria):
+        raise ParameterError(f"criteria: expected an OutcomeCriteria "
+                             f"(critmoment.groundtruth.OutcomeCriteria(slip_tolerance=..., "
+                             f"...)), got {type(criteria).__name__} {criteria!r}")
+    nthread = budget.check_nthread(nthread)
+    chunk = _check_int("chunk", chunk, 1)
     if samples is None:
         n_samples = _check_int("n_samples", n_samples, 1)
         if seed is not None:
@@ -600,7 +615,8 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
         samples = sp.sweep_samples(box, n=n_samples, seed=seed)
         used_seed = seed
     else:
-        samples, used_seed = box.check_samples(samples), None
+        samples, used_seed = sp.check_samples(box, samples), None
+        budget.check_validation(traj, twin, n_samples=samples.shape[0])
     prediction = predict(traj, twin=twin, samples=samples, horizon=horizon, mode=mode, chain=chain,
                          max_moments=max_moments, envelope=envelope, verify=verify,
                          verify_unlifted=verify_unlifted, require_task=require_task,

@@ -228,3 +228,20 @@ def test_the_verification_line_counts_the_chain_failures_its_rollouts_overruled(
                                "chained_confirmed": 1})
     assert text.endswith("12 of them fail there (2 of those re-run in full, 1 confirmed: "
                          "11 fail)")
+
+
+def test_the_headline_cost_says_where_it_is_taken_and_the_whole_runs_when_higher(audit):
+    """A report said "nominal max cost 0.000" where `rollout` said 1.000 for the same run:
+    the headline is the moments' figure; the nominal run's cost held over the persistence
+    is added when it is higher."""
+    import dataclasses
+
+    from critmoment.report import summary_text
+
+    held = audit.recording.sustained(audit.scenario)
+    head = summary_text(audit).splitlines()[1]
+    assert f"nominal max cost {audit.nominal_cost:.3f} at the audited moments" in head
+    low = dataclasses.replace(audit, nominal_cost=held["max_cost_sustained"] - 0.05)
+    head = summary_text(low).splitlines()[1]
+    assert head.endswith(f"; over the whole nominal run {held['max_cost_sustained']:.3f} (held "
+                         f"20 ms, at t = {held['max_cost_sustained_time']:.2f} s)")

@@ -661,6 +661,17 @@ def test_a_persistence_as_long_as_the_motion_is_an_error(tmp_path, demo_traj):
                 options=AnalyzeOptions(n_samples=8, check_feasibility=False))
 
 
+def test_a_creep_window_as_long_as_the_motion_is_an_error(tmp_path, demo_traj):
+    """creep_horizon = 1e9 steps ran 44 s and moved the stated region."""
+    from critmoment.analysis import AnalyzeOptions, analyze
+
+    folder = _toml(tmp_path, ("[sparse]", "[sparse]\ncreep_horizon = 1000000000"))
+    with pytest.raises(ScenarioError, match=r"\[sparse\] creep_horizon: 1000000000 physics "
+                       r"steps = 2e\+06 s, but the trajectory .*lasts 8 s"):
+        analyze(demo_traj, twin=Twin(load_scenario(folder)),
+                options=AnalyzeOptions(n_samples=8, check_feasibility=False))
+
+
 @pytest.mark.parametrize("offset", ["[-100.0, 100.0]", "[-0.01, 0.05]"])
 def test_a_centre_of_mass_outside_the_body_is_an_error(tmp_path, offset):
     """A CoM offset of ±100 m (or 5 cm on the 4 cm cube) was audited: every sample tipped
