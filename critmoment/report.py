@@ -396,7 +396,9 @@ def summary_text(report) -> str:
     for i, mr in enumerate(report.moments, 1):
         m = mr.moment
         crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
-                         if v is not None) or "never crosses"
+                         if v is not None) or (
+                             "none of one parameter alone (the others at nominal)"
+                             if mr.max_cost >= report.scenario.cost.threshold else "never crosses")
         worst = ", ".join(f"{k}={v:.3g}" for k, v in mr.worst_case.items())
         # a force ratio the cost does not use (contact chatter) is not shown bare beside it
         trust = " (not trusted)" if int(m.step) in untrusted else ""

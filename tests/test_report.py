@@ -245,3 +245,19 @@ def test_the_headline_cost_says_where_it_is_taken_and_the_whole_runs_when_higher
     head = summary_text(low).splitlines()[1]
     assert head.endswith(f"; over the whole nominal run {held['max_cost_sustained']:.3f} (held "
                          f"20 ms, at t = {held['max_cost_sustained_time']:.2f} s)")
+
+
+def test_a_moment_failing_only_in_combination_does_not_say_never_crosses(audit):
+    """A moment line read "max cost 1.000 ...; critical: never crosses": the worst case
+    combined two parameters, while the critical values move one alone."""
+    import dataclasses
+
+    from critmoment.report import summary_text
+
+    mr = audit.moments[0]
+    high = dataclasses.replace(mr, max_cost=2.0, critical={k: None for k in mr.critical})
+    low = dataclasses.replace(mr, max_cost=0.1, critical={k: None for k in mr.critical})
+    text = summary_text(dataclasses.replace(audit, moments=[high, low]))
+    lines = [ln for ln in text.splitlines() if ln.startswith(("  1.", "  2."))]
+    assert lines[0].endswith("critical: none of one parameter alone (the others at nominal)")
+    assert lines[1].endswith("critical: never crosses")
