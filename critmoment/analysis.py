@@ -617,7 +617,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         nominal_failed=bool(res_all.failed_any[0]) if steps.size else False,
         nominal_unlifted=bool(res_all.failed_unlifted_only[0]) if steps.size else False,
         nominal_stage=(int(rec.stage.max()), int(rec.stage[-1])),
-        completion_rule=_completion_rule(rec, twin),
+        completion_rule=_completion_rule(rec, twin), stage_names=tuple(twin.task.stage_names),
         moments=tuple(moment_reports), worst_failed=worst_failed_sparse,
         worst_unlifted=worst_unlifted,
         worst_rollouts_failed=worst_failed, trend=_trend(curves, box))

@@ -167,8 +167,13 @@ def cmd_rollout(args) -> int:
         return EXIT_OK
     firsts = ", ".join(f"{k}: {v if v is not None else '-'}"
                        for k, v in summary["stage_first_step"].items())
+    names = twin.task.stage_names
+
+    def stage(n: int) -> str:
+        return f"{n} ({names[n]})" if 0 <= n < len(names) else str(n)
+
     _Stdout.emit(f"{summary['steps']} steps of {summary['dt'] * 1e3:g} ms; max stage "
-                 f"{summary['max_stage']}, final stage {summary['final_stage']} "
+                 f"{stage(summary['max_stage'])}, final stage {stage(summary['final_stage'])} "
                  f"({'completed' if summary['completed'] else 'NOT completed'}); first step "
                  f"per stage {{{firsts}}}")
     if summary["shortfalls"]:

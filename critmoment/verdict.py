@@ -1058,6 +1058,8 @@ class Evidence:
     region: RegionCheck | None = None
     completion_rule: str = "stage 4 needed and kept to the end"
     trend: Mapping[str, float] | None = None
+    #: the task's stage names, for the causes (stage 0 is "untouched", ...)
+    stage_names: tuple[str, ...] = ()
 
     def sides(self, failed: np.ndarray) -> list[str]:
         """The failing side of each parameter (:func:`fail_sides`) for these failures."""
@@ -1223,7 +1225,9 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
                    f"failed its check at its corners, edges and inside and was shrunk to "
                    f"{_bounds_text(check.region, box)}",)
     if task_failed:
-        reached, final = evidence.nominal_stage
+        reached, final = (f"{n} ({evidence.stage_names[n]})"
+                          if 0 <= n < len(evidence.stage_names) else str(n)
+                          for n in evidence.nominal_stage)
         causes = (f"the task is not completed at the nominal parameters (stage {reached} "
                   f"reached, final stage {final}; {evidence.completion_rule})",) + causes
     return Decision(verdict=verdict, failed=failed, p_success=float(p),

@@ -173,6 +173,13 @@ def test_a_nominal_run_that_fails_its_task_leaves_each_sample_to_its_own_run():
     decision = vd.decide(vd.Evidence(box=box, samples=bare, nominal_cost=0.1,
                                      moments=(_moment(100),)), plain)
     assert decision.verdict is vd.Verdict.UNSAFE and decision.p_success == 0.0
+    # the cause names the stages, not only their numbers
+    named = vd.decide(vd.Evidence(box=box, samples=bare, nominal_cost=0.1,
+                                  moments=(_moment(100),), nominal_stage=(4, 0),
+                                  stage_names=("untouched", "touched", "carried", "placed",
+                                               "released")), plain)
+    assert any("(stage 4 (released) reached, final stage 0 (untouched);" in c
+               for c in named.causes)
 
 
 def test_failing_samples_is_the_sparse_failure_unless_a_rollout_decided():
