@@ -583,8 +583,13 @@ def _change_point_reasons(delta: np.ndarray, groups: Sequence[str]) -> tuple[str
     if total <= 0:
         return ("change point in the safety signals",)
     ranked = sorted(energy.items(), key=lambda item: -item[1])
+    def jump(e: float) -> str:
+        # against a scale near 0 (a constant force held, then changed) the ratio is huge and
+        # says only that the signal was flat before: "over 1000 sigma"
+        return f"{math.sqrt(e):.1f} sigma" if e <= 1e6 else "over 1000 sigma, from a flat signal"
+
     return tuple(
-        f"change point in {g} (jump {math.sqrt(e):.1f} sigma)" for g, e in ranked if e >= 0.2 * total
+        f"change point in {g} (jump {jump(e)})" for g, e in ranked if e >= 0.2 * total
     )
 
 

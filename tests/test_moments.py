@@ -558,3 +558,13 @@ def _peak_recording():
         actuator_norm=np.zeros((n, 1)), fos_contact=np.full((n, 1), np.inf), fos_motor=fos,
         contact_support=np.ones(n, bool), contact_gripper=np.zeros((n, 1), bool),
         gripper_names=("hand",))
+
+
+def test_a_jump_off_a_flat_signal_is_not_given_as_a_huge_sigma():
+    """A gantry holding a constant force read "jump 212844.1 sigma"."""
+    from critmoment.moments import _change_point_reasons
+
+    assert _change_point_reasons(np.array([3.0, 0.1]), ["object acceleration", "x"]) == (
+        "change point in object acceleration (jump 3.0 sigma)",)
+    assert _change_point_reasons(np.array([212844.1, 0.0]), ["actuator load", "x"]) == (
+        "change point in actuator load (jump over 1000 sigma, from a flat signal)",)
