@@ -907,8 +907,13 @@ def _scenario_label(scenario) -> str:
 def _same_scenario(scenario, twin: Twin) -> bool:
     """Whether ``scenario`` (as :func:`resolve_twin` takes it) names ``twin``'s scenario."""
     own = twin.scenario
-    if scenario is twin or scenario is own or scenario == own:
+    if scenario is twin or scenario is own:
         return True
+    if isinstance(scenario, type(own)):
+        try:
+            return bool(scenario == own)
+        except (ValueError, TypeError):  # fields holding arrays compare element-wise
+            return scenario.name == own.name and scenario.path == own.path
     if isinstance(scenario, (str, os.PathLike)):
         text = os.fspath(scenario)
         if text == own.name:
