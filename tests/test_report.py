@@ -245,6 +245,16 @@ def test_the_headline_cost_says_where_it_is_taken_and_the_whole_runs_when_higher
     head = summary_text(low).splitlines()[1]
     assert head.endswith(f"; over the whole nominal run {held['max_cost_sustained']:.3f} (held "
                          f"20 ms, at t = {held['max_cost_sustained_time']:.2f} s)")
+    # above the threshold on a run that completes its task: said to be the force ratio alone
+    from critmoment.scenario import CostParams
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        strict = audit.scenario.replace(cost=CostParams(threshold=held["max_cost_sustained"]
+                                                        - 0.02))
+    head = summary_text(dataclasses.replace(low, scenario=strict)).splitlines()[1]
+    assert head.endswith("s), by the force ratio alone: the nominal run completes its task, "
+                         "which decides it")
 
 
 def test_a_moment_failing_only_in_combination_does_not_say_never_crosses(audit):
