@@ -2038,6 +2038,10 @@ def critical_values(recording, twin: Twin, steps: Any, *, n_grid: int = 33,
         raise ParameterError("others: expected at least one of OthersAt.NOMINAL, OthersAt.WORST")
     box = engine.box
     k, m = box.ndim, steps.shape[0]
+    budget.check_batch_steps(
+        len(contexts) * m * k * n_grid * engine.horizon, what="critical values' sweeps",
+        detail=f"{len(contexts)} placement(s) x {m} moment(s) x {k} parameter(s) x n_grid "
+               f"{n_grid} x horizon {engine.horizon}; lower n_grid")
     nominal = box.nominal
     grid_unit = np.linspace(0.0, 1.0, n_grid)
     axes = np.clip(box.from_unit(np.repeat(grid_unit[:, None], k, axis=1)), box.low, box.high)

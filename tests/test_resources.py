@@ -202,3 +202,13 @@ def test_progress_must_be_a_bool_or_a_callable(demo_traj, progress):
     """5 was taken for True (and the audit ran)."""
     with pytest.raises(ParameterError, match="progress: expected True, False or a callable"):
         cm.analyze(demo_traj, progress=progress)
+
+
+def test_critical_values_alone_are_within_max_batch_steps(twin, demo_recording):
+    """The audit's option was bounded, but sp.critical_values(n_grid=...) called alone was
+    not; its sweeps now count against max_batch_steps before any work."""
+    with budget.limits(max_batch_steps=3_999), pytest.raises(
+            ResourceLimitError, match=r"critical values' sweeps: expected at most 3,999 .*got "
+                                      r"4,000 .*2 placement\(s\) x 1 moment\(s\) x 2 "
+                                      r"parameter\(s\) x n_grid 100 x horizon 10"):
+        sp.critical_values(demo_recording, twin, [1707], n_grid=100)
