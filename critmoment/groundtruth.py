@@ -613,6 +613,19 @@ def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
                         nthread=nthread, reference=reference, t_start=t_start)
 
 
+def check_criteria(criteria: Any) -> OutcomeCriteria:
+    """``criteria`` itself when it is an :class:`OutcomeCriteria`.
+
+    Raises:
+        ParameterError: anything else, with what to pass instead.
+    """
+    if not isinstance(criteria, OutcomeCriteria):
+        raise ParameterError(f"criteria: expected an OutcomeCriteria "
+                             f"(critmoment.groundtruth.OutcomeCriteria(slip_tolerance=..., "
+                             f"...)), got {type(criteria).__name__} {criteria!r}")
+    return criteria
+
+
 def _brute_force_inputs(traj, twin, samples, criteria, chunk, nthread):
     """:func:`brute_force`'s arguments, checked at the boundary."""
     from critmoment.sparse import check_samples
@@ -622,11 +635,7 @@ def _brute_force_inputs(traj, twin, samples, criteria, chunk, nthread):
     traj = check_trajectory(traj)
     twin = resolve_twin(None, twin)
     samples = check_samples(twin.scenario.box, samples)
-    if not isinstance(criteria, OutcomeCriteria):
-        raise ParameterError(f"criteria: expected an OutcomeCriteria "
-                             f"(critmoment.groundtruth.OutcomeCriteria(slip_tolerance=..., "
-                             f"...)), got {type(criteria).__name__} {criteria!r}")
-    return (traj, twin, samples, criteria, _check_int("chunk", chunk, 1),
+    return (traj, twin, samples, check_criteria(criteria), _check_int("chunk", chunk, 1),
             budget.check_nthread(nthread))
 
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 import dataclasses
 import enum
 from collections.abc import Mapping
-from typing import ClassVar, Protocol
+from typing import Any, ClassVar, Protocol
 
 import mujoco
 import numpy as np
@@ -154,6 +154,11 @@ class Parameter:
                 f"parameter {self.name!r}: expected finite values > {self.minimum} {self.unit}, "
                 f"got {values[bad][:5].tolist()}")
         return values
+
+
+def _brief(value: Any, limit: int = 80) -> str:
+    text = repr(value)
+    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 class NominalContacts(Protocol):
@@ -373,9 +378,26 @@ class UncertaintyBox:
             raise ParameterError(
                 f"unknown parameter {name!r}; the box has {', '.join(self.names)}") from None
 
-    def check_samples(self, samples: np.ndarray) -> np.ndarray:
-        """Validate a (n, k) sample array (k = ndim); return it as float64 C-contiguous."""
-        samples = np.asarray(samples, dtype=np.float64)
+    def check_samples(self, samples: Any, *, what: str = "samples") -> np.ndarray:
+        """Validate a (n, k) sample array (k = ndim); return it as float64 C-contiguous.
+
+        Raises:
+            ParameterError: not numeric (strings, None, objects, ragged rows), the wrong
+                shape, or values a parameter does not admit.
+        """
+        expected = f"a real array of shape (n, {self.ndim}) for parameters {list(self.names)}"
+        if samples is None or isinstance(samples, (str, bytes, Mapping)):
+            raise ParameterError(f"{what}: expected {expected}, got {type(samples).__name__} "
+                                 f"{_brief(samples)}")
+        try:
+            arr = np.asarray(samples)
+        except (TypeError, ValueError) as exc:  # ragged rows
+            raise ParameterError(f"{what}: expected {expected}, got {type(samples).__name__} "
+                                 f"that numpy cannot make an array of ({exc})") from None
+        if arr.dtype == bool or arr.dtype.kind not in "iuf":
+            raise ParameterError(f"{what}: expected {expected}, got dtype {arr.dtype} "
+                                 f"{_brief(samples)}")
+        samples = arr.astype(np.float64, copy=False)
         if samples.ndim == 1 and self.ndim == 1:
             samples = samples[:, None]
         if samples.ndim != 2 or samples.shape[1] != self.ndim:

@@ -1298,8 +1298,7 @@ def _carry_reach(model: mujoco.MjModel, gripper: Gripper, object_body: str,
         mujoco.mj_resetDataKeyframe(model, data, key_id)
     mujoco.mj_kinematics(model, data)
     obj = model.body(object_body).id
-    extent = max((float(np.linalg.norm(model.geom_pos[g]) + model.geom_rbound[g])
-                  for g in range(model.ngeom) if model.geom_bodyid[g] == obj), default=0.0)
+    extent = _body_reach(model, obj) or 0.0
     balls = []
     for name in gripper.geoms:
         reach = _reach(model, data, model.geom(name).id)
@@ -1344,6 +1343,23 @@ def _check_goal_site_fixed(model: mujoco.MjModel, site: int) -> None:
         b = int(model.body_parentid[b])
 
 
+def _nearest_reach(model: mujoco.MjModel, balls: Sequence[tuple[np.ndarray, float]],
+                   point: np.ndarray, *, slack: float, factor: float = 1.0
+                   ) -> tuple[float, np.ndarray, float]:
+    """Of :func:`_carry_reach`'s balls (anchor, radius), the one ``point`` is nearest to
+    reaching: (gap beyond ``factor`` × (radius + slack), its anchor, radius + slack). A
+    point above a ball counts as reached where it lies over it: an object let go there
+    falls into it (a goal in a bin below the arm)."""
+    down = _down(model) if np.linalg.norm(model.opt.gravity) > 0 else np.zeros(3)
+    best = None
+    for anchor, radius in balls:
+        lift = max(0.0, float(np.dot(point - anchor, down)))
+        gap = float(np.linalg.norm(point - lift * down - anchor)) - factor * (radius + slack)
+        if best is None or gap < best[0]:
+            best = (gap, anchor, radius + slack)
+    return best
+
+
 def _check_goal_reach(model: mujoco.MjModel, goal: Sequence[float], gripper: Gripper,
                       object_body: str, key_id: int | None, *, slack: float) -> None:
     """A pick-and-place goal the carrying gripper cannot bring the object to, at any joint
@@ -1357,14 +1373,7 @@ def _check_goal_reach(model: mujoco.MjModel, goal: Sequence[float], gripper: Gri
     if carry is None:
         return
     goal = np.asarray(goal, dtype=float)
-    down = _down(model) if np.linalg.norm(model.opt.gravity) > 0 else np.zeros(3)
-    best = None
-    for anchor, radius in carry[0]:
-        # released anywhere above the goal, the object may fall onto it (a bin below the arm)
-        lift = max(0.0, float(np.dot(goal - anchor, down)))
-        gap = float(np.linalg.norm(goal - lift * down - anchor)) - (radius + slack)
-        if best is None or gap < best[0]:
-            best = (gap, anchor, radius + slack)
+    best = _nearest_reach(model, carry[0], goal, slack=slack)
     if best[0] <= 0.0:
         return
     _, anchor, farthest = best
@@ -1387,21 +1396,14 @@ def start_out_of_reach(model: mujoco.MjModel, scenario: Scenario, position: np.n
     (:func:`_check_goal_reach`)."""
     key_id = scenario.keyframe_id(model)
     position = np.asarray(position, dtype=float)
-    down = _down(model) if np.linalg.norm(model.opt.gravity) > 0 else np.zeros(3)
-    best = None
+    balls = []
     for gripper in scenario.grippers:
         carry = _carry_reach(model, gripper, scenario.object_body, key_id)
         if carry is None:
             return None
-        for anchor, radius in carry[0]:
-            lift = max(0.0, float(np.dot(position - anchor, down)))
-            gap = (float(np.linalg.norm(position - lift * down - anchor))
-                   - factor * (radius + slack))
-            if gap <= 0.0:
-                return None
-            if best is None or gap < best[0]:
-                best = (gap, anchor, radius + slack)
-    if best is None:
+        balls += carry[0]
+    best = _nearest_reach(model, balls, position, slack=slack, factor=factor)
+    if best[0] <= 0.0:
         return None
     _, anchor, farthest = best
     return (f"the object starts at ({', '.join(f'{v:g}' for v in position)}) m, "

@@ -587,28 +587,11 @@ def check_samples(box: UncertaintyBox, samples: Any, *, what: str = "samples") -
         ParameterError: not numeric (strings, None, objects), the wrong shape, no rows, or
             values a parameter does not admit (non-finite, out of its physical range).
     """
-    expected = f"a real array of shape (n, {box.ndim}) for parameters {list(box.names)}"
-    if samples is None or isinstance(samples, (str, bytes, Mapping)):
-        raise ParameterError(f"{what}: expected {expected}, got {type(samples).__name__} "
-                             f"{_brief(samples)}")
-    try:
-        arr = np.asarray(samples)
-    except (TypeError, ValueError) as exc:  # ragged rows
-        raise ParameterError(f"{what}: expected {expected}, got {type(samples).__name__} "
-                             f"that numpy cannot make an array of ({exc})") from None
-    if arr.dtype == bool or arr.dtype.kind not in "iuf":
-        raise ParameterError(f"{what}: expected {expected}, got dtype {arr.dtype} "
-                             f"{_brief(samples)}")
-    samples = box.check_samples(arr)
+    samples = box.check_samples(samples, what=what)
     if samples.shape[0] == 0:
         raise ParameterError(f"{what}: expected at least one row of {list(box.names)}, got "
                              f"shape {samples.shape}")
     return samples
-
-
-def _brief(value: Any, limit: int = 80) -> str:
-    text = repr(value)
-    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 def _as_steps(steps: Any) -> np.ndarray:

@@ -52,6 +52,7 @@ from critmoment.groundtruth import (
     _check_positive,
     _Probe,  # noqa: F401 (the probe model, read by tests)
     brute_force,
+    check_criteria,
     classify,
     ends_completed,
     grip_slip,
@@ -601,10 +602,7 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
     traj = at_scenario_rate(check_trajectory(traj), twin)
     box = twin.scenario.box
     # every argument checked before the first rollout, not after the prediction's work
-    if not isinstance(criteria, OutcomeCriteria):
-        raise ParameterError(f"criteria: expected an OutcomeCriteria "
-                             f"(critmoment.groundtruth.OutcomeCriteria(slip_tolerance=..., "
-                             f"...)), got {type(criteria).__name__} {criteria!r}")
+    check_criteria(criteria)
     nthread = budget.check_nthread(nthread)
     chunk = _check_int("chunk", chunk, 1)
     if samples is None:
