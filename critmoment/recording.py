@@ -110,9 +110,11 @@ def at_scenario_rate(traj: Trajectory, twin: Twin) -> Trajectory:
 
 
 def check_task_window(twin: Twin, traj: Trajectory) -> None:
-    """The task's final window (``settle_time``) must be shorter than the motion, or its
-    success rule reaches back to the start, where the object rests untouched on its
+    """The task's final window (``settle_time``) must be at most half the motion, or its
+    success rule reaches back toward the start, where the object rests untouched on its
     support, and no run can succeed (an audit or validation would blame every sample).
+    The sparse ``persistence`` likewise: an excursion that must last most of the motion
+    to count would pass nearly any slip.
 
     Raises:
         ScenarioError: naming both durations.
@@ -120,17 +122,17 @@ def check_task_window(twin: Twin, traj: Trajectory) -> None:
     if float(traj.fps) * float(twin.model.opt.timestep) > 1.0 + 1e-9:
         return  # rows faster than the physics steps: the rollout refuses it, naming both rates
     duration = traj.n_steps / traj.fps
-    if twin.task.settle_time >= duration:
+    if twin.task.settle_time > 0.5 * duration:
         raise ScenarioError(
             f"[task] settle_time: {twin.task.settle_time:g} s, but the trajectory{_source(traj)} "
-            f"lasts {duration:g} s; expected a final window shorter than the motion (default "
-            f"0.05 s)")
+            f"lasts {duration:g} s; expected a final window of at most half the motion "
+            f"(default 0.05 s)")
     persistence = twin.scenario.sparse.persistence
-    if persistence >= duration:
+    if persistence > 0.5 * duration:
         raise ScenarioError(
             f"[sparse] persistence: {persistence:g} s, but the trajectory{_source(traj)} lasts "
             f"{duration:g} s; expected a time a contact-FOS excursion must last to count "
-            f"(default 0.02 s), shorter than the motion (else no excursion ever counts)")
+            f"(default 0.02 s), at most half the motion (else almost no excursion counts)")
     creep = twin.scenario.sparse.creep_horizon * float(twin.model.opt.timestep)
     if creep >= duration:
         raise ScenarioError(

@@ -147,6 +147,10 @@ def _as_rate(value: Any, *, what: str, error: type[Exception]) -> float:
     """Converts a frame rate to a finite positive float [Hz]."""
     if isinstance(value, (bool, np.bool_)):
         raise error(f"{what}: expected a finite number > 0 [Hz], got bool {value!r}")
+    if isinstance(value, (str, bytes, np.str_, np.bytes_)) or (
+            isinstance(value, np.ndarray) and value.dtype.kind in "USO"):
+        # "50" would convert, but a rate typed as text is a caller's slip worth naming
+        raise error(f"{what}: expected a finite number > 0 [Hz], got text {value!r}")
     try:
         rate = float(value)
     except (TypeError, ValueError):

@@ -8,11 +8,13 @@ from __future__ import annotations
 import dataclasses
 import math
 
+import numpy as np
 import pytest
 
-from critmoment.exceptions import ParameterError, ScenarioError
+from critmoment.exceptions import ParameterError, ScenarioError, TrajectoryError
 from critmoment.params import MassParameter, Prior, UncertaintyBox
 from critmoment.scenario import CostParams, SparseSettings
+from critmoment.trajectory import Trajectory
 
 
 def test_a_prior_given_by_name_is_the_prior(scenario):
@@ -133,3 +135,9 @@ def test_an_empty_scenario_path_is_an_error_not_the_current_folder():
     with pytest.raises(ScenarioError, match=r"scenario: expected a scenario.toml, its folder "
                        r"or a bundled scenario's name .*got str ''"):
         load_scenario("")
+
+
+@pytest.mark.parametrize("fps", ["50", b"50", np.array("50")])
+def test_a_rate_typed_as_text_is_named(fps):
+    with pytest.raises(TrajectoryError, match=r"fps: expected a finite number > 0 \[Hz\], got text"):
+        Trajectory(np.zeros((10, 2)), fps=fps)

@@ -622,14 +622,15 @@ def test_a_lift_height_the_arm_cannot_reach_is_an_error(tmp_path):
         load_scenario(folder)
 
 
-def test_a_settle_time_as_long_as_the_motion_is_an_error(tmp_path, demo_traj):
+@pytest.mark.parametrize("settle", ["100.0", "7.9", "4.5"])
+def test_a_settle_time_as_long_as_the_motion_is_an_error(tmp_path, demo_traj, settle):
     """The success rule's final window would reach back to the untouched start: every run
     failed and the audit said UNSAFE (exit 1) where the scenario was wrong (exit 2)."""
     from critmoment.analysis import AnalyzeOptions, analyze
 
-    folder = _toml(tmp_path, ('receiver = "left"', 'receiver = "left"\nsettle_time = 100.0'))
-    with pytest.raises(ScenarioError, match=r"settle_time: 100 s, but the trajectory .*lasts "
-                       r"8 s"):
+    folder = _toml(tmp_path, ('receiver = "left"', f'receiver = "left"\nsettle_time = {settle}'))
+    with pytest.raises(ScenarioError, match=rf"settle_time: {float(settle):g} s, but the "
+                       r"trajectory .*lasts 8 s; expected a final window of at most half"):
         analyze(demo_traj, twin=Twin(load_scenario(folder)),
                 options=AnalyzeOptions(n_samples=8, check_feasibility=False))
 
@@ -650,13 +651,14 @@ def test_the_tasks_up_is_against_the_models_gravity(tmp_path):
     assert load_scenario(source).task.up == (0.0, 0.0, 1.0)
 
 
-def test_a_persistence_as_long_as_the_motion_is_an_error(tmp_path, demo_traj):
+@pytest.mark.parametrize("persistence", ["100.0", "7.9"])
+def test_a_persistence_as_long_as_the_motion_is_an_error(tmp_path, demo_traj, persistence):
     """No contact-FOS excursion could ever last that long: the criterion would be off."""
     from critmoment.analysis import AnalyzeOptions, analyze
 
-    folder = _toml(tmp_path, ("[sparse]", "[sparse]\npersistence = 100.0"))
-    with pytest.raises(ScenarioError, match=r"\[sparse\] persistence: 100 s, but the "
-                       r"trajectory .*lasts 8 s"):
+    folder = _toml(tmp_path, ("[sparse]", f"[sparse]\npersistence = {persistence}"))
+    with pytest.raises(ScenarioError, match=rf"\[sparse\] persistence: {float(persistence):g} s, "
+                       r"but the trajectory .*lasts 8 s"):
         analyze(demo_traj, twin=Twin(load_scenario(folder)),
                 options=AnalyzeOptions(n_samples=8, check_feasibility=False))
 
