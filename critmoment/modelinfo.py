@@ -11,7 +11,9 @@ as written, and says what it guessed and what the user should check:
 * grippers: actuators on slides, tendons, or joints named like a gripper
   (gripper/finger/jaw/claw/hand), grouped by the body that carries their fingers; each
   gripper is given by that body (every collision geom of its subtree) and drives one
-  normalised channel whose closed/open controls are measured on the model;
+  normalised channel whose closed/open controls are measured on the model; an
+  ``<adhesion>`` actuator (suction cup, magnet) is a gripper on its body (its own collision
+  geoms), closed at its largest control, open at none;
 * one joint channel per remaining actuator, in actuator order (position-like actuators
   only: a torque motor under a joint-position convention is refused at load);
 * force limits from the MJCF (``forcerange``/``actuatorfrcrange``) where present, and a
@@ -373,6 +375,7 @@ def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
     groups = _unnest(model, groups, candidates, notes)
     guesses: list[GripperGuess] = []
     taken: set[str] = set()
+    guesses += _suction_grippers(model, infos, taken, notes)
     for hand, acts in groups.items():
         geoms = _collision_geoms(model, _subtree(model, hand))
         if len(geoms) < 2:
@@ -394,6 +397,42 @@ def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
             closed=tuple(closed), open=tuple(open_),
             geoms=tuple(model.geom(g).name for g in geoms)))
     return guesses, notes
+
+
+def _suction_grippers(model: mujoco.MjModel, infos, taken: set[str], notes: list[str]
+                      ) -> list[GripperGuess]:
+    """One gripper per ``<adhesion>`` actuator (a suction cup or magnet): its body holds
+    by pulling on the contacts of its own collision geoms, nothing opens or closes. Closed
+    is the largest control (the strongest pull), open no pull (0, or the range's low end
+    when 0 is outside it)."""
+    out = []
+    for info in infos:
+        if info.kind is not act_info.ActuatorKind.ADHESION:
+            continue
+        body = int(model.actuator_trnid[info.index, 0])
+        own = np.zeros(model.nbody, bool)
+        own[body] = True  # adhesion pulls on the contacts of the body's own geoms only
+        geoms = _collision_geoms(model, own)
+        if not geoms:
+            notes.append(f"adhesion actuator {info.label!r} pulls on body "
+                         f"{model.body(body).name!r}, which has no collision geom: not a "
+                         "suction gripper")
+            continue
+        low, high = (info.ctrlrange if info.ctrlrange else (0.0, 1.0))
+        if high <= 0.0:
+            notes.append(f"adhesion actuator {info.label!r} has no positive control "
+                         f"(ctrlrange {low:g}..{high:g}): it never pulls")
+            continue
+        name = model.body(body).name or f"body{body}"
+        out.append(GripperGuess(
+            name=_short(name.split("/")[0] if "/" in name else name, taken), body=name,
+            actuators=(model.actuator(info.index).name,), closed=(float(high),),
+            open=(float(min(max(0.0, low), high)),),
+            geoms=tuple(model.geom(g).name for g in geoms)))
+        notes.append(f"adhesion actuator {info.label!r}: a suction gripper on body {name!r} "
+                     f"(closed = full pull {high:g}, open = {out[-1].open[0]:g}); it holds only "
+                     f"what touches its {len(geoms)} geom(s)")
+    return out
 
 
 def _compile(path: Path, **kwargs) -> mujoco.MjModel:
@@ -666,10 +705,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     grippers = [g for g in info.grippers]
     if not grippers:
         why = [n for n in info.notes if "look like a gripper" in n]
-        why += [f"actuator {a.name!r} is an <adhesion> (suction) on body {a.target!r}: init does "
-                f"not guess a suction gripper; give it [grippers.<name>] with that body and a "
-                f"normalised channel (closed = [1], open = [0])"
-                for a in info.actuators if a.kind is act_info.ActuatorKind.ADHESION]
+        why += [n for n in info.notes if n.startswith("adhesion actuator")]
         raise ScenarioError(
             "found no gripper: expected actuators on slide joints, tendons, or joints/bodies "
             "named like grip/finger/jaw/claw/hand that open and close their geoms"
@@ -680,10 +716,13 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     mujoco.mj_forward(model, data)
     dist = {g.name: float(np.linalg.norm(data.xpos[model.body(g.body).id] - data.xpos[bid]))
             for g in grippers}
+    suction = {a.name for a in info.actuators if a.kind is act_info.ActuatorKind.ADHESION}
     for g in grippers:
+        how = ("suction: closed = full pull, open = none" if set(g.actuators) <= suction
+               else "measured")
         guesses.append(f"gripper {g.name!r}: body {g.body!r} ({len(g.geoms)} collision geoms), "
                        f"actuators {', '.join(g.actuators)}, closed at {list(g.closed)}, open "
-                       f"at {list(g.open)} (measured), {dist[g.name]:.3f} m from the object")
+                       f"at {list(g.open)} ({how}), {dist[g.name]:.3f} m from the object")
     guessed_supports = not supports
     if not supports:
         supports = _resting_supports(model, bid, key)

@@ -856,3 +856,73 @@ def test_init_out_in_a_folder_that_takes_no_files_names_the_out_path(capsys):
     err = capsys.readouterr().err
     assert "error: --out: cannot write the scenario file /proc/s.toml in /proc (" in err
     assert ".tmp" not in err
+
+
+_SUCTION_GANTRY = """<mujoco model="suction_gantry">
+  <option timestep="0.002" cone="elliptic" impratio="10"/>
+  <default><joint damping="5" armature="0.1"/></default>
+  <worldbody>
+    <geom name="table" type="box" pos="0.3 0.3 0.2" size="0.4 0.4 0.2"/>
+    <body name="carriage" pos="0 0 0.8">
+      <joint name="x" type="slide" axis="1 0 0" range="0 0.6"/>
+      <geom type="box" size="0.04 0.04 0.02" mass="3" contype="0" conaffinity="0"/>
+      <body name="quill" pos="0 0 0">
+        <joint name="z" type="slide" axis="0 0 1" range="-0.5 0"/>
+        <geom type="cylinder" size="0.015 0.1" pos="0 0 -0.1" mass="0.5" contype="0"
+              conaffinity="0"/>
+        <body name="cup" pos="0 0 -0.2">
+          <geom name="cup_pad" type="cylinder" size="0.018 0.006" pos="0 0 -0.006" mass="0.02"
+                margin="0.002"/>
+        </body>
+      </body>
+    </body>
+    <body name="part" pos="0.2 0 0.415">
+      <freejoint/>
+      <geom name="part" type="box" size="0.02 0.02 0.015" mass="0.01"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="ax" joint="x" kp="3000" kv="300" ctrlrange="0 0.6" forcerange="-300 300"/>
+    <position name="az" joint="z" kp="3000" kv="150" ctrlrange="-0.5 0" forcerange="-150 150"/>
+    <adhesion name="suction" body="cup" ctrlrange="0 1" gain="3"/>
+  </actuator>
+</mujoco>
+"""
+
+
+def test_init_guesses_a_suction_gripper_that_lifts(tmp_path):
+    """A gantry whose only gripper is an <adhesion> cup: init said "found no gripper" and the
+    user had to write [grippers] and the channel by hand."""
+    (tmp_path / "gantry.xml").write_text(_SUCTION_GANTRY)
+    out = tmp_path / "scenario.toml"
+    result = init_scenario(tmp_path / "gantry.xml", object_body="part", task="pick_hold",
+                           out=out)
+    assert any("gripper 'cup': body 'cup'" in g and "suction" in g for g in result.guesses)
+    scenario = load_scenario(out)
+    assert [g.name for g in scenario.grippers] == ["cup"]
+    # over the part, down onto it, pull, up: the guessed channel (0 open .. 1 closed in the
+    # file's normalised convention) must hold it
+    w = [(0.0, 0.0, 1.0), (0.2, 0.0, 1.0), (0.2, -0.178, 1.0), (0.2, -0.178, 0.0),
+         (0.2, -0.10, 0.0), (0.2, -0.10, 0.0)]
+    actions = np.concatenate([np.linspace(a, b, 25) for a, b in zip(w[:-1], w[1:])])
+    traj = Trajectory(actions, fps=50.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        run = rollout(traj, scenario)
+    assert run.completed
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        dropped = rollout(Trajectory(np.where(np.arange(3) == 2, 1.0, actions), fps=50.0),
+                          scenario)
+    assert not dropped.completed  # never pulling, the part stays on the table
+
+
+def test_an_adhesion_on_a_body_without_geoms_is_not_a_gripper(tmp_path):
+    xml = _SUCTION_GANTRY.replace('<geom name="cup_pad" type="cylinder" size="0.018 0.006" '
+                                  'pos="0 0 -0.006" mass="0.02"\n                margin="0.002"/>',
+                                  '<inertial pos="0 0 0" mass="0.02" diaginertia="1e-5 1e-5 1e-5"/>')
+    assert "cup_pad" not in xml
+    (tmp_path / "gantry.xml").write_text(xml)
+    with pytest.raises(ScenarioError, match=r"found no gripper.*adhesion actuator 'suction' "
+                       r"pulls on body 'cup', which has no collision geom"):
+        init_scenario(tmp_path / "gantry.xml", object_body="part", task="pick_hold")
