@@ -4,7 +4,8 @@ ones and unlike ``benchmarks/probe_robots`` (s1..s4).
     python benchmarks/probe_robots2/run.py [--samples 32] [--only g1/scenario.toml ...]
 
 * ``g1``: a Cartesian gantry (x, y, z slides and a yaw hinge) with an ``<adhesion>`` suction
-  cup (hand-written scenario: ``critmoment init`` finds no gripper), a 0.01 kg box dropped
+  cup (hand-written scenario, from before ``critmoment init`` guessed suction grippers),
+  a 0.01 kg box dropped
   into a bin; variants: hand-written ``<general>`` affine servos (``scene_gen``), 0.5 ms step
   with warm start off and a pyramidal cone (``scene_fine``), ``pick_hold`` (``scen_hold``);
   a pure three-slide gantry (``scene_3ax``, audited on its slides); refused: ``<velocity>``
