@@ -79,7 +79,7 @@ REPORT_SCHEMA = "critmoment.report/1"
 #: every trial it has seen)
 MAX_MAP_RESOLUTION = 400
 MAX_CRITICAL_GRID = 1025
-MAX_SEARCH_TRIALS = 4096
+MAX_SEARCH_TRIALS = 4096  # search.MAX_TRIALS (search is imported lazily: Optuna, CasADi)
 
 
 @dataclasses.dataclass(frozen=True)

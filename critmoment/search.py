@@ -139,9 +139,19 @@ class SearchMethod(enum.Enum):
 # --------------------------------------------------------------------------
 
 
-def _check_int(name: str, value: Any, minimum: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
-        raise ParameterError(f"{name}: expected an integer >= {minimum}, got {value!r}")
+#: the most trials, boundary points or grid points per parameter a search takes: Optuna keeps
+#: every trial in memory and its TPE slows with each; more says nothing a finer moment set
+#: would not (the audit's own bound, ``analysis.MAX_SEARCH_TRIALS``, is this)
+MAX_TRIALS = 4096
+#: the most IPOPT iterations per start
+MAX_ITER = 100_000
+
+
+def _check_int(name: str, value: Any, minimum: int, most: int | None = None) -> int:
+    if (isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum
+            or (most is not None and value > most)):
+        within = f">= {minimum}" if most is None else f"in [{minimum}, {most}]"
+        raise ParameterError(f"{name}: expected an integer {within}, got {value!r}")
     return int(value)
 
 
@@ -898,9 +908,9 @@ def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SM
     import casadi as ca
 
     smoothing = _check_positive("smoothing", smoothing)
-    n_boundary = _check_int("n_boundary", n_boundary, 1)
-    max_iter = _check_int("max_iter", max_iter, 1)
-    grid = _check_int("grid", grid, 2)
+    n_boundary = _check_int("n_boundary", n_boundary, 1, MAX_TRIALS)
+    max_iter = _check_int("max_iter", max_iter, 1, MAX_ITER)
+    grid = _check_int("grid", grid, 2, 1025)
     (m_lo, m_hi), (f_lo, f_hi) = bounds.mass_range, bounds.friction_range
     lo, hi = np.array([m_lo, f_lo]), np.array([m_hi, f_hi])
     span = np.where(hi > lo, hi - lo, 1.0)
@@ -1160,8 +1170,8 @@ def _search(evaluator, steps: Any, box: UncertaintyBox | None, *, method: Search
     (steps, samples) to evaluate, is sent their :class:`SparseResult`, and returns the
     :class:`SearchResult` (:func:`run_searches` drives it)."""
     method = _check_method(method)
-    n_trials = _check_int("n_trials", n_trials, 1)
-    batch_size = _check_int("batch_size", batch_size, 1)
+    n_trials = _check_int("n_trials", n_trials, 1, MAX_TRIALS)
+    batch_size = _check_int("batch_size", batch_size, 1, MAX_TRIALS)
     seed = _check_int("seed", seed, 0)
     steps_arr = evaluator.check_steps(steps)
     box = _search_box(evaluator, box)
@@ -1338,8 +1348,8 @@ def surrogate_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = Non
     import casadi as ca
 
     grid = _check_int("grid", grid, 3)
-    starts = _check_int("starts", starts, 1)
-    max_iter = _check_int("max_iter", max_iter, 1)
+    starts = _check_int("starts", starts, 1, MAX_TRIALS)
+    max_iter = _check_int("max_iter", max_iter, 1, MAX_ITER)
     steps_arr = evaluator.check_steps(steps)
     box = _search_box(evaluator, box)
     if grid ** box.ndim > 4096:

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import critmoment as cm
-from critmoment import analysis, budget, report, validation
+from critmoment import analysis, budget, report, search, validation
 from critmoment import sparse as sp
 from critmoment.exceptions import (
     CritmomentWarning,
@@ -212,3 +212,21 @@ def test_critical_values_alone_are_within_max_batch_steps(twin, demo_recording):
                                       r"4,000 .*2 placement\(s\) x 1 moment\(s\) x 2 "
                                       r"parameter\(s\) x n_grid 100 x horizon 10"):
         sp.critical_values(demo_recording, twin, [1707], n_grid=100)
+
+
+@pytest.mark.parametrize("call, match", [
+    (lambda ev: search.search_worst_case(ev, [1707], n_trials=10**7), r"n_trials: .*\[1, 4096\]"),
+    (lambda ev: search.search_worst_case(ev, [1707], batch_size=10**6), r"batch_size: .*\[1, 4096\]"),
+    (lambda ev: search.surrogate_worst_case(ev, [1707], starts=10**6), r"starts: .*\[1, 4096\]"),
+    (lambda ev: search.surrogate_worst_case(ev, [1707], max_iter=10**9), r"max_iter: .*100000\]"),
+])
+def test_the_searches_called_alone_are_bounded(twin, demo_recording, call, match):
+    """The audit's search options were bounded, but the search functions called alone took
+    any budget (Optuna keeps every trial in memory)."""
+    ev = sp.SparseEvaluator(demo_recording, twin)
+    with pytest.raises(ParameterError, match=match):
+        call(ev)
+
+
+def test_the_audits_search_bound_is_the_searchs():
+    assert analysis.MAX_SEARCH_TRIALS == search.MAX_TRIALS
