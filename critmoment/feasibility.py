@@ -581,7 +581,7 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
             cause = (f"the actuator is at its force limit {e.force_limit:g} {fu} "
                      f"({e.limit_source}) for {e.saturation_total:.3g} s in all: too weak "
                      f"for the load (gravity, the object); check [limits], the model's "
-                     f"forcerange and gear")
+                     f"forcerange and gear{_explicit_hint(model)}")
         elif e.damping_lag >= DAMPING_SHARE * e.lag_in_run:
             cause = (f"the servo's velocity damping: at the target's speed of up to "
                      f"{e.target_speed:.3g} {e.unit}/s it trails by about (kv + joint damping) "
@@ -614,7 +614,8 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
     elif e.saturation_duration > opt.saturation_duration:
         cause = (f"the contact {e.blocked_by} holds it back" if e.blocked_by else
                  _oscillation(e, fu) if e.force_flips >= FLIP_SHARE else
-                 "too weak for the load; check [limits], the model's forcerange and gear")
+                 "too weak for the load; check [limits], the model's forcerange and gear"
+                 + _explicit_hint(model))
         out.append(
             f"the twin cannot reproduce the nominal motion: actuator {e.actuator!r} (joint "
             f"{e.joint!r}) is at (or above) its force limit {e.force_limit:g} {fu} ({e.limit_source}) "
@@ -624,6 +625,18 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
         out = [msg.replace("the twin cannot reproduce the nominal motion: ",
                            "the nominal motion is held back by a contact: ") for msg in out]
     return out
+
+
+def _explicit_hint(model: mujoco.MjModel) -> str:
+    """Under an explicit integrator a stiff servo's velocity damping can itself drive the
+    actuator to its limit; RK4 leaves the forces of its last stage in mjData, where a
+    step-to-step oscillation does not show as one."""
+    kind = int(model.opt.integrator)
+    if kind not in (int(mujoco.mjtIntegrator.mjINT_EULER), int(mujoco.mjtIntegrator.mjINT_RK4)):
+        return ""
+    name = "RK4" if kind == int(mujoco.mjtIntegrator.mjINT_RK4) else "Euler"
+    return (f"; or the model's {name} integrator: it treats a stiff servo's velocity damping "
+            f"explicitly, which can saturate it (implicitfast does not)")
 
 
 def _oscillation(e: JointFeasibility, fu: str) -> str:

@@ -704,6 +704,7 @@ class Scenario:
                 raise ScenarioError(f"{where}: unknown {what} {name!r}; valid names: "
                                     + _listing(pool))
 
+        _check_options(model)
         need(self.object_body, bodies, "body", "[object] body")
         need(self.object_geom, geoms, "geom", "[object] geom")
         body = model.body(self.object_body)
@@ -776,6 +777,24 @@ class Scenario:
                     f"{' (the object)' if key[1] == 'object' else ''}; expected one "
                     f"parameter per quantity (the second would overwrite the first)")
             written[key] = p.name
+
+
+#: <option> <flag .../> settings under which no grasp or no servo can act at all
+_NO_GRASP_FLAGS = (("contact", mujoco.mjtDisableBit.mjDSBL_CONTACT, "no contact is made: no "
+                    "gripper can hold the object and nothing supports it"),
+                   ("constraint", mujoco.mjtDisableBit.mjDSBL_CONSTRAINT, "no contact, joint "
+                    "limit or equality acts: no gripper can hold the object"),
+                   ("actuation", mujoco.mjtDisableBit.mjDSBL_ACTUATION, "no actuator acts: "
+                    "the robot cannot follow any trajectory"))
+
+
+def _check_options(model: mujoco.MjModel) -> None:
+    """Simulation options under which no grasp or no motion can happen at all (contacts,
+    constraints or actuation disabled): an audit would blame every sample on the model."""
+    for name, bit, why in _NO_GRASP_FLAGS:
+        if model.opt.disableflags & int(bit):
+            raise ScenarioError(f"<option> <flag {name}=\"disable\"/>: {why}; expected a model "
+                                f"with {name} enabled")
 
 
 def _listing(pool: Sequence[str], limit: int = 40) -> str:

@@ -8,7 +8,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from critmoment.exceptions import InputFileError, ParameterError, ScenarioError
+from critmoment.exceptions import (
+    InputFileError,
+    ParameterError,
+    ScenarioError,
+)
 from critmoment.params import (
     ComOffsetParameter,
     FrictionParameter,
@@ -705,3 +709,43 @@ def test_an_uncertainty_table_naming_its_target_twice_is_an_error(tmp_path):
     with pytest.raises(ScenarioError, match=r"\[uncertainty.mass\]: expected one of body = "
                        r"\.\.\. and object = \.\.\., got both \('box', 'table'\)"):
         load_scenario(folder)
+
+
+@pytest.mark.parametrize("flag, match", [
+    ("contact", r"no contact is made: no gripper can hold the object"),
+    ("constraint", r"no contact, joint limit or equality acts"),
+    ("actuation", r"no actuator acts: the robot cannot follow any trajectory"),
+])
+def test_a_model_that_disables_contacts_or_actuation_is_an_error(tmp_path, flag, match):
+    """With <flag contact="disable"/> every run dropped the cube and the audit said UNSAFE
+    for every sample, blaming the grip, where the model could hold nothing."""
+    option = '<option timestep="0.002" integrator="implicitfast" cone="elliptic" impratio="10"/>'
+    off = option.replace("/>", f'><flag {flag}="disable"/></option>')
+    folder = _copy(tmp_path, {"scene.xml": [(option, off)]},
+                   source=bundled_scenario_path("panda_pick_place").parent)
+    with pytest.raises(ScenarioError, match=rf'<flag {flag}="disable"/>: {match}'):
+        Twin(load_scenario(folder))
+
+
+def test_a_saturation_under_an_explicit_integrator_names_it(tmp_path):
+    """Under RK4 the Panda's stiff servos reach their limits at 2 ms (their velocity damping
+    is explicit there), and RK4's last-stage forces do not flip from step to step: the
+    message said only "too weak for the load"."""
+    from critmoment import panda_demo
+    from critmoment.feasibility import check_feasibility
+    from critmoment.recording import rollout
+
+    option = '<option timestep="0.002" integrator="implicitfast" cone="elliptic" impratio="10"/>'
+    source = bundled_scenario_path("panda_pick_place").parent
+    folder = _copy(tmp_path, {"scene.xml": [(option, option.replace("implicitfast", "RK4"))]},
+                   source=source)
+    scenario = load_scenario(folder)
+    twin = Twin(scenario)
+    problems = check_feasibility(rollout(panda_demo.make_pick_place(0), twin=twin), twin,
+                                 raise_on_failure=False).problems
+    assert problems and all("too weak for the load" in p and "; or the model's RK4 integrator: "
+                            "it treats a stiff servo's velocity damping explicitly" in p
+                            for p in problems)
+    plain = Twin(load_scenario(source))
+    assert not check_feasibility(rollout(panda_demo.make_pick_place(0), twin=plain), plain,
+                                 raise_on_failure=False).problems
