@@ -215,6 +215,8 @@ class Twin:
         except ValueError as exc:
             raise ScenarioError(f"could not compile {scenario.mjcf} with sensors: {exc}") from exc
         self.model = model
+        #: object start positions already checked against the arms' reach
+        self._starts_checked: set[tuple[float, ...]] = set()
         scenario.validate_names(model)
         self._index(model)
         self._param_ids = [p.resolve(model) for p in scenario.box.parameters]
@@ -641,7 +643,7 @@ class Twin:
         """An object start no gripper can reach is an error (a pose in mm), not an audit in
         which every sample fails. Checked once per start position."""
         position = tuple(float(v) for v in np.asarray(pose, dtype=float).reshape(-1)[:3])
-        checked = self.__dict__.setdefault("_starts_checked", set())
+        checked = self._starts_checked
         if position in checked or len(position) != 3 or not all(map(math.isfinite, position)):
             return
         from critmoment.scenario import start_out_of_reach
