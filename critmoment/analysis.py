@@ -578,7 +578,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             # unlifted or sticking: only a rollout can say whether it really fails
             worst_unlifted[s] = dopt.only_a_rollout_decides(
                 bool(one.unlifted_failure[0, 0]), bool(one.sticking_failure[0, 0]),
-                bool(one.short_slip(dopt.slip_confirm)[0, 0]))
+                bool(one.short_slip(dopt.slip_confirm)[0, 0]),
+                bool(one.margin_failure[0, 0]))
             if dominant is None:
                 # only the search's worst case fails here: its own evaluation says why
                 dominant = _dominant(one, 0, one.failed[0])
@@ -1085,7 +1086,7 @@ def _sparse_fails(res: sp.SparseResult, options: vd.DecisionOptions) -> np.ndarr
     one that only their own rollout decides, :func:`critmoment.verdict.samples_to_rerun`)."""
     reruns = vd.samples_to_rerun(res, options, nominal_completed=True)
     return (np.asarray(res.failed_any, dtype=bool)
-            & ~(reruns.unlifted | reruns.sticking | reruns.slipping))
+            & ~(reruns.unlifted | reruns.sticking | reruns.slipping | reruns.margin))
 
 
 class _Rollouts:

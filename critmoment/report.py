@@ -815,6 +815,9 @@ def _verification_text(v) -> str:
     if v.get("slipping"):
         text += (f"; {v['slipping']} failing only by a slip under the ground truth's "
                  f"tolerance re-run in full, {v['slipping_failed']} of them fail")
+    if v.get("margin"):
+        text += (f"; {v['margin']} failing only by the cost's margin with every motor under "
+                 f"its limit re-run in full, {v['margin_failed']} of them fail")
     if v.get("inherited"):
         text += (f"; {v['inherited']} failing only at moments where the nominal run fails too "
                  f"re-run in full, {v['inherited_failed']} of them fail")

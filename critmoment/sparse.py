@@ -222,6 +222,14 @@ SLIP_FLOOR = 0.1
 #: margin alone (a sliding contact sits on the cone, FOS 1 to solver precision; a grasp
 #: whose pads partly slide reads a few per cent above it)
 STICKING_MARGIN = 0.05
+#: how far under its force limit a motor must stay (motor FOS at least 1 + this over the
+#: whole evaluation) for a motor failure to be a *margin* one: the actuator never reached its
+#: limit, the cost crossed the threshold through its margin (the motor term alone is 0.9 at
+#: FOS 1.05 with the default β = 2) or through the sum of both terms (gymnasium-robotics'
+#: kitchen Franka on an elliptic cone: a wrist at FOS 1.17 beside a grip at FOS 2.65, cost
+#: 1.03; 39 of 64 samples failed so and really succeed). Whether it really fails is for the
+#: sample's own run to say
+MOTOR_MARGIN = 0.05
 #: largest displacement [m] of the object in its holding gripper over an evaluation that
 #: is a soft contact's give under load, not a slide: on an elliptic cone, a contact failure
 #: whose object, measured at every step decided, moved no more is a sticking one whatever
@@ -471,6 +479,25 @@ class SparseResult:
         if self.sticking_failure is None:
             return np.zeros(self.n_samples, dtype=bool)
         return self._fails_only_through(self.sticking_failure, self.sticking_failure)
+
+    @property
+    def margin_failure(self) -> np.ndarray:
+        """(m, n) bool: the pair fails through the motor term (``Failure.MOTOR``) while
+        every motor stayed under its force limit by :data:`MOTOR_MARGIN` or more over the
+        evaluation: the cost's margin, not a saturation."""
+        if self.failure is None:
+            return np.zeros(self.cost.shape, dtype=bool)
+        with np.errstate(invalid="ignore"):
+            clear = np.nan_to_num(self.fos_motor, nan=0.0) >= 1.0 + MOTOR_MARGIN
+        return (self.failure == Failure.MOTOR) & clear
+
+    def failed_margin_only(self) -> np.ndarray:
+        """(n,) bool: the sample fails, only through margin failures
+        (:attr:`margin_failure`) and unlifted and sticking ones, at least one of them a
+        margin failure: whether it really fails is for a full rollout to say."""
+        margin = self.margin_failure
+        soft = margin if self.sticking_failure is None else margin | self.sticking_failure
+        return self._fails_only_through(soft, margin)
 
     def short_slip(self, limit: float) -> np.ndarray:
         """(m, n) bool: the pair fails by its measured slip alone (``Failure.SLIP``), and

@@ -102,6 +102,10 @@ class DecisionOptions:
             ``slip_confirm`` (``SparseResult.failed_slip_only``: more than the sparse slip
             tolerance over the horizon, less than the ground truth's) are decided by their
             own full rollout too.
+        verify_margin: with ``verify``, samples whose only failures are margin ones (the
+            cost crossed the threshold through its motor term while every motor stayed
+            under its limit, ``SparseResult.margin_failure``) are decided by their own
+            full rollout too.
         slip_confirm: the slip a sparse slip failure must reach to stand on its own [m]
             (the ground truth's ``OutcomeCriteria.slip_tolerance``, 1 cm).
         require_task: a nominal run that does not complete the task fails every sample.
@@ -122,6 +126,7 @@ class DecisionOptions:
     verify_unlifted: bool = True
     verify_sticking: bool = True
     verify_slip: bool = True
+    verify_margin: bool = True
     slip_confirm: float = 0.01
     require_task: bool = True
     confidence: float = 0.95
@@ -141,7 +146,8 @@ class DecisionOptions:
                 self.slip_confirm, numbers.Real) or not self.slip_confirm > 0:
             raise ParameterError(f"slip_confirm: expected a length > 0 m, got "
                                  f"{self.slip_confirm!r}")
-        for name in ("verify_unlifted", "verify_sticking", "verify_slip", "require_task",
+        for name in ("verify_unlifted", "verify_sticking", "verify_slip", "verify_margin",
+                     "require_task",
                      "chain",
                      "nominal_by_run"):
             if not isinstance(getattr(self, name), (bool, np.bool_)):
@@ -152,19 +158,19 @@ class DecisionOptions:
 
     @property
     def rolls_squeezes(self) -> bool:
-        """Some failures that only a rollout can decide (unlifted, sticking or short-slip
-        ones) are decided by rollouts."""
+        """Some failures that only a rollout can decide (unlifted, sticking, short-slip or
+        margin ones) are decided by rollouts."""
         return self.verify is not None and (self.verify_unlifted or self.verify_sticking
-                                            or self.verify_slip)
+                                            or self.verify_slip or self.verify_margin)
 
     def only_a_rollout_decides(self, unlifted: bool, sticking: bool,
-                               slipping: bool = False) -> bool:
+                               slipping: bool = False, margin: bool = False) -> bool:
         """Whether a failure, unlifted, sticking (a contact failure inside an elliptic
-        cone) and/or a short slip (under ``slip_confirm``), is one that the options decide
-        by its own rollout."""
+        cone), a short slip (under ``slip_confirm``) and/or a margin one (a motor under its
+        limit), is one that the options decide by its own rollout."""
         return self.verify is not None and bool(
             (self.verify_unlifted and unlifted) or (self.verify_sticking and sticking)
-            or (self.verify_slip and slipping))
+            or (self.verify_slip and slipping) or (self.verify_margin and margin))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -252,6 +258,9 @@ class Reruns(NamedTuple):
     unlifted: np.ndarray  #: fail only unlifted (``SparseResult.failed_unlifted_only``)
     sticking: np.ndarray  #: fail only sticking (``SparseResult.failed_sticking_only``)
     slipping: np.ndarray  #: fail only by short slips (``SparseResult.failed_slip_only``)
+    #: fail only by margin failures (a motor under its limit,
+    #: ``SparseResult.failed_margin_only``)
+    margin: np.ndarray
     #: fail only at moments where the nominal parameters fail too, in a nominal run that does
     #: not complete its task (:func:`inherited_failures`)
     inherited: np.ndarray
@@ -259,7 +268,8 @@ class Reruns(NamedTuple):
     @property
     def any(self) -> np.ndarray:
         """(n,) bool: any of them."""
-        return self.near | self.unlifted | self.sticking | self.slipping | self.inherited
+        return (self.near | self.unlifted | self.sticking | self.slipping | self.margin
+                | self.inherited)
 
 
 def _every_sample_fails(options: DecisionOptions, nominal_completed: bool) -> bool:
@@ -306,17 +316,19 @@ def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
     Returns:
         The :class:`Reruns`: samples that pass with a cost ≥ ``verify × threshold``,
         samples whose only failures are unlifted ones, samples whose only failures are
-        sticking (and unlifted) ones, and samples whose only failures are short slips (and
-        sticking and unlifted ones). All empty when ``verify`` is None, or when the
+        sticking (and unlifted) ones, samples whose only failures are short slips (and
+        sticking and unlifted ones), samples whose only failures are margin ones (a motor
+        under its limit; and sticking and unlifted ones) and samples that fail only where
+        a nominal run that fails its task fails too. All empty when ``verify`` is None, or when the
         nominal run fails the task and ``require_task`` makes every sample fail (without
         ``chain``: with it, each sample's own run applies the task's rule).
     """
     n = 0 if sweep is None else sweep.n_samples
     none = np.zeros(n, bool)
     if sweep is None or sweep.n_moments == 0:
-        return Reruns(none, none.copy(), none.copy(), none.copy(), none.copy())
+        return Reruns(none, none.copy(), none.copy(), none.copy(), none.copy(), none.copy())
     if options.verify is None or _every_sample_fails(options, nominal_completed):
-        return Reruns(none, none.copy(), none.copy(), none.copy(), none.copy())
+        return Reruns(none, none.copy(), none.copy(), none.copy(), none.copy(), none.copy())
     cost = sweep.worst_cost()
     near = ~sweep.failed_any & (cost >= options.verify * options.threshold)
     unlifted = (sweep.failed_unlifted_only.copy() if options.verify_unlifted
@@ -325,9 +337,11 @@ def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
                 else none.copy())
     slipping = (sweep.failed_slip_only(options.slip_confirm) & ~sticking & ~unlifted
                 if options.verify_slip else none.copy())
+    margin = (sweep.failed_margin_only() & ~sticking & ~unlifted & ~slipping
+              if options.verify_margin else none.copy())
     inherited = (inherited_failures(sweep, nominal_failed, nominal_completed=nominal_completed)
-                 & ~(unlifted | sticking | slipping))
-    return Reruns(near, unlifted, sticking, slipping, inherited)
+                 & ~(unlifted | sticking | slipping | margin))
+    return Reruns(near, unlifted, sticking, slipping, margin, inherited)
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -374,7 +388,7 @@ class SampleRuns:
         those the failures rolled out (``chained_rolled_out``, ``chained_confirmed``) and
         the near passes rolled out (``chained_near``, ``chained_near_failed``)."""
         failed = np.asarray(failed, dtype=bool)
-        near, unlifted, sticking, slipping, inherited = self.reruns
+        near, unlifted, sticking, slipping, margin, inherited = self.reruns
         rolled_fail = self.suspect & self.chained_failed
         rolled_near = self.suspect & ~self.chained_failed
         return {"rollouts": int(self.rerun.sum()), "failed": int(failed[self.rerun].sum()),
@@ -385,6 +399,8 @@ class SampleRuns:
                 "sticking_failed": int(failed[sticking].sum()),
                 "slipping": int(slipping.sum()),
                 "slipping_failed": int(failed[slipping].sum()),
+                "margin": int(margin.sum()),
+                "margin_failed": int(failed[margin].sum()),
                 "inherited": int(inherited.sum()),
                 "inherited_failed": int(failed[inherited].sum()),
                 "chained": int(self.chained.sum()),
@@ -1090,6 +1106,8 @@ class Decision:
         unlifted: samples re-run because they failed only unlifted, (n,) bool.
         sticking: samples re-run because they failed only sticking, (n,) bool.
         slipping: samples re-run because they failed only by short slips, (n,) bool.
+        margin: samples re-run because they failed only by the cost's margin with every
+            motor under its limit, (n,) bool.
     """
 
     verdict: Verdict
@@ -1104,6 +1122,7 @@ class Decision:
     unlifted: np.ndarray
     sticking: np.ndarray
     slipping: np.ndarray
+    margin: np.ndarray
 
 
 def _nominal_fails(evidence: Evidence, options: DecisionOptions) -> tuple[bool, bool, bool]:
@@ -1150,7 +1169,7 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
     se = evidence.samples
     n = se.n_samples
     failed = failing_samples(se, options)
-    near, unlifted, sticking, slipping, _ = samples_to_rerun(
+    near, unlifted, sticking, slipping, margin, _ = samples_to_rerun(
         se.sweep, options, nominal_completed=se.nominal_completed,
         nominal_failed=se.nominal_failed)
     n_fail = int(failed.sum())
@@ -1234,7 +1253,7 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
                     p_success_interval=(float(interval[0]), float(interval[1])),
                     safe_region=region, safe_region_text=text, causes=causes,
                     region_to_check=to_check, near=near, unlifted=unlifted,
-                    sticking=sticking, slipping=slipping)
+                    sticking=sticking, slipping=slipping, margin=margin)
 
 
 def _is_whole_box(region: Mapping[str, tuple[float, float]], box: UncertaintyBox) -> bool:

@@ -271,3 +271,12 @@ def test_a_moment_failing_only_in_combination_does_not_say_never_crosses(audit):
     lines = [ln for ln in text.splitlines() if ln.startswith(("  1.", "  2."))]
     assert lines[0].endswith("critical: none of one parameter alone (the others at nominal)")
     assert lines[1].endswith("critical: never crosses")
+
+
+def test_the_verification_line_names_the_margin_reruns():
+    from critmoment.report import _verification_text
+
+    text = _verification_text({"near": 0, "cost_from": 0.72, "near_failed": 0, "margin": 39,
+                               "margin_failed": 0})
+    assert text.endswith("; 39 failing only by the cost's margin with every motor under its "
+                         "limit re-run in full, 0 of them fail")

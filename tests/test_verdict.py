@@ -519,6 +519,44 @@ def test_worst_case_rollouts_follow_each_switch():
     assert vd.worst_cases_to_rerun(moments, {100: True}, {100: True}, both, n_failed=1) == []
 
 
+def test_a_motor_failure_with_every_motor_under_its_limit_is_for_a_rollout():
+    """The cost crosses the threshold through the sum of its terms while no motor reaches
+    its limit (gymnasium-robotics' kitchen Franka, elliptic cone: a wrist at FOS 1.17 beside
+    a grip at FOS 2.65, cost 1.03): 39 of 64 samples were decided failing and really
+    succeed. Such a sample is decided by its own rollout; a motor at its limit is not."""
+    from critmoment.sparse import MOTOR_MARGIN, Failure
+
+    samples = np.array([[0.1, 1.0], [0.2, 1.0], [0.3, 1.0], [0.4, 1.0], [0.5, 1.0]])
+    # 0: margin at moment 0; 1: a motor at its limit; 2: margin, then a real contact
+    # failure; 3: margin and a sticking failure; 4: passes
+    cost = np.array([[1.03, 1.2, 1.03, 1.03, 0.1], [0.1, 0.1, 1.5, 1.2, 0.1]])
+    sweep = dataclasses.replace(
+        _sweep(cost, samples, sticking=np.array([[False] * 5,
+                                                 [False, False, False, True, False]])),
+        failure=np.array([[Failure.MOTOR, Failure.MOTOR, Failure.MOTOR, Failure.MOTOR,
+                           Failure.PASS],
+                          [Failure.PASS, Failure.PASS, Failure.CONTACT, Failure.CONTACT,
+                           Failure.PASS]], dtype=np.int8),
+        fos_motor=np.array([[1.17, 1.0, 1.17, 1.0 + MOTOR_MARGIN, 3.0], [3.0] * 5]))
+    np.testing.assert_array_equal(sweep.failed_margin_only(),
+                                  [True, False, False, True, False])
+    reruns = vd.samples_to_rerun(sweep, OPT, nominal_completed=True)
+    # a sample with both margin and sticking failures is one of the margin group
+    assert reruns.margin.tolist() == [True, False, False, True, False]
+    assert not reruns.sticking.any()
+    ev = vd.SampleEvidence(sweep=sweep, nominal_completed=True, rerun=reruns.any,
+                           rerun_failed=np.zeros(5, bool))
+    assert vd.failing_samples(ev, OPT).tolist() == [False, True, True, False, False]
+    off = dataclasses.replace(OPT, verify_margin=False)
+    assert not vd.samples_to_rerun(sweep, off, nominal_completed=True).margin.any()
+    assert OPT.only_a_rollout_decides(False, False, margin=True)
+    assert not off.only_a_rollout_decides(False, False, margin=True)
+    counts = vd.SampleRuns(reruns=reruns, chained=np.zeros(5, bool),
+                           chained_failed=np.zeros(5, bool), suspect=np.zeros(5, bool),
+                           rerun_failed=np.zeros(5, bool)).counts(np.zeros(5, bool))
+    assert (counts["margin"], counts["margin_failed"]) == (2, 0)
+
+
 def test_a_failure_only_by_a_slip_under_the_ground_truths_tolerance_is_for_a_rollout():
     """The sparse slip tolerance (5 mm over the horizon) is tighter than the ground truth's
     (1 cm for 50 ms): a sample that fails only by a slip between them is decided by its own
