@@ -465,9 +465,38 @@ def gripper_gap(model: mujoco.MjModel, actuators: Sequence[int], ctrl: Sequence[
     return float(np.sqrt((diff ** 2).sum(-1)).sum() / (n * (n - 1)))
 
 
+def control_span(model: mujoco.MjModel, i: int) -> tuple[float, float] | None:
+    """The controls that drive actuator ``i`` over its range: its ``ctrlrange``; without
+    one (mjlab's servos leave ctrl unlimited), for a position-like actuator on a limited
+    joint or tendon, the controls whose targets are that range's ends (ctrl = (−b1·length
+    − b0)/gain, length = gear·range); else None."""
+    if model.actuator_ctrllimited[i]:
+        lo, hi = (float(v) for v in model.actuator_ctrlrange[i])
+        return lo, hi
+    if not describe(model, i).kind.tracks_position:
+        return None
+    trn, tid = int(model.actuator_trntype[i]), int(model.actuator_trnid[i, 0])
+    if trn in (int(mujoco.mjtTrn.mjTRN_JOINT), int(mujoco.mjtTrn.mjTRN_JOINTINPARENT)):
+        if not model.jnt_limited[tid] or int(model.jnt_type[tid]) not in (
+                int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)):
+            return None
+        ends = model.jnt_range[tid]
+    elif trn == int(mujoco.mjtTrn.mjTRN_TENDON) and model.tendon_limited[tid]:
+        ends = model.tendon_range[tid]
+    else:
+        return None
+    gain = float(model.actuator_gainprm[i, 0])
+    b0, b1 = (float(v) for v in model.actuator_biasprm[i, :2])
+    gear = float(model.actuator_gear[i, 0]) or 1.0
+    if gain == 0.0 or b1 == 0.0:
+        return None
+    ctrl = sorted((-b1 * gear * float(e) - b0) / gain for e in ends)
+    return ctrl[0], ctrl[1]
+
+
 def _mid(model: mujoco.MjModel, i: int) -> float:
-    lo, hi = model.actuator_ctrlrange[i]
-    return float(0.5 * (lo + hi))
+    span = control_span(model, i)
+    return 0.0 if span is None else 0.5 * (span[0] + span[1])
 
 
 def closing_ends(model: mujoco.MjModel, actuators: Sequence[int], geom_ids: Sequence[int], *,
@@ -475,8 +504,9 @@ def closing_ends(model: mujoco.MjModel, actuators: Sequence[int], geom_ids: Sequ
                  ) -> tuple[list[float], list[float]]:
     """The control that closes and the one that opens each of a gripper's actuators.
 
-    Each actuator is driven alone to either end of its ``ctrlrange`` (the others at mid
-    range); the end at which the gripper's geoms are closer together closes it. Two
+    Each actuator is driven alone to either end of its ``ctrlrange`` (or, without one, of
+    :func:`control_span`; the others at mid range); the end at which the gripper's geoms
+    are closer together closes it. Two
     fingers on mirrored slides (ALOHA: one closes at its low end, the other at its high
     end) are each told apart this way.
 
@@ -484,15 +514,17 @@ def closing_ends(model: mujoco.MjModel, actuators: Sequence[int], geom_ids: Sequ
         (closed, open) control values, one per actuator.
 
     Raises:
-        ValueError: an actuator without a ctrlrange, or one that moves the geoms less
-            than ``tolerance`` [m] over its range.
+        ValueError: an actuator without a ctrlrange or a limited joint or tendon to take
+            one from, or one that moves the geoms less than ``tolerance`` [m] over its range.
     """
     closed, open_ = [], []
     base = [_mid(model, i) for i in actuators]
     for k, i in enumerate(actuators):
-        if not model.actuator_ctrllimited[i]:
-            raise ValueError(f"actuator {model.actuator(i).name!r} has no ctrlrange")
-        lo, hi = (float(v) for v in model.actuator_ctrlrange[i])
+        span = control_span(model, i)
+        if span is None:
+            raise ValueError(f"actuator {model.actuator(i).name!r} has no ctrlrange (and no "
+                             f"limited joint or tendon of a position servo to take one from)")
+        lo, hi = span
         gaps = []
         for end in (lo, hi):
             ctrl = list(base)
@@ -512,10 +544,11 @@ def closing_ends(model: mujoco.MjModel, actuators: Sequence[int], geom_ids: Sequ
 def moves_geoms(model: mujoco.MjModel, actuators: Sequence[int], geom_ids: Sequence[int], *,
                 tolerance: float = 1e-4) -> bool:
     """Whether driving ``actuators`` over their control ranges moves the geoms apart."""
-    if not all(model.actuator_ctrllimited[i] for i in actuators):
+    spans = [control_span(model, i) for i in actuators]
+    if any(span is None for span in spans):
         return False
-    lo = [float(model.actuator_ctrlrange[i, 0]) for i in actuators]
-    hi = [float(model.actuator_ctrlrange[i, 1]) for i in actuators]
+    lo = [span[0] for span in spans]
+    hi = [span[1] for span in spans]
     spread = [gripper_gap(model, actuators, c, geom_ids) for c in (lo, hi)]
     per = []
     for k, _i in enumerate(actuators):

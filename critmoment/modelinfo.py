@@ -187,14 +187,18 @@ def _far_targets(model: mujoco.MjModel) -> list[str]:
         lo, hi = (float(v) for v in model.jnt_range[j])
         width = hi - lo
         if min(ends) < lo - width or max(ends) > hi + width:
-            unit = "rad" if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_HINGE else "m"
+            hinge = model.jnt_type[j] == mujoco.mjtJoint.mjJNT_HINGE
+            unit = "rad" if hinge else "m"
+            advice = ("MuJoCo never converts a ctrlrange from degrees; give it in radians "
+                      "(times the gear)" if hinge else
+                      "the servo's targets reach beyond what the joint allows: check the "
+                      "ctrlrange's units (m, times the gear) or the joint's range")
             notes.append(
                 f"actuator {model.actuator(a).name or a!r}: its ctrlrange "
                 f"[{model.actuator_ctrlrange[a, 0]:g}, {model.actuator_ctrlrange[a, 1]:g}] pulls "
                 f"joint {model.joint(j).name or j!r} to [{min(ends):.3g}, {max(ends):.3g}] "
                 f"{unit}, far outside its range [{lo:.3g}, {hi:.3g}] {unit} (gear "
-                f"{model.actuator_gear[a, 0]:g}): MuJoCo never converts a ctrlrange from "
-                f"degrees; give it in radians (times the gear)")
+                f"{model.actuator_gear[a, 0]:g}): {advice}")
     return notes
 
 

@@ -926,3 +926,35 @@ def test_an_adhesion_on_a_body_without_geoms_is_not_a_gripper(tmp_path):
     with pytest.raises(ScenarioError, match=r"found no gripper.*adhesion actuator 'suction' "
                        r"pulls on body 'cup', which has no collision geom"):
         init_scenario(tmp_path / "gantry.xml", object_body="part", task="pick_hold")
+
+
+def test_a_finger_servo_without_a_ctrlrange_takes_its_joints(tmp_path):
+    """mjlab's i2rt YAM leaves its servos' ctrl unlimited: init said "found no gripper ...
+    'left_finger' has no ctrlrange" and wrote nothing. A position servo on a limited joint
+    is driven over that joint's range."""
+    limited = arm_xml()
+    free = limited.replace('kp="200" ctrlrange="0 0.03" forcerange="-20 20"',
+                           'kp="200" forcerange="-20 20"')
+    assert free.count('kp="200" forcerange="-20 20"') == 2
+    (tmp_path / "limited.xml").write_text(limited)
+    (tmp_path / "free.xml").write_text(free)
+    before, after = (inspect_model(tmp_path / f).grippers for f in ("limited.xml", "free.xml"))
+    assert [(g.actuators, g.closed, g.open) for g in after] == \
+        [(g.actuators, g.closed, g.open) for g in before]
+    model = mujoco.MjModel.from_xml_path(str(tmp_path / "free.xml"))
+    lo, hi = model.jnt_range[model.joint("slide_a").id]
+    assert act_info.control_span(model, model.actuator("finger_a_act").id) == (lo, hi)
+    init_scenario(tmp_path / "free.xml", object_body="cube", task="pick_hold",
+                  out=tmp_path / "scenario.toml")
+    assert [g.name for g in load_scenario(tmp_path / "scenario.toml").grippers]
+
+
+def test_a_slide_servos_far_ctrlrange_is_not_blamed_on_degrees(tmp_path):
+    """gymnasium-robotics' Fetch: a finger slide of range 0..0.05 m driven over 0..0.2 was
+    told to "give it in radians"."""
+    xml = arm_xml().replace('joint="slide_a" kp="200" ctrlrange="0 0.03"',
+                            'joint="slide_a" kp="200" ctrlrange="0 0.2"')
+    (tmp_path / "arm.xml").write_text(xml)
+    notes = [n for n in inspect_model(tmp_path / "arm.xml").notes if "far outside" in n]
+    assert len(notes) == 1 and "radians" not in notes[0] and "degrees" not in notes[0]
+    assert "check the ctrlrange's units (m, times the gear) or the joint's range" in notes[0]
