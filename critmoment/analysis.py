@@ -35,6 +35,7 @@ from critmoment.exceptions import CritmomentWarning, ParameterError
 from critmoment.feasibility import FeasibilityReport, check_fit, preflight
 from critmoment.groundtruth import (
     NominalReference,
+    Outcome,
     OutcomeCriteria,
     _brute_force,
     reference_from_recording,
@@ -621,7 +622,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         completion_rule=_completion_rule(rec, twin), stage_names=tuple(twin.task.stage_names),
         moments=tuple(moment_reports), worst_failed=worst_failed_sparse,
         worst_unlifted=worst_unlifted,
-        worst_rollouts_failed=worst_failed, trend=_trend(curves, box))
+        worst_rollouts_failed=worst_failed, trend=_trend(curves, box),
+        own_failures=roll.failures(samples[runs.rerun]))
     decision = vd.decide(evidence, dopt)
     region_check = None
     if decision.region_to_check is not None and steps.size:
@@ -1101,6 +1103,9 @@ class _Rollouts:
         self.trajectory, self.twin, self.nthread = trajectory, twin, nthread
         self.reference, self.chunk, self.recording = reference, chunk, recording
         self._lock = threading.Lock()
+        #: per point rolled out (its bytes): (outcome, first failure time [s] or None, the
+        #: motor-checked actuator of a motor failure or None)
+        self.outcomes: dict[bytes, tuple[str, float | None, str | None]] = {}
 
     def nominal(self) -> NominalReference | None:
         """The nominal reference, read from the recording on first use (None without one
@@ -1119,7 +1124,32 @@ class _Rollouts:
                           nthread=budget.check_nthread(nthread), reference=self.nominal(),
                           t_start=time.perf_counter())
         self.reference = bf.reference
+        c = bf.classification
+        motors = np.flatnonzero(self.twin.motors)
+        for point, outcome, step, column in zip(bf.samples, c.outcome, c.first_failure_step,
+                                                c.motor_column, strict=True):
+            name = (self.twin.actuator_names[motors[column]]
+                    if outcome is Outcome.MOTOR and column >= 0 else None)
+            self.outcomes[np.asarray(point, float).tobytes()] = (
+                outcome.value, float(step) * c.dt if step >= 0 else None, name)
         return bf.failed
+
+    def failures(self, points: np.ndarray) -> dict[str, tuple[int, float | None,
+                                                              tuple[str, ...]]]:
+        """How the rolled-out ``points`` that fail failed: per outcome, (how many, the
+        earliest failure time [s], the actuators of the motor failures)."""
+        out: dict[str, list] = {}
+        for point in np.asarray(points, float):
+            got = self.outcomes.get(point.tobytes())
+            if got is None or got[0] == Outcome.SUCCESS.value:
+                continue
+            entry = out.setdefault(got[0], [0, None, []])
+            entry[0] += 1
+            if got[1] is not None and (entry[1] is None or got[1] < entry[1]):
+                entry[1] = got[1]
+            if got[2] is not None and got[2] not in entry[2]:
+                entry[2].append(got[2])
+        return {k: (v[0], v[1], tuple(v[2])) for k, v in out.items()}
 
 
 def _trend(curves: Mapping[int, Mapping[str, sp.SparseResult]], box) -> dict[str, float]:

@@ -214,6 +214,8 @@ class Classification:
         max_slip: largest displacement in a holding gripper relative to the nominal run [m],
             (n,) (0 where never held).
         saturation_time: longest saturation of a rotational actuator [s], (n,).
+        motor_column: which motor-checked actuator (its column of ``actuator_norm``, in
+            ``Twin.motors`` order) the first motor event is of, −1 if none, (n,) int.
         dt: physics step [s].
         criteria: the tolerances used.
     """
@@ -226,6 +228,7 @@ class Classification:
     motor_step: np.ndarray
     max_slip: np.ndarray
     saturation_time: np.ndarray
+    motor_column: np.ndarray
     dt: float
     criteria: OutcomeCriteria
 
@@ -331,7 +334,13 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
         lost = tracking_excess > c.tracking_tolerance
         starts += [_first_run(lost[..., j], c.steps(c.tracking_time, dt))
                    for j in range(tracking_excess.shape[-1])]
-    motor_step = _earliest(np.stack(starts, axis=-1)) if starts else np.full(n, -1)
+    if starts:
+        events = np.stack(starts, axis=-1)  # saturation columns, then tracking columns
+        motor_step = _earliest(events)
+        first = np.argmin(np.where(events >= 0, events, np.iinfo(np.int64).max), axis=-1)
+        motor_column = np.where(motor_step >= 0, first % actuator_norm.shape[-1], -1)
+    else:
+        motor_step = motor_column = np.full(n, -1)
     # drop: not carried where the nominal run carries the object
     carried = carried_flags(contact_support, contact_gripper)
     drop_step = _last_run(nominal_carried[None, :] & ~carried, c.steps(c.drop_time, dt))
@@ -365,7 +374,8 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
         outcome=tuple(outcome), completed=completed, first_failure_step=first,
         slip_step=slip_step.astype(np.int64), drop_step=drop_step.astype(np.int64),
         motor_step=motor_step.astype(np.int64), max_slip=np.asarray(max_slip, dtype=float),
-        saturation_time=np.asarray(saturation_time, dtype=float), dt=float(dt), criteria=c)
+        saturation_time=np.asarray(saturation_time, dtype=float),
+        motor_column=np.asarray(motor_column, dtype=np.int64), dt=float(dt), criteria=c)
 
 
 def _earliest(steps: np.ndarray) -> np.ndarray:

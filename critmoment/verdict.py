@@ -1059,6 +1059,9 @@ class Evidence:
         trend: per parameter, how much the cost grows from its low to its high end along
             the 1-D curves with the others at nominal (summed over the moments), or None
             (see :func:`fail_sides`).
+        own_failures: how the samples decided by their own full rollout failed, per
+            outcome (``groundtruth.Outcome`` value): (how many, earliest failure time [s] or
+            None, the actuators of the motor failures); for the causes.
     """
 
     box: UncertaintyBox
@@ -1074,6 +1077,8 @@ class Evidence:
     region: RegionCheck | None = None
     completion_rule: str = "stage 4 needed and kept to the end"
     trend: Mapping[str, float] | None = None
+    own_failures: Mapping[str, tuple[int, float | None, tuple[str, ...]]] = (
+        dataclasses.field(default_factory=dict))
     #: the task's stage names, for the causes (stage 0 is "untouched", ...)
     stage_names: tuple[str, ...] = ()
 
@@ -1230,6 +1235,9 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
                        f"own full rollout (between the moments or by not completing the "
                        f"task); suggestion: reduce the uncertainty near the safe region's "
                        f"edge",)
+    own = _own_failures_text(evidence.own_failures)
+    if own:
+        causes += (own,)
     if se.chained is not None and has_moments:
         chained = np.asarray(se.chained, dtype=bool)
         chain_failed = int((chained & failed).sum())
@@ -1254,6 +1262,32 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
                     safe_region=region, safe_region_text=text, causes=causes,
                     region_to_check=to_check, near=near, unlifted=unlifted,
                     sticking=sticking, slipping=slipping, margin=margin)
+
+
+def _own_failures_text(own: Mapping[str, tuple[int, float | None, tuple[str, ...]]]) -> str:
+    """How the samples decided by their own full rollout failed, in one cause line: the
+    failures that no moment shows (a motor overloaded away from the object, a drop between
+    the moments) are named by what really happened."""
+    if not own:
+        return ""
+    parts = []
+    for outcome, (count, first, actuators) in sorted(own.items(), key=lambda kv: -kv[1][0]):
+        what = {"motor": "motor overload", "dropped": "dropped",
+                "slipped": "slipped in the grip", "diverged": "simulation diverged",
+                "not_completed": "task not completed"}.get(outcome, outcome)
+        detail = []
+        if actuators:
+            detail.append(", ".join(actuators))
+        if first is not None:
+            detail.append(f"first at t = {first:.3g} s")
+        parts.append(f"{count} {what}" + (f" ({'; '.join(detail)})" if detail else ""))
+    total = sum(count for count, _, _ in own.values())
+    text = (f"the samples decided by their own full rollout: {total} fail, "
+            + ", ".join(parts))
+    if "motor" in own:
+        text += ("; suggestion: check the named actuators' limits ([limits]) against the "
+                 "payload range, or slow the motion where they saturate")
+    return text
 
 
 def _is_whole_box(region: Mapping[str, tuple[float, float]], box: UncertaintyBox) -> bool:

@@ -227,6 +227,43 @@ def test_verification_reruns_the_near_threshold_safes(boundary_reports, demo_tra
     assert checked.to_json()["verification"] == {k: v[k] for k in v}
 
 
+def test_the_causes_name_how_the_own_rollouts_failed(boundary_reports, demo_traj):
+    """gym's SO-101 with pads: its 30 real failures were a shoulder saturating, found only by
+    the samples' own runs, and the causes named only grip slip. The samples decided by their
+    own full rollout now say how they failed, as brute force classifies them."""
+    from collections import Counter
+
+    from critmoment import verdict as vd
+
+    reports, boundary = boundary_reports
+    checked = reports[0.8]
+    opts = vd.DecisionOptions(threshold=boundary.scenario.cost.threshold, chain=False)
+    rerun = vd.samples_to_rerun(checked.sweep, opts, nominal_completed=True).any
+    truth = brute_force(demo_traj, twin=boundary, samples=checked.sweep.samples[rerun])
+    counts = Counter(o.value for o in truth.classification.outcome if o.value != "success")
+    assert sum(counts.values()) == checked.verification["failed"] > 0
+    line = [c for c in checked.failure_causes
+            if c.startswith("the samples decided by their own full rollout:")]
+    assert len(line) == 1, checked.failure_causes
+    assert line[0].startswith(f"the samples decided by their own full rollout: "
+                              f"{sum(counts.values())} fail, ")
+    words = {"dropped": "dropped", "slipped": "slipped in the grip", "motor": "motor overload",
+             "not_completed": "task not completed", "diverged": "simulation diverged"}
+    for outcome, k in counts.items():
+        assert f"{k} {words[outcome]}" in line[0]
+
+
+def test_the_own_failures_line_names_the_motor():
+    from critmoment.verdict import _own_failures_text
+
+    text = _own_failures_text({"motor": (30, 3.31, ("shoulder_lift",)),
+                               "dropped": (2, 4.0, ())})
+    assert text.startswith("the samples decided by their own full rollout: 32 fail, 30 motor "
+                           "overload (shoulder_lift; first at t = 3.31 s), 2 dropped (first at "
+                           "t = 4 s); suggestion: check the named actuators' limits")
+    assert _own_failures_text({}) == ""
+
+
 @pytest.mark.parametrize("seed", [0, 7, 14])
 def test_moments_include_lift_off_and_hand_over(twin, seed):
     import sys
