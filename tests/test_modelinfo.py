@@ -904,7 +904,7 @@ def test_init_guesses_a_suction_gripper_that_lifts(tmp_path):
     # file's normalised convention) must hold it
     w = [(0.0, 0.0, 1.0), (0.2, 0.0, 1.0), (0.2, -0.178, 1.0), (0.2, -0.178, 0.0),
          (0.2, -0.10, 0.0), (0.2, -0.10, 0.0)]
-    actions = np.concatenate([np.linspace(a, b, 25) for a, b in zip(w[:-1], w[1:])])
+    actions = np.concatenate([np.linspace(a, b, 25) for a, b in zip(w[:-1], w[1:], strict=True)])
     traj = Trajectory(actions, fps=50.0)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
