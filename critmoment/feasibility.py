@@ -40,6 +40,7 @@ from critmoment.exceptions import (
     TrajectoryError,
 )
 from critmoment.recording import Recording
+from critmoment.scenario import FeasibilityOptions
 from critmoment.trajectory import Trajectory
 from critmoment.twin import STATE_SPEC, Twin, carried_flags
 
@@ -115,53 +116,6 @@ def _classify(model: mujoco.MjModel, actuator: int) -> tuple[_Kind, str]:
     if bp[2] < 0:
         return _Kind.VELOCITY, "velocity servo: tracks a velocity, lag not checked"
     return _Kind.OTHER, "affine bias without a position term: lag not checked"
-
-
-@dataclasses.dataclass(frozen=True)
-class FeasibilityOptions:
-    """Tolerances of :func:`check_feasibility`.
-
-    The defaults leave a wide margin over the bundled scenario's families (largest arm lag
-    about 0.02 rad, no arm actuator at its limit; ``docs/method.md``, "Feasibility and fit
-    checks").
-
-    Attributes:
-        lag_tolerance: largest tolerated lag of a hinge joint [rad].
-        lag_tolerance_slide: largest tolerated lag of a slide joint [m].
-        lag_duration: a lag above tolerance fails when it lasts longer than this [s].
-        delay: the lag is the position error left after allowing the joint to follow its
-            target this late [s] (a PD servo follows a ramp about (kv + damping)/kp late).
-        saturation_fraction: |force| ≥ this fraction of the limit counts as saturated.
-        saturation_duration: a saturation fails when it lasts longer than this [s].
-        moving: a joint must move when its target spans more than this fraction of its
-            lag tolerance; only such joints fail the friction check.
-        check_grippers: also fail on the lag and saturation of gripper actuators
-            (the normalised action channels); off by default, since a gripper closed on
-            the object is blocked by it.
-    """
-
-    lag_tolerance: float = 0.1
-    lag_tolerance_slide: float = 0.01
-    lag_duration: float = 0.1
-    delay: float = 0.1
-    saturation_fraction: float = 0.99
-    saturation_duration: float = 0.1
-    moving: float = 0.1
-    check_grippers: bool = False
-
-    def __post_init__(self):
-        if isinstance(self.delay, bool) or not (np.isfinite(self.delay) and self.delay >= 0):
-            raise ParameterError(f"FeasibilityOptions.delay: expected a finite number >= 0 s, "
-                                 f"got {self.delay!r}")
-        for name in ("lag_tolerance", "lag_tolerance_slide", "lag_duration",
-                     "saturation_duration", "moving"):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not (np.isfinite(value) and value > 0):
-                raise ParameterError(f"FeasibilityOptions.{name}: expected a finite number > 0,"
-                                     f" got {value!r}")
-        if not 0 < self.saturation_fraction <= 1:
-            raise ParameterError(f"FeasibilityOptions.saturation_fraction: expected in (0, 1], "
-                                 f"got {self.saturation_fraction!r}")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -349,14 +303,14 @@ def _unit(model: mujoco.MjModel, joint: int) -> str:
 
 
 def check_feasibility(recording: Recording, twin: Twin, *,
-                      options: FeasibilityOptions = FeasibilityOptions(),
+                      options: FeasibilityOptions | None = None,
                       raise_on_failure: bool = True) -> FeasibilityReport:
     """Can the twin reproduce the nominal motion of ``recording``?
 
     Args:
         recording: the nominal frequent rollout of the trajectory.
         twin: its twin.
-        options: tolerances.
+        options: tolerances; default the scenario's (``[feasibility]``).
         raise_on_failure: raise :class:`InfeasibleTwinError` on the first problem (else
             return the report with ``problems`` filled).
 
@@ -374,6 +328,11 @@ def check_feasibility(recording: Recording, twin: Twin, *,
 
     check_recording(recording)
     twin = resolve_twin(None, twin)
+    if options is None:
+        options = twin.scenario.feasibility
+    elif not isinstance(options, FeasibilityOptions):
+        raise ParameterError(f"options: expected FeasibilityOptions or None, got "
+                             f"{type(options).__name__} {options!r}")
     m = twin.model
     dt = float(recording.dt)
     n = recording.n_steps
@@ -610,7 +569,10 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
             f"the twin cannot reproduce the nominal motion: joint {e.joint!r} (actuator "
             f"{e.actuator!r}) lags its target by up to {e.lag_in_run:.3g} {e.unit} "
             f"(tolerance {tol:g} {e.unit}) for {e.lag_duration:.3g} s from t = "
-            f"{e.lag_start:.3f} s; likely cause: {cause}")
+            f"{e.lag_start:.3f} s; likely cause: {cause} (where the targets lead the joints "
+            f"by design, a feed-forward offset or a soft servo's known lag, the scenario's "
+            f"[feasibility] lag_tolerance{'_slide' if e.unit == 'm' else ''} and delay "
+            f"set how far)")
     elif e.saturation_duration > opt.saturation_duration:
         cause = (f"the contact {e.blocked_by} holds it back" if e.blocked_by else
                  _oscillation(e, fu) if e.force_flips >= FLIP_SHARE else
@@ -819,7 +781,7 @@ def _needs_lift(twin: Twin) -> bool:
 
 
 def preflight(trajectory: Trajectory, recording: Recording, twin: Twin, *,
-              options: FeasibilityOptions = FeasibilityOptions()) -> FeasibilityReport:
+              options: FeasibilityOptions | None = None) -> FeasibilityReport:
     """The checks the audit runs on its nominal rollout: feasibility, then fit.
 
     Feasibility comes first: a twin that cannot move its arms never touches the object
@@ -830,7 +792,7 @@ def preflight(trajectory: Trajectory, recording: Recording, twin: Twin, *,
         trajectory: the trajectory.
         recording: its nominal frequent rollout.
         twin: the twin.
-        options: feasibility tolerances.
+        options: feasibility tolerances; default the scenario's (``[feasibility]``).
 
     Returns:
         The feasibility report with ``fit_warnings``.

@@ -70,6 +70,7 @@ __all__ = [
     "Gripper",
     "ActionConvention",
     "SparseSettings",
+    "FeasibilityOptions",
     "Scenario",
     "load_scenario",
     "scenario_from_dict",
@@ -331,6 +332,58 @@ class SparseSettings:
                 f"[sparse] slip_tolerance: expected a distance > 0 m, got {self.slip_tolerance!r}")
 
 
+@dataclasses.dataclass(frozen=True)
+class FeasibilityOptions:
+    """Tolerances of :func:`critmoment.feasibility.check_feasibility`, the scenario's
+    ``[feasibility]`` table (every key optional).
+
+    The defaults leave a wide margin over the bundled scenario's families (largest arm lag
+    about 0.02 rad, no arm actuator at its limit; ``docs/method.md``, "Feasibility and fit
+    checks").
+
+    Attributes:
+        lag_tolerance: largest tolerated lag of a hinge joint [rad].
+        lag_tolerance_slide: largest tolerated lag of a slide joint [m].
+        lag_duration: a lag above tolerance fails when it lasts longer than this [s].
+        delay: the lag is the position error left after allowing the joint to follow its
+            target this late [s] (a PD servo follows a ramp about (kv + damping)/kp late).
+        saturation_fraction: |force| ≥ this fraction of the limit counts as saturated.
+        saturation_duration: a saturation fails when it lasts longer than this [s].
+        moving: a joint must move when its target spans more than this fraction of its
+            lag tolerance; only such joints fail the friction check.
+        check_grippers: also fail on the lag and saturation of gripper actuators
+            (the normalised action channels); off by default, since a gripper closed on
+            the object is blocked by it.
+    """
+
+    lag_tolerance: float = 0.1
+    lag_tolerance_slide: float = 0.01
+    lag_duration: float = 0.1
+    delay: float = 0.1
+    saturation_fraction: float = 0.99
+    saturation_duration: float = 0.1
+    moving: float = 0.1
+    check_grippers: bool = False
+
+    def __post_init__(self):
+        for name in ("lag_tolerance", "lag_tolerance_slide", "lag_duration", "delay",
+                     "saturation_duration", "moving", "saturation_fraction"):
+            value = getattr(self, name)
+            least = 0.0 if name == "delay" else None
+            if not (_is_number(value) and math.isfinite(value)
+                    and (value >= least if least is not None else value > 0)):
+                raise ScenarioError(f"[feasibility] {name}: expected a finite number "
+                                    f"{'>= 0' if least is not None else '> 0'}"
+                                    f"{' s' if name in ('delay', 'lag_duration', 'saturation_duration') else ''}"
+                                    f", got {value!r}")
+        if not self.saturation_fraction <= 1:
+            raise ScenarioError(f"[feasibility] saturation_fraction: expected in (0, 1], "
+                                f"got {self.saturation_fraction!r}")
+        if not isinstance(self.check_grippers, (bool, np.bool_)):
+            raise ScenarioError(f"[feasibility] check_grippers: expected true or false, got "
+                                f"{self.check_grippers!r}")
+
+
 _ARM_JOINTS = ("waist", "shoulder", "elbow", "forearm_roll", "wrist_angle", "wrist_rotate")
 
 
@@ -535,6 +588,8 @@ class Scenario:
         settle: an object that starts touching nothing falls onto its support before the
             audit's clock starts (``[object] settle``, default true).
         servos: torque motors driven as joint-position servos (``[servos]``).
+        feasibility: the tolerances of the check that the twin reproduces the nominal
+            motion (``[feasibility]``).
     """
 
     name: str
@@ -557,6 +612,7 @@ class Scenario:
     description: str = ""
     settle: bool = True
     servos: Servos = Servos()
+    feasibility: FeasibilityOptions = FeasibilityOptions()
     #: ``[actions] fps`` was given (else ``fps`` is the 50 Hz default)
     fps_given: bool = False
 
@@ -589,7 +645,8 @@ class Scenario:
         object.__setattr__(self, "support_geoms", tuple(support))
         for field, kind in (("actions", ActionConvention), ("task", Task),
                             ("box", UncertaintyBox), ("cost", CostParams),
-                            ("sparse", SparseSettings), ("servos", Servos)):
+                            ("sparse", SparseSettings), ("servos", Servos),
+                            ("feasibility", FeasibilityOptions)):
             if not isinstance(getattr(self, field), kind):
                 raise bad(field, f"a {kind.__name__}", getattr(self, field))
         if not (_is_number(self.fps) and math.isfinite(self.fps) and self.fps > 0):
@@ -1538,7 +1595,7 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
 
 
 _TOP = ("name", "description", "model", "object", "grippers", "support", "actions", "task",
-        "limits", "uncertainty", "cost", "sparse", "servos")
+        "limits", "uncertainty", "cost", "sparse", "servos", "feasibility")
 
 
 def _servos(raw: Mapping[str, Any]) -> Servos:
@@ -1669,13 +1726,22 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         persistence=_number(sparse_t, "persistence", "[sparse]", 0.02),
         slip_tolerance=_number(sparse_t, "slip_tolerance", "[sparse]", 0.005),
         creep_horizon=_get(sparse_t, "creep_horizon", int, "[sparse]", 0))
+    feas_t = _get(raw, "feasibility", dict, "scenario", {})
+    numbers_ = tuple(f.name for f in dataclasses.fields(FeasibilityOptions)
+                     if f.name != "check_grippers")
+    _keys(feas_t, "[feasibility]", (*numbers_, "check_grippers"))
+    feasibility = FeasibilityOptions(
+        **{k: _number(feas_t, k, "[feasibility]") for k in feas_t if k in numbers_},
+        **({"check_grippers": _get(feas_t, "check_grippers", bool, "[feasibility]")}
+           if "check_grippers" in feas_t else {}))
     scenario = Scenario(
         name=str(_get(raw, "name", str, "scenario", base.name)), path=path, mjcf=mjcf,
         keyframe=keyframe, object_body=object_body, object_geom=object_geom,
         grippers=grippers, support_geoms=tuple(support), actions=actions, fps=fps,
         fps_given="fps" in actions_t, range_policy=policy, task=task, limits=limits, box=box, cost=cost, sparse=sparse,
         limit_sources=sources, description=str(_get(raw, "description", str, "scenario", "")),
-        settle=_get(object_t, "settle", bool, "[object]", True), servos=servos)
+        settle=_get(object_t, "settle", bool, "[object]", True), servos=servos,
+        feasibility=feasibility)
     scenario.validate_names(model)
     idle = scenario.undriven_actuators(model)
     if idle:

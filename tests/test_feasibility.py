@@ -557,3 +557,44 @@ def test_a_force_that_flips_at_its_limit_every_step_is_named_an_oscillation(tmp_
     ok = check_feasibility(_record(calm, _ramp(1.0)), calm, raise_on_failure=False)
     assert ok.feasible and ok.joint("hinge").force_flips < 0.25
 
+
+
+def test_the_scenario_sets_the_tracking_tolerances(tmp_path):
+    """mjlab's YAM on its soft servos, driven by targets with a gravity feed-forward offset,
+    tracks its planned path within 0.08 rad while its targets lead the joints by 0.5 rad: the
+    check refused every motion and its tolerances could not be set from a scenario or the
+    command line. The scenario's [feasibility] table sets them."""
+    import shutil
+
+    from critmoment.scenario import bundled_scenario_path, load_scenario
+
+    folder = tmp_path / "scn"
+    shutil.copytree(bundled_scenario_path("aloha_transfer_cube").parent, folder)
+    toml = folder / "scenario.toml"
+    toml.write_text(toml.read_text() + "\n[feasibility]\nlag_tolerance = 0.6\ndelay = 0.35\n")
+    scenario = load_scenario(folder)
+    assert (scenario.feasibility.lag_tolerance, scenario.feasibility.delay) == (0.6, 0.35)
+    assert scenario.feasibility.lag_duration == FeasibilityOptions().lag_duration
+    toml.write_text(toml.read_text() + "lag_tolerence = 1.0\n")
+    with pytest.raises(CritmomentError, match=r"\[feasibility\].*lag_tolerence"):
+        load_scenario(folder)
+    toml.write_text(toml.read_text().replace("lag_tolerence = 1.0\n", "")
+                    .replace("delay = 0.35", 'delay = "0.3 s"'))
+    with pytest.raises(CritmomentError, match=r"\[feasibility\] delay"):
+        load_scenario(folder)
+
+
+def test_check_feasibility_takes_the_scenarios_tolerances(twin, demo_recording):
+    import dataclasses
+
+    from critmoment.twin import Twin
+
+    tight = Twin(twin.scenario.replace(feasibility=FeasibilityOptions(
+        lag_tolerance=1e-4, delay=0.0, lag_duration=0.01)))
+    with pytest.raises(CritmomentError, match=r"lags its target .*\[feasibility\] "
+                                              r"lag_tolerance and delay set how far"):
+        check_feasibility(demo_recording, tight)
+    assert not check_feasibility(demo_recording, twin, raise_on_failure=False).problems
+    assert dataclasses.asdict(check_feasibility(demo_recording, tight,
+                                                options=FeasibilityOptions()).options) == \
+        dataclasses.asdict(FeasibilityOptions())
