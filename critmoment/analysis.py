@@ -16,6 +16,7 @@ from __future__ import annotations
 import concurrent.futures
 import contextlib
 import dataclasses
+import functools
 import logging
 import math
 import platform
@@ -728,11 +729,9 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     timer = stage or (lambda name: contextlib.nullcontext())
     n = samples.shape[0]
     moments = steps.size > 0 and sweep is not None
-    nominal_failed = None
-    if moments and not nominal_completed:
-        # where the nominal run itself fails, the samples restored there inherit its state
-        nominal = evaluator.evaluate(steps, evaluator.twin.scenario.box.nominal[None])
-        nominal_failed = np.asarray(nominal.failed[:, 0], dtype=bool)
+    # the moments where the nominal parameters fail the sparse evaluation: a sample restored
+    # there inherits the nominal run's state, whose own run says whether that is a failure
+    nominal_failed = _nominal_failed(evaluator, steps) if moments else None
     reruns = vd.samples_to_rerun(sweep, options, nominal_completed=nominal_completed,
                                  nominal_failed=nominal_failed)
     rerun = reruns.any
@@ -787,6 +786,12 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     return vd.SampleRuns(reruns=reruns, chained=chained, chained_failed=chained_failed,
                          suspect=suspect, rerun_failed=rerun_failed,
                          nominal_failed=nominal_failed), extra
+
+
+def _nominal_failed(evaluator: sp.SparseEvaluator, steps: np.ndarray) -> np.ndarray:
+    """(m,) bool: the nominal parameters fail the sparse evaluation at each moment."""
+    nominal = evaluator.evaluate(steps, evaluator.twin.scenario.box.nominal[None])
+    return np.asarray(nominal.failed[:, 0], dtype=bool)
 
 
 class _Once:
@@ -1012,6 +1017,7 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
     near_cost = (options.verify if options.verify is not None else 0.8) * options.threshold
     first = dict(region)
     roll = _Rollouts(trajectory, twin, nthread, reference)
+    nominal_failed = _nominal_failed(evaluator, steps) if steps.size else None
     n_sparse = n_rollouts = n_chained = 0
     current: dict | None = vd.round_inward(first, box)
     pts = np.zeros((0, box.ndim))
@@ -1033,16 +1039,19 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
         n_sparse += pts.shape[0]
         hot = vd.hot_edges(edges, res.worst_cost(), near=near_cost)
-        if hot and not (_sparse_fails(res, options).any() and rnd < max_rounds):
+        undecided = functools.partial(vd.samples_to_rerun, options=options,
+                                      nominal_completed=nominal_completed,
+                                      nominal_failed=nominal_failed)
+        if hot and not (_sparse_fails(res, undecided).any() and rnd < max_rounds):
             pts, edges = vd.region_points(current, box, per_edge=per_edge, dense=hot)
             pts = np.vstack([pts, inside])
             res = evaluator.evaluate(steps, pts, first_failure=not exhaustive)
             n_sparse += pts.shape[0]
         rolled, chained = np.zeros(pts.shape[0], bool), np.zeros(pts.shape[0], bool)
-        if _sparse_fails(res, options).any():
+        if _sparse_fails(res, undecided).any():
             fails = np.array(res.failed_any, dtype=bool)  # it shrinks: no runs this round
         else:
-            own = _own_run_points(pts, current, box, per_edge, res, options, every_point)
+            own = _own_run_points(pts, current, box, per_edge, res, undecided, every_point)
             sub = _select_samples(res, own)
             runs, _ = sample_runs(evaluator, steps, pts[own], sub, options, roll=roll,
                                   nominal_completed=nominal_completed, nthread=nthread)
@@ -1066,7 +1075,8 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
 
 
 def _own_run_points(pts: np.ndarray, region: Mapping[str, tuple[float, float]], box,
-                    per_edge: int, res: sp.SparseResult, options: vd.DecisionOptions,
+                    per_edge: int, res: sp.SparseResult,
+                    undecided: Callable[[sp.SparseResult], vd.Reruns],
                     every_point: bool) -> np.ndarray:
     """(p,) bool: the checked points decided on their own run. With ``every_point``, all;
     else the corners, the coarse edge points (``per_edge`` per edge) and the interior
@@ -1080,15 +1090,18 @@ def _own_run_points(pts: np.ndarray, region: Mapping[str, tuple[float, float]], 
     scale = np.maximum(np.abs(box.high - box.low), 1e-300)
     near = np.abs(pts[:, None, :] - coarse[None, :, :]) <= 1e-9 * scale
     own = near.all(axis=2).any(axis=1)
-    return own | vd.samples_to_rerun(res, options, nominal_completed=True).any
+    return own | undecided(res).any
 
 
-def _sparse_fails(res: sp.SparseResult, options: vd.DecisionOptions) -> np.ndarray:
+def _sparse_fails(res: sp.SparseResult,
+                  undecided: Callable[[sp.SparseResult], vd.Reruns]) -> np.ndarray:
     """(p,) bool: the points whose sparse evaluation fails in a way it decides alone (not
-    one that only their own rollout decides, :func:`critmoment.verdict.samples_to_rerun`)."""
-    reruns = vd.samples_to_rerun(res, options, nominal_completed=True)
+    one that only their own rollout decides, ``undecided``:
+    :func:`critmoment.verdict.samples_to_rerun` with the audit's options and nominal run)."""
+    reruns = undecided(res)
     return (np.asarray(res.failed_any, dtype=bool)
-            & ~(reruns.unlifted | reruns.sticking | reruns.slipping | reruns.margin))
+            & ~(reruns.unlifted | reruns.sticking | reruns.slipping | reruns.margin
+                | reruns.inherited))
 
 
 class _Rollouts:

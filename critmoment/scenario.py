@@ -1057,7 +1057,9 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
                             f"{mjcf.suffix} file); a scenario goes to --scenario, a "
                             f"trajectory to rollout/analyze/validate")
     try:
-        spec = mujoco.MjSpec.from_file(str(mjcf))
+        # an absolute path: from a relative one, MuJoCo (4.0) resolves the meshes of a file
+        # <include>d beside it against the relative folder twice, and fails to open them
+        spec = mujoco.MjSpec.from_file(str(mjcf.resolve()))
     except Exception as exc:  # MuJoCo raises ValueError, OSError or its own errors
         raise ScenarioError(f"could not read MJCF {mjcf}: {exc}") from exc
     geoms = list(spec.geoms)

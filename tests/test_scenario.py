@@ -749,3 +749,31 @@ def test_a_saturation_under_an_explicit_integrator_names_it(tmp_path):
     plain = Twin(load_scenario(source))
     assert not check_feasibility(rollout(panda_demo.make_pick_place(0), twin=plain), plain,
                                  raise_on_failure=False).problems
+
+
+def test_a_relative_model_path_two_folders_up_compiles_its_meshes(tmp_path, monkeypatch):
+    """genesis' franka_sim Panda from a scenario two folders away (mjcf = "../../...", its
+    meshes "../meshes/..." in an included assets file): MuJoCo resolved the meshes against
+    the relative folder twice and the scenario did not compile from its own folder (it
+    did with an absolute path)."""
+    from critmoment.scenario import compile_spec, prepare_spec
+
+    cube = "\n".join(f"v {x} {y} {z}" for x in (-0.01, 0.01) for y in (-0.01, 0.01)
+                     for z in (-0.01, 0.01))
+    faces = "f 1 2 4 3\nf 5 7 8 6\nf 1 5 6 2\nf 3 4 8 7\nf 1 3 7 5\nf 2 6 8 4"
+    sub = tmp_path / "sub"
+    (sub / "assets").mkdir(parents=True)
+    (sub / "meshes").mkdir()
+    (sub / "meshes" / "box.obj").write_text(cube + "\n" + faces + "\n")
+    (sub / "assets" / "assets.xml").write_text(
+        '<mujocoinclude><asset><mesh name="m" file="../meshes/box.obj"/></asset>'
+        '</mujocoinclude>')
+    (sub / "robot.xml").write_text(
+        '<mujoco><include file="assets/assets.xml"/><compiler meshdir=""/><worldbody>'
+        '<body name="b"><geom type="mesh" mesh="m"/></body></worldbody></mujoco>')
+    (sub / "scene.xml").write_text('<mujoco><include file="robot.xml"/></mujoco>')
+    cwd = tmp_path / "a" / "b"
+    cwd.mkdir(parents=True)
+    monkeypatch.chdir(cwd)
+    path = Path("../../sub/scene.xml")
+    assert compile_spec(prepare_spec(path), path).ngeom == 1
