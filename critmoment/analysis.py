@@ -602,13 +602,13 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             limiting_actuator=twin.actuator_names[motor],
             fail_fraction=float(fails_here.mean()), analytic=analytics.get(s),
             search=searches.get(s), reached=float((~np.isnan(res.cost[row])).mean()),
-            squeeze=bool(squeeze)))
+            squeeze=bool(squeeze), audited_step=None if s == int(m.step) else s))
     # the failing worst cases that only a rollout can decide (squeezes)
     worst_failed: dict[int, bool] = {}
     rerun_steps = vd.worst_cases_to_rerun(moment_reports, worst_failed_sparse, worst_unlifted,
                                           dopt, n_failed=int(failed.sum()))
     if rerun_steps:
-        by_step = {int(mr.moment.step): mr for mr in moment_reports}
+        by_step = {mr.step: mr for mr in moment_reports}
         points = np.array([[by_step[s].worst_case[n] for n in box.names] for s in rerun_steps])
         real = roll(points)
         worst_failed = dict(zip(rerun_steps, map(bool, real), strict=True))

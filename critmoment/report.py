@@ -155,7 +155,7 @@ def report_json(report, *, timings: bool = True) -> dict:
         m = mr.moment
         moments.append({
             "step": int(m.step), "time": float(m.time), "label": m.label.value,
-            "reason": m.reason, "sensitivity": _num(m.score),
+            "reason": m.reason, "sensitivity": _num(m.score), "audited_step": mr.step,
             "worst_case": {k: float(v) for k, v in mr.worst_case.items()},
             "max_cost": _num(mr.max_cost),
             "min_fos_contact": _num(mr.min_fos_contact),
@@ -291,7 +291,7 @@ def _moment_pngs(report) -> Iterator[tuple[str, bytes]]:
     fig, artists = None, []
     box = report.scenario.box
     for mr in report.moments:
-        step = int(mr.moment.step)
+        step = mr.step
         if fig is None:
             fig, artists = _curves_figure(report, step)
             _lighten(fig)
@@ -305,7 +305,7 @@ def _moment_pngs(report) -> Iterator[tuple[str, bytes]]:
                 for ax in (top, bottom):
                     ax.relim()
                     ax.autoscale_view()
-        yield f"moment_{step}", _png(fig)
+        yield f"moment_{mr.moment.step}", _png(fig)
 
 
 def _png(fig: Figure) -> bytes:
@@ -329,7 +329,7 @@ def plot_moment_overview(report) -> Figure | None:
     for j, p in enumerate(box.parameters):
         top, bottom = axes[0, j], axes[1, j]
         for mr, colour in zip(report.moments, colours, strict=True):
-            step = int(mr.moment.step)
+            step = mr.step
             res = report.curves[step][p.name]
             x = res.samples[:, j]
             fos = np.minimum(res.fos_grasp[0], res.fos_motor[0])
@@ -450,7 +450,7 @@ def report_figures(report, figures: Figures | str = Figures.SUMMARY) -> dict[str
         figs["cost_map"] = cmap
     if which is Figures.ALL:
         for mr in report.moments:
-            figs[f"moment_{mr.moment.step}"] = plot_curves(report, int(mr.moment.step))
+            figs[f"moment_{mr.moment.step}"] = plot_curves(report, mr.step)
     return figs
 
 

@@ -202,6 +202,9 @@ class MomentReport:
             samples' own rollouts decide them.
         analytic: analytic bounds (Pinocchio), JSON-able, or None.
         search: worst-case search summary, JSON-able, or None.
+        audited_step: the step its sparse evaluation starts from when that is not the
+            moment's own (a moment within the horizon of the recording's end is audited
+            from the last step whose horizon fits), else None; see :attr:`step`.
     """
 
     moment: Moment
@@ -218,6 +221,13 @@ class MomentReport:
     search: Mapping | None = None
     reached: float = 1.0
     squeeze: bool = False
+    audited_step: int | None = None
+
+    @property
+    def step(self) -> int:
+        """The step the audit evaluated this moment at (what its curves, critical values
+        and worst case are keyed by)."""
+        return int(self.moment.step if self.audited_step is None else self.audited_step)
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -505,8 +515,7 @@ def worst_cases_to_rerun(moments: Sequence[MomentReport], worst_failed: Mapping[
     with ``verify_unlifted``, a sticking failure with ``verify_sticking``;
     :meth:`DecisionOptions.only_a_rollout_decides`). Empty otherwise.
     """
-    failing = [int(mr.moment.step) for mr in moments
-               if worst_failed.get(int(mr.moment.step), False)]
+    failing = [mr.step for mr in moments if worst_failed.get(mr.step, False)]
     if n_failed or not failing or not options.rolls_squeezes:
         return []
     if not all(worst_unlifted.get(s, False) for s in failing):
@@ -1154,8 +1163,7 @@ def _nominal_fails(evidence: Evidence, options: DecisionOptions) -> tuple[bool, 
 
 
 def _worst_cases_pass(evidence: Evidence, options: DecisionOptions) -> bool:
-    steps = [int(mr.moment.step) for mr in evidence.moments
-             if evidence.worst_failed.get(int(mr.moment.step), False)]
+    steps = [mr.step for mr in evidence.moments if evidence.worst_failed.get(mr.step, False)]
     if not steps:
         return True
     if not options.rolls_squeezes or not all(evidence.worst_unlifted.get(s, False)

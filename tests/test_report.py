@@ -280,3 +280,25 @@ def test_the_verification_line_names_the_margin_reruns():
                                "margin_failed": 0})
     assert text.endswith("; 39 failing only by the cost's margin with every motor under its "
                          "limit re-run in full, 0 of them fail")
+
+
+def test_a_moment_audited_before_the_runs_end_is_drawn(tmp_path, twin, demo_traj):
+    """A moment within the horizon of the run's end is audited from the last step whose
+    horizon fits; the report looked its curves up under the moment's own step (KeyError,
+    "a bug in critmoment", Menagerie Panda pick_hold cut at 330 actions)."""
+    import json
+
+    from critmoment import analysis
+    from critmoment.report import Figures, write_report
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        report = analysis.analyze(demo_traj, twin=twin, options=analysis.AnalyzeOptions(
+            seed=0, n_samples=8, max_moments=8, horizon=500, search=False, critical_grid=5,
+            map_resolution=6))
+    moved = [mr for mr in report.moments if mr.step != mr.moment.step]
+    assert moved and all(mr.step == report.recording.n_steps - 500 for mr in moved)
+    write_report(report, tmp_path / "out", figures=Figures.ALL)
+    doc = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert [m["audited_step"] for m in doc["moments"]] == [mr.step for mr in report.moments]
+    assert (tmp_path / "out" / f"moment_{moved[0].moment.step}.png").is_file()
