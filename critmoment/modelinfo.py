@@ -619,15 +619,7 @@ def _servo_lines(model: mujoco.MjModel, motors, key: int | None) -> list[str]:
         mujoco.mj_resetDataKeyframe(model, data, key)
     # the start pose, each limited hinge or slide inside its range (a model without a
     # keyframe may start at qpos 0 outside it: the Menagerie Panda's joint4)
-    moved = []
-    for j in range(model.njnt):
-        if model.jnt_limited[j] and int(model.jnt_type[j]) in (int(mujoco.mjtJoint.mjJNT_HINGE),
-                                                               int(mujoco.mjtJoint.mjJNT_SLIDE)):
-            adr = model.jnt_qposadr[j]
-            low, high = model.jnt_range[j]
-            if not low <= data.qpos[adr] <= high:
-                data.qpos[adr] = 0.5 * (low + high)
-                moved.append(model.joint(j).name)
+    moved = act_info.into_ranges(model, data.qpos)
     mujoco.mj_forward(model, data)
     full = np.zeros((model.nv, model.nv))
     mujoco.mj_fullM(model, data, full)

@@ -958,3 +958,22 @@ def test_a_slide_servos_far_ctrlrange_is_not_blamed_on_degrees(tmp_path):
     notes = [n for n in inspect_model(tmp_path / "arm.xml").notes if "far outside" in n]
     assert len(notes) == 1 and "radians" not in notes[0] and "degrees" not in notes[0]
     assert "check the ctrlrange's units (m, times the gear) or the joint's range" in notes[0]
+
+
+def test_the_gripper_measurement_holds_the_arm_inside_its_ranges(tmp_path):
+    """A model whose start puts an arm joint outside its range (franka_sim's bimanual Panda:
+    joint4 = 0, range -3.07..-0.4): the measurement held it there, its limit jolted the arm
+    at every step and the fingers' travel read 0.00 mm. The held joints move into range."""
+    model = mujoco.MjModel.from_xml_string(arm_xml().replace(
+        '<joint name="elbow" type="hinge" axis="0 0 1" range="-3 3"',
+        '<joint name="elbow" type="hinge" axis="0 0 1" range="0.5 1.5"'))
+    qpos = model.key_qpos[0].copy()
+    assert act_info.into_ranges(model, qpos) == ["elbow"]
+    elbow = model.joint("elbow").id
+    assert qpos[model.jnt_qposadr[elbow]] == pytest.approx(model.jnt_range[elbow].mean())
+    assert act_info.into_ranges(model, qpos) == []
+    fingers = [model.actuator("finger_a_act").id, model.actuator("finger_b_act").id]
+    geoms = [model.geom(n).id for n in ("palm", "pad_a", "pad_b")
+             if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, n) >= 0]
+    closed, opened = act_info.closing_ends(model, fingers, geoms, keyframe=0)
+    assert closed != opened
