@@ -1,7 +1,7 @@
 """Command-line interface: ``critmoment demo|rollout|moments|analyze|validate|episodes``.
 
-Exit codes (docs/cli.md): 0 success (for ``analyze``: SAFE, or P(success) ≥
-``--min-success``; for ``validate``: no false safe), 1 not safe, 2 bad input or
+Exit codes (docs/cli.md): 0 success (for ``analyze``: SAFE, or CONDITIONAL with
+P(success) ≥ ``--min-success``; for ``validate``: no false safe), 1 not safe, 2 bad input or
 error. A closed output pipe (``critmoment analyze ... --json | head -1``) keeps
 the verdict's code. Every error ends as one line on stderr,
 ``critmoment COMMAND: error: ...``, never a traceback (``-v`` adds one), and
@@ -125,8 +125,12 @@ def cmd_demo(args) -> int:
     from critmoment import suite
     from critmoment.trajectory import save_trajectory
 
-    if Path(args.out).suffix != ".npz":
+    if Path(args.out).suffix.lower() != ".npz":
         raise CritmomentError(f"--out: expected a path ending in .npz, got {args.out}")
+    if not args.force and Path(args.out).is_file() and not _demo_written(Path(args.out)):
+        raise CritmomentError(
+            f"--out: {args.out} exists and is not a trajectory critmoment demo wrote; "
+            f"expected a new path, or --force to replace it")
     with _staged(args, "demo", kind="file") as path:
         traj = suite.make(args.family, seed=args.seed, scenario=args.scenario)
         save_trajectory(traj, path)
@@ -136,6 +140,21 @@ def cmd_demo(args) -> int:
                  f"object at "
                  f"x={box[0]:.3f} y={box[1]:.3f} m")
     return EXIT_OK
+
+
+def _demo_written(path: Path) -> bool:
+    """Whether the .npz at ``path`` is one ``critmoment demo`` wrote (its meta names a
+    critmoment generator): that one may be replaced, a user's recorded episode may not."""
+    import numpy as np
+
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            if "meta" not in data.files:
+                return False
+            meta = json.loads(str(data["meta"]))
+    except (OSError, ValueError, zipfile.BadZipFile, EOFError):
+        return False
+    return isinstance(meta, dict) and str(meta.get("generator", "")).startswith("critmoment.")
 
 
 def cmd_rollout(args) -> int:
@@ -239,7 +258,7 @@ def cmd_analyze(args) -> int:
         twin, traj = _load(args)
         budget.check_audit(traj, twin, options)
         result = analyze(traj, twin.scenario, twin=twin, options=options,
-                         progress=not args.json and sys.stderr.isatty())
+                         progress=not args.json and (sys.stderr.isatty() or args.verbose))
         if out is not None:
             report.write_report_files(result, out, figures=report.Figures.parse(args.figures))
     code = EXIT_OK if result.passes(args.min_success) else EXIT_UNSAFE
@@ -389,7 +408,8 @@ def build_parser() -> argparse.ArgumentParser:
         prog="critmoment",
         description="Audit a robot trajectory for physical safety in a MuJoCo digital twin.")
     parser.add_argument("-v", "--verbose", action="store_true",
-                        help="log progress details; on an error, also print the traceback")
+                        help="log details and the audit's progress (also when stderr is not a "
+                             "terminal); on an error, also print the traceback")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
     limits = budget.Budget()
 
@@ -444,6 +464,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--scenario", default="aloha_transfer_cube",
                    choices=sorted(SCENARIO_FAMILIES),
                    help="bundled scenario to write a trajectory for (default aloha_transfer_cube)")
+    p.add_argument("--force", action="store_true",
+                   help="replace an existing --out that critmoment demo did not write")
     p.set_defaults(func=cmd_demo)
 
     p = sub.add_parser("rollout", help="frequent rollout: replay at nominal parameters, "
@@ -462,7 +484,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--samples", type=_int_at_least(8), default=256,
                    help="Sobol samples of the box")
     p.add_argument("--min-success", type=_fraction(open_low=False), default=None,
-                   help="exit 0 when P(success) >= this even if not SAFE")
+                   help="exit 0 when CONDITIONAL with P(success) >= this (UNSAFE, the "
+                        "nominal parameters failing, always exits 1)")
     add_method(p)
     p.add_argument("--exhaustive", action="store_true",
                    help="evaluate every sample at every moment (default: each sample stops at "
@@ -511,6 +534,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print JSON to stdout")
     p.set_defaults(func=cmd_episodes)
     parser.commands = dict(sub.choices)
+    for command in parser.commands.values():  # `critmoment analyze traj.npz -v` too
+        command.add_argument("-v", "--verbose", action="store_true", default=argparse.SUPPRESS,
+                             help="as critmoment -v")
     return parser
 
 
@@ -649,7 +675,12 @@ def _main(argv: list[str] | None) -> int:
         except BrokenPipeError:  # the reader went away: keep the verdict's code
             _Stdout.silence()
         except KeyboardInterrupt:
-            _error(command, "interrupted; no output was written", args)
+            written = getattr(args, "out_written", None)
+            # the output is swapped in whole before the summary prints: an interrupt while
+            # printing leaves it written (and the previous one replaced), say which
+            _error(command, "interrupted; no output was written" if written is None else
+                   f"interrupted after the output was written whole to {written} (the "
+                   f"summary on stdout may be cut short)", args)
             return EXIT_ERROR
         except Exception as exc:  # noqa: BLE001 - the last resort: one line, exit 2
             _error(command, _describe(exc), args)

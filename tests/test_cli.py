@@ -434,3 +434,44 @@ def test_the_console_command_keeps_the_exit_code_once_main_has_returned(monkeypa
     finally:
         for sig, handler in saved.items():
             signal.signal(sig, handler)
+
+
+def test_an_interrupt_after_the_output_is_written_says_so(traj_file, tmp_path, capsys,
+                                                          monkeypatch):
+    """Ctrl-C while the summary printed (a slow pipe): the report was already swapped in
+    whole, and the line said "no output was written"."""
+    from critmoment import cli
+
+    def cut(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    out = tmp_path / "roll"
+    monkeypatch.setattr(cli._Stdout, "emit", staticmethod(cut))
+    assert main(["rollout", str(traj_file), "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert f"critmoment rollout: error: interrupted after the output was written whole to " \
+           f"{out}" in err
+    assert (out / "recording.npz").is_file()
+
+
+def test_demo_does_not_replace_a_file_it_did_not_write(tmp_path, capsys):
+    import numpy as np
+
+    mine = tmp_path / "episode.npz"
+    np.savez(mine, data=np.arange(5))
+    assert main(["demo", "--out", str(mine)]) == 2
+    assert "exists and is not a trajectory critmoment demo wrote" in capsys.readouterr().err
+    assert list(np.load(mine).files) == ["data"]
+    ours = tmp_path / "traj.NPZ"
+    assert main(["demo", "--out", str(ours)]) == 0
+    assert main(["demo", "--out", str(ours), "--seed", "3"]) == 0  # its own: replaced
+    assert main(["demo", "--out", str(mine), "--force"]) == 0
+    assert "actions" in np.load(mine).files
+
+
+def test_verbose_after_the_command_logs_the_audits_progress(traj_file, capsys):
+    """`-v` logged nothing for analyze (progress went only to a terminal) and was refused
+    after the command."""
+    assert main(["analyze", str(traj_file), "--samples", "8", "--figures", "none", "-v"]) in (0, 1)
+    err = capsys.readouterr().err
+    assert "critmoment: rollout ..." in err and "critmoment: sweep done in" in err
