@@ -407,6 +407,9 @@ def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="critmoment",
         description="Audit a robot trajectory for physical safety in a MuJoCo digital twin.")
+    from critmoment import __version__
+
+    parser.add_argument("--version", action="version", version=f"critmoment {__version__}")
     parser.add_argument("-v", "--verbose", action="store_true",
                         help="log details and the audit's progress (also when stderr is not a "
                              "terminal); on an error, also print the traceback")

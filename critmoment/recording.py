@@ -103,10 +103,17 @@ def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None =
 def at_scenario_rate(traj: Trajectory, twin: Twin) -> Trajectory:
     """The trajectory at the scenario's ``[actions] fps`` where its file recorded no rate
     (:meth:`Trajectory.with_rate_from`); a recorded rate, or a scenario that states none,
-    leaves it as it is. Every entry point (``analyze``, ``rollout``, ``validate``, the CLI)
+    leaves it as it is (a recorded rate other than the scenario's by more than 1 % is
+    warned of). Every entry point (``analyze``, ``rollout``, ``validate``, the CLI)
     applies it, so a library call reads a file as the command line does."""
     sc = twin.scenario
-    return traj.with_rate_from(sc.fps) if sc.fps_given else traj
+    if not sc.fps_given:
+        return traj
+    if not traj.fps_assumed and abs(traj.fps - sc.fps) > 0.01 * max(traj.fps, sc.fps):
+        warnings.warn(f"the trajectory{_source(traj)} records {traj.fps:g} Hz, the scenario's "
+                      f"[actions] fps says {sc.fps:g} Hz: the recorded rate is used",
+                      CritmomentWarning, stacklevel=2)
+    return traj.with_rate_from(sc.fps)
 
 
 def check_task_window(twin: Twin, traj: Trajectory) -> None:

@@ -680,6 +680,10 @@ class Scenario:
 
     def replace(self, **changes) -> Scenario:
         """A copy with fields replaced (e.g. ``box=scenario.box.with_range(...)``)."""
+        fields = {f.name for f in dataclasses.fields(self)}
+        unknown = sorted(set(changes) - fields - {"horizon"})
+        if unknown:
+            raise unknown_keys_error("Scenario.replace", unknown, sorted(fields | {"horizon"}))
         if "horizon" in changes:
             changes["sparse"] = dataclasses.replace(
                 changes.get("sparse", self.sparse), horizon=changes.pop("horizon"))

@@ -575,8 +575,8 @@ def _load_any(path: str | os.PathLike, *, fps: float | None,
     if episode is not None:
         raise ParameterError(
             f"episode: only LeRobot parquet data holds several episodes; got "
-            f"episode={episode!r} for a {suffix!r} file {str(p)!r}; pass "
-            f"episode=None"
+            f"episode={episode!r} for a {suffix!r} file {str(p)!r}; give no episode (CLI: "
+            f"drop --episode)"
         )
     if suffix == ".npz":
         return _load_npz(p, fps=fps)
@@ -1364,7 +1364,7 @@ def _load_lerobot_files(
         if episode is not None:
             raise TrajectoryError(
                 f"{source!r} has no 'episode_index' column, so it holds a single "
-                f"episode; got episode={episode}; pass episode=None"
+                f"episode; got episode={episode}; give no episode (CLI: drop --episode)"
             )
         chosen_file, ep = files[0], None
     else:
@@ -1662,8 +1662,9 @@ def check_ranges(
                 f"{labels[j]} out of range at step {i}: value {float(actions[i, j])!r} "
                 f"outside [{float(lo[j])!r}, {float(hi[j])!r}] (tolerance {tol:g}); "
                 f"{int(np.count_nonzero(violating))} violating value(s) in total: "
-                f"{summary()}. Valid policies: "
-                f"{[m.name for m in RangePolicy]}"
+                f"{summary()}; to clip them to the ranges or keep them with a warning, set "
+                f"[actions] range_policy = {' or '.join(repr(m.value) for m in RangePolicy if m is not RangePolicy.ERROR)} "
+                f"in the scenario"
             )
         if pol is RangePolicy.WARN:
             warnings.warn(

@@ -60,6 +60,7 @@ from critmoment.groundtruth import (
 )
 from critmoment.moments import Moment
 from critmoment.recording import Recording, at_scenario_rate, rollout
+from critmoment.scenario import Scenario
 from critmoment.trajectory import Trajectory, check_trajectory, input_identity
 from critmoment.twin import Twin, carried_flags, resolve_twin
 from critmoment.verdict import failing_samples
@@ -564,7 +565,8 @@ def compare(brute: BruteForce, prediction: Prediction, *, trajectory: str = "",
         runs=prediction.runs)
 
 
-def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | None = 0,
+def validate(traj: Trajectory, scenario: Scenario | str | None = None, *,
+             twin: Twin | None = None, n_samples: int = 64, seed: int | None = 0,
              samples: np.ndarray | None = None, horizon: int | None = None,
              mode: sp.SparseMode = sp.SparseMode.STEP, max_moments: int | None = None,
              envelope: float | None = None, verify: float | None = _AUDIT.verify,
@@ -576,6 +578,9 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
 
     Args:
         traj: the trajectory.
+        scenario: a :class:`~critmoment.scenario.Scenario`, a path to a scenario.toml or its
+            folder, or a bundled scenario's name (default the bundled one), as for
+            :func:`critmoment.analysis.analyze`; or give ``twin``.
         twin: the twin.
         n_samples: Sobol samples of the uncertainty box (a power of 2 is best).
         seed: Sobol seed.
@@ -598,7 +603,7 @@ def validate(traj: Trajectory, *, twin: Twin, n_samples: int = 64, seed: int | N
     Returns:
         The :class:`ValidationResult`.
     """
-    twin = resolve_twin(None, twin)
+    twin = resolve_twin(scenario, twin)
     traj = at_scenario_rate(check_trajectory(traj), twin)
     box = twin.scenario.box
     # every argument checked before the first rollout, not after the prediction's work

@@ -141,3 +141,37 @@ def test_an_empty_scenario_path_is_an_error_not_the_current_folder():
 def test_a_rate_typed_as_text_is_named(fps):
     with pytest.raises(TrajectoryError, match=r"fps: expected a finite number > 0 \[Hz\], got text"):
         Trajectory(np.zeros((10, 2)), fps=fps)
+
+
+def test_a_recorded_rate_other_than_the_scenarios_is_warned_of(twin, demo_traj):
+    """A trajectory recording 50 Hz audited with a scenario stating 30 Hz used 50 Hz silently."""
+    import warnings as _w
+
+    from critmoment.exceptions import CritmomentWarning
+    from critmoment.recording import at_scenario_rate
+    from critmoment.twin import Twin
+
+    thirty = Twin(twin.scenario.replace(fps=30.0, fps_given=True))
+    with pytest.warns(CritmomentWarning, match=r"records 50 Hz, the scenario's \[actions\] fps "
+                                              r"says 30 Hz: the recorded rate is used"):
+        assert at_scenario_rate(demo_traj, thirty).fps == 50.0
+    with _w.catch_warnings():
+        _w.simplefilter("error")
+        assert at_scenario_rate(demo_traj, twin) is demo_traj
+
+
+def test_scenario_replace_names_an_unknown_field(scenario):
+    with pytest.raises(ScenarioError, match=r"Scenario.replace: unknown key 'boxx' \(did you "
+                                            r"mean 'box'\?\)"):
+        scenario.replace(boxx=1)
+    assert scenario.replace(horizon=5).sparse.horizon == 5
+
+
+def test_validate_takes_a_scenario_as_analyze_does(scenario):
+    """`cm.validate(traj, scenario)` was a TypeError: it took only twin=."""
+    import inspect
+
+    import critmoment as cm
+
+    params = inspect.signature(cm.validate).parameters
+    assert list(params)[:2] == ["traj", "scenario"] and params["twin"].default is None

@@ -475,3 +475,10 @@ def test_verbose_after_the_command_logs_the_audits_progress(traj_file, capsys):
     assert main(["analyze", str(traj_file), "--samples", "8", "--figures", "none", "-v"]) in (0, 1)
     err = capsys.readouterr().err
     assert "critmoment: rollout ..." in err and "critmoment: sweep done in" in err
+
+
+def test_version(capsys):
+    from critmoment import __version__
+
+    assert main(["--version"]) == 0
+    assert capsys.readouterr().out.strip() == f"critmoment {__version__}"

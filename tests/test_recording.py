@@ -365,7 +365,9 @@ def test_rollout_wrong_action_width(twin):
 def test_rollout_target_out_of_range(twin):
     actions = np.tile(START, (10, 1))
     actions[6, 9] = 2.0  # right/elbow range is [-1.76278, 1.6057]
-    with pytest.raises(TrajectoryError, match=r"'right/elbow' \(index 9\) out of range at step 6: value 2\.0"):
+    with pytest.raises(TrajectoryError, match=r"'right/elbow' \(index 9\) out of range at step "
+                       r"6: value 2\.0.*set \[actions\] range_policy = 'clip' or 'warn' in "
+                       r"the scenario"):
         rollout(Trajectory(actions, fps=50, start=START, object_pose=BOX), twin=twin)
 
 
