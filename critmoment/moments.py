@@ -696,9 +696,9 @@ def detect_contact_events(recording: Any, *, debounce_time: float = 0.01) -> lis
         held = _holders(grp[s], names)
         if not sup[s]:
             if held:
-                why = f"object leaves table (support contact lost) while held by {_quote(held)}"
+                why = f"object leaves its support (contact lost) while held by {_quote(held)}"
             else:
-                why = "object leaves table (support contact lost) without gripper contact"
+                why = "object leaves its support (contact lost) without gripper contact"
             add(s, MomentLabel.LIFT_OFF, why)
         elif held:
             add(s, MomentLabel.PLACE, f"object touches table again while held by {_quote(held)}")

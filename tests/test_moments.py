@@ -219,7 +219,7 @@ def test_lift_off_and_hand_over_steps_are_exact():
     ]
     lift = events[1]
     assert lift.time == pytest.approx(800 * DT)
-    assert "object leaves table (support contact lost)" in lift.reason and "'left'" in lift.reason
+    assert "object leaves its support (contact lost)" in lift.reason and "'left'" in lift.reason
     assert "'right' holds it (hand-over)" in events[3].reason
     assert events[2].reason == "gripper 'right' touches object while 'left' holds it"
 
@@ -281,7 +281,7 @@ def _moment(step, label=MomentLabel.CHANGE_POINT, magnitude=math.nan, reason="r"
 def test_merge_prefers_contact_events_within_window():
     moments = [
         _moment(990, magnitude=2.0, reason="change point in actuator forces"),
-        _moment(1000, MomentLabel.LIFT_OFF, reason="object leaves table (support contact lost)"),
+        _moment(1000, MomentLabel.LIFT_OFF, reason="object leaves its support (contact lost)"),
         _moment(1010, magnitude=5.0, reason="change point in object acceleration"),
         _moment(1008, MomentLabel.GRASP, reason="gripper 'left' touches object", gripper="left"),
         _moment(3000, magnitude=1.0, reason="a"),
@@ -296,7 +296,7 @@ def test_merge_prefers_contact_events_within_window():
     ]
     lift = merged[0]
     assert lift.reasons == (
-        "object leaves table (support contact lost)",
+        "object leaves its support (contact lost)",
         "gripper 'left' touches object",
         "change point in actuator forces",
         "change point in object acceleration",
