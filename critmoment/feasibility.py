@@ -147,6 +147,9 @@ class JointFeasibility:
         blocked_by: the contact (geom pair) that holds the joint back during its lag or
             saturation stretch, or "": the robot pushes against something (itself, the
             object, the support), which is a fact of the motion, not of the twin.
+        damping_force: the joint's own viscous damping times its highest speed over the
+            longest saturation [N·m or N, at the joint].
+        saturation_speed: that speed [rad/s or m/s].
         target_speed: the target's highest speed over the lag stretch [rad/s or m/s]
             (0 when there is none).
         load_lag: the sag a position servo's stiffness gives under the largest force it
@@ -183,6 +186,8 @@ class JointFeasibility:
     note: str = ""
     blocked_by: str = ""
     target_speed: float = 0.0
+    damping_force: float = 0.0
+    saturation_speed: float = 0.0
     force_flips: float = 0.0
     damping_lag: float = 0.0
     friction_band: float = 0.0
@@ -393,6 +398,18 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         both = saturated[1:] & saturated[:-1]
         flips = both & (np.sign(force[1:, a]) != np.sign(force[:-1, a]))
         force_flips = float(flips.sum()) / max(1, int(both.sum()))
+        damping_force = sat_speed = 0.0
+        if sat_len and n > 1:
+            # the joint's own viscous damping at its speed over the saturation, where the
+            # actuator drives the motion (pushes the way the joint moves; a joint sagging
+            # against its push is a load the damping only slows): a heavily damped joint
+            # moved fast uses its actuator up on the damping alone
+            qs = qpos[sat_start:sat_start + sat_len + 1, int(m.jnt_qposadr[j])]
+            v = np.diff(qs) / dt
+            push = force[sat_start:sat_start + v.size, a] * np.sign(gear)
+            driving = np.sign(push) * np.sign(v) > 0
+            sat_speed = float(np.abs(v[driving]).max(initial=0.0))
+            damping_force = float(m.dof_damping[m.jnt_dofadr[j]]) * sat_speed
         entry = JointFeasibility(
             actuator=name, joint=jname, kind=kind.value, unit=unit, gripper=is_gripper,
             max_lag=max_lag, max_lag_time=max_lag_time, lag_duration=lag_len * dt,
@@ -401,7 +418,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             saturation_total=float(saturated.sum()) * dt, force_limit=limit, limit_source=source,
             frictionloss=friction, target_span=span, note=note, target_speed=speed,
             damping_lag=damping_lag, friction_band=band, force_flips=force_flips,
-            load_lag=load_lag)
+            load_lag=load_lag, damping_force=damping_force, saturation_speed=sat_speed)
         stretch = _failing_stretch(entry, tol, abs(gear), options)
         if stretch is not None:
             blocked = _blocking_contact(m, states, *stretch, joint=j)
@@ -536,6 +553,8 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
                      f"against itself, the object or the support")
         elif e.saturation_total > 0 and e.force_flips >= FLIP_SHARE:
             cause = _oscillation(e, fu)
+        elif e.saturation_total > 0 and e.saturation_start is not None and _damped(e, gear):
+            cause = _damping_cause(e, fu, gear, model, joint)
         elif e.saturation_total > 0 and e.saturation_start is not None:
             cause = (f"the actuator is at its force limit {e.force_limit:g} {fu} "
                      f"({e.limit_source}) for {e.saturation_total:.3g} s in all: too weak "
@@ -576,6 +595,7 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
     elif e.saturation_duration > opt.saturation_duration:
         cause = (f"the contact {e.blocked_by} holds it back" if e.blocked_by else
                  _oscillation(e, fu) if e.force_flips >= FLIP_SHARE else
+                 _damping_cause(e, fu, gear, model, joint) if _damped(e, gear) else
                  "too weak for the load; check [limits], the model's forcerange and gear"
                  + _explicit_hint(model))
         out.append(
@@ -587,6 +607,19 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
         out = [msg.replace("the twin cannot reproduce the nominal motion: ",
                            "the nominal motion is held back by a contact: ") for msg in out]
     return out
+
+
+def _damped(e: JointFeasibility, gear: float) -> bool:
+    """The joint's own damping at its speed takes most of what the actuator can give."""
+    return e.damping_force >= DAMPING_SHARE * e.force_limit * gear
+
+
+def _damping_cause(e: JointFeasibility, fu: str, gear: float, model: mujoco.MjModel,
+                   joint: int) -> str:
+    return (f"the joint's own damping: moving at up to {e.saturation_speed:.3g} {e.unit}/s, "
+            f"its damping {model.dof_damping[model.jnt_dofadr[joint]]:g} takes "
+            f"{e.damping_force:.3g} {fu} of the {e.force_limit * gear:.3g} {fu} the actuator "
+            f"can give; slow the motion there, or check the model's joint damping")
 
 
 def _explicit_hint(model: mujoco.MjModel) -> str:

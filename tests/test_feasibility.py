@@ -598,3 +598,22 @@ def test_check_feasibility_takes_the_scenarios_tolerances(twin, demo_recording):
     assert dataclasses.asdict(check_feasibility(demo_recording, tight,
                                                 options=FeasibilityOptions()).options) == \
         dataclasses.asdict(FeasibilityOptions())
+
+
+def test_a_joint_held_back_by_its_own_damping_is_named(tmp_path):
+    """franka_sim's Panda wrist (joint damping 10, 12 N·m) turned 1 rad in 1.5 s saturated,
+    and the message said "too weak for the load" (gravity there: 0.1 N·m)."""
+    path = _scene(tmp_path, axis="0 0 1", limit=20.0)
+    arm = path.parent / "arm.xml"
+    arm.write_text(arm.read_text().replace('range="-2 2" damping="1"', 'range="-2 2" damping="40"'))
+    twin = Twin(load_scenario(path))
+    rec = _record(twin, _ramp(1.5))
+    with pytest.raises(InfeasibleTwinError, match=r"joint 'hinge'.*likely cause: the joint's "
+                       r"own damping: moving at up to [\d.]+ rad/s, its damping 40 takes "
+                       r"[\d.]+ N·m of the 20 N·m the actuator can give"):
+        check_feasibility(rec, twin)
+    # a joint sagging under a load its servo cannot hold is not blamed on its damping
+    weak = Twin(load_scenario(_scene(tmp_path / "weak", axis="0 1 0", limit=0.5)))
+    problems = check_feasibility(_record(weak, _ramp(0.0, seconds=4.0)), weak,
+                                 raise_on_failure=False).problems
+    assert problems and not any("own damping" in p for p in problems)
