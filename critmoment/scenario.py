@@ -1749,6 +1749,14 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         settle=_get(object_t, "settle", bool, "[object]", True), servos=servos,
         feasibility=feasibility)
     scenario.validate_names(model)
+    for p in box.parameters:
+        if isinstance(p, MassParameter):
+            given = float(model.body_mass[p.resolve(model)])
+            if given > 0 and p.low >= 100.0 * given:
+                warnings.warn(
+                    f"[uncertainty.{p.name}] range: {p.low:g}..{p.high:g} kg, at least 100 "
+                    f"times the body's {given:g} kg in the MJCF; is the range in grams? "
+                    f"(expected kg)", ScenarioWarning, stacklevel=2)
     idle = scenario.undriven_actuators(model)
     if idle:
         warnings.warn(

@@ -229,6 +229,10 @@ def _fps_from_times(times: Any, n_steps: int, *, what: str) -> float:
             f"step(s) in total)"
         )
     median = float(np.median(dt))
+    if median > 1.0:
+        raise TrajectoryError(
+            f"{what}: times {median:g} apart, a control rate of {1.0 / median:.3g} Hz; "
+            f"expected times in seconds (milliseconds, or sample indices?)")
     off = np.flatnonzero(np.abs(dt - median) > _RATE_RTOL * median)
     if off.size:
         i = int(off[0])

@@ -175,3 +175,14 @@ def test_validate_takes_a_scenario_as_analyze_does(scenario):
 
     params = inspect.signature(cm.validate).parameters
     assert list(params)[:2] == ["traj", "scenario"] and params["twin"].default is None
+
+
+def test_times_in_milliseconds_are_named(tmp_path):
+    """`time` in ms gave "expected at most 500,000 physics steps ... raise the limit"."""
+    from critmoment.trajectory import load_trajectory
+
+    path = tmp_path / "ms.npz"
+    np.savez(path, actions=np.zeros((20, 14)), time=np.arange(20) * 20.0)
+    with pytest.raises(TrajectoryError, match=r"times 20 apart, a control rate of 0.05 Hz; "
+                                              r"expected times in seconds \(milliseconds"):
+        load_trajectory(path)

@@ -777,3 +777,15 @@ def test_a_relative_model_path_two_folders_up_compiles_its_meshes(tmp_path, monk
     monkeypatch.chdir(cwd)
     path = Path("../../sub/scene.xml")
     assert compile_spec(prepare_spec(path), path).ngeom == 1
+
+
+def test_a_mass_range_in_grams_is_warned_of(tmp_path):
+    """`range = [50, 10000]` for a 0.05 kg cube (grams) was audited as 50 kg to 10 t."""
+    from critmoment.scenario import ScenarioWarning
+
+    folder = _toml(tmp_path, ("range = [0.05, 10.0]", "range = [50.0, 10000.0]"),
+                   ("nominal = 0.05", "nominal = 50.0"))
+    with pytest.warns(ScenarioWarning, match=r"\[uncertainty.mass\] range: 50..10000 kg, at "
+                                             r"least 100 times the body's 0.05 kg in the MJCF; "
+                                             r"is the range in grams"):
+        load_scenario(folder)
