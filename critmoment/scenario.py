@@ -1055,7 +1055,8 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
     """
     mjcf = Path(mjcf)
     if not mjcf.is_file():
-        raise InputFileError(f"{what}: {_not_a_file(mjcf)}: {mjcf}")
+        where = "" if mjcf.is_absolute() else f" (looked for {mjcf.absolute()})"
+        raise InputFileError(f"{what}: {_not_a_file(mjcf)}: {mjcf}{where}")
     if mjcf.suffix.lower() in (".toml", ".npz", ".hdf5", ".h5", ".parquet", ".json"):
         raise ScenarioError(f"{what}: expected an MJCF model file (.xml), got {mjcf} (a "
                             f"{mjcf.suffix} file); a scenario goes to --scenario, a "
@@ -1635,7 +1636,13 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
     _keys(raw, "scenario", _TOP)
     model_t = _get(raw, "model", dict, "scenario")
     _keys(model_t, "[model]", ("mjcf", "keyframe"))
-    mjcf = base / _get(model_t, "mjcf", str, "[model]")
+    given = _get(model_t, "mjcf", str, "[model]")
+    mjcf = base / given
+    if not mjcf.exists() and path is not None and path.is_symlink():
+        # a linked scenario.toml: its model lies beside the file the link points to
+        real = path.resolve().parent / given
+        if real.exists():
+            mjcf = real
     keyframe = _get(model_t, "keyframe", (str, int), "[model]", None)
     object_t = _get(raw, "object", dict, "scenario")
     _keys(object_t, "[object]", ("body", "geom", "settle"))

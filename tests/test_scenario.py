@@ -789,3 +789,16 @@ def test_a_mass_range_in_grams_is_warned_of(tmp_path):
                                              r"least 100 times the body's 0.05 kg in the MJCF; "
                                              r"is the range in grams"):
         load_scenario(folder)
+
+
+def test_a_linked_scenario_finds_its_model_beside_the_file_it_points_to(tmp_path, monkeypatch):
+    folder = _copy(tmp_path)
+    link = tmp_path / "elsewhere" / "link.toml"
+    link.parent.mkdir()
+    link.symlink_to(folder / "scenario.toml")
+    assert load_scenario(link).mjcf.resolve() == (folder / "scene.xml").resolve()
+    (folder / "scenario.toml").write_text((folder / "scenario.toml").read_text().replace(
+        'mjcf = "scene.xml"', 'mjcf = "nowhere.xml"'))
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(InputFileError, match=r"file not found: .*nowhere.xml \(looked for /"):
+        Twin(load_scenario(Path("elsewhere") / "link.toml"))
