@@ -288,6 +288,8 @@ def cmd_validate(args) -> int:
             (out / "validation.json").write_text(_dump(payload))
     # a vacuous validation (no real success or no real failure) proves nothing: exit 1
     code = EXIT_OK if result.confusion["false_safe"] == 0 and not result.vacuous else EXIT_UNSAFE
+    if args.min_agreement is not None and not result.agreement >= args.min_agreement:
+        code = EXIT_UNSAFE  # too many conservative errors for the caller's purpose
     _Stdout.emit(_dump(payload) if args.json else result.summary_text())
     return code
 
@@ -504,6 +506,9 @@ def build_parser() -> argparse.ArgumentParser:
     add_traj(p)
     p.add_argument("--samples", type=_int_at_least(1), default=64, help="Sobol samples of the box")
     p.add_argument("--seed", type=_seed, default=0, help="Sobol seed")
+    p.add_argument("--min-agreement", type=_fraction(open_low=False), default=None,
+                   help="also exit 1 when the agreement (false unsafes count against it) is "
+                        "below this, e.g. 0.95")
     add_method(p)
     p.set_defaults(func=cmd_validate)
 

@@ -482,3 +482,20 @@ def test_version(capsys):
 
     assert main(["--version"]) == 0
     assert capsys.readouterr().out.strip() == f"critmoment {__version__}"
+
+
+def test_validate_min_agreement_fails_a_conservative_validation(traj_file, monkeypatch,
+                                                               capsys):
+    """genesis' franka_sim Panda: 60 false unsafes of 64 (agreement 0.062) exited 0, which a
+    script checking the exit code could not see; --min-agreement makes it exit 1."""
+    from types import SimpleNamespace
+
+    from critmoment import validation
+
+    fake = SimpleNamespace(confusion={"false_safe": 0}, vacuous=False, agreement=0.062,
+                           to_json=lambda: {"agreement": 0.062}, summary_text=lambda: "summary")
+    monkeypatch.setattr(validation, "validate", lambda *a, **k: fake)
+    assert main(["validate", str(traj_file), "--samples", "8"]) == 0
+    assert main(["validate", str(traj_file), "--samples", "8", "--min-agreement", "0.95"]) == 1
+    fake.agreement = 0.97
+    assert main(["validate", str(traj_file), "--samples", "8", "--min-agreement", "0.95"]) == 0
