@@ -624,7 +624,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         moments=tuple(moment_reports), worst_failed=worst_failed_sparse,
         worst_unlifted=worst_unlifted,
         worst_rollouts_failed=worst_failed, trend=_trend(curves, box),
-        own_failures=roll.failures(samples[runs.rerun]))
+        own_failures=roll.failures(samples[runs.rerun]),
+        chain_failures=_chain_kinds(runs, failed))
     decision = vd.decide(evidence, dopt)
     region_check = None
     if decision.region_to_check is not None and steps.size:
@@ -752,7 +753,7 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
 
     def chain():
         if not (options.chain and moments):
-            return np.zeros(n, bool), np.zeros(n, bool), np.zeros(n, bool)
+            return np.zeros(n, bool), np.zeros(n, bool), np.zeros(n, bool), [None] * n
         with timer("chained segments"):
             return chain_samples(evaluator.fork(), steps, samples, sweep, rerun, options,
                                  nominal_completed=nominal_completed)
@@ -775,7 +776,7 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
         finally:
             evaluator.busy = None
         verifying.run()  # this thread takes the rollouts if that thread has not
-        chained, chained_failed, suspect = chaining.result()
+        chained, chained_failed, suspect, kinds = chaining.result()
         rerun_failed = verifying.result()
     if suspect.any() and options.verify is not None:
         with timer("chained segments"):
@@ -785,7 +786,19 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
         suspect = np.zeros(n, bool)
     return vd.SampleRuns(reruns=reruns, chained=chained, chained_failed=chained_failed,
                          suspect=suspect, rerun_failed=rerun_failed,
-                         nominal_failed=nominal_failed), extra
+                         nominal_failed=nominal_failed, chained_kinds=tuple(kinds)), extra
+
+
+def _chain_kinds(runs: vd.SampleRuns, failed: np.ndarray) -> dict[str, int]:
+    """How many of the failures the chain decided (not sent on to a rollout) failed each
+    way (``history.ChainedResult.kinds``), most first."""
+    counts: dict[str, int] = {}
+    if not runs.chained_kinds:
+        return counts
+    for i in np.flatnonzero(runs.chained & ~runs.suspect & failed):
+        kind = runs.chained_kinds[i] or "not_completed"
+        counts[kind] = counts.get(kind, 0) + 1
+    return dict(sorted(counts.items(), key=lambda kv: -kv[1]))
 
 
 def _nominal_failed(evaluator: sp.SparseEvaluator, steps: np.ndarray) -> np.ndarray:
@@ -921,7 +934,7 @@ def decision_options(opt: AnalyzeOptions, threshold: float) -> vd.DecisionOption
 def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.ndarray,
                   sweep: sp.SparseResult | None, rerun: np.ndarray,
                   options: vd.DecisionOptions, *, nominal_completed: bool = True
-                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str | None]]:
     """The chained evidence of the decision: which samples were carried on their own state
     (:func:`critmoment.verdict.samples_to_chain`), whether they failed there, and which of
     them their own full rollout should decide (with verification on: the failures of
@@ -944,8 +957,9 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
     chained = np.zeros(n, bool)
     chained_failed = np.zeros(n, bool)
     suspect = np.zeros(n, bool)
+    kinds: list[str | None] = [None] * n
     if sweep is None or steps.size == 0:
-        return chained, chained_failed, suspect
+        return chained, chained_failed, suspect, kinds
     chained = vd.samples_to_chain(sweep, rerun, options, nominal_completed=nominal_completed)
     if chained.any():
         result = history.chained_failures(evaluator, steps, samples[chained])
@@ -953,7 +967,9 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
         suspect[chained] = result.to_confirm
         if options.verify is not None:
             suspect[chained] |= result.near(options.verify)
-    return chained, chained_failed, suspect
+        for i, kind in zip(np.flatnonzero(chained), result.kinds(), strict=True):
+            kinds[i] = kind
+    return chained, chained_failed, suspect, kinds
 
 
 def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Trajectory,

@@ -277,6 +277,32 @@ class ChainedResult:
                    else (self.drop_step >= 0) & (self.drop_step < self.release))
         return self.failed & (moment | late | (incomplete & ~dropped))
 
+    def kinds(self) -> list[str | None]:
+        """How each sample failed on its chain, the earliest event (None for a pass):
+        ``groundtruth.Outcome`` values ("diverged", "motor", "slipped", "dropped",
+        "not_completed") for the watch's rules and the task's, or "moment" for a failure
+        of a moment's sparse decision on the sample's own state."""
+        n = self.samples.shape[0]
+        failed = self.failed
+        big = np.iinfo(np.int64).max
+        events = [("diverged", self.diverged_step), ("motor", self.motor_step),
+                  ("slipped", self.slip_step), ("dropped", self.drop_step)]
+        steps = np.where(self.failure > 0, self.steps[:, None], big).min(axis=0) \
+            if self.failure.size else np.full(n, big)
+        out: list[str | None] = []
+        for i in range(n):
+            if not failed[i]:
+                out.append(None)
+                continue
+            when = [(int(a[i]), name) for name, a in events if a is not None and a[i] >= 0]
+            if steps[i] < big:
+                when.append((int(steps[i]), "moment"))
+            if when:
+                out.append(min(when)[1])
+            else:
+                out.append("not_completed")
+        return out
+
     @property
     def watched_failed(self) -> np.ndarray:
         """(n,) bool: the watch (the ground truth's slip, saturation and tracking rules, and

@@ -385,6 +385,9 @@ class SampleRuns:
     suspect: np.ndarray
     rerun_failed: np.ndarray
     nominal_failed: np.ndarray | None = None
+    #: how each chained failure failed on its chain (``history.ChainedResult.kinds``), None
+    #: for the others; empty when not known
+    chained_kinds: tuple[str | None, ...] = ()
 
     @property
     def rerun(self) -> np.ndarray:
@@ -1079,6 +1082,8 @@ class Evidence:
         own_failures: how the samples decided by their own full rollout failed, per
             outcome (``groundtruth.Outcome`` value): (how many, earliest failure time [s] or
             None, the actuators of the motor failures); for the causes.
+        chain_failures: how the failures the chained segments decided failed, per kind
+            (``history.ChainedResult.kinds``): how many; for the causes.
     """
 
     box: UncertaintyBox
@@ -1096,6 +1101,7 @@ class Evidence:
     trend: Mapping[str, float] | None = None
     own_failures: Mapping[str, tuple[int, float | None, tuple[str, ...]]] = (
         dataclasses.field(default_factory=dict))
+    chain_failures: Mapping[str, int] = dataclasses.field(default_factory=dict)
     #: the task's stage names, for the causes (stage 0 is "untouched", ...)
     stage_names: tuple[str, ...] = ()
 
@@ -1259,10 +1265,12 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
         chain_failed = int((chained & failed).sum())
         if chain_failed:
             # the moments' lines count only the failures at the moments
+            kinds = _kinds_text(evidence.chain_failures)
             causes += (f"{chain_failed} of {int(chained.sum())} samples that pass at every "
                        f"audited moment fail on their own path (chained segments, each "
-                       f"sample's own run through the moments: a slip, a drop or a motor "
-                       f"overload between or after them, or the task not completed)",)
+                       f"sample's own run through the moments: "
+                       + (kinds if kinds else "a slip, a drop or a motor overload between or "
+                          "after them, or the task not completed") + ")",)
     if check is not None and check.shrunk and check.region is not None:
         causes += (f"the safe region first claimed ({_bounds_text(check.first_claim, box)}) "
                    f"failed its check at its corners, edges and inside and was shrunk to "
@@ -1280,6 +1288,16 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
                     sticking=sticking, slipping=slipping, margin=margin)
 
 
+_KIND_WORDS = {"motor": "motor overload", "dropped": "dropped", "slipped": "slipped in the grip",
+               "diverged": "simulation diverged", "not_completed": "task not completed",
+               "moment": "failed a moment on its own state"}
+
+
+def _kinds_text(counts: Mapping[str, int]) -> str:
+    """``{"motor": 3, "slipped": 1}`` in words: "3 motor overload, 1 slipped in the grip"."""
+    return ", ".join(f"{k} {_KIND_WORDS.get(kind, kind)}" for kind, k in counts.items())
+
+
 def _own_failures_text(own: Mapping[str, tuple[int, float | None, tuple[str, ...]]]) -> str:
     """How the samples decided by their own full rollout failed, in one cause line: the
     failures that no moment shows (a motor overloaded away from the object, a drop between
@@ -1288,9 +1306,7 @@ def _own_failures_text(own: Mapping[str, tuple[int, float | None, tuple[str, ...
         return ""
     parts = []
     for outcome, (count, first, actuators) in sorted(own.items(), key=lambda kv: -kv[1][0]):
-        what = {"motor": "motor overload", "dropped": "dropped",
-                "slipped": "slipped in the grip", "diverged": "simulation diverged",
-                "not_completed": "task not completed"}.get(outcome, outcome)
+        what = _KIND_WORDS.get(outcome, outcome)
         detail = []
         if actuators:
             detail.append(", ".join(actuators))

@@ -194,8 +194,18 @@ def test_chained_segments_decide_the_samples_that_pass_without_a_rollout(boundar
     newly = chained.failed & ~checked.failed
     stand = v["chained_failed"] - v["chained_rolled_out"] + v["chained_confirmed"]
     assert int(newly.sum()) == stand > 0
-    own = brute_force(traj, twin=boundary, samples=chained.sweep.samples[newly]).failed
-    assert own.all()  # every chained failure that stands is a real failure
+    bf = brute_force(traj, twin=boundary, samples=chained.sweep.samples[newly])
+    assert bf.failed.all()  # every chained failure that stands is a real failure
+    # the causes say how the chain's own failures failed, as brute force classifies them
+    line = next(c for c in chained.failure_causes if "fail on their own path (chained" in c)
+    decided_by_chain = v["chained_failed"] - v["chained_rolled_out"]
+    if decided_by_chain:
+        from critmoment.verdict import _KIND_WORDS
+
+        counts = [int(part.split()[0]) for part in line.split("moments: ")[1].rstrip(")")
+                  .split(", ")]
+        assert sum(counts) == decided_by_chain
+        assert any(word in line for word in _KIND_WORDS.values())
     # chained segments only add failures
     assert not (checked.failed & ~chained.failed).any()
 

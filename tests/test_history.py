@@ -468,9 +468,10 @@ def test_a_chained_pass_close_to_a_rule_goes_to_its_own_rollout(scenario, demo_t
     sweep = ev.evaluate([start], samples)
     dopt = vd.DecisionOptions(threshold=scenario.cost.threshold, verify=expected - 0.01)
     none = np.zeros(2, bool)
-    chained, failed, rolled = analysis.chain_samples(ev, np.array([start]), samples, sweep,
-                                                     none, dopt)
+    chained, failed, rolled, kinds = analysis.chain_samples(ev, np.array([start]), samples,
+                                                            sweep, none, dopt)
     assert chained[0] and not failed[0] and rolled[0]
+    assert len(kinds) == 2 and kinds[0] is None  # a pass has no failure kind
     for verify in (None, expected + 0.01):
         off = dataclasses.replace(dopt, verify=verify)
         assert not analysis.chain_samples(ev, np.array([start]), samples, sweep, none,
