@@ -1314,7 +1314,7 @@ def _own_failures_text(own: Mapping[str, tuple[int, float | None, tuple[str, ...
             detail.append(f"first at t = {first:.3g} s")
         parts.append(f"{count} {what}" + (f" ({'; '.join(detail)})" if detail else ""))
     total = sum(count for count, _, _ in own.values())
-    text = (f"the samples decided by their own full rollout: {total} fail, "
+    text = (f"how the {total} sample(s) failing on their own full rollout failed: "
             + ", ".join(parts))
     if "motor" in own:
         text += ("; suggestion: check the named actuators' limits ([limits]) against the "

@@ -253,10 +253,10 @@ def test_the_causes_name_how_the_own_rollouts_failed(boundary_reports, demo_traj
     counts = Counter(o.value for o in truth.classification.outcome if o.value != "success")
     assert sum(counts.values()) == checked.verification["failed"] > 0
     line = [c for c in checked.failure_causes
-            if c.startswith("the samples decided by their own full rollout:")]
+            if c.startswith("how the ") and "failing on their own full rollout failed: " in c]
     assert len(line) == 1, checked.failure_causes
-    assert line[0].startswith(f"the samples decided by their own full rollout: "
-                              f"{sum(counts.values())} fail, ")
+    assert line[0].startswith(f"how the {sum(counts.values())} sample(s) failing on their own "
+                              f"full rollout failed: ")
     words = {"dropped": "dropped", "slipped": "slipped in the grip", "motor": "motor overload",
              "not_completed": "task not completed", "diverged": "simulation diverged"}
     for outcome, k in counts.items():
@@ -268,9 +268,9 @@ def test_the_own_failures_line_names_the_motor():
 
     text = _own_failures_text({"motor": (30, 3.31, ("shoulder_lift",)),
                                "dropped": (2, 4.0, ())})
-    assert text.startswith("the samples decided by their own full rollout: 32 fail, 30 motor "
-                           "overload (shoulder_lift; first at t = 3.31 s), 2 dropped (first at "
-                           "t = 4 s); suggestion: check the named actuators' limits")
+    assert text.startswith("how the 32 sample(s) failing on their own full rollout failed: 30 "
+                           "motor overload (shoulder_lift; first at t = 3.31 s), 2 dropped "
+                           "(first at t = 4 s); suggestion: check the named actuators' limits")
     assert _own_failures_text({}) == ""
 
 
