@@ -31,10 +31,22 @@ __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_li
 
 
 def collision_geoms(model: mujoco.MjModel) -> np.ndarray:
-    """Which geoms can touch anything, (ngeom,) bool: a nonzero contype or conaffinity, or a
-    place in an explicit ``<pair>`` (which MuJoCo collides whatever the two geoms' bits say;
-    some models give their objects contacts only that way)."""
-    mask = (model.geom_contype != 0) | (model.geom_conaffinity != 0)
+    """Which geoms can touch anything, (ngeom,) bool: bits (contype, conaffinity) that match
+    another geom's (MuJoCo collides two geoms when either's contype shares a bit with the
+    other's conaffinity), or a place in an explicit ``<pair>`` (which MuJoCo collides
+    whatever the two geoms' bits say; some models give their objects contacts only that
+    way). Fingertip pads whose bits match no other geom (lerobot's SO-101 as shipped) touch
+    nothing and are not counted."""
+    ct = model.geom_contype.astype(np.int64)
+    ca = model.geom_conaffinity.astype(np.int64)
+    patterns, inverse, counts = np.unique(np.stack([ct, ca], axis=1), axis=0,
+                                          return_inverse=True, return_counts=True)
+    inverse = np.asarray(inverse).reshape(-1)
+    pc, pa = patterns[:, 0], patterns[:, 1]
+    meets = ((pc[:, None] & pa[None, :]) | (pc[None, :] & pa[:, None])) != 0
+    # a pattern meets itself only through another geom of that pattern
+    np.fill_diagonal(meets, np.diag(meets) & (counts > 1))
+    mask = meets.any(axis=1)[inverse] if model.ngeom else np.zeros(0, bool)
     mask[model.pair_geom1] = True
     mask[model.pair_geom2] = True
     return mask

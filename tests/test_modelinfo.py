@@ -977,3 +977,17 @@ def test_the_gripper_measurement_holds_the_arm_inside_its_ranges(tmp_path):
              if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, n) >= 0]
     closed, opened = act_info.closing_ends(model, fingers, geoms, keyframe=0)
     assert closed != opened
+
+
+def test_a_geom_whose_bits_match_no_other_touches_nothing():
+    """lerobot's SO-101 as shipped: fingertip pads with contype = conaffinity = 2, where
+    every other geom has 1, were counted among the gripper's collision geoms."""
+    model = mujoco.MjModel.from_xml_string("""<mujoco><worldbody>
+      <geom name="floor" type="plane" size="1 1 .1"/>
+      <body><freejoint/><geom name="a" size=".1"/></body>
+      <body pos="1 0 0"><freejoint/><geom name="pad" size=".1" contype="2" conaffinity="2"/></body>
+      <body pos="2 0 0"><freejoint/><geom name="pad2" size=".1" contype="4" conaffinity="4"/>
+        <geom name="pad3" size=".1" pos="0 0 .3" contype="4" conaffinity="4"/></body>
+      <body pos="3 0 0"><freejoint/><geom name="paired" size=".1" contype="0" conaffinity="0"/></body>
+    </worldbody><contact><pair geom1="paired" geom2="floor"/></contact></mujoco>""")
+    assert act_info.collision_geoms(model).tolist() == [True, True, False, True, True, True]
