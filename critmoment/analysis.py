@@ -1068,14 +1068,43 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
             fails = np.array(res.failed_any, dtype=bool)  # it shrinks: no runs this round
         else:
             own = _own_run_points(pts, current, box, per_edge, res, undecided, every_point)
-            sub = _select_samples(res, own)
-            runs, _ = sample_runs(evaluator, steps, pts[own], sub, options, roll=roll,
-                                  nominal_completed=nominal_completed, nthread=nthread)
+
+            def decide_own(points: np.ndarray, res_own: sp.SparseResult):
+                runs, _ = sample_runs(evaluator, steps, points, res_own, options, roll=roll,
+                                      nominal_completed=nominal_completed, nthread=nthread)
+                failed = vd.failing_samples(
+                    runs.evidence(res_own, nominal_completed=nominal_completed), options)
+                return runs, failed
+
+            runs, own_failed = decide_own(pts[own], _select_samples(res, own))
             fails = np.zeros(pts.shape[0], bool)
-            fails[own] = vd.failing_samples(
-                runs.evidence(sub, nominal_completed=nominal_completed), options)
+            fails[own] = own_failed
             rolled[own] = runs.rerun
             chained[own] = runs.chained & ~runs.rerun
+            if not fails.any():
+                # an own run that came near a watched rule's limit (a slip of 0.8 tolerance
+                # or more, a saturation near its time) marks its edge as the cost marks it:
+                # the outcome can turn between the coarse points, where the cost says
+                # nothing (a lever's slip grows past 1 cm between two passing edge points)
+                near = np.zeros(pts.shape[0], bool)
+                near[own] = runs.suspect | roll.near_rule(pts[own], near_cost
+                                                          / options.threshold)
+                by_rule = sorted({i for i, e in enumerate(edges) if near[e].any()} - set(hot))
+                if by_rule:
+                    dense, _ = vd.region_points(current, box, per_edge=per_edge,
+                                                dense=sorted(set(hot) | set(by_rule)))
+                    scale = np.maximum(np.abs(box.high - box.low), 1e-300)
+                    seen = (np.abs(dense[:, None, :] - pts[None, :, :])
+                            <= 1e-9 * scale).all(axis=2).any(axis=1)
+                    extra = dense[~seen]
+                    if extra.shape[0]:
+                        res_x = evaluator.evaluate(steps, extra, first_failure=not exhaustive)
+                        n_sparse += extra.shape[0]
+                        runs_x, failed_x = decide_own(extra, res_x)
+                        pts = np.vstack([pts, extra])
+                        fails = np.concatenate([fails, failed_x])
+                        rolled = np.concatenate([rolled, runs_x.rerun])
+                        chained = np.concatenate([chained, runs_x.chained & ~runs_x.rerun])
             n_rollouts += int(rolled.sum())
             n_chained += int(chained.sum())
         if not fails.any():
@@ -1135,6 +1164,9 @@ class _Rollouts:
         #: per point rolled out (its bytes): (outcome, first failure time [s] or None, the
         #: motor-checked actuator of a motor failure or None)
         self.outcomes: dict[bytes, tuple[str, float | None, str | None]] = {}
+        #: per point rolled out that passed: how close its run came to a rule's limit (the
+        #: largest of slip / slip tolerance and saturation time / motor time)
+        self.closeness: dict[bytes, float] = {}
 
     def nominal(self) -> NominalReference | None:
         """The nominal reference, read from the recording on first use (None without one
@@ -1161,7 +1193,19 @@ class _Rollouts:
                     if outcome is Outcome.MOTOR and column >= 0 else None)
             self.outcomes[np.asarray(point, float).tobytes()] = (
                 outcome.value, float(step) * c.dt if step >= 0 else None, name)
+        close = np.maximum(c.max_slip / c.criteria.slip_tolerance,
+                           c.saturation_time / c.criteria.motor_time)
+        for point, outcome, level in zip(bf.samples, c.outcome, close, strict=True):
+            if outcome is Outcome.SUCCESS:
+                self.closeness[np.asarray(point, float).tobytes()] = float(level)
         return bf.failed
+
+    def near_rule(self, points: np.ndarray, fraction: float) -> np.ndarray:
+        """(p,) bool: the rolled-out ``points`` whose run came within ``fraction`` of a
+        ground-truth rule's limit without failing: a slip of ``fraction`` × the slip
+        tolerance or more, or a saturation held ``fraction`` × its time or more."""
+        return np.array([self.closeness.get(np.asarray(p, float).tobytes(), 0.0) >= fraction
+                         for p in np.asarray(points, float)], dtype=bool)
 
     def failures(self, points: np.ndarray) -> dict[str, tuple[int, float | None,
                                                               tuple[str, ...]]]:
