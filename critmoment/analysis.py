@@ -625,7 +625,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         worst_unlifted=worst_unlifted,
         worst_rollouts_failed=worst_failed, trend=_trend(curves, box),
         own_failures=roll.failures(samples[runs.rerun]),
-        chain_failures=_chain_kinds(runs, failed))
+        chain_failures=_chain_kinds(runs, failed),
+        nominal_run_failure=_nominal_run_failure(roll.nominal(), twin, rec.dt))
     decision = vd.decide(evidence, dopt)
     region_check = None
     if decision.region_to_check is not None and steps.size:
@@ -787,6 +788,26 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
     return vd.SampleRuns(reruns=reruns, chained=chained, chained_failed=chained_failed,
                          suspect=suspect, rerun_failed=rerun_failed,
                          nominal_failed=nominal_failed, chained_kinds=tuple(kinds)), extra
+
+
+def _nominal_run_failure(reference: NominalReference | None, twin: Twin,
+                         dt: float) -> str | None:
+    """How the nominal run itself fails by the ground truth's rules other than the task's,
+    in words, or None (a success, or a run that only does not complete its task: the task's
+    own rule speaks for that)."""
+    if reference is None or reference.outcome in (Outcome.SUCCESS, Outcome.NOT_COMPLETED):
+        return None
+    when = (f" from t = {reference.first_failure_step * dt:.3g} s"
+            if reference.first_failure_step >= 0 else "")
+    if reference.outcome is Outcome.MOTOR:
+        motors = np.flatnonzero(twin.motors)
+        name = (f" {twin.actuator_names[motors[reference.motor_column]]!r}"
+                if 0 <= reference.motor_column < motors.size else "")
+        c = OutcomeCriteria()
+        return (f"motor overload: actuator{name} held at {c.saturation:.1%} of its force limit "
+                f"or more for over {c.motor_time * 1e3:g} ms{when} (the ground truth's rule; "
+                f"the task is completed all the same)")
+    return f"{reference.outcome.value}{when}"
 
 
 def _chain_kinds(runs: vd.SampleRuns, failed: np.ndarray) -> dict[str, int]:

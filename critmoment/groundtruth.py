@@ -540,12 +540,21 @@ class NominalReference:
         completed: it completes the task.
         n_steps: physics steps of the trajectory.
         nominal: the nominal parameter values, (k,).
+        outcome: its own real outcome (classified against itself: a motor saturation, a
+            divergence or the task's rule can fail it; a slip or a drop, measured against
+            the nominal run, cannot).
+        first_failure_step: the step of its earliest failure event, −1 for a success.
+        motor_column: the motor-checked actuator of a motor failure (``Twin.motors``
+            order), −1 otherwise.
     """
 
     frames: _Frames
     completed: bool
     n_steps: int
     nominal: np.ndarray
+    outcome: Outcome = Outcome.SUCCESS
+    first_failure_step: int = -1
+    motor_column: int = -1
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -687,6 +696,9 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
            if f.name not in ("outcome", "dt", "criteria")})
     if reference is None:
         reference = NominalReference(frames=frames_ref, completed=bool(result.completed[0]),
+                                     outcome=result.outcome[0],
+                                     first_failure_step=int(result.first_failure_step[0]),
+                                     motor_column=int(result.motor_column[0]),
                                      n_steps=int(controls.shape[0]),
                                      nominal=box.nominal.copy())
     return BruteForce(samples=samples, parameter_names=box.names, classification=classification,
@@ -748,7 +760,9 @@ def reference_from_recording(recording, twin: Twin,
     own = _classify_frames(frames, ref, controls, probe, dt, criteria, np.zeros(1, bool),
                            np.full(1, -1, np.int64))
     return NominalReference(frames=ref, completed=bool(own.completed[0]), n_steps=n,
-                            nominal=box.nominal.copy())
+                            nominal=box.nominal.copy(), outcome=own.outcome[0],
+                            first_failure_step=int(own.first_failure_step[0]),
+                            motor_column=int(own.motor_column[0]))
 
 
 @dataclasses.dataclass(frozen=True)

@@ -1084,6 +1084,9 @@ class Evidence:
             None, the actuators of the motor failures); for the causes.
         chain_failures: how the failures the chained segments decided failed, per kind
             (``history.ChainedResult.kinds``): how many; for the causes.
+        nominal_run_failure: how the nominal run itself fails by the ground truth's rules
+            other than the task's (a motor held at its limit, a divergence), in words, or
+            None: it fails the nominal parameters.
     """
 
     box: UncertaintyBox
@@ -1102,6 +1105,7 @@ class Evidence:
     own_failures: Mapping[str, tuple[int, float | None, tuple[str, ...]]] = (
         dataclasses.field(default_factory=dict))
     chain_failures: Mapping[str, int] = dataclasses.field(default_factory=dict)
+    nominal_run_failure: str | None = None
     #: the task's stage names, for the causes (stage 0 is "untouched", ...)
     stage_names: tuple[str, ...] = ()
 
@@ -1165,7 +1169,11 @@ def _nominal_fails(evidence: Evidence, options: DecisionOptions) -> tuple[bool, 
                and se.nominal_completed
                and (evidence.nominal_unlifted or not options.verify_unlifted
                     or options.nominal_by_run))
-    return (evidence.nominal_failed and not squeeze) or task_failed, squeeze, task_failed
+    # the nominal run's own real outcome: a motor the ground truth's rule fails it by (held
+    # at its limit for 50 ms) fails the nominal parameters whatever the task says
+    run_failed = options.require_task and evidence.nominal_run_failure is not None
+    return ((evidence.nominal_failed and not squeeze) or task_failed or run_failed,
+            squeeze and not run_failed, task_failed)
 
 
 def _worst_cases_pass(evidence: Evidence, options: DecisionOptions) -> bool:
@@ -1249,6 +1257,8 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
     elif evidence.nominal_failed:
         causes = (f"fails at the nominal parameters (max cost {evidence.nominal_cost:.3g} > "
                   f"{options.threshold:g})",) + causes
+    if evidence.nominal_run_failure is not None and options.require_task:
+        causes = (f"the nominal run itself fails: {evidence.nominal_run_failure}",) + causes
     if near.any() and se.rerun_failed is not None:
         near_failed = int(np.asarray(se.rerun_failed, bool)[near].sum())
         if near_failed:

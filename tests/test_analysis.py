@@ -533,3 +533,20 @@ def test_untrusted_force_ratios_are_listed_only_at_moments_with_a_grip():
     assert _untrusted(rec, ev, np.array([50, 185, 250, 350])) == (185, 250)
     ev.contact_trusted = lambda steps: np.array([False, False, True, False])
     assert _untrusted(rec, ev, np.array([50, 185, 250, 350])) == (185,)
+
+
+def test_the_nominal_runs_own_motor_failure_is_named(twin, demo_recording):
+    import dataclasses as dc
+
+    from critmoment.analysis import _nominal_run_failure
+    from critmoment.groundtruth import Outcome, reference_from_recording
+
+    ref = reference_from_recording(demo_recording, twin)
+    assert _nominal_run_failure(ref, twin, demo_recording.dt) is None
+    motor = dc.replace(ref, outcome=Outcome.MOTOR, first_failure_step=670, motor_column=1)
+    name = twin.actuator_names[np.flatnonzero(twin.motors)[1]]
+    text = _nominal_run_failure(motor, twin, demo_recording.dt)
+    assert text.startswith(f"motor overload: actuator {name!r} held at 99.9% of its force "
+                           f"limit or more for over 50 ms from t = 1.34 s")
+    incomplete = dc.replace(ref, outcome=Outcome.NOT_COMPLETED)
+    assert _nominal_run_failure(incomplete, twin, demo_recording.dt) is None

@@ -639,3 +639,30 @@ def test_interior_points_lie_strictly_inside_and_spread(make_box, n):
     assert ((pts < mid).any(axis=0) & (pts > mid).any(axis=0)).all()
     np.testing.assert_array_equal(pts, vd.interior_points(region, box))  # deterministic
     assert not vd.within(np.array([[hi[0] * 1.01] + list(mid[1:])]), region, box)[0]
+
+
+def test_a_nominal_run_that_fails_the_ground_truths_motor_rule_is_unsafe():
+    """A wrist held at its limit for 80 ms in the nominal run (over the ground truth's 50 ms,
+    under the feasibility check's 100 ms) while the task completes: the audit said
+    CONDITIONAL with "the nominal run itself completes the task, which decides the nominal
+    parameters", where brute force calls the nominal parameters a motor failure."""
+    box = _box()
+    x = _grid(box, 11)
+    cost = _cost(x)
+    ev = _evidence(box, x, cost, moments=(_moment(100),))
+    assert vd.decide(ev, OPT).verdict is vd.Verdict.CONDITIONAL
+    why = "motor overload: actuator 'joint6' held at 99.9% of its force limit"
+    failing = vd.Evidence(**{**ev.__dict__, "nominal_run_failure": why})
+    decision = vd.decide(failing, OPT)
+    assert decision.verdict is vd.Verdict.UNSAFE and decision.safe_region is None
+    assert decision.causes[0] == f"the nominal run itself fails: {why}"
+    # a sparse excursion the nominal run survives is still the run's to decide
+    squeezed = vd.Evidence(**{**ev.__dict__, "nominal_failed": True, "nominal_cost": 1.2})
+    assert vd.decide(squeezed, OPT).verdict is not vd.Verdict.UNSAFE
+
+
+def test_the_nominal_reference_carries_its_own_outcome(twin, demo_recording):
+    from critmoment.groundtruth import Outcome, reference_from_recording
+
+    ref = reference_from_recording(demo_recording, twin)
+    assert ref.outcome is Outcome.SUCCESS and ref.first_failure_step == -1
