@@ -779,7 +779,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                 supports = [*supports, below]
                 guesses.append(f"support {below!r}: what lies under the goal (the object is "
                                f"placed on it)")
-            task_lines += ["tolerance = 0.03        # [m] distance of the object's centre from "
+            task_lines += ["tolerance = 0.03        # [m] distance of the object's body frame from "
                            "the goal", "rest_speed = 0.05       # [m/s] at the end"]
         task_lines.append("lift_height = 0.02      # [m] least rise that counts as a lift")
     # channels: each gripper's actuators in one normalised channel, every other actuator one

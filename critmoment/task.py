@@ -323,8 +323,8 @@ class PickPlaceTask(Task):
 
     Attributes:
         gripper: the gripper that carries the object.
-        goal: where the object's centre must end [m], (3,).
-        tolerance: largest distance of the object's centre from the goal [m].
+        goal: where the object's body frame (its origin, as object_pose gives it) must end [m], (3,).
+        tolerance: largest distance of the object's body frame from the goal [m].
         rest_speed: largest speed of the object at the end [m/s].
     """
 

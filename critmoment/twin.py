@@ -390,13 +390,19 @@ class Twin:
                 contact(_sensor_name("grip", g.name, geom), geom, CONTACT_SLOTS, found_force)
         for geom in sc.support_geoms:
             contact(_sensor_name("support", geom), geom, 1, found)
-        for key, kind in (("object_acc", mujoco.mjtSensor.mjSENS_FRAMELINACC),
-                          ("object_pos", mujoco.mjtSensor.mjSENS_FRAMEPOS),
-                          ("object_vel", mujoco.mjtSensor.mjSENS_FRAMELINVEL)):
+        # the acceleration of the object's centre of mass (its load is m (a + g)); its
+        # position and velocity those of its body frame, which a goal, a start pose and a
+        # lift are given in (BODY would read the centre of mass: a compound object placed
+        # exactly at its goal read 31 mm off, and a CoM-offset parameter moved the goal)
+        for key, kind, frame in (
+                ("object_acc", mujoco.mjtSensor.mjSENS_FRAMELINACC, mujoco.mjtObj.mjOBJ_BODY),
+                ("object_pos", mujoco.mjtSensor.mjSENS_FRAMEPOS, mujoco.mjtObj.mjOBJ_XBODY),
+                ("object_vel", mujoco.mjtSensor.mjSENS_FRAMELINVEL,
+                 mujoco.mjtObj.mjOBJ_XBODY)):
             s = spec.add_sensor()
             s.name = _sensor_name(key)
             s.type = kind
-            s.objtype = mujoco.mjtObj.mjOBJ_BODY
+            s.objtype = frame
             s.objname = sc.object_body
         for act in spec.actuators:
             s = spec.add_sensor()

@@ -802,3 +802,22 @@ def test_a_linked_scenario_finds_its_model_beside_the_file_it_points_to(tmp_path
     monkeypatch.chdir(tmp_path)
     with pytest.raises(InputFileError, match=r"file not found: .*nowhere.xml \(looked for /"):
         Twin(load_scenario(Path("elsewhere") / "link.toml"))
+
+
+def test_the_objects_position_is_its_body_frame_not_its_centre_of_mass(tmp_path):
+    """A compound object placed exactly at its goal read 31 mm off: the position sensor was
+    the body's centre of mass (and a CoM-offset parameter moved the task's goal)."""
+    import mujoco
+
+    source = bundled_scenario_path("panda_pick_place").parent
+    body = '<freejoint name="cube_joint"/>'
+    folder = _copy(tmp_path, {"scene.xml": [(body, body + '\n      <inertial pos="0.012 0 0" '
+                                              'mass="0.1" diaginertia="3e-5 3e-5 3e-5"/>')]},
+                   source=source)
+    twin = Twin(load_scenario(folder))
+    data = mujoco.MjData(twin.model)
+    mujoco.mj_resetDataKeyframe(twin.model, data, 0)
+    mujoco.mj_forward(twin.model, data)
+    obj = twin.model.body(twin.scenario.object_body).id
+    assert np.linalg.norm(data.xipos[obj] - data.xpos[obj]) == pytest.approx(0.012)
+    np.testing.assert_allclose(data.sensordata[twin._pos_adr], data.xpos[obj], atol=1e-12)
