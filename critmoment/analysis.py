@@ -600,7 +600,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             min_fos_motor=_nanmin(res.fos_motor[row]),
             critical=crit, critical_side=side, dominant=dominant,
             limiting_actuator=twin.actuator_names[motor],
-            fail_fraction=float(fails_here.mean()), analytic=analytics.get(s),
+            fail_fraction=float((fails_here & failed).mean()), analytic=analytics.get(s),
+            overturned=bool(fails_here.any() and not (fails_here & failed).any()),
             search=searches.get(s), reached=float((~np.isnan(res.cost[row])).mean()),
             squeeze=bool(squeeze), audited_step=None if s == int(m.step) else s))
     # the failing worst cases that only a rollout can decide (squeezes)

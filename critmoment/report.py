@@ -165,6 +165,7 @@ def report_json(report, *, timings: bool = True) -> dict:
             "dominant": mr.dominant,
             "limiting_actuator": mr.limiting_actuator,
             "fail_fraction": float(mr.fail_fraction),
+            "overturned": bool(mr.overturned),
             "reached": float(mr.reached),
             "squeeze": bool(mr.squeeze),
             "analytic": _jsonable(mr.analytic),

@@ -193,8 +193,9 @@ class MomentReport:
             over the sweep's samples failing here, or else over the failing points of the
             critical-value curves.
         limiting_actuator: the actuator limiting the motor FOS at the worst case.
-        fail_fraction: fraction of the sweep's samples failing at this moment; unless the
-            sweep is exhaustive, the samples whose first failure is here.
+        fail_fraction: fraction of the sweep's samples failing at this moment whose failure
+            stands (their own run, where one decides them, fails too); unless the sweep is
+            exhaustive, the samples whose first failure is here.
         reached: fraction of the sweep's samples evaluated at this moment: all of them when
             the sweep is exhaustive, else those that pass at every earlier moment.
         squeeze: every failure seen here (sweep and critical-value curves) is an unlifted
@@ -202,6 +203,8 @@ class MomentReport:
             samples' own rollouts decide them.
         analytic: analytic bounds (Pinocchio), JSON-able, or None.
         search: worst-case search summary, JSON-able, or None.
+        overturned: samples of the sweep fail here, and each of them passes in the end (its
+            own run decided it): the moment is no failure cause.
         audited_step: the step its sparse evaluation starts from when that is not the
             moment's own (a moment within the horizon of the recording's end is audited
             from the last step whose horizon fits), else None; see :attr:`step`.
@@ -222,6 +225,7 @@ class MomentReport:
     reached: float = 1.0
     squeeze: bool = False
     audited_step: int | None = None
+    overturned: bool = False
 
     @property
     def step(self) -> int:
@@ -1415,8 +1419,8 @@ def _causes(reports: Sequence[MomentReport], threshold: float) -> list[str]:
     groups: dict[str, list[str]] = {}
     for mr in reports:
         crossed = any(v is not None for v in mr.critical.values())
-        if mr.dominant is None or (mr.fail_fraction == 0 and not crossed
-                                   and not mr.max_cost > threshold):
+        if mr.dominant is None or mr.overturned or (mr.fail_fraction == 0 and not crossed
+                                                    and not mr.max_cost > threshold):
             continue
         name = _SUGGEST[mr.dominant][0]
         if mr.dominant == "motor":

@@ -666,3 +666,16 @@ def test_the_nominal_reference_carries_its_own_outcome(twin, demo_recording):
 
     ref = reference_from_recording(demo_recording, twin)
     assert ref.outcome is Outcome.SUCCESS and ref.first_failure_step == -1
+
+
+def test_a_moment_whose_failures_the_own_runs_overturn_is_no_cause():
+    """A chunk cut mid-motion failed the sweep at t = 0 by joint1 for every sample; each
+    sample's own run passed it, and the causes still said "motor overload at joint1:
+    peak-load at t = 0.00 s (100% of the box)"."""
+    base = vd.MomentReport(moment=_moment(100).moment, worst_case={"mass": 1.0},
+                           max_cost=1.5, min_fos_contact=3.0, min_fos_motor=1.0,
+                           critical={"mass": None}, critical_side={"mass": None},
+                           dominant="motor", limiting_actuator="joint1", fail_fraction=0.0)
+    assert vd._causes([base], THRESHOLD)  # a worst case over the threshold: a cause
+    overturned = dataclasses.replace(base, overturned=True)
+    assert vd._causes([overturned], THRESHOLD) == []
