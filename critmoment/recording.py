@@ -514,9 +514,12 @@ class Recording:
         return self.task.shortfalls(self.task_evidence())
 
     def stage_first_step(self) -> dict[int, int | None]:
-        """First step at which each stage 1..4 is reached (None if never)."""
+        """First step at which each of the task's stages after 0 is reached (None if
+        never): 1..4 for handover and pick_place, 1..2 for pick_hold."""
         out: dict[int, int | None] = {}
-        for k in range(1, 5):
+        names = getattr(self.task, "stage_names", None)
+        last = len(names) - 1 if names else 4
+        for k in range(1, last + 1):
             hits = np.flatnonzero(self.stage >= k)
             out[k] = int(hits[0]) if hits.size else None
         return out

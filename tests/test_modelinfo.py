@@ -910,6 +910,7 @@ def test_init_guesses_a_suction_gripper_that_lifts(tmp_path):
         warnings.simplefilter("ignore")
         run = rollout(traj, scenario)
     assert run.completed
+    assert set(run.stage_first_step()) == {1, 2}  # pick_hold has no stages 3 and 4
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         dropped = rollout(Trajectory(np.where(np.arange(3) == 2, 1.0, actions), fps=50.0),
