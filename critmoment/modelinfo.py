@@ -775,6 +775,12 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
             else:
                 task_lines.append(f"goal_site = {_toml_str(goal_site)}")
             below = _under_goal(model, data, goal, goal_site, bid, grippers)
+            if below is None and (goal is not None or mujoco.mj_name2id(
+                    model, mujoco.mjtObj.mjOBJ_SITE, goal_site or "") >= 0):
+                warnings.warn(f"{'--goal' if goal is not None else '--goal-site'}: no collision "
+                              f"geom lies within 0.5 m below the goal: an object released there "
+                              f"falls (a pick_place goal is where it comes to rest on a "
+                              f"support)", CritmomentWarning, stacklevel=2)
             if guessed_supports and below and below not in supports:
                 supports = [*supports, below]
                 guesses.append(f"support {below!r}: what lies under the goal (the object is "

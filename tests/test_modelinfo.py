@@ -992,3 +992,18 @@ def test_a_geom_whose_bits_match_no_other_touches_nothing():
       <body pos="3 0 0"><freejoint/><geom name="paired" size=".1" contype="0" conaffinity="0"/></body>
     </worldbody><contact><pair geom1="paired" geom2="floor"/></contact></mujoco>""")
     assert act_info.collision_geoms(model).tolist() == [True, True, False, True, True, True]
+
+
+def test_init_warns_of_a_goal_with_nothing_below_it(tmp_path):
+    """A goal 0.5 m up in the air was written without a word; every run then fails."""
+    from critmoment.exceptions import CritmomentWarning
+
+    (tmp_path / "arm.xml").write_text(arm_xml())
+    with pytest.warns(CritmomentWarning, match=r"--goal: no collision geom lies within 0.5 m "
+                                               r"below the goal"):
+        init_scenario(tmp_path / "arm.xml", object_body="cube", task="pick_place",
+                      goal=(0.3, 0.0, 0.6), out=tmp_path / "scenario.toml")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", CritmomentWarning)
+        init_scenario(tmp_path / "arm.xml", object_body="cube", task="pick_place",
+                      goal=(0.3, 0.1, 0.02), out=tmp_path / "s2.toml")
