@@ -171,6 +171,24 @@ def grip_friction_sources(model: mujoco.MjModel, object_body: int, pad_geoms: Se
     return sorted(set(sources)) or [("geom", (obj[0] if obj else 0,))]
 
 
+def grip_condims(model: mujoco.MjModel, object_body: int, pad_geoms: Sequence[int]) -> list[int]:
+    """The condim of each contact the object's geoms can make with ``pad_geoms`` (an
+    explicit pair's own, else MuJoCo's rule for a dynamic contact); empty where none can."""
+    colliding = collision_geoms(model)
+    obj = [int(g) for g in np.flatnonzero(model.geom_bodyid == object_body) if colliding[g]]
+    out = []
+    for o in obj:
+        partners = set(dynamic_partners(model, o))
+        for g in sorted({int(g) for g in pad_geoms}):
+            pair = [p for p in geom_pairs(model, [o])
+                    if {int(model.pair_geom1[p]), int(model.pair_geom2[p])} == {o, g}]
+            if pair:
+                out.append(int(model.pair_dim[pair[0]]))
+            elif g in partners:
+                out.append(contact_parameters(model, o, g).condim)
+    return out
+
+
 def source_friction(sources: Sequence[tuple[str, tuple[int, ...]]], geom_friction: np.ndarray,
                     pair_friction: np.ndarray) -> np.ndarray:
     """The lowest sliding friction over ``sources`` (:func:`grip_friction_sources`), per

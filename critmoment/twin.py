@@ -233,6 +233,14 @@ class Twin:
             for p, t in zip(scenario.box.parameters, self._param_targets, strict=True)]
         self._warn_replaced_pairs(model)
         self._grip_sources = self._friction_sources(model)
+        pads = [model.geom(name).id for grip in scenario.grippers for name in grip.geoms]
+        condims = act_info.grip_condims(model, self.object_body_id, pads)
+        if condims and max(condims) == 1:
+            warnings.warn(
+                f"every contact of the object {scenario.object_body!r} with the grippers' "
+                f"geoms is frictionless (condim 1, from the geoms' priority or an explicit "
+                f"<pair>): only the grip's shape can hold it, and a friction parameter does "
+                f"not act on the grip", CritmomentWarning, stacklevel=2)
         # parameters scale from the MJCF's own values, whatever nominal values are applied
         self._original = types.SimpleNamespace(
             **{f: getattr(model, f).copy() for f in self.parameter_fields()})

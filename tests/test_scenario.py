@@ -821,3 +821,20 @@ def test_the_objects_position_is_its_body_frame_not_its_centre_of_mass(tmp_path)
     obj = twin.model.body(twin.scenario.object_body).id
     assert np.linalg.norm(data.xipos[obj] - data.xpos[obj]) == pytest.approx(0.012)
     np.testing.assert_allclose(data.sensordata[twin._pos_adr], data.xpos[obj], atol=1e-12)
+
+
+def test_a_frictionless_grip_is_warned_of(tmp_path):
+    """Pads of condim 1 with a priority above the object: every grip contact frictionless,
+    the friction parameter acting on the table only, and the one warning said the nominal
+    run "never lifts it: too heavy or slippery"."""
+    from critmoment.exceptions import CritmomentWarning
+
+    folder = _copy(tmp_path)
+    arm = folder / "vx300s.xml"
+    text = arm.read_text()
+    old = 'rgba="0.85 0.85 0.85 1" condim="4"'
+    assert old in text
+    arm.write_text(text.replace(old, 'rgba="0.85 0.85 0.85 1" condim="1" priority="2"'))
+    with pytest.warns(CritmomentWarning, match=r"every contact of the object 'box' with the "
+                                              r"grippers' geoms is frictionless \(condim 1"):
+        Twin(load_scenario(folder))
