@@ -42,7 +42,7 @@ def lever(tmp_path_factory):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         init_scenario(folder / "scene.xml", object_body="cube", task="pick_place",
-                      goal=(0.6018, 0.15, 0.0189), out=folder / "scenario.toml")
+                      goal=(0.5, 0.15, 0.02), out=folder / "scenario.toml")
         scenario = load_scenario(folder / "scenario.toml")
     box = UncertaintyBox((MassParameter("mass", "cube", 0.1, 1.0, 0.22),
                           FrictionParameter("friction", "weight", 0.2, 1.5, 1.0)))
