@@ -1190,7 +1190,9 @@ def _parameter(name: str, spec: Any) -> Parameter:
     rng = spec.get("range")
     if not (isinstance(rng, list) and len(rng) == 2
             and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in rng)):
-        raise ScenarioError(f"{where} range: expected [low, high], got {rng!r}")
+        raise ScenarioError(f"{where} range: expected [low, high], two plain numbers in the "
+                            f"parameter's unit ({'kg' if kind == 'mass' else 'N·m or N' if kind == 'force_limit' else 'm' if kind == 'com_offset' else 'a coefficient'}; no unit text), "
+                            f"got {rng!r}")
     nominal = _number(spec, "nominal", where)
     prior_name = spec.get("prior", "uniform")
     try:
@@ -1584,9 +1586,12 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
         if path.is_dir():
             path = path / "scenario.toml"
         if not path.is_file():
+            close = [b for b in BUNDLED_SCENARIOS if str(path) and str(path) in b] or \
+                difflib.get_close_matches(str(path), BUNDLED_SCENARIOS, n=1, cutoff=0.6)
+            hint = f"; did you mean {close[0]!r}?" if close else ""
             raise InputFileError(
                 f"scenario {_not_a_file(path)}: {path} (expected a scenario.toml, a folder with one, "
-                f"or a bundled name: {', '.join(BUNDLED_SCENARIOS)})")
+                f"or a bundled name: {', '.join(BUNDLED_SCENARIOS)}){hint}")
         text = path.read_text(encoding="utf-8-sig")  # (a byte-order mark some editors write)
     except OSError as exc:
         raise InputFileError(f"{path}: cannot read the scenario file ({exc.strerror or exc})"

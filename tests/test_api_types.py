@@ -186,3 +186,27 @@ def test_times_in_milliseconds_are_named(tmp_path):
     with pytest.raises(TrajectoryError, match=r"times 20 apart, a control rate of 0.05 Hz; "
                                               r"expected times in seconds \(milliseconds"):
         load_trajectory(path)
+
+
+def test_a_near_bundled_name_is_suggested(tmp_path, monkeypatch):
+    from critmoment.exceptions import InputFileError
+    from critmoment.scenario import load_scenario
+
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(InputFileError, match=r"did you mean 'panda_pick_place'\?"):
+        load_scenario("panda")
+
+
+def test_a_range_with_units_in_it_says_plain_numbers(tmp_path):
+    import shutil
+
+    from critmoment.scenario import bundled_scenario_path, load_scenario
+
+    folder = tmp_path / "s"
+    shutil.copytree(bundled_scenario_path().parent, folder)
+    toml = folder / "scenario.toml"
+    toml.write_text(toml.read_text().replace("range = [0.05, 10.0]", 'range = ["0.05 kg", "10 kg"]'))
+    with pytest.raises(ScenarioError, match=r"\[uncertainty.mass\] range: expected \[low, high\], "
+                                            r"two plain numbers in the parameter's unit \(kg; no "
+                                            r"unit text\)"):
+        load_scenario(folder)
