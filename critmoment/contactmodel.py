@@ -96,7 +96,9 @@ class ContactModelReport:
         impratio: ``opt.impratio``.
         noslip_iterations: ``opt.noslip_iterations``.
         timestep: ``opt.timestep`` [s].
-        solref: effective (timeconst [s], dampratio) of each object/pad geom pair, (P, 2).
+        solref: effective (timeconst [s], dampratio) of each object/pad geom pair, (P, 2)
+            (a direct (−stiffness, −damping) one converted; the option's under the contact
+            override).
         solimp: effective (dmin, dmax, width [m], midpoint, power) of each pair, (P, 5).
         findings: what the inspection and the probe found.
         probe_mass: mass of the probe [kg], or NaN without a probe.
@@ -156,6 +158,19 @@ def _pair_parameters(model: mujoco.MjModel, g1: int, g2: int) -> tuple[np.ndarra
     return np.array(mixed.solref), np.array(mixed.solimp)
 
 
+def _standard_solref(solref: np.ndarray, solimp: np.ndarray) -> np.ndarray:
+    """A solref as (time constant [s], damping ratio): a direct one, (−stiffness,
+    −damping), converted by MuJoCo's own relations b = 2 / (dmax·timeconst) and
+    k = d / (dmax² · timeconst² · dampratio²) at d = dmax (``-500 -45`` is about 0.047 s)."""
+    solref = np.asarray(solref, dtype=float)
+    if solref[0] >= 0 or solref[1] >= 0:
+        return solref.copy()
+    k, b = -solref[0], -solref[1]
+    dmax = float(np.clip(solimp[1], 1e-4, 1.0))
+    timeconst = 2.0 / (dmax * b)
+    return np.array([timeconst, 1.0 / (timeconst * np.sqrt(k * dmax))])
+
+
 def inspect_contact_model(model: mujoco.MjModel, *, object_geom: str | int,
                           pad_geoms: Sequence[str | int]) -> ContactModelReport:
     """What the model's options and the object/pad contact parameters say (no simulation).
@@ -172,10 +187,14 @@ def inspect_contact_model(model: mujoco.MjModel, *, object_geom: str | int,
     pads = [model.geom(g).id for g in pad_geoms]
     if not pads:
         raise ParameterError("pad_geoms: expected at least one pad geom, got none")
-    params = [_pair_parameters(model, obj, p) for p in pads]
-    solref = np.array([s for s, _ in params])
-    solimp = np.array([s for _, s in params])
     opt = model.opt
+    if opt.enableflags & mujoco.mjtEnableBit.mjENBL_OVERRIDE:
+        # the contact override gives every contact the option's solref and solimp
+        params = [(np.array(opt.o_solref, float), np.array(opt.o_solimp, float))] * len(pads)
+    else:
+        params = [_pair_parameters(model, obj, p) for p in pads]
+    solref = np.array([_standard_solref(r, i) for r, i in params])
+    solimp = np.array([i for _, i in params])
     cone = "elliptic" if opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC else "pyramidal"
     findings = []
     if cone == "pyramidal":

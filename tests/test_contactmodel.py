@@ -129,3 +129,23 @@ def test_bundled_demo_is_hard(twin, demo_recording):
     assert report.cone == "elliptic" and report.impratio == 10
     assert np.isfinite(report.creep_rate) and not report.soft and report.creep_horizon == 0
     assert report.carry_time > 0.5 and 0 < report.probe_mass <= 10.0
+
+
+def test_a_direct_solref_and_the_override_are_read_as_mujoco_uses_them():
+    """solref="-500 -45" (stiffness, damping: a 0.047 s time constant) was not flagged
+    soft, while "0.047 1" was; under the contact override the report showed the geoms'
+    solref, which MuJoCo then ignores."""
+    soft = mujoco.MjModel.from_xml_string(_pinch_xml("elliptic", 10, solref="-500 -45"))
+    report = cm.inspect_contact_model(soft, object_geom="box", pad_geoms=["left_pad"])
+    assert report.solref[0, 0] == pytest.approx(2.0 / (45 * 0.95))
+    assert "soft-solref" in {f.code for f in report.findings}
+    stiff = mujoco.MjModel.from_xml_string(_pinch_xml("elliptic", 10, solref="-11080 -210"))
+    report = cm.inspect_contact_model(stiff, object_geom="box", pad_geoms=["left_pad"])
+    assert report.solref[0, 0] == pytest.approx(0.01, rel=0.01)
+    assert "soft-solref" not in {f.code for f in report.findings}
+    xml = _pinch_xml("elliptic", 10).replace(
+        'noslip_iterations="0"/>', 'noslip_iterations="0" o_solref="0.05 1"><flag '
+                                   'override="enable"/></option>')
+    over = mujoco.MjModel.from_xml_string(xml)
+    report = cm.inspect_contact_model(over, object_geom="box", pad_geoms=["left_pad"])
+    np.testing.assert_allclose(report.solref, [[0.05, 1.0]])
