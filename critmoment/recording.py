@@ -197,7 +197,7 @@ def initial_state(twin: Twin, traj: Trajectory, model: mujoco.MjModel | None = N
     start = (checked_start(twin, traj) if traj.start is not None else traj.actions[0])
     model = model or twin.model
     data = twin.initial_data(start=start, qpos0=traj.qpos0, object_pose=traj.object_pose,
-                             model=model)
+                             model=model, qvel0=traj.qvel0)
     return twin.get_state(model, data)
 
 

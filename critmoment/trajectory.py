@@ -93,7 +93,8 @@ _QUAT_NORM_TOL = 1e-12
 # sample time is treated as hitting the sample exactly.
 _SNAP_TOL = 1e-9
 
-_NPZ_KEYS = frozenset({"actions", "fps", "time", "start", "qpos0", "object_pose", "meta"})
+_NPZ_KEYS = frozenset({"actions", "fps", "time", "start", "qpos0", "qvel0", "object_pose",
+                       "meta"})
 
 
 # ---------------------------------------------------------------------------
@@ -268,6 +269,8 @@ class Trajectory:
             quaternion (w, x, y, z), or ``None``. The quaternion is normalised.
         meta: JSON-serialisable metadata (format, file attributes, ...).
         source: where the trajectory came from (a path or a description).
+        qvel0: (nv,) full MuJoCo initial ``qvel`` with ``qpos0`` (an action chunk cut from a
+            running episode starts moving), else ``None`` (the run starts at rest).
     """
 
     actions: np.ndarray
@@ -280,6 +283,7 @@ class Trajectory:
     #: the file recorded no rate: ``fps`` is :data:`DEFAULT_FPS`, assumed (a scenario's
     #: ``[actions] fps`` replaces it, :meth:`with_rate_from`)
     fps_assumed: bool = field(default=False, compare=False)
+    qvel0: np.ndarray | None = None
 
     def with_rate_from(self, fps: float | None) -> Trajectory:
         """This trajectory at ``fps`` (a scenario's ``[actions] fps``) where its file
@@ -351,6 +355,17 @@ class Trajectory:
                 )
             _check_finite_vector(qpos0, what="qpos0")
             object.__setattr__(self, "qpos0", _read_only(qpos0))
+
+        if self.qvel0 is not None:
+            if self.qpos0 is None:
+                raise TrajectoryError("qvel0: expected it with qpos0 (the velocities of that "
+                                      "state), got qvel0 alone")
+            qvel0 = _as_float_array(self.qvel0, what="qvel0", error=TrajectoryError)
+            if qvel0.ndim != 1 or qvel0.size == 0:
+                raise TrajectoryError(f"qvel0: expected a non-empty 1-D array of shape (nv,), "
+                                      f"got shape {qvel0.shape}")
+            _check_finite_vector(qvel0, what="qvel0")
+            object.__setattr__(self, "qvel0", _read_only(qvel0))
 
         if self.object_pose is not None:
             pose = _as_float_array(
@@ -437,7 +452,7 @@ class Trajectory:
 
     def __repr__(self) -> str:
         extras = [
-            name for name in ("start", "qpos0", "object_pose")
+            name for name in ("start", "qpos0", "qvel0", "object_pose")
             if getattr(self, name) is not None
         ]
         return (
@@ -858,6 +873,7 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
         fps=DEFAULT_FPS if rate is None else rate,
         start=data.get("start"),
         qpos0=data.get("qpos0"),
+        qvel0=data.get("qvel0"),
         object_pose=data.get("object_pose"),
         meta=meta,
         source=str(path),
@@ -869,7 +885,7 @@ def save_trajectory(traj: Trajectory, path: str | os.PathLike) -> None:
     """Writes a trajectory in critmoment's ``.npz`` schema.
 
     Keys written: ``actions`` (T, na) float64; ``fps`` 0-d float64 [Hz];
-    ``start`` (na,), ``qpos0`` (nq,), ``object_pose`` (7,) when present; and
+    ``start`` (na,), ``qpos0`` (nq,), ``qvel0`` (nv,), ``object_pose`` (7,) when present; and
     ``meta`` as a 0-d unicode array holding JSON. ``source`` is not stored (a
     loaded trajectory's source is the path it was read from). Reading the file
     back with :func:`load_trajectory` reproduces every array bit-exactly.
@@ -897,7 +913,7 @@ def save_trajectory(traj: Trajectory, path: str | os.PathLike) -> None:
         "fps": np.asarray(traj.fps, dtype=np.float64),
         "meta": np.asarray(json.dumps(traj.meta, allow_nan=False)),
     }
-    for name in ("start", "qpos0", "object_pose"):
+    for name in ("start", "qpos0", "qvel0", "object_pose"):
         value = getattr(traj, name)
         if value is not None:
             arrays[name] = np.asarray(value)

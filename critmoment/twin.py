@@ -596,7 +596,8 @@ class Twin:
 
     def initial_data(self, *, start: np.ndarray | None = None, qpos0: np.ndarray | None = None,
                      object_pose: np.ndarray | None = None, model: mujoco.MjModel | None = None,
-                     settle: bool | None = None) -> mujoco.MjData:
+                     settle: bool | None = None,
+                     qvel0: np.ndarray | None = None) -> mujoco.MjData:
         """An MjData at the trajectory's initial state, forward-computed.
 
         Args:
@@ -604,6 +605,7 @@ class Twin:
                 by a position-like actuator starts where that actuator pulls it at the control
                 ``start`` maps to (:func:`critmoment.actuators.position_target`).
             qpos0: full initial qpos, (nq,); overrides ``start``.
+            qvel0: full initial qvel, (nv,), with ``qpos0`` (default: at rest).
             object_pose: object position and quaternion (w, x, y, z), (7,).
             model: the model to make data for (default: the nominal model).
             settle: let an object that touches nothing at the start fall onto its support
@@ -642,6 +644,12 @@ class Twin:
                 _warn_pose_disagreement(qpos0[adr:adr + 7], pose)
             data.qpos[adr:adr + 7] = pose
         data.qvel[:] = 0
+        if qvel0 is not None:
+            qvel0 = np.asarray(qvel0, dtype=np.float64)
+            if qpos0 is None or qvel0.shape != (model.nv,):
+                raise TrajectoryError(f"expected qvel0 of shape ({model.nv},) with qpos0, got "
+                                      f"{qvel0.shape}{'' if qpos0 is not None else ' alone'}")
+            data.qvel[:] = qvel0
         if start is not None:
             data.ctrl[:] = self.controls(np.asarray(start)[None])[0]
             # a filtered servo (<position timeconst>) at rest at its target: its activation

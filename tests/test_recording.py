@@ -434,3 +434,40 @@ def test_a_start_outside_its_joint_range_follows_the_range_policy(twin, demo_tra
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         checked_start(twin, dataclasses.replace(demo_traj, start=near))
+
+
+def test_a_chunk_cut_mid_motion_starts_moving_with_qvel0(tmp_path):
+    """An action chunk cut from a running episode carried qpos0 but no velocities: it
+    started at rest, the arm was jolted to its targets' speed and a motor saturated at
+    t = 0 (motor FOS 1.00, where the episode itself reads 2.57), which the causes then
+    blamed. With qvel0 (npz key) the chunk starts moving as the episode did."""
+    import dataclasses
+
+    import mujoco
+
+    import critmoment as cm
+    from critmoment import panda_demo
+    from critmoment.trajectory import load_trajectory, save_trajectory
+    from critmoment.twin import state_slice
+
+    traj = panda_demo.make_pick_place(0)
+    twin = cm.Twin(cm.load_scenario("panda_pick_place"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        full = rollout(traj, twin=twin)
+        i = 250  # 5.0 s, carrying
+        k = int(round(i / traj.fps / twin.model.opt.timestep))
+        state = np.asarray(full.states)[k]
+        qpos = state[state_slice(twin.model, mujoco.mjtState.mjSTATE_QPOS)]
+        qvel = state[state_slice(twin.model, mujoco.mjtState.mjSTATE_QVEL)]
+        chunk = dataclasses.replace(traj, actions=traj.actions[i:], start=None, qpos0=qpos,
+                                    object_pose=None)
+        save_trajectory(dataclasses.replace(chunk, qvel0=qvel), tmp_path / "chunk.npz")
+        moving = load_trajectory(tmp_path / "chunk.npz")
+        np.testing.assert_array_equal(moving.qvel0, qvel)
+        at_rest, in_motion = rollout(chunk, twin=twin), rollout(moving, twin=twin)
+    episode = full.signals.fos_motor[k:k + 50].min()
+    assert at_rest.signals.fos_motor[:50].min() < 1.05 < episode
+    assert in_motion.signals.fos_motor[:50].min() == pytest.approx(episode, rel=0.05)
+    with pytest.raises(TrajectoryError, match="qvel0: expected it with qpos0"):
+        dataclasses.replace(moving, qpos0=None)
