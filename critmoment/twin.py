@@ -294,6 +294,18 @@ class Twin:
                                      strict=True):
             grip = [i for i in pairs
                     if {int(model.pair_geom1[i]), int(model.pair_geom2[i])} & pads]
+            aniso = [int(i) for i in pairs if int(model.pair_dim[i]) > 1
+                     and not np.isclose(model.pair_friction[i, 0], model.pair_friction[i, 1])]
+            if aniso:
+                i = aniso[0]
+                warnings.warn(
+                    f"[uncertainty.{p.name}]: explicit <pair> "
+                    f"{model.geom(int(model.pair_geom1[i])).name}–"
+                    f"{model.geom(int(model.pair_geom2[i])).name} has anisotropic sliding "
+                    f"friction ({model.pair_friction[i, 0]:g}, {model.pair_friction[i, 1]:g})"
+                    f"{f' (and {len(aniso) - 1} more pairs)' if len(aniso) > 1 else ''}; the "
+                    f"parameter sets both directions to one value, so the audited contacts "
+                    f"are isotropic", CritmomentWarning, stacklevel=4)
             shown = grip or list(pairs)
             own = model.pair_friction[shown, 0]
             if not shown or np.allclose(own, nominal):

@@ -838,3 +838,14 @@ def test_a_frictionless_grip_is_warned_of(tmp_path):
     with pytest.warns(CritmomentWarning, match=r"every contact of the object 'box' with the "
                                               r"grippers' geoms is frictionless \(condim 1"):
         Twin(load_scenario(folder))
+
+
+def test_an_anisotropic_pair_made_isotropic_by_the_friction_parameter_is_warned_of(tmp_path):
+    from critmoment.exceptions import CritmomentWarning
+
+    pair = ('  <contact>\n    <pair geom1="box" geom2="left/left_pad" condim="4" '
+            'friction="1.2 0.3 0.005 0.0001 0.0001"/>\n  </contact>\n')
+    folder = _copy(tmp_path, {"scene.xml": [("  </worldbody>\n", "  </worldbody>\n" + pair)]})
+    with pytest.warns(CritmomentWarning, match=r"explicit <pair> left/left_pad–box has "
+                                              r"anisotropic sliding friction \(1.2, 0.3\)"):
+        Twin(load_scenario(folder))
