@@ -24,10 +24,10 @@ import mujoco
 import numpy as np
 
 __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
-           "gripper_gap", "into_ranges", "control_span", "closing_ends", "moves_geoms", "position_target", "body_chain",
-           "common_ancestor", "collision_geoms", "geom_pairs", "filtered_actuators",
-           "ContactParameters", "contact_parameters", "dynamic_partners",
-           "grip_friction_sources", "source_friction"]
+           "gripper_gap", "into_ranges", "control_span", "closing_ends", "moves_geoms",
+           "position_target", "body_chain", "common_ancestor", "collision_geoms", "geom_pairs",
+           "filtered_actuators", "ContactParameters", "contact_parameters",
+           "dynamic_partners", "grip_friction_sources", "grip_condims", "source_friction"]
 
 
 def collision_geoms(model: mujoco.MjModel) -> np.ndarray:
@@ -143,50 +143,55 @@ def dynamic_partners(model: mujoco.MjModel, geom: int) -> list[int]:
     return out
 
 
-def grip_friction_sources(model: mujoco.MjModel, object_body: int, pad_geoms: Sequence[int]
-                          ) -> list[tuple[str, tuple[int, ...]]]:
-    """Where the sliding friction of each contact the object's geoms can make with
-    ``pad_geoms`` comes from: an explicit pair (``("pair", (p,))``), the geom of higher
-    priority (``("geom", (g,))``) or, at equal priority, the larger of the two (``("max",
-    (g1, g2))``). Bodies joined by an explicit pair have no other contacts (MuJoCo skips
-    their dynamic ones). None found: the object geom's own."""
+def _grip_contacts(model: mujoco.MjModel, object_body: int, pad_geoms: Sequence[int]
+                   ) -> list[tuple[int, int, int | None]]:
+    """The contacts the object's collision geoms can make with ``pad_geoms``: (object geom,
+    pad geom, its explicit pair or None). Bodies joined by an explicit pair have no other
+    contacts (MuJoCo skips their dynamic ones)."""
     colliding = collision_geoms(model)
     obj = [int(g) for g in np.flatnonzero(model.geom_bodyid == object_body) if colliding[g]]
     pads = sorted({int(g) for g in pad_geoms})
-    sources = []
+    out = []
     for o in obj:
         partners = set(dynamic_partners(model, o))
         for g in pads:
             pair = [p for p in geom_pairs(model, [o])
                     if {int(model.pair_geom1[p]), int(model.pair_geom2[p])} == {o, g}]
             if pair:
-                sources.append(("pair", (int(pair[0]),)))
-            elif g not in partners:
-                continue
-            elif model.geom_priority[o] != model.geom_priority[g]:
-                top = o if model.geom_priority[o] > model.geom_priority[g] else g
-                sources.append(("geom", (top,)))
-            else:
-                sources.append(("max", (o, g)))
-    return sorted(set(sources)) or [("geom", (obj[0] if obj else 0,))]
+                out.append((o, g, int(pair[0])))
+            elif g in partners:
+                out.append((o, g, None))
+    return out
+
+
+def grip_friction_sources(model: mujoco.MjModel, object_body: int, pad_geoms: Sequence[int]
+                          ) -> list[tuple[str, tuple[int, ...]]]:
+    """Where the sliding friction of each contact the object's geoms can make with
+    ``pad_geoms`` comes from: an explicit pair (``("pair", (p,))``), the geom of higher
+    priority (``("geom", (g,))``) or, at equal priority, the larger of the two (``("max",
+    (g1, g2))``). None found: the object geom's own."""
+    sources = []
+    for o, g, pair in _grip_contacts(model, object_body, pad_geoms):
+        if pair is not None:
+            sources.append(("pair", (pair,)))
+        elif model.geom_priority[o] != model.geom_priority[g]:
+            top = o if model.geom_priority[o] > model.geom_priority[g] else g
+            sources.append(("geom", (top,)))
+        else:
+            sources.append(("max", (o, g)))
+    if sources:
+        return sorted(set(sources))
+    colliding = collision_geoms(model)
+    obj = [int(g) for g in np.flatnonzero(model.geom_bodyid == object_body) if colliding[g]]
+    return [("geom", (obj[0] if obj else 0,))]
 
 
 def grip_condims(model: mujoco.MjModel, object_body: int, pad_geoms: Sequence[int]) -> list[int]:
     """The condim of each contact the object's geoms can make with ``pad_geoms`` (an
     explicit pair's own, else MuJoCo's rule for a dynamic contact); empty where none can."""
-    colliding = collision_geoms(model)
-    obj = [int(g) for g in np.flatnonzero(model.geom_bodyid == object_body) if colliding[g]]
-    out = []
-    for o in obj:
-        partners = set(dynamic_partners(model, o))
-        for g in sorted({int(g) for g in pad_geoms}):
-            pair = [p for p in geom_pairs(model, [o])
-                    if {int(model.pair_geom1[p]), int(model.pair_geom2[p])} == {o, g}]
-            if pair:
-                out.append(int(model.pair_dim[pair[0]]))
-            elif g in partners:
-                out.append(contact_parameters(model, o, g).condim)
-    return out
+    return [int(model.pair_dim[pair]) if pair is not None
+            else contact_parameters(model, o, g).condim
+            for o, g, pair in _grip_contacts(model, object_body, pad_geoms)]
 
 
 def source_friction(sources: Sequence[tuple[str, tuple[int, ...]]], geom_friction: np.ndarray,

@@ -570,6 +570,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         side = {name: (None if critical[s][name].direction is None
                        else critical[s][name].direction.value) for name in box.names}
         fails_here = res.failed[row]
+        standing = fails_here & failed  # failures their own runs, where any, confirm
         dominant = _dominant(res, row, fails_here)
         if dominant is None:
             dominant = next((d for c in curves[s].values()
@@ -600,8 +601,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             min_fos_motor=_nanmin(res.fos_motor[row]),
             critical=crit, critical_side=side, dominant=dominant,
             limiting_actuator=twin.actuator_names[motor],
-            fail_fraction=float((fails_here & failed).mean()), analytic=analytics.get(s),
-            overturned=bool(fails_here.any() and not (fails_here & failed).any()),
+            fail_fraction=float(standing.mean()), analytic=analytics.get(s),
+            overturned=bool(fails_here.any() and not standing.any()),
             search=searches.get(s), reached=float((~np.isnan(res.cost[row])).mean()),
             squeeze=bool(squeeze), audited_step=None if s == int(m.step) else s))
     # the failing worst cases that only a rollout can decide (squeezes)
@@ -801,14 +802,20 @@ def _nominal_run_failure(reference: NominalReference | None, twin: Twin,
     when = (f" from t = {reference.first_failure_step * dt:.3g} s"
             if reference.first_failure_step >= 0 else "")
     if reference.outcome is Outcome.MOTOR:
-        motors = np.flatnonzero(twin.motors)
-        name = (f" {twin.actuator_names[motors[reference.motor_column]]!r}"
-                if 0 <= reference.motor_column < motors.size else "")
+        actuator = _motor_name(twin, reference.motor_column)
+        name = f" {actuator!r}" if actuator is not None else ""
         c = OutcomeCriteria()
         return (f"motor overload: actuator{name} held at {c.saturation:.1%} of its force limit "
                 f"or more for over {c.motor_time * 1e3:g} ms{when} (the ground truth's rule; "
                 f"the task is completed all the same)")
     return f"{reference.outcome.value}{when}"
+
+
+def _motor_name(twin: Twin, column: int) -> str | None:
+    """The actuator of column ``column`` of the motor-checked actuators (``Twin.motors``
+    order, as ``Classification.motor_column`` counts them), or None for −1."""
+    motors = np.flatnonzero(twin.motors)
+    return twin.actuator_names[motors[column]] if 0 <= column < motors.size else None
 
 
 def _chain_kinds(runs: vd.SampleRuns, failed: np.ndarray) -> dict[str, int]:
@@ -1052,7 +1059,8 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         The :class:`~critmoment.verdict.RegionCheck`.
     """
     box = twin.scenario.box
-    near_cost = (options.verify if options.verify is not None else 0.8) * options.threshold
+    near = options.verify if options.verify is not None else 0.8  # of a limit: densify there
+    near_cost = near * options.threshold
     first = dict(region)
     roll = _Rollouts(trajectory, twin, nthread, reference)
     nominal_failed = _nominal_failed(evaluator, steps) if steps.size else None
@@ -1108,17 +1116,13 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
                 # or more, a saturation near its time) marks its edge as the cost marks it:
                 # the outcome can turn between the coarse points, where the cost says
                 # nothing (a lever's slip grows past 1 cm between two passing edge points)
-                near = np.zeros(pts.shape[0], bool)
-                near[own] = runs.suspect | roll.near_rule(pts[own], near_cost
-                                                          / options.threshold)
-                by_rule = sorted({i for i, e in enumerate(edges) if near[e].any()} - set(hot))
+                close = np.zeros(pts.shape[0], bool)
+                close[own] = runs.suspect | roll.near_rule(pts[own], near)
+                by_rule = sorted({i for i, e in enumerate(edges) if close[e].any()} - set(hot))
                 if by_rule:
                     dense, _ = vd.region_points(current, box, per_edge=per_edge,
                                                 dense=sorted(set(hot) | set(by_rule)))
-                    scale = np.maximum(np.abs(box.high - box.low), 1e-300)
-                    seen = (np.abs(dense[:, None, :] - pts[None, :, :])
-                            <= 1e-9 * scale).all(axis=2).any(axis=1)
-                    extra = dense[~seen]
+                    extra = dense[~_among(dense, pts, box)]
                     if extra.shape[0]:
                         res_x = evaluator.evaluate(steps, extra, first_failure=not exhaustive)
                         n_sparse += extra.shape[0]
@@ -1154,10 +1158,14 @@ def _own_run_points(pts: np.ndarray, region: Mapping[str, tuple[float, float]], 
         return np.ones(pts.shape[0], bool)
     coarse, _ = vd.region_points(region, box, per_edge=per_edge)
     coarse = np.vstack([coarse, vd.interior_points(region, box)])  # (every_point: all anyway)
+    return _among(pts, coarse, box) | undecided(res).any
+
+
+def _among(points: np.ndarray, others: np.ndarray, box) -> np.ndarray:
+    """(p,) bool: each of ``points`` is one of ``others`` (to 1e-9 of the box's ranges)."""
     scale = np.maximum(np.abs(box.high - box.low), 1e-300)
-    near = np.abs(pts[:, None, :] - coarse[None, :, :]) <= 1e-9 * scale
-    own = near.all(axis=2).any(axis=1)
-    return own | undecided(res).any
+    close = np.abs(points[:, None, :] - others[None, :, :]) <= 1e-9 * scale
+    return close.all(axis=2).any(axis=1)
 
 
 def _sparse_fails(res: sp.SparseResult,
@@ -1165,10 +1173,8 @@ def _sparse_fails(res: sp.SparseResult,
     """(p,) bool: the points whose sparse evaluation fails in a way it decides alone (not
     one that only their own rollout decides, ``undecided``:
     :func:`critmoment.verdict.samples_to_rerun` with the audit's options and nominal run)."""
-    reruns = undecided(res)
-    return (np.asarray(res.failed_any, dtype=bool)
-            & ~(reruns.unlifted | reruns.sticking | reruns.slipping | reruns.margin
-                | reruns.inherited))
+    # (the near passes among the reruns fail nowhere: every failing rerun is one of these)
+    return np.asarray(res.failed_any, dtype=bool) & ~undecided(res).any
 
 
 class _Rollouts:
@@ -1208,18 +1214,17 @@ class _Rollouts:
                           t_start=time.perf_counter())
         self.reference = bf.reference
         c = bf.classification
-        motors = np.flatnonzero(self.twin.motors)
-        for point, outcome, step, column in zip(bf.samples, c.outcome, c.first_failure_step,
-                                                c.motor_column, strict=True):
-            name = (self.twin.actuator_names[motors[column]]
-                    if outcome is Outcome.MOTOR and column >= 0 else None)
-            self.outcomes[np.asarray(point, float).tobytes()] = (
-                outcome.value, float(step) * c.dt if step >= 0 else None, name)
         close = np.maximum(c.max_slip / c.criteria.slip_tolerance,
                            c.saturation_time / c.criteria.motor_time)
-        for point, outcome, level in zip(bf.samples, c.outcome, close, strict=True):
+        for point, outcome, step, column, level in zip(
+                bf.samples, c.outcome, c.first_failure_step, c.motor_column, close,
+                strict=True):
+            key = np.asarray(point, float).tobytes()
+            name = _motor_name(self.twin, column) if outcome is Outcome.MOTOR else None
+            self.outcomes[key] = (outcome.value, float(step) * c.dt if step >= 0 else None,
+                                  name)
             if outcome is Outcome.SUCCESS:
-                self.closeness[np.asarray(point, float).tobytes()] = float(level)
+                self.closeness[key] = float(level)
         return bf.failed
 
     def near_rule(self, points: np.ndarray, fraction: float) -> np.ndarray:

@@ -109,7 +109,7 @@ def at_scenario_rate(traj: Trajectory, twin: Twin) -> Trajectory:
     sc = twin.scenario
     if not sc.fps_given:
         return traj
-    if not traj.fps_assumed and abs(traj.fps - sc.fps) > 0.01 * max(traj.fps, sc.fps):
+    if not traj.fps_assumed and not trajectory_mod._rates_agree(traj.fps, sc.fps):
         warnings.warn(f"the trajectory{_source(traj)} records {traj.fps:g} Hz, the scenario's "
                       f"[actions] fps says {sc.fps:g} Hz: the recorded rate is used",
                       CritmomentWarning, stacklevel=2)

@@ -366,16 +366,17 @@ class FeasibilityOptions:
     check_grippers: bool = False
 
     def __post_init__(self):
-        for name in ("lag_tolerance", "lag_tolerance_slide", "lag_duration", "delay",
-                     "saturation_duration", "moving", "saturation_fraction"):
+        # (name, may be 0, unit)
+        for name, zero, unit in (("lag_tolerance", False, ""),
+                                 ("lag_tolerance_slide", False, ""),
+                                 ("lag_duration", False, " s"), ("delay", True, " s"),
+                                 ("saturation_duration", False, " s"), ("moving", False, ""),
+                                 ("saturation_fraction", False, "")):
             value = getattr(self, name)
-            least = 0.0 if name == "delay" else None
             if not (_is_number(value) and math.isfinite(value)
-                    and (value >= least if least is not None else value > 0)):
+                    and (value >= 0 if zero else value > 0)):
                 raise ScenarioError(f"[feasibility] {name}: expected a finite number "
-                                    f"{'>= 0' if least is not None else '> 0'}"
-                                    f"{' s' if name in ('delay', 'lag_duration', 'saturation_duration') else ''}"
-                                    f", got {value!r}")
+                                    f"{'>= 0' if zero else '> 0'}{unit}, got {value!r}")
         if not self.saturation_fraction <= 1:
             raise ScenarioError(f"[feasibility] saturation_fraction: expected in (0, 1], "
                                 f"got {self.saturation_fraction!r}")
@@ -1190,9 +1191,11 @@ def _parameter(name: str, spec: Any) -> Parameter:
     rng = spec.get("range")
     if not (isinstance(rng, list) and len(rng) == 2
             and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in rng)):
+        # (a force limit's unit is read from the model later: a property here)
+        unit = cls.unit if isinstance(cls.unit, str) else "N·m or N"
         raise ScenarioError(f"{where} range: expected [low, high], two plain numbers in the "
-                            f"parameter's unit ({'kg' if kind == 'mass' else 'N·m or N' if kind == 'force_limit' else 'm' if kind == 'com_offset' else 'a coefficient'}; no unit text), "
-                            f"got {rng!r}")
+                            f"parameter's unit ({unit or 'a coefficient'}; no unit text), got "
+                            f"{rng!r}")
     nominal = _number(spec, "nominal", where)
     prior_name = spec.get("prior", "uniform")
     try:
@@ -1745,13 +1748,10 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
         slip_tolerance=_number(sparse_t, "slip_tolerance", "[sparse]", 0.005),
         creep_horizon=_get(sparse_t, "creep_horizon", int, "[sparse]", 0))
     feas_t = _get(raw, "feasibility", dict, "scenario", {})
-    numbers_ = tuple(f.name for f in dataclasses.fields(FeasibilityOptions)
-                     if f.name != "check_grippers")
-    _keys(feas_t, "[feasibility]", (*numbers_, "check_grippers"))
-    feasibility = FeasibilityOptions(
-        **{k: _number(feas_t, k, "[feasibility]") for k in feas_t if k in numbers_},
-        **({"check_grippers": _get(feas_t, "check_grippers", bool, "[feasibility]")}
-           if "check_grippers" in feas_t else {}))
+    _keys(feas_t, "[feasibility]", tuple(f.name for f in dataclasses.fields(FeasibilityOptions)))
+    feasibility = FeasibilityOptions(**{
+        k: (_get(feas_t, k, bool, "[feasibility]") if k == "check_grippers"
+            else _number(feas_t, k, "[feasibility]")) for k in feas_t})
     scenario = Scenario(
         name=str(_get(raw, "name", str, "scenario", base.name)), path=path, mjcf=mjcf,
         keyframe=keyframe, object_body=object_body, object_geom=object_geom,
@@ -1763,11 +1763,11 @@ def scenario_from_dict(raw: Mapping[str, Any], *, base: Path, path: Path | None 
     scenario.validate_names(model)
     for p in box.parameters:
         if isinstance(p, MassParameter):
-            given = float(model.body_mass[p.resolve(model)])
-            if given > 0 and p.low >= 100.0 * given:
+            in_mjcf = float(model.body_mass[p.resolve(model)])
+            if in_mjcf > 0 and p.low >= 100.0 * in_mjcf:
                 warnings.warn(
                     f"[uncertainty.{p.name}] range: {p.low:g}..{p.high:g} kg, at least 100 "
-                    f"times the body's {given:g} kg in the MJCF; is the range in grams? "
+                    f"times the body's {in_mjcf:g} kg in the MJCF; is the range in grams? "
                     f"(expected kg)", ScenarioWarning, stacklevel=2)
     idle = scenario.undriven_actuators(model)
     if idle:

@@ -1577,18 +1577,15 @@ class SparseEvaluator:
         # 33 false unsafes of 256, grips at ratio FOS 1.05-1.2 moving 10-100 µm; agreement
         # 0.871)
         inside = np.zeros(nsim, bool)
-        with np.errstate(invalid="ignore"):
-            ratio_inside = np.where(valid, sig.fos_grasp, np.inf).min(axis=1) >= (
-                1.0 + STICKING_MARGIN)
+        if self._elliptic:
+            with np.errstate(invalid="ignore"):
+                inside = np.where(valid, sig.fos_grasp, np.inf).min(axis=1) >= (
+                    1.0 + STICKING_MARGIN)
         # watched for at least the persistence time, stepping (a solve moves nothing)
         measured = ((self._alone[at].any(axis=-1) | ~valid).all(axis=1)
                     & (length >= max(p, 2)) & (self.mode is SparseMode.STEP))
-        moved = np.where(valid, slip, 0.0).max(axis=1)
-        if self._elliptic:
-            inside = ratio_inside
-            still = measured & (moved <= STILL_SLIP)
-        else:
-            still = measured & (moved <= SLIP_FLOOR * self.settings.slip_tolerance)
+        floor = STILL_SLIP if self._elliptic else SLIP_FLOOR * self.settings.slip_tolerance
+        still = measured & (np.where(valid, slip, 0.0).max(axis=1) <= floor)
         sticking = ((inside | still) & (failure == Failure.CONTACT)
                     & (stop_kind == Failure.CONTACT))
         return _Decision(failure=failure, stop=(stop_kind > 0) & ~sticking,

@@ -346,26 +346,19 @@ class Trajectory:
             _check_finite_vector(start, what="start")
             object.__setattr__(self, "start", _read_only(start))
 
-        if self.qpos0 is not None:
-            qpos0 = _as_float_array(self.qpos0, what="qpos0", error=TrajectoryError)
-            if qpos0.ndim != 1 or qpos0.size == 0:
-                raise TrajectoryError(
-                    f"qpos0: expected a non-empty 1-D array of shape (nq,), got "
-                    f"shape {qpos0.shape}"
-                )
-            _check_finite_vector(qpos0, what="qpos0")
-            object.__setattr__(self, "qpos0", _read_only(qpos0))
-
-        if self.qvel0 is not None:
-            if self.qpos0 is None:
-                raise TrajectoryError("qvel0: expected it with qpos0 (the velocities of that "
-                                      "state), got qvel0 alone")
-            qvel0 = _as_float_array(self.qvel0, what="qvel0", error=TrajectoryError)
-            if qvel0.ndim != 1 or qvel0.size == 0:
-                raise TrajectoryError(f"qvel0: expected a non-empty 1-D array of shape (nv,), "
-                                      f"got shape {qvel0.shape}")
-            _check_finite_vector(qvel0, what="qvel0")
-            object.__setattr__(self, "qvel0", _read_only(qvel0))
+        if self.qvel0 is not None and self.qpos0 is None:
+            raise TrajectoryError("qvel0: expected it with qpos0 (the velocities of that "
+                                  "state), got qvel0 alone")
+        for name, size in (("qpos0", "nq"), ("qvel0", "nv")):
+            if getattr(self, name) is not None:
+                vector = _as_float_array(getattr(self, name), what=name, error=TrajectoryError)
+                if vector.ndim != 1 or vector.size == 0:
+                    raise TrajectoryError(
+                        f"{name}: expected a non-empty 1-D array of shape ({size},), got "
+                        f"shape {vector.shape}"
+                    )
+                _check_finite_vector(vector, what=name)
+                object.__setattr__(self, name, _read_only(vector))
 
         if self.object_pose is not None:
             pose = _as_float_array(

@@ -231,9 +231,9 @@ class Twin:
             act_info.geom_pairs(model, t) if isinstance(p, FrictionParameter)
             else np.zeros(0, dtype=int)
             for p, t in zip(scenario.box.parameters, self._param_targets, strict=True)]
-        self._warn_replaced_pairs(model)
-        self._grip_sources = self._friction_sources(model)
         pads = [model.geom(name).id for grip in scenario.grippers for name in grip.geoms]
+        self._warn_replaced_pairs(model, set(pads))
+        self._grip_sources = act_info.grip_friction_sources(model, self.object_body_id, pads)
         condims = act_info.grip_condims(model, self.object_body_id, pads)
         if condims and max(condims) == 1:
             warnings.warn(
@@ -282,14 +282,13 @@ class Twin:
                         f"{'a body too light for its inertia to be resolved' if 'mjWARN_INERTIA' in found else 'an unstable state'}"
                         f" at the start); expected a range the simulation holds")
 
-    def _warn_replaced_pairs(self, model: mujoco.MjModel) -> None:
+    def _warn_replaced_pairs(self, model: mujoco.MjModel, pads: set[int]) -> None:
         """Warn where the friction parameter's nominal replaces the friction the model's own
         grip contacts have: an explicit pair's in the MJCF, or the one MuJoCo's rule gives
         a contact critmoment made a pair of (``critmoment:pair:``)."""
         from critmoment.scenario import GENERATED
 
         box = self.scenario.box
-        pads = {model.geom(name).id for grip in self.scenario.grippers for name in grip.geoms}
         for p, pairs, nominal in zip(box.parameters, self._param_pairs, box.nominal,
                                      strict=True):
             grip = [i for i in pairs
@@ -332,10 +331,6 @@ class Twin:
                 f"{source}; the parameter sets them, so the audited runs use its nominal "
                 f"{nominal:g} there (set the nominal to the model's value to audit the model "
                 f"as it is)", CritmomentWarning, stacklevel=4)
-
-    def _friction_sources(self, model: mujoco.MjModel) -> list[tuple[str, tuple[int, ...]]]:
-        pads = [model.geom(name).id for grip in self.scenario.grippers for name in grip.geoms]
-        return act_info.grip_friction_sources(model, self.object_body_id, pads)
 
     def grip_friction(self, geom_friction: np.ndarray | None = None,
                       pair_friction: np.ndarray | None = None) -> np.ndarray:

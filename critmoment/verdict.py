@@ -275,8 +275,8 @@ class Reruns(NamedTuple):
     #: fail only by margin failures (a motor under its limit,
     #: ``SparseResult.failed_margin_only``)
     margin: np.ndarray
-    #: fail only at moments where the nominal parameters fail too, in a nominal run that does
-    #: not complete its task (:func:`inherited_failures`)
+    #: fail only at moments where the nominal parameters fail too, whether the nominal run
+    #: completes its task (which overrules that failure) or not (:func:`inherited_failures`)
     inherited: np.ndarray
 
     @property
@@ -340,16 +340,15 @@ def samples_to_rerun(sweep: SparseResult | None, options: DecisionOptions, *,
         sticking (and unlifted) ones, samples whose only failures are short slips (and
         sticking and unlifted ones), samples whose only failures are margin ones (a motor
         under its limit; and sticking and unlifted ones) and samples that fail only where
-        a nominal run that fails its task fails too. All empty when ``verify`` is None, or when the
+        the nominal parameters fail too (:func:`inherited_failures`). All empty when ``verify`` is None, or when the
         nominal run fails the task and ``require_task`` makes every sample fail (without
         ``chain``: with it, each sample's own run applies the task's rule).
     """
     n = 0 if sweep is None else sweep.n_samples
     none = np.zeros(n, bool)
-    if sweep is None or sweep.n_moments == 0:
-        return Reruns(none, none.copy(), none.copy(), none.copy(), none.copy(), none.copy())
-    if options.verify is None or _every_sample_fails(options, nominal_completed):
-        return Reruns(none, none.copy(), none.copy(), none.copy(), none.copy(), none.copy())
+    if (sweep is None or sweep.n_moments == 0 or options.verify is None
+            or _every_sample_fails(options, nominal_completed)):
+        return Reruns(*(none.copy() for _ in Reruns._fields))
     cost = sweep.worst_cost()
     near = ~sweep.failed_any & (cost >= options.verify * options.threshold)
     unlifted = (sweep.failed_unlifted_only.copy() if options.verify_unlifted
