@@ -60,7 +60,7 @@ def pick_place(model, *, block=(0.25, 0.0), goal=(0.20, 0.08), lift=0.05, open_=
     down, q_above = best
     gj = model.joint("gripper").id
     lo, hi = model.jnt_range[gj]
-    grip0 = (start[0] * 0 + qpos0[model.jnt_qposadr[gj]] - lo) / (hi - lo)
+    grip0 = (qpos0[model.jnt_qposadr[gj]] - lo) / (hi - lo)
     place = goal + [0, 0, 0.002]
     points = [(0, p0, r0, grip0), (60, c + [0, 0, lift], down, open_),
               (95, c, down, open_), (105, c, down, open_), (130, c, down, closed),
