@@ -507,6 +507,15 @@ def gripper_gap(model: mujoco.MjModel, actuators: Sequence[int], ctrl: Sequence[
             hold_q.extend(range(m.jnt_qposadr[j], m.jnt_qposadr[j] + n))
             nv = {0: 6, 1: 3}.get(int(m.jnt_type[j]), 1)
             hold_v.extend(range(m.jnt_dofadr[j], m.jnt_dofadr[j] + nv))
+    # the held joints' own actuators and springs off: reset to their pose every step, they
+    # would still accelerate the hand within each step, and the fingers feel that as a
+    # force (franka_sim's bimanual Panda: its arm servos pulling towards ctrl 0 pressed one
+    # finger against its limit harder than that finger's 20 N/m servo could pull)
+    others = np.setdiff1d(np.arange(m.nu), np.asarray(list(actuators), int))
+    held_joint = ~inside[m.jnt_bodyid]
+    m.actuator_gainprm[others] = 0
+    m.actuator_biasprm[others] = 0
+    m.jnt_stiffness[held_joint] = 0
     q0 = d.qpos[hold_q].copy()
     d.ctrl[:] = 0
     d.ctrl[list(actuators)] = ctrl

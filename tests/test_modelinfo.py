@@ -980,6 +980,29 @@ def test_the_gripper_measurement_holds_the_arm_inside_its_ranges(tmp_path):
     assert closed != opened
 
 
+def test_the_gripper_measurement_takes_the_held_arms_servos_off():
+    """franka_sim's bimanual Panda (Euler, slide fingers on 20 N/m servos, damping 100,
+    armature 5): its arm servos, pulling towards ctrl 0 from the held pose, accelerated the
+    hand within every step; the fingers felt it as a force that pinned one against its
+    limit, its travel read 0.00 mm and ``init`` found no gripper. The held joints' servos
+    and springs are off while the gripper's own actuators move it."""
+    xml = (arm_xml().replace('integrator="implicitfast"', 'integrator="Euler"')
+           .replace('kp="200" ctrlrange="0 0.03"', 'kp="20" ctrlrange="0 0.03"')
+           .replace('range="0 0.03" damping="5"', 'range="0 0.03" damping="100" armature="5"')
+           .replace('<key qpos="0 0 0 0', '<key qpos="0.04 0.04 0 0'))
+    model = mujoco.MjModel.from_xml_string(xml)
+    fingers = [model.actuator("finger_a_act").id, model.actuator("finger_b_act").id]
+    geoms = [model.geom("pad_a").id, model.geom("pad_b").id]
+    closed, opened = act_info.closing_ends(model, fingers, geoms, keyframe=0)
+    assert closed == [0.03, 0.03] and opened == [0.0, 0.0]
+    # each finger's travel alone, the other still: the same by symmetry
+    alone = [act_info.gripper_gap(model, fingers, c, geoms, keyframe=0)
+             for c in ([0.03, 0.0], [0.0, 0.03])]
+    shut = act_info.gripper_gap(model, fingers, [0.0, 0.0], geoms, keyframe=0)
+    assert alone[0] == pytest.approx(alone[1], abs=1e-6) and shut - alone[0] > 2e-3
+    assert model.actuator_gainprm[model.actuator("elbow_act").id, 0] == 300  # not modified
+
+
 def test_a_geom_whose_bits_match_no_other_touches_nothing():
     """lerobot's SO-101 as shipped: fingertip pads with contype = conaffinity = 2, where
     every other geom has 1, were counted among the gripper's collision geoms."""
