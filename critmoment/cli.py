@@ -60,20 +60,11 @@ class _Stdout:
             os.close(devnull)
 
 
-def _json_default(obj):
-    import numpy as np
-
-    if isinstance(obj, np.generic):
-        return obj.item()
-    if isinstance(obj, np.ndarray):
-        return obj.tolist()
-    if isinstance(obj, Path):
-        return str(obj)
-    raise TypeError(f"not JSON serialisable: {type(obj).__name__}")
-
-
 def _dump(obj) -> str:
-    return json.dumps(obj, indent=2, default=_json_default, allow_nan=False)
+    """JSON text of ``obj``; NaN and infinities (a motor FOS without a force limit) as null."""
+    from critmoment.report import jsonable
+
+    return json.dumps(jsonable(obj), indent=2, allow_nan=False)
 
 
 @contextlib.contextmanager

@@ -168,8 +168,8 @@ def report_json(report, *, timings: bool = True) -> dict:
             "overturned": bool(mr.overturned),
             "reached": float(mr.reached),
             "squeeze": bool(mr.squeeze),
-            "analytic": _jsonable(mr.analytic),
-            "search": _jsonable(mr.search),
+            "analytic": jsonable(mr.analytic),
+            "search": jsonable(mr.search),
         })
     doc = {
         "schema": REPORT_SCHEMA,
@@ -192,14 +192,14 @@ def report_json(report, *, timings: bool = True) -> dict:
                         for p in box.parameters},
         "cost": dataclasses_asdict(report.scenario.cost),
         "horizon": int(report.sweep.horizon) if report.sweep is not None else None,
-        "verification": _jsonable(report.verification),
+        "verification": jsonable(report.verification),
         "feasibility": (report.feasibility.to_json()
                         if getattr(report, "feasibility", None) is not None else None),
         "contact_model": _contact_json(getattr(report, "contact_model", None),
                                        getattr(report, "force_ratio_untrusted", ())),
-        "load_bound": _jsonable(getattr(report, "load_bound", None)),
-        "rollout": report.recording.summary(),
-        "manifest": _jsonable(report.manifest),
+        "load_bound": jsonable(getattr(report, "load_bound", None)),
+        "rollout": jsonable(report.recording.summary()),  # inf: no force limit
+        "manifest": jsonable(report.manifest),
     }
     if timings:
         doc["timings"] = {k: round(float(v), 4) for k, v in report.timings.items()}
@@ -225,21 +225,25 @@ def dataclasses_asdict(obj) -> dict:
     return dataclasses.asdict(obj)
 
 
-def _jsonable(obj):
+def jsonable(obj):
+    """``obj`` as plain JSON values: numbers (NaN and infinities as None: JSON has neither),
+    strings, lists and dicts; enums by value, anything else by ``str``."""
     if obj is None or isinstance(obj, (str, bool, int)):
         return obj
+    if isinstance(obj, np.bool_):
+        return bool(obj)
     if isinstance(obj, float) or isinstance(obj, np.floating):
         return _num(obj)
     if isinstance(obj, np.integer):
         return int(obj)
     if isinstance(obj, np.ndarray):
-        return [_jsonable(v) for v in obj.tolist()]
+        return [jsonable(v) for v in obj.tolist()]
     if isinstance(obj, dict) or hasattr(obj, "items"):
-        return {str(k): _jsonable(v) for k, v in obj.items()}
+        return {str(k): jsonable(v) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):
-        return [_jsonable(v) for v in obj]
+        return [jsonable(v) for v in obj]
     if hasattr(obj, "value"):  # enums
-        return _jsonable(obj.value)
+        return jsonable(obj.value)
     return str(obj)
 
 
@@ -496,7 +500,7 @@ def write_report_files(report, folder: Path, *, figures: Figures = Figures.SUMMA
     paths: dict[str, Path] = {}
     doc = report.to_json()
     paths["json"] = folder / "report.json"
-    paths["json"].write_text(json.dumps(doc, indent=2, allow_nan=False))
+    paths["json"].write_text(json.dumps(jsonable(doc), indent=2, allow_nan=False))
     images = {}
     which = Figures.parse(figures)
     pngs = ((name, _png(_lighten(fig))) for name, fig in report_figures(

@@ -499,3 +499,29 @@ def test_validate_min_agreement_fails_a_conservative_validation(traj_file, monke
     assert main(["validate", str(traj_file), "--samples", "8", "--min-agreement", "0.95"]) == 1
     fake.agreement = 0.97
     assert main(["validate", str(traj_file), "--samples", "8", "--min-agreement", "0.95"]) == 0
+
+
+def test_a_model_without_force_limits_writes_json_with_nulls(tmp_path, capsys):
+    """trossen-arm-sim's WidowX AI and gymnasium-robotics' ADROIT as shipped: no actuator
+    has a force limit, the motor FOS is infinite, and ``rollout --json`` (and ``analyze``'s
+    report.json, after the whole audit) died with "Out of range float values are not JSON
+    compliant". JSON has no infinity: the FOS is null."""
+    from inline_models import arm_scenario_toml, arm_xml
+
+    from critmoment.trajectory import Trajectory, save_trajectory
+
+    xml = arm_xml()
+    for limit in (' forcerange="-60 60"', ' forcerange="-40 40"', ' forcerange="-20 20"'):
+        xml = xml.replace(limit, "")
+    assert "forcerange" not in xml
+    (tmp_path / "arm.xml").write_text(xml)
+    (tmp_path / "scenario.toml").write_text(arm_scenario_toml())
+    t = np.linspace(0.0, 1.0, 51)
+    traj = Trajectory(actions=np.stack([0.02 * t, -0.02 * t, np.ones_like(t)], axis=1),
+                      fps=50.0)
+    path = tmp_path / "traj.npz"
+    save_trajectory(traj, path)
+    capsys.readouterr()
+    assert main(["rollout", str(path), "--scenario", str(tmp_path), "--json"]) in (0, 1)
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["min_fos_motor"] is None
