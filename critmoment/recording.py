@@ -94,9 +94,15 @@ def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None =
             f"{1.0 / dt:g} Hz (the model's timestep {dt:g} s); resample it to {1.0 / dt:g} Hz "
             f"or less (e.g. keep one row in {math.ceil(traj.fps * dt - 1e-9)}), or lower the "
             f"model's timestep")
+    # the interpolation stays within the channel's range or the values the policy kept
+    # beyond it: a target past a joint's limit that the policy kept (a heavy hand's lift
+    # slide, ADROIT's ARTy, commanded past its range to hold its weight) is replayed as
+    # recorded, as MuJoCo would get it, not clipped after being reported kept
+    lower = np.minimum(twin.channel_lower, actions.min(axis=0))
+    upper = np.maximum(twin.channel_upper, actions.max(axis=0))
     targets = trajectory_mod.upsample(actions, fps=traj.fps, physics_dt=dt,
                                       bounded=twin.channel_normalised,
-                                      lower=twin.channel_lower, upper=twin.channel_upper)
+                                      lower=lower, upper=upper)
     return twin.controls(targets)
 
 

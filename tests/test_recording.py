@@ -382,6 +382,33 @@ def test_rollout_clip_policy_override(twin):
     assert rec.controls[:, elbow].max() > 1.16  # the clipped target was still followed
 
 
+def test_a_target_the_warn_policy_keeps_is_replayed_as_recorded(tmp_path):
+    """ADROIT's vertical arm slide, commanded past its joint range so that its servo holds
+    the 4.9 kg hand up (the MJCF's ctrlrange allows it): the ``warn`` policy said the value
+    was kept, then the upsampler clipped it to the range, and the replayed hand never rose.
+    The controls are the recorded targets; only the spline's overshoot between samples
+    stays clipped (to the range, or to the recorded values beyond it)."""
+    import math
+
+    from inline_models import arm_scenario_toml, arm_xml
+
+    from critmoment import Twin, load_scenario
+
+    (tmp_path / "arm.xml").write_text(arm_xml())  # servos without a ctrlrange
+    (tmp_path / "scenario.toml").write_text(arm_scenario_toml())
+    twin = Twin(load_scenario(tmp_path))
+    limit = math.radians(3.0)  # the shoulder's range, MJCF's default degrees
+    assert twin.channel_upper[0] == pytest.approx(limit)
+    actions = np.zeros((10, 3))
+    actions[:, 2] = 1.0
+    actions[4:, 0] = 0.08  # past the range: the servo pulls harder at the limit
+    with pytest.warns(UserWarning, match=r"out of range|outside"):
+        controls = prepare_controls(twin, Trajectory(actions, fps=50), range_policy="warn")
+    shoulder = twin.actuator_names.index("shoulder_act")
+    assert controls[-1, shoulder] == 0.08 and controls[:, shoulder].max() == pytest.approx(0.08)
+    assert controls[:, shoulder].min() >= -limit - 1e-12  # the overshoot below stays clipped
+
+
 def test_rollout_loads_the_scenario_itself():
     rec = rollout(_hold(5), "aloha_transfer_cube")
     assert rec.scenario_name == "aloha_transfer_cube" and rec.n_steps == 50
