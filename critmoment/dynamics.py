@@ -1144,9 +1144,21 @@ class LoadBound:
         return self.actuator_names[int(self.limiting[row, step])]
 
 
+def unactuated_force(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+    """The generalised forces at ``data`` (after :func:`mujoco.mj_fwdVelocity`) that no
+    actuator of the model supplies, (nv,): ``qfrc_passive`` (joint damping, springs, fluid,
+    gravity compensation) plus the gravity compensation a joint with ``actuatorgravcomp``
+    takes through ``qfrc_actuator`` instead (trossen-arm-sim's WidowX AI: 6.95 N·m of its
+    shoulder's weight that its servo never carries)."""
+    out = data.qfrc_passive.copy()
+    if model.jnt_actgravcomp.any():
+        out += data.qfrc_gravcomp * model.jnt_actgravcomp[model.dof_jntid]
+    return out
+
+
 def passive_forces(model: mujoco.MjModel, states: np.ndarray) -> np.ndarray:
-    """MuJoCo's passive generalised forces ``qfrc_passive`` at recorded states (T, nv): the
-    forces the actuators need not supply (joint damping, and springs, gravity compensation
+    """The forces the actuators need not supply at recorded states (T, nv),
+    :func:`unactuated_force` per state (joint damping, and springs, gravity compensation
     and fluid forces where the model has them). Inverse dynamics minus these is what the
     actuators carry.
 
@@ -1169,7 +1181,7 @@ def passive_forces(model: mujoco.MjModel, states: np.ndarray) -> np.ndarray:
         mujoco.mj_setState(model, data, row, STATE_SPEC)
         mujoco.mj_fwdPosition(model, data)
         mujoco.mj_fwdVelocity(model, data)
-        out[t] = data.qfrc_passive
+        out[t] = unactuated_force(model, data)
     return out
 
 

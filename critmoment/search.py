@@ -662,7 +662,7 @@ def analytic_bounds(recording, twin: Twin, step: Any, *,
         qfrc = pm.rnea(data.qpos, data.qvel, data.qacc, include_armature=True)
         tau0_full = qfrc
     # minus MuJoCo's passive forces (joint damping, springs, gravity compensation, fluid)
-    tau0 = (tau0_full[dofs] - data.qfrc_passive[dofs]) / gear
+    tau0 = (tau0_full[dofs] - dyn.unactuated_force(model, data)[dofs]) / gear
     y = (np.stack([g.y for g in grasps]) if grasps else np.zeros((0, rot.size)))
 
     if not holding:

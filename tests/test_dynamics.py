@@ -766,6 +766,31 @@ def test_load_bound_subtracts_gravity_compensation_and_springs(tmp_path):
     assert np.abs(passive - damping)[steps].min() > 0.15
 
 
+def test_load_bound_subtracts_gravity_compensation_the_actuators_take(tmp_path):
+    """trossen-arm-sim's WidowX AI: ``gravcomp`` with ``actuatorgravcomp`` routes MuJoCo's
+    compensation through ``qfrc_actuator``, not ``qfrc_passive``; the bound counted the
+    whole weight as the servo's (its shoulder: 13.5 N·m where the servo held 0.87). The
+    servo carries the rest, and so does the bound, here and in the moments' analytic
+    bound."""
+    xml = SWING_MJCF.replace('<body name="arm" pos="0 0 0.8">',
+                             '<body name="arm" pos="0 0 0.8" gravcomp="1">')
+    xml = xml.replace('<joint name="hinge" type="hinge" axis="0 1 0"/>',
+                      '<joint name="hinge" type="hinge" axis="0 1 0" actuatorgravcomp="true"/>')
+    twin, rec = _swing(tmp_path, xml, target=-0.6)
+    assert twin.model.jnt_actgravcomp[twin.model.joint("hinge").id]
+    bound = dyn.trajectory_load_bound(rec, twin, masses=[0.05])
+    force = np.abs(rec.signals.actuator_force[:, 0])
+    steps = np.flatnonzero(force[: int(0.5 / rec.dt)] < 4.9)  # the servo not saturated
+    assert steps.size > 40
+    np.testing.assert_allclose(5.0 / bound.fos[0, steps], force[steps], rtol=0.02, atol=0.01)
+    # the compensation is real: the weight's torque is far above what the servo holds
+    data = mujoco.MjData(twin.model)
+    mujoco.mj_setState(twin.model, data, rec.states[steps[-1]], mujoco.mjtState.mjSTATE_INTEGRATION)
+    mujoco.mj_forward(twin.model, data)
+    assert abs(data.qfrc_gravcomp[0]) > 0.5 and \
+        abs(dyn.unactuated_force(twin.model, data)[0] - data.qfrc_passive[0]) > 0.5
+
+
 def test_load_bound_rejects_bad_options(swing):
     twin, rec = swing
     with pytest.raises(ParameterError, match="masses"):
