@@ -72,6 +72,7 @@ import enum
 import importlib.util
 import math
 import numbers
+import threading
 import warnings
 from collections.abc import Generator, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
@@ -876,6 +877,42 @@ def _first_crossings(f, lo: float, hi: float, threshold: float, rows: int, *,
     return out
 
 
+def _solve(solver, **args) -> tuple[dict, str]:
+    """One CasADi/IPOPT solve and its return status, interruptible: IPOPT runs Python's
+    signal handlers between iterations, and CasADi swallows the KeyboardInterrupt they
+    raise (the solve returns "NonIpopt_Exception_Thrown"), so a Ctrl-C or a SIGTERM there
+    went on to a whole report and exit 1. The signal is noted and raised after the solve."""
+    import signal
+
+    noted: list[int] = []
+    previous: dict[int, Any] = {}
+
+    def note(signum, frame):
+        noted.append(signum)
+        handler = previous[signum]
+        if callable(handler):
+            handler(signum, frame)
+        raise KeyboardInterrupt
+
+    if threading.current_thread() is threading.main_thread():
+        for sig in (signal.SIGINT, getattr(signal, "SIGTERM", None)):
+            handler = signal.getsignal(sig) if sig is not None else None
+            if callable(handler):  # a Python handler (Ctrl-C's, the CLI's SIGTERM)
+                try:
+                    signal.signal(sig, note)
+                except (ValueError, OSError):
+                    continue
+                previous[sig] = handler
+    try:
+        sol = solver(**args)
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+    if noted:
+        raise KeyboardInterrupt
+    return sol, str(solver.stats()["return_status"])
+
+
 def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SMOOTHING,
                         n_boundary: int = 9, max_iter: int = 200,
                         grid: int = 33) -> AnalyticWorstCase:
@@ -940,8 +977,8 @@ def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SM
     starts = [top, nominal]
     status = []
     for s in starts:
-        sol = solver(x0=np.minimum(s, ub), lbx=np.zeros(2), ubx=ub)
-        status.append(str(solver.stats()["return_status"]))
+        sol, state = _solve(solver, x0=np.minimum(s, ub), lbx=np.zeros(2), ubx=ub)
+        status.append(state)
         candidates.append(lo + span * np.clip(np.asarray(sol["x"]).reshape(-1), 0.0, ub))
     candidates = np.array(candidates)
     exact = bounds.cost(candidates[:, 0], candidates[:, 1])
@@ -1378,8 +1415,9 @@ def surrogate_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = Non
                            {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
                             "ipopt.max_iter": max_iter})
         for i in order[:starts]:
-            sol = solver(x0=unit[i], lbx=np.zeros(box.ndim), ubx=np.ones(box.ndim))
-            status.append(str(solver.stats()["return_status"]))
+            sol, state = _solve(solver, x0=unit[i], lbx=np.zeros(box.ndim),
+                                ubx=np.ones(box.ndim))
+            status.append(state)
             cand_unit.append(np.clip(np.asarray(sol["x"]).reshape(-1), 0.0, 1.0))
     cand_points = (np.clip(box.from_unit(np.array(cand_unit)), box.low, box.high) if cand_unit
                    else np.zeros((0, box.ndim)))

@@ -521,3 +521,38 @@ def test_searches_side_by_side_equal_each_alone(contact_engine, moments):
     one = search.audit_moment(contact_engine, hand, n_trials=16, seed=1)
     both = search.audit_moments(contact_engine, [lift, hand], n_trials=16, seed=1)
     assert both[1] == one and both[0]["step"] == lift
+
+
+def test_an_interrupt_during_an_ipopt_solve_is_not_swallowed():
+    """IPOPT runs Python's signal handlers between its iterations and CasADi swallows the
+    KeyboardInterrupt they raise (the solve returns "NonIpopt_Exception_Thrown"): a Ctrl-C
+    there went on to a whole report and exit 1. The solve raises it."""
+    import os
+    import signal
+    import threading
+
+    import casadi as ca
+
+    from critmoment import search
+
+    n = 200
+    x = ca.SX.sym("x", n)
+    rosenbrock = ca.sum1(100 * (x[1:] - x[:-1] ** 2) ** 2 + (1 - x[:-1]) ** 2)
+    solver = ca.nlpsol("long", "ipopt", {"x": x, "f": rosenbrock},
+                       {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
+                        "ipopt.max_iter": 20000, "ipopt.tol": 1e-300, "ipopt.acceptable_iter": 0,
+                        "ipopt.hessian_approximation": "limited-memory"})  # about 15 s
+    timer = threading.Timer(0.2, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            search._solve(solver, x0=-np.ones(n))
+    finally:
+        timer.cancel()
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    # uninterrupted, the status comes back
+    small = ca.nlpsol("small", "ipopt", {"x": x[:2], "f": (x[0] - 1) ** 2 + (x[1] + 2) ** 2},
+                      {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes"})
+    sol, status = search._solve(small, x0=np.zeros(2))
+    assert status == "Solve_Succeeded"
+    np.testing.assert_allclose(np.asarray(sol["x"]).ravel(), [1.0, -2.0], atol=1e-6)
