@@ -1245,7 +1245,7 @@ def trajectory_load_bound(recording, twin, *, masses: Sequence[float] | np.ndarr
     rot = np.flatnonzero(twin.motors)
     dofs = model.jnt_dofadr[model.actuator_trnid[rot, 0]]
     gear = model.actuator_gear[rot, 0]
-    limits = np.asarray(twin.limits, dtype=float)[rot]
+    limits = twin.lowest_limits[rot]  # a force-limit parameter at its range's low end
     tau0 = pm.rnea(qpos, qvel, qacc, include_armature=True)
     tau0 = (tau0[:, dofs] - passive_forces(model, states[:n_steps])[:, dofs]) / gear  # (T, J)
 

@@ -680,9 +680,10 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
                                                                   samples])
     frames_ref = None if reference is None else reference.frames
     parts, diverged = [], []
-    for _, out, _mu in batched_rollouts(twin, state0, controls, everything, model=probe.model,
-                                       chunk=chunk, nthread=nthread):
-        frames = _Frames.read(twin, probe, out["sensordata"])
+    for first, out, _mu in batched_rollouts(twin, state0, controls, everything,
+                                            model=probe.model, chunk=chunk, nthread=nthread):
+        rows = everything[first:first + out["sensordata"].shape[0]]
+        frames = _Frames.read(twin, probe, out["sensordata"], twin.sample_limits(rows))
         if frames_ref is None:
             frames_ref = frames.row(0)
         parts.append(_classify_frames(frames, frames_ref, controls, probe, dt, criteria,
@@ -778,7 +779,8 @@ class _Frames:
     success: np.ndarray
 
     @classmethod
-    def read(cls, twin: Twin, probe: _Probe, sensordata: np.ndarray) -> _Frames:
+    def read(cls, twin: Twin, probe: _Probe, sensordata: np.ndarray,
+             limits: np.ndarray | None = None) -> _Frames:
         # the outcome reads contacts, positions and forces, not the contact loads of
         # Twin.signals (the audit's cost): those were two thirds of its time here
         sd = sensordata[..., :twin.nsensordata]
@@ -786,10 +788,12 @@ class _Frames:
         pos, vel = sd[..., twin._pos_adr], sd[..., twin._vel_adr]
         c, t = sensordata.shape[:2]
         evidence = twin.task_evidence(gripper, support, pos, vel)
+        # each run's own force limits where the box varies one (c, nu), else the twin's
+        limits = twin.limits if limits is None else np.asarray(limits)[:, None]
         return cls(stage=twin.task.stage(gripper, support, pos), contact_gripper=gripper,
                    contact_support=support,
                    actuator_norm=sd[..., twin._force_ids[probe.motors]]
-                   / twin.limits[probe.motors],
+                   / limits[..., probe.motors],
                    position=sensordata[..., probe.pos].reshape(c, t, -1, 3),
                    q=sensordata[..., probe.q], success=twin.task.success(evidence))
 

@@ -334,7 +334,7 @@ class _Watch:
     """
 
     def __init__(self, ev: SparseEvaluator, n: int, criteria: OutcomeCriteria,
-                 start: int = 0, end: int | None = None):
+                 start: int = 0, end: int | None = None, samples: np.ndarray | None = None):
         dt = float(ev.twin.model.opt.timestep)
         g = len(ev._anchors)
         self.ev = ev
@@ -360,7 +360,10 @@ class _Watch:
         twin = ev.twin
         motors = np.flatnonzero(twin.motors)
         self.force_adr = twin._force_ids[motors]
-        self.limits = twin.limits[motors]
+        # per sample where the box varies a force limit (n, r), else (r,)
+        per_sample = None if samples is None else twin.sample_limits(samples)
+        self.limits = (twin.limits[motors] if per_sample is None
+                       else per_sample[:, motors])
         self.saturation = float(criteria.saturation)
         # tracking: each motor-checked actuator's position (gear × joint angle, as MuJoCo's
         # actuator length) against its target, beyond the nominal run's own lag
@@ -436,7 +439,8 @@ class _Watch:
         lost = ev._carried[k:k + s][None] & ~touch.any(axis=-1)
         over = slip > self.tolerance
         with np.errstate(invalid="ignore", divide="ignore"):
-            load = np.abs(sensordata[..., self.force_adr] / self.limits)
+            limits = self.limits if self.limits.ndim == 1 else self.limits[ids][:, None]
+            load = np.abs(sensordata[..., self.force_adr] / limits)
         saturated = load >= self.saturation
         target = ev._controls[k:k + s][:, self.act]                          # (s, r)
         nominal = self.nominal_q[k + 1:k + s + 1, self.qadr] * self.gear
@@ -721,7 +725,7 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     # simulation can still go unstable
     end = ev.n_steps
     n = samples.shape[0]
-    watch = _Watch(ev, n, criteria, first, end)
+    watch = _Watch(ev, n, criteria, first, end, samples=samples)
     kept: list[int] = []  # a moment whose window overlaps the previous kept one is skipped
     for k in (int(s) for s in steps):
         if not kept or k >= kept[-1] + h:

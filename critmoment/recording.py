@@ -599,8 +599,11 @@ class Recording:
                 f"{path}: recorded {arrays['sensordata'].shape[-1]} sensor values per step, the "
                 f"scenario's twin has {twin.nsensordata}: recorded with another scenario?")
         mu = _friction_of(twin, arrays["nominal"])
+        limits = twin.sample_limits(arrays["nominal"])
+        signals = twin.signals(arrays["sensordata"], mu,
+                               limits=None if limits is None else limits[0])
         return cls(dt=meta["dt"], states=arrays["states"], sensordata=arrays["sensordata"],
-                   controls=arrays["controls"], signals=twin.signals(arrays["sensordata"], mu),
+                   controls=arrays["controls"], signals=signals,
                    nominal=arrays["nominal"], parameter_names=tuple(meta["parameter_names"]),
                    gripper_names=tuple(meta["gripper_names"]),
                    actuator_names=tuple(meta["actuator_names"]),

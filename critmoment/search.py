@@ -483,7 +483,7 @@ def _finger_limits(twin: Twin, pad_bodies: Sequence[int]) -> list[float]:
                     if model.actuator_trntype[a] == mujoco.mjtTrn.mjTRN_JOINT
                     and model.actuator_trnid[a, 0] in slides]
             if acts:
-                limits.extend(float(twin.limits[a]) for a in acts)
+                limits.extend(float(twin.lowest_limits[a]) for a in acts)
                 break
             if not slides:
                 break
@@ -597,7 +597,7 @@ def analytic_bounds(recording, twin: Twin, step: Any, *,
     joints = tuple(twin.actuator_names[a] for a in rot)
     dofs = model.jnt_dofadr[model.actuator_trnid[rot, 0]]
     gear = model.actuator_gear[rot, 0]
-    tau_max = np.asarray(twin.limits, dtype=np.float64)[rot]
+    tau_max = twin.lowest_limits[rot]  # a force-limit parameter at its range's low end
 
     unit_inertia = np.diag(model.body_inertia[ob] / model.body_mass[ob])
     pose = np.empty(7)

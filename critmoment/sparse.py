@@ -859,6 +859,8 @@ class SparseEvaluator:
         self._chain_starts: dict[int, int] = {}
         self._written: dict[tuple[int, int], np.ndarray] = {}
         self._mu: dict[tuple[int, int], np.ndarray | float] = {}
+        #: per batch, its samples' force limits (Twin.sample_limits), or None
+        self._limits: dict[tuple[int, int], np.ndarray | None] = {}
 
     def fork(self, nthread: int | None = None, *, prefill: bool = True) -> SparseEvaluator:
         """An evaluator of the same recording and settings with simulations and caches of
@@ -873,7 +875,7 @@ class SparseEvaluator:
         other = copy.copy(self)
         other._batches = collections.OrderedDict()
         other._memo = collections.OrderedDict()
-        other._written, other._mu = {}, {}
+        other._written, other._mu, other._limits = {}, {}, {}
         other._kin_data = None
         other.busy = None
         if nthread is not None:
@@ -988,6 +990,7 @@ class SparseEvaluator:
                 old, _ = self._batches.popitem(last=False)
                 self._written.pop(old, None)
                 self._mu.pop(old, None)
+                self._limits.pop(old, None)
         else:
             self._batches.move_to_end(key)
         written = self._written.get(key)
@@ -995,8 +998,17 @@ class SparseEvaluator:
             self.twin.write_parameters(batch, samples)
             self._mu[key] = self.twin.grip_friction(batch.expanded("geom_friction"),
                                                     batch.expanded("pair_friction"))
+            self._limits[key] = self.twin.sample_limits(samples)
             self._written[key] = samples.copy()
         return batch, self._mu[key]
+
+    def _limits_of(self, batch: mujoco.batch.Batch) -> np.ndarray | None:
+        """The force limits of the samples written to ``batch`` (:meth:`_batch`), (nsim,
+        nu), or None where the box varies none."""
+        for key, known in self._batches.items():
+            if known is batch:
+                return self._limits.get(key)
+        return None
 
     # -- evaluation ----------------------------------------------------------------
     def evaluate(self, steps: Any, samples: Any, *, keep_raw: bool = False,
@@ -1404,6 +1416,7 @@ class SparseEvaluator:
         batch.warning[...] = 0
         state = None
         mu = np.broadcast_to(np.asarray(mu, dtype=np.float64), (nsim,))
+        limits = self._limits_of(batch)
         if run.size:
             if restore:
                 batch.state[run] = self._start_rows(k[run]) if per_sim else self._start_row(k)
@@ -1426,13 +1439,13 @@ class SparseEvaluator:
                     length[todo] = done
                     if done < h:
                         part = self._decide(buf[:, :done], slip[:, :done], length, mu, k,
-                                            final=False)
+                                            final=False, limits=limits)
                         todo = todo[~(part.stop & (part.failure > 0))[todo]]
             if keep_state:
                 state = batch.state.copy()
         warned = batch.warning[:, :, 1].copy()
         final = extras == 0
-        decided = self._decide(buf, slip, length, mu, k, final=final)
+        decided = self._decide(buf, slip, length, mu, k, final=final, limits=limits)
         follow = run[decided.follow[run] & ~raised[run] & ~(warned[run] > 0).any(axis=1)
                      & (extras[run] > 0)]
         if follow.size and extra:
@@ -1449,7 +1462,7 @@ class SparseEvaluator:
             # failure once a neighbour was followed)
             final = final.copy()
             final[follow] = True
-            decided = self._decide(buf, slip, length, mu, k, final=final)
+            decided = self._decide(buf, slip, length, mu, k, final=final, limits=limits)
         # rows never stepped are zero, hence finite
         diverged = raised | (warned > 0).any(axis=1) | ~np.isfinite(buf).all(axis=(1, 2))
         diverged[length == 0] = False
@@ -1524,7 +1537,7 @@ class SparseEvaluator:
         return out
 
     def _decide(self, buf: np.ndarray, slip: np.ndarray, length: np.ndarray, mu: np.ndarray,
-                k: int, *, final: bool) -> _Decision:
+                k: int, *, final: bool, limits: np.ndarray | None = None) -> _Decision:
         """Decide every simulation from its readings (nsim, L, nsd) of steps k .. k+L−1, of
         which the first ``length`` were taken; ``final``: no more steps can be taken. ``k``
         and ``final`` may also be given per simulation, (nsim,)."""
@@ -1535,7 +1548,8 @@ class SparseEvaluator:
         else:
             at = (k + np.arange(total))[None]
         with np.errstate(over="ignore", invalid="ignore"):
-            sig = self.twin.signals(buf, mu=mu[:, None], carried=self._carried[at])
+            sig = self.twin.signals(buf, mu=mu[:, None], carried=self._carried[at],
+                                    limits=None if limits is None else limits[:, None])
             cp = self.twin.scenario.cost
             term_c, term_m = safety.cost_terms(sig.fos_grasp, sig.fos_motor, cp)
             # uncalibrated where the contact is not trusted: slip and motor decide

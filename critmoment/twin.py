@@ -38,7 +38,7 @@ from critmoment.exceptions import (
     ScenarioError,
     TrajectoryError,
 )
-from critmoment.params import FrictionParameter
+from critmoment.params import ForceLimitParameter, FrictionParameter
 from critmoment.scenario import Scenario
 from critmoment.task import TaskEvidence
 
@@ -220,6 +220,18 @@ class Twin:
         scenario.validate_names(model)
         self._index(model)
         self._param_ids = [p.resolve(model) for p in scenario.box.parameters]
+        #: (column, actuator) of each force-limit parameter whose value is that actuator's
+        #: limit in the motor checks as in the physics (its forcerange): the actuator's
+        #: capability, uncertain. Where ``[limits]`` states the actuator's rated limit, the
+        #: parameter is a protective clamp and the checks divide by the rating
+        sources = scenario.limit_sources
+        self._limit_columns = tuple(
+            (j, int(i)) for j, (p, i) in enumerate(zip(scenario.box.parameters,
+                                                       self._param_ids, strict=True))
+            if isinstance(p, ForceLimitParameter)
+            and sources.get(model.actuator(int(i)).name) != "scenario")
+        for j, a in self._limit_columns:
+            self.limits[a] = float(scenario.box.nominal[j])
         #: per parameter, the ids it writes: the friction of one of the object's geoms is the
         #: object's friction, written to every collision geom of its body
         self._param_targets = [self._targets(p, i, model)
@@ -584,6 +596,28 @@ class Twin:
         return np.asarray(states)[:, state_slice(self.model, mujoco.mjtState.mjSTATE_QPOS)]
 
     # -- actions and state ------------------------------------------------------------
+    def sample_limits(self, samples: np.ndarray) -> np.ndarray | None:
+        """Each sample's actuator force limits, (n, nu): :attr:`limits` with the box's
+        force-limit parameters at the sample's values; None when the box has none (every
+        sample has :attr:`limits`)."""
+        if not self._limit_columns:
+            return None
+        samples = np.atleast_2d(np.asarray(samples, dtype=np.float64))
+        out = np.repeat(np.asarray(self.limits, dtype=np.float64)[None], samples.shape[0], 0)
+        for j, a in self._limit_columns:
+            out[:, a] = samples[:, j]
+        return out
+
+    @property
+    def lowest_limits(self) -> np.ndarray:
+        """The force limits at the worst corner of the box, (nu,): :attr:`limits` with each
+        force-limit parameter at the low end of its range (the analytic bounds hold over
+        the whole box with them)."""
+        out = np.asarray(self.limits, dtype=np.float64).copy()
+        for j, a in self._limit_columns:
+            out[a] = float(self.scenario.box.parameters[j].low)
+        return out
+
     def controls(self, actions: np.ndarray) -> np.ndarray:
         """Map action vectors (..., na) to actuator controls (..., nu), clamped to ctrlrange."""
         actions = np.asarray(actions, dtype=np.float64)
@@ -780,6 +814,7 @@ class Twin:
         return gripper, (sd[..., self._support_adr] > 0).any(axis=-1)
 
     def signals(self, sensordata: np.ndarray, mu: np.ndarray | float | None = None, *,
+                limits: np.ndarray | None = None,
                 carried: np.ndarray | None = None) -> Signals:
         """Safety signals from ``sensordata`` (..., nsensordata).
 
@@ -787,6 +822,8 @@ class Twin:
             sensordata: sensor readings after a step (or a forward).
             mu: friction of the object's contacts, broadcastable to the leading shape
                 (...); default: the nominal model's.
+            limits: the actuators' force limits, broadcastable to (..., nu) (a sample's
+                :meth:`sample_limits` row where the box varies one); default :attr:`limits`.
             carried: where the grip must carry the object, broadcastable to (...) bool;
                 default: wherever a gripper holds the object off its support in
                 ``sensordata``. Sparse evaluation passes the nominal run's flags, so that an
@@ -819,12 +856,14 @@ class Twin:
         fos_grasp = np.where(np.broadcast_to(carried, fos_grasp.shape), held, np.inf)
         acc = sd[..., self._acc_adr] + self.model.opt.gravity
         force = sd[..., self._force_adr].copy()  # the signals own their arrays
-        fos_m, arg = safety.motor_fos(force[..., self.motors], self.limits[self.motors])
+        # per simulation where the box varies a force limit (:meth:`sample_limits`)
+        limits = self.limits if limits is None else np.asarray(limits, dtype=np.float64)
+        fos_m, arg = safety.motor_fos(force[..., self.motors], limits[..., self.motors])
         rot_ids = np.flatnonzero(self.motors)
         cost = safety.cost(fos_grasp, fos_m, self.scenario.cost)
         pos = sd[..., self._pos_adr].copy()
         stage = self.task.stage(contact_gripper, contact_support, pos)
-        return Signals(object_pos=pos, object_vel=sd[..., self._vel_adr].copy(), object_acc=acc, actuator_force=force, actuator_norm=force / self.limits,
+        return Signals(object_pos=pos, object_vel=sd[..., self._vel_adr].copy(), object_acc=acc, actuator_force=force, actuator_norm=force / limits,
                        fos_contact=fos_contact, fos_grasp=fos_grasp, fos_motor=fos_m, motor_argmax=rot_ids[arg],
                        cost=cost, contact_support=contact_support,
                        contact_gripper=contact_gripper, stage=stage)

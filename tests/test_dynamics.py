@@ -791,6 +791,63 @@ def test_load_bound_subtracts_gravity_compensation_the_actuators_take(tmp_path):
         abs(dyn.unactuated_force(twin.model, data)[0] - data.qfrc_passive[0]) > 0.5
 
 
+def test_a_force_limit_parameter_is_each_samples_limit_everywhere(tmp_path):
+    """A box that varies an arm servo's force limit (1..8 N·m, nominal 5; the MJCF's
+    forcerange, no ``[limits]`` rating) moved MuJoCo's forcerange per sample, but the motor
+    FOS, the ground truth's saturation rule and the analytic load bound kept dividing by
+    the fixed 5 N·m: a servo clamped at 1 N·m for the whole hold read FOS 3 and no
+    saturation. Each sample's limit is its own value; the load bound, over the whole box,
+    takes the range's low end. (With a ``[limits]`` rating the parameter is a protective
+    clamp and the checks divide by the rating: test_sparse's closed-form force limit.)"""
+    from scenarios import one_actuator_toml
+
+    from critmoment import groundtruth, recording
+    from critmoment.scenario import load_scenario
+    from critmoment.sparse import SparseEvaluator
+    from critmoment.trajectory import Trajectory
+    from critmoment.twin import Twin
+
+    (tmp_path / "scene.xml").write_text(SWING_MJCF)
+    (tmp_path / "scenario.toml").write_text(one_actuator_toml(
+        "swing", mjcf="scene.xml", gripper="hand", gripper_geom="pad", support="table",
+        actuator="hinge", limit=5.0, task=True, uncertainty="""[uncertainty.mass]
+body = "box"
+range = [0.05, 2.0]
+nominal = 0.05
+[uncertainty.hinge_limit]
+kind = "force_limit"
+actuator = "hinge"
+range = [1.0, 8.0]
+nominal = 5.0
+"""))
+    # the limit is the parameter's alone (a [limits] rating would make it a clamp)
+    text = (tmp_path / "scenario.toml").read_text()
+    assert "[limits]\nhinge = 5.0\n" in text
+    (tmp_path / "scenario.toml").write_text(text.replace("[limits]\nhinge = 5.0\n", ""))
+    twin = Twin(load_scenario(tmp_path))
+    hinge = twin.actuator_names.index("hinge")
+    np.testing.assert_allclose(twin.sample_limits([[0.05, 1.0], [0.05, 8.0]])[:, hinge],
+                               [1.0, 8.0])
+    assert twin.lowest_limits[hinge] == 1.0
+    traj = Trajectory(actions=np.zeros((30, 1)), fps=50.0, start=np.zeros(1))  # a hold
+    rec = recording.rollout(traj, twin=twin)
+    held = float(np.abs(rec.signals.actuator_force[-50:, hinge]).mean())
+    assert 1.3 < held < 2.0  # the arm's weight at its lever, well under the nominal 5 N·m
+    samples = np.array([[0.05, 1.0], [0.05, 5.0]])
+    # the sparse evaluation's motor FOS: clamped at 1 N·m, the servo is at its limit
+    ev = SparseEvaluator(rec, twin, horizon=10)
+    fos = ev.evaluate([20], samples).fos_motor[0]
+    assert fos[0] == pytest.approx(1.0, abs=0.01) and fos[1] > 1.5
+    # the ground truth: saturated for the whole hold at 1 N·m, never at 5
+    bf = groundtruth.brute_force(traj, twin=twin, samples=samples)
+    sat = bf.classification.saturation_time
+    assert sat[0] > 0.3 and sat[1] == 0.0
+    assert bf.classification.outcome[0] is groundtruth.Outcome.MOTOR
+    # the analytic bound over the box: the low end's 1 N·m is exceeded without a payload
+    bound = dyn.trajectory_load_bound(rec, twin, masses=[0.05])
+    assert np.median(bound.fos[0, -100:]) < 1.0  # the hold, 1.3-2 N·m against 1 N·m
+
+
 def test_load_bound_rejects_bad_options(swing):
     twin, rec = swing
     with pytest.raises(ParameterError, match="masses"):
