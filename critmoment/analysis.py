@@ -805,9 +805,20 @@ def _nominal_run_failure(reference: NominalReference | None, twin: Twin,
         actuator = _motor_name(twin, reference.motor_column)
         name = f" {actuator!r}" if actuator is not None else ""
         c = OutcomeCriteria()
+        task = ("the task is completed all the same" if reference.completed
+                else "nor is the task completed")
+        if reference.motor_tracking:
+            motors = np.flatnonzero(twin.motors)
+            slide = (0 <= reference.motor_column < motors.size
+                     and bool(twin.slide[motors[reference.motor_column]]))
+            tolerance = (f"{c.tracking_tolerance_slide:g} m" if slide
+                         else f"{c.tracking_tolerance:g} rad")
+            return (f"tracking loss: actuator{name}'s joint lagged its target by more than "
+                    f"the nominal run's lag + {tolerance} for over "
+                    f"{c.tracking_time * 1e3:g} ms{when} (the ground truth's rule; {task})")
         return (f"motor overload: actuator{name} held at {c.saturation:.1%} of its force limit "
                 f"or more for over {c.motor_time * 1e3:g} ms{when} (the ground truth's rule; "
-                f"the task is completed all the same)")
+                f"{task})")
     return f"{reference.outcome.value}{when}"
 
 
@@ -1216,13 +1227,14 @@ class _Rollouts:
         c = bf.classification
         close = np.maximum(c.max_slip / c.criteria.slip_tolerance,
                            c.saturation_time / c.criteria.motor_time)
-        for point, outcome, step, column, level in zip(
-                bf.samples, c.outcome, c.first_failure_step, c.motor_column, close,
-                strict=True):
+        for point, outcome, step, column, tracking, level in zip(
+                bf.samples, c.outcome, c.first_failure_step, c.motor_column, c.motor_tracking,
+                close, strict=True):
             key = np.asarray(point, float).tobytes()
             name = _motor_name(self.twin, column) if outcome is Outcome.MOTOR else None
-            self.outcomes[key] = (outcome.value, float(step) * c.dt if step >= 0 else None,
-                                  name)
+            # a motor failure by a joint lagging its target is named so, not an overload
+            kind = "tracking" if outcome is Outcome.MOTOR and tracking else outcome.value
+            self.outcomes[key] = (kind, float(step) * c.dt if step >= 0 else None, name)
             if outcome is Outcome.SUCCESS:
                 self.closeness[key] = float(level)
         return bf.failed

@@ -48,6 +48,12 @@ class _Stdout:
             print(text, flush=True)  # flush here, so a closed pipe is seen here
         except BrokenPipeError:
             cls.silence()
+        except OSError as exc:  # a full disk or a file-size limit behind a redirection
+            from critmoment.exceptions import OutputError
+
+            cls.silence()
+            raise OutputError(f"writing to the standard output failed: "
+                              f"{exc.strerror or exc}") from None
 
     @classmethod
     def silence(cls) -> None:

@@ -277,11 +277,16 @@ def _tracking_error(q: np.ndarray, target: np.ndarray, shift: int) -> np.ndarray
 
 
 def _gripper_actuators(twin: Twin) -> set[int]:
+    """The actuators of a gripper: those on a normalised channel, and those the twin keeps
+    out of the motor checks as fingers (on a joint below a gripper's base: a hand's
+    fingers, each on a channel of its own, that close on the object and lag there by
+    design; ADROIT's were refused as arm joints that could not follow)."""
     conv = twin.scenario.actions
     out: set[int] = set()
     for names, normalised in zip(conv.channels, conv.normalised, strict=True):
         if normalised:
             out.update(twin.model.actuator(a).id for a in names)
+    out.update(int(i) for i in np.flatnonzero(twin.fingers))
     return out
 
 
@@ -695,12 +700,42 @@ def _check_units(trajectory: Trajectory, twin: Twin) -> None:
                     f"trajectory's values span {cmin:.4g}..{cmax:.4g}: raw gripper units "
                     f"(metres, 0..255){percent}? normalise them, or this trajectory is for "
                     f"another scenario")
+            own = _in_actuator_units(conv, c, cmin, cmax)
+            if own is not None:
+                raise TrajectoryError(
+                    f"channel {label!r} is a normalised gripper (0 closed .. 1 open), the "
+                    f"trajectory's values span {cmin:.4g}..{cmax:.4g}, its actuators' own "
+                    f"controls from closed to open ({own}): the gripper in the actuator's "
+                    f"units (metres?) rather than normalised; normalise it (0 closed .. 1 "
+                    f"open)")
             continue
         hinge = np.isfinite(lo[c]) and np.isfinite(hi[c]) and hi[c] - lo[c] <= 2 * np.pi + 1e-6
-        if hinge and max(abs(cmin), abs(cmax)) > 2 * np.pi + 0.5:
+        big = max(abs(cmin), abs(cmax))
+        if hinge and big > 2 * np.pi + 0.5:
+            # beyond two turns in degrees: encoder ticks (0..4095) or milliradians
+            unit = ("degrees instead of radians" if big <= 720.0 else
+                    "motor ticks (a 12-bit encoder's 0..4095), milliradians or degrees "
+                    "instead of radians")
             raise TrajectoryError(
                 f"channel {label!r} spans {cmin:.4g}..{cmax:.4g}, its joint range is "
-                f"{lo[c]:.4g}..{hi[c]:.4g} rad: degrees instead of radians{percent}?")
+                f"{lo[c]:.4g}..{hi[c]:.4g} rad: {unit}{percent}?")
+
+
+def _in_actuator_units(conv, c: int, cmin: float, cmax: float) -> str | None:
+    """Whether a normalised channel's values span its actuators' own controls from closed
+    to open (``offsets`` to ``offsets + scales``) rather than 0..1: the controls in words
+    when they do (and that span is not itself about 0..1), else None."""
+    ends = [(float(o), float(o + s)) for s, o in zip(conv.scales[c], conv.offsets[c],
+                                                      strict=True)]
+    for a, b in ends:
+        low, high = min(a, b), max(a, b)
+        span = high - low
+        if span <= 0 or (abs(low) < 0.1 and abs(high - 1.0) < 0.1):
+            continue  # the actuator's own units are about 0..1: indistinguishable
+        if span < 0.5 and cmax - cmin > 0.5 * span and \
+                abs(cmin - low) <= 0.1 * span and abs(cmax - high) <= 0.1 * span:
+            return f"{a:.4g}..{b:.4g}"
+    return None
 
 
 def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *,

@@ -216,6 +216,8 @@ class Classification:
         saturation_time: longest saturation of a rotational actuator [s], (n,).
         motor_column: which motor-checked actuator (its column of ``actuator_norm``, in
             ``Twin.motors`` order) the first motor event is of, −1 if none, (n,) int.
+        motor_tracking: the first motor event is a tracking loss (the joint lags its
+            target), not a saturation, (n,) bool.
         dt: physics step [s].
         criteria: the tolerances used.
     """
@@ -229,6 +231,7 @@ class Classification:
     max_slip: np.ndarray
     saturation_time: np.ndarray
     motor_column: np.ndarray
+    motor_tracking: np.ndarray
     dt: float
     criteria: OutcomeCriteria
 
@@ -339,8 +342,10 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
         motor_step = _earliest(events)
         first = np.argmin(np.where(events >= 0, events, np.iinfo(np.int64).max), axis=-1)
         motor_column = np.where(motor_step >= 0, first % actuator_norm.shape[-1], -1)
+        motor_tracking = (motor_step >= 0) & (first >= actuator_norm.shape[-1])
     else:
         motor_step = motor_column = np.full(n, -1)
+        motor_tracking = np.zeros(n, bool)
     # drop: not carried where the nominal run carries the object
     carried = carried_flags(contact_support, contact_gripper)
     drop_step = _last_run(nominal_carried[None, :] & ~carried, c.steps(c.drop_time, dt))
@@ -375,7 +380,8 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
         slip_step=slip_step.astype(np.int64), drop_step=drop_step.astype(np.int64),
         motor_step=motor_step.astype(np.int64), max_slip=np.asarray(max_slip, dtype=float),
         saturation_time=np.asarray(saturation_time, dtype=float),
-        motor_column=np.asarray(motor_column, dtype=np.int64), dt=float(dt), criteria=c)
+        motor_column=np.asarray(motor_column, dtype=np.int64),
+        motor_tracking=np.asarray(motor_tracking, dtype=bool), dt=float(dt), criteria=c)
 
 
 def _earliest(steps: np.ndarray) -> np.ndarray:
@@ -546,6 +552,7 @@ class NominalReference:
         first_failure_step: the step of its earliest failure event, −1 for a success.
         motor_column: the motor-checked actuator of a motor failure (``Twin.motors``
             order), −1 otherwise.
+        motor_tracking: that motor failure is a tracking loss, not a saturation.
     """
 
     frames: _Frames
@@ -555,6 +562,7 @@ class NominalReference:
     outcome: Outcome = Outcome.SUCCESS
     first_failure_step: int = -1
     motor_column: int = -1
+    motor_tracking: bool = False
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -700,6 +708,7 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
                                      outcome=result.outcome[0],
                                      first_failure_step=int(result.first_failure_step[0]),
                                      motor_column=int(result.motor_column[0]),
+                                     motor_tracking=bool(result.motor_tracking[0]),
                                      n_steps=int(controls.shape[0]),
                                      nominal=box.nominal.copy())
     return BruteForce(samples=samples, parameter_names=box.names, classification=classification,
@@ -763,7 +772,8 @@ def reference_from_recording(recording, twin: Twin,
     return NominalReference(frames=ref, completed=bool(own.completed[0]), n_steps=n,
                             nominal=box.nominal.copy(), outcome=own.outcome[0],
                             first_failure_step=int(own.first_failure_step[0]),
-                            motor_column=int(own.motor_column[0]))
+                            motor_column=int(own.motor_column[0]),
+                            motor_tracking=bool(own.motor_tracking[0]))
 
 
 @dataclasses.dataclass(frozen=True)

@@ -192,6 +192,7 @@ class ChainedResult:
             ``saturation`` of its force limit for longer than ``motor_time``) or of a lost
             tracking (further from its target than in the nominal run by more than
             ``tracking_tolerance`` for longer than ``tracking_time``), −1 if none, (n,) int64.
+        motor_tracking: that first motor failure is a lost tracking, (n,) bool.
         diverged_step: the first step of the block between the moments in which the
             simulation diverged (MuJoCo raised or warned of instability, or a value went
             non-finite), −1 if none, (n,) int64; a divergence within a moment's window is
@@ -220,6 +221,7 @@ class ChainedResult:
     drop_step: np.ndarray | None = None
     max_slip: np.ndarray | None = None
     motor_step: np.ndarray | None = None
+    motor_tracking: np.ndarray | None = None
     diverged_step: np.ndarray | None = None
     incomplete: np.ndarray | None = None
     release: int = -1
@@ -280,7 +282,8 @@ class ChainedResult:
     def kinds(self) -> list[str | None]:
         """How each sample failed on its chain, the earliest event (None for a pass):
         ``groundtruth.Outcome`` values ("diverged", "motor", "slipped", "dropped",
-        "not_completed") for the watch's rules and the task's, or "moment" for a failure
+        "not_completed") for the watch's rules and the task's ("tracking" for a motor
+        failure that is a joint lagging its target, not a saturation), or "moment" for a failure
         of a moment's sparse decision on the sample's own state."""
         n = self.samples.shape[0]
         failed = self.failed
@@ -298,7 +301,11 @@ class ChainedResult:
             if steps[i] < big:
                 when.append((int(steps[i]), "moment"))
             if when:
-                out.append(min(when)[1])
+                kind = min(when)[1]
+                if kind == "motor" and self.motor_tracking is not None \
+                        and self.motor_tracking[i]:
+                    kind = "tracking"
+                out.append(kind)
             else:
                 out.append("not_completed")
         return out
@@ -355,6 +362,8 @@ class _Watch:
         self.slip_step = np.full(n, -1, np.int64)
         self.drop_step = np.full(n, -1, np.int64)
         self.motor_step = np.full(n, -1, np.int64)
+        #: the first motor failure is a tracking loss (not a saturation)
+        self.motor_tracking = np.zeros(n, bool)
         self.diverged_step = np.full(n, -1, np.int64)
         self.max_slip = np.zeros(n)
         twin = ev.twin
@@ -457,8 +466,12 @@ class _Watch:
             level.update(ids, np.nan_to_num(ratios[name], nan=np.inf))
         for name, (run, need, first_step) in self.rules.items():
             run[ids], first = _runs(run[ids], flags[name], need)
+            at = k + first - need + 1
             hit = (first >= 0) & (first_step[ids] < 0)
-            first_step[ids[hit]] = k + first[hit] - need + 1
+            if name == "tracking":  # shares the motor step: the earlier of the two rules
+                hit |= (first >= 0) & (at < first_step[ids])
+                self.motor_tracking[ids[hit]] = True
+            first_step[ids[hit]] = at[hit]
 
 
     def closest(self) -> np.ndarray:
@@ -746,6 +759,7 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
                          incomplete=incomplete, release=_release(ev),
                          slip_step=watch.slip_step, drop_step=watch.drop_step,
                          max_slip=watch.max_slip, motor_step=watch.motor_step,
+                         motor_tracking=watch.motor_tracking,
                          closest=watch.closest(),
                          diverged_step=watch.diverged_step)
 

@@ -610,10 +610,19 @@ def _joint_channel_map(model: mujoco.MjModel, a: int) -> tuple[float, float]:
 SERVO_HZ = 5.0
 
 
+#: the static lag [rad or m] a guessed servo may hold against gravity at the start pose
+#: (half the feasibility check's default lag tolerance)
+SERVO_STATIC_LAG = 0.05
+
+
 def _servo_lines(model: mujoco.MjModel, motors, key: int | None) -> list[str]:
     """``[servos.<motor>]`` tables with guessed gains: each joint a critically damped
-    :data:`SERVO_HZ` oscillator on its own inertia (the mass matrix's diagonal, armature
-    included, at the start pose): kp = M ω², kv = 2 M ω."""
+    :data:`SERVO_HZ` oscillator on its own inertia (the mass matrix's diagonal M, armature
+    included, at the start pose), stiffer where that would be too slow or too soft: kp the
+    largest of M ω², b ω (a joint damping b: kp/b is then the slow pole, at ω; dm_control's
+    wrist, damping 0.5 against kp 0.118, took 4.2 s to follow) and the gravity load at the
+    start pose over :data:`SERVO_STATIC_LAG`; kv = 2 √(kp M) − b (critical with the joint's
+    own damping; 0 where that damping is already more)."""
     data = mujoco.MjData(model)
     if key is not None:
         mujoco.mj_resetDataKeyframe(model, data, key)
@@ -629,12 +638,18 @@ def _servo_lines(model: mujoco.MjModel, motors, key: int | None) -> list[str]:
         pose += f", with {', '.join(moved)} at mid-range (outside its range there)"
     lines = ["", "# The torque motors are driven as joint-position servos, the joint controller of",
              "# the real robot: torque = kp (target - q) - kv q', within the motor's own limit.",
-             f"# Guessed: a critically damped {SERVO_HZ:g} Hz joint on its inertia at {pose};",
+             f"# Guessed: a critically damped {SERVO_HZ:g} Hz joint on its inertia at {pose},",
+             "# stiffer against the joint's damping and the arm's weight there;",
              "# the inertia changes with the pose: put your controller's gains here."]
     for a in motors:
         joint = int(model.actuator_trnid[a.index, 0])
-        inertia = float(full[model.jnt_dofadr[joint], model.jnt_dofadr[joint]])
-        kp, kv = inertia * omega ** 2, 2.0 * inertia * omega
+        dof = int(model.jnt_dofadr[joint])
+        inertia = float(full[dof, dof])
+        damping = float(model.dof_damping[dof])
+        # at rest: the weight's torque alone, less what MuJoCo's gravity compensation holds
+        gravity = abs(float(data.qfrc_bias[dof] - data.qfrc_gravcomp[dof]))
+        kp = max(inertia * omega ** 2, damping * omega, gravity / SERVO_STATIC_LAG)
+        kv = max(0.0, 2.0 * math.sqrt(kp * inertia) - damping)
         unit = "N·m/rad, N·m·s/rad" if a.joint_type == "hinge" else "N/m, N·s/m"
         lines += [f"[servos.{_toml_key(a.name)}]", f"kp = {kp:.4g}   # [{unit}]",
                   f"kv = {kv:.4g}"]
@@ -643,6 +658,25 @@ def _servo_lines(model: mujoco.MjModel, motors, key: int | None) -> list[str]:
 
 def _toml_key(name: str) -> str:
     return name if re.fullmatch(r"[A-Za-z0-9_-]+", name) else _toml_str(name)
+
+
+def _joints_instead(model_path: Path, body: str) -> str:
+    """Why ``body`` is not free, in words: the joints it moves on instead (gymnasium-robotics'
+    ADROIT ball floats on six 1-DoF joints), or that it has none or does not exist."""
+    try:
+        model = mujoco.MjModel.from_xml_path(str(model_path))
+    except ValueError:
+        return ""
+    b = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, body)
+    if b < 0:
+        return " (no body of that name)"
+    num = int(model.body_jntnum[b])
+    if num == 0:
+        return " (it has no joint: fixed to its parent)"
+    adr = int(model.body_jntadr[b])
+    kinds = [mujoco.mjtJoint(int(model.jnt_type[j])).name[6:].lower() for j in range(adr, adr + num)]
+    return (f" (it moves on {num} joint(s), {', '.join(kinds)}, not on one free joint; the "
+            f"audited object needs one <freejoint/>, which places it and gives its pose)")
 
 
 def init_scenario(model_path: str | Path, *, object_body: str, task: str,
@@ -677,8 +711,9 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     info = inspect_model(model_path)
     free = {b["name"]: b for b in info.free_bodies}
     if object_body not in free:
-        raise ScenarioError(f"--object: expected a free body of the model, got {object_body!r}; "
-                            f"free bodies: {', '.join(free) or '(none)'}")
+        raise ScenarioError(f"--object: expected a free body of the model, got {object_body!r}"
+                            f"{_joints_instead(model_path, object_body)}; free bodies: "
+                            f"{', '.join(free) or '(none)'}")
     obj = free[object_body]
     if not obj["geoms"]:
         raise ScenarioError(f"--object: body {object_body!r} has no collision geom")
@@ -822,6 +857,11 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
              "[model]"]
     out_path = Path(out) if out is not None else None
     if out_path is not None:
+        if isinstance(out, str) and out.endswith(("/", os.sep)) and not out_path.is_dir():
+            # Path drops the slash: "newdir/" would become a file called newdir
+            raise ScenarioError(f"--out: {out!r} names a folder (a trailing slash) that does "
+                                f"not exist; expected the path of the scenario file to write "
+                                f"(e.g. {out_path / 'scenario.toml'})")
         _check_out(out_path, overwrite)
     base = out_path.parent if out_path is not None else Path.cwd()
     rel = os.path.relpath(model_path.resolve(), base.resolve())

@@ -65,6 +65,16 @@ def model_hash(scenario: Scenario) -> str:
     return h.hexdigest()
 
 
+def _range_policy(range_policy: Any, twin: Twin) -> trajectory_mod.RangePolicy:
+    """The range policy asked for (None: the scenario's), checked."""
+    value = twin.scenario.range_policy if range_policy is None else range_policy
+    names = [p.name.lower() for p in trajectory_mod.RangePolicy]
+    if not isinstance(value, str) or value.lower() not in names:
+        raise ParameterError(f"range_policy: expected one of {', '.join(names)} (or None for "
+                             f"the scenario's [actions] range_policy), got {value!r}")
+    return trajectory_mod.RangePolicy[value.upper()]
+
+
 def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None = None) -> np.ndarray:
     """Validate a trajectory against the twin and upsample it to controls at the physics rate.
 
@@ -82,7 +92,7 @@ def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None =
         raise TrajectoryError(
             f"expected {conv.width} action values per step for convention {conv.name!r} "
             f"({', '.join(conv.labels)}), got {traj.n_channels}")
-    policy = trajectory_mod.RangePolicy[(range_policy or twin.scenario.range_policy).upper()]
+    policy = _range_policy(range_policy, twin)
     actions = trajectory_mod.check_ranges(traj.actions, twin.channel_lower, twin.channel_upper,
                                           policy=policy, names=conv.labels)
     dt = float(twin.model.opt.timestep)
@@ -180,7 +190,7 @@ def checked_start(twin: Twin, traj: Trajectory, *, range_policy: str | None = No
     more = int(bad.sum()) - 6
     message = (f"trajectory start{_source(traj)}: {int(bad.sum())} value(s) outside their "
                f"channel's range: {items}{f'; and {more} more' if more > 0 else ''}")
-    policy = trajectory_mod.RangePolicy[(range_policy or twin.scenario.range_policy).upper()]
+    policy = _range_policy(range_policy, twin)
     if policy is trajectory_mod.RangePolicy.ERROR:
         raise TrajectoryError(
             f"{message}; expected the robot's first positions within its joint ranges (a "

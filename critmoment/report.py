@@ -731,7 +731,7 @@ class StagedOutput:
                 self._commit()
             elif isinstance(exc, OSError) and not isinstance(exc, OutputError) and (
                     str(self._tmpdir) in str(getattr(exc, "filename", "") or "")
-                    or exc.errno in (errno.ENOSPC, errno.EDQUOT, errno.EROFS)):
+                    or exc.errno in (errno.ENOSPC, errno.EDQUOT, errno.EROFS, errno.EFBIG)):
                 raise OutputError(f"{self.option} {_short(self._raw)!r}: writing failed, "
                                   f"nothing was changed: {exc.strerror or exc}") from None
         finally:

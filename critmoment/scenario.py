@@ -1324,6 +1324,17 @@ def _check_gripper_controls(actions: ActionConvention, model: mujoco.MjModel) ->
                         f"{hi:g}]; expected values in the actuator's own units (the model's "
                         f"ctrlrange: m or rad for a position servo), not mm, degrees or "
                         f"another sign")
+            ends = sorted((offset, offset + scale))
+            clamped = [min(max(v, lo), hi) for v in ends]
+            if width > 0 and clamped[0] == clamped[1]:
+                # both ends beyond the same end of the range: MuJoCo clamps both to it, and
+                # the gripper never moves (it never closes, or never opens)
+                raise ScenarioError(
+                    f"[actions] channel {actions.labels[c]!r}: actuator {a!r}'s closed and "
+                    f"open controls ({offset:g}, {offset + scale:g}) both lie beyond the "
+                    f"same end of its ctrlrange [{lo:g}, {hi:g}]; MuJoCo clamps both to "
+                    f"{clamped[0]:g} and the gripper never moves; expected controls within "
+                    f"its ctrlrange (scales and offsets in the actuator's own units)")
 
 
 def _gripper_from_table(gname: str, gt: Any, model: mujoco.MjModel) -> Gripper:

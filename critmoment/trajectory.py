@@ -213,6 +213,7 @@ def _fps_from_times(times: Any, n_steps: int, *, what: str) -> float:
         TrajectoryError: wrong length, non-finite, not strictly increasing, or
             spacing deviating more than 1 % from the median spacing.
     """
+    raw_dtype = getattr(times, "dtype", None)
     t = _as_float_array(times, what=what, error=TrajectoryError)
     if t.shape != (n_steps,):
         raise TrajectoryError(
@@ -224,10 +225,18 @@ def _fps_from_times(times: Any, n_steps: int, *, what: str) -> float:
     nonpos = np.flatnonzero(dt <= 0.0)
     if nonpos.size:
         i = int(nonpos[0])
+        hint = ""
+        if raw_dtype is not None and np.dtype(raw_dtype).kind == "f" \
+                and np.dtype(raw_dtype).itemsize < 8:
+            # float32 epoch seconds (1.7e9) are 128 s apart: every 20 ms frame rounds alike
+            step = float(np.spacing(np.asarray(np.abs(t).max(), dtype=raw_dtype)))
+            hint = (f"; the times are {np.dtype(raw_dtype).name}, which at "
+                    f"{float(np.abs(t).max()):.3g} s resolves only {step:.3g} s: store them "
+                    f"as float64, or relative to the first")
         raise TrajectoryError(
             f"{what}: expected strictly increasing times, got t[{i}] = {float(t[i])!r} "
             f"followed by t[{i + 1}] = {float(t[i + 1])!r} ({nonpos.size} non-increasing "
-            f"step(s) in total)"
+            f"step(s) in total){hint}"
         )
     median = float(np.median(dt))
     if median > 1.0:
@@ -1301,6 +1310,11 @@ def list_episodes(path: str | os.PathLike) -> tuple[Episode, ...]:
                 f"dataset directory"
             )
         files = sorted((p / "data").rglob("*.parquet")) if (p / "data").is_dir() else []
+        if not files:  # as loading it says: a dataset with no episode is not one
+            raise InputFileError(
+                f"LeRobot dataset {str(p)!r}: expected episode parquet files under "
+                f"{str(p / 'data')!r} (e.g. data/chunk-000/episode_000000.parquet), "
+                f"found none")
     elif p.suffix.lower() == ".parquet":
         files = [p]
     else:

@@ -506,6 +506,11 @@ class Twin:
         #: the actuators the motor checks read (motor FOS, load bounds, the ground truth's
         #: saturation and tracking rules): the arm's hinges and slides
         self.motors = self.rotational | self.slide
+        #: joint actuators of a gripper's fingers (a normalised channel's, or on a joint
+        #: below a gripper's base): out of the motor checks, their squeeze limited on purpose
+        joint_act = np.array([model.actuator_trntype[i] == mujoco.mjtTrn.mjTRN_JOINT
+                              for i in range(model.nu)], dtype=bool)
+        self.fingers = joint_act & ~on_arm
         self.actuator_names = tuple(model.actuator(i).name for i in range(model.nu))
         #: the motor-checked actuators with no force limit in the scenario or the MJCF:
         #: their motor FOS is not checked (a gripper's, never checked, are not listed)

@@ -1301,7 +1301,8 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
                     sticking=sticking, slipping=slipping, margin=margin)
 
 
-_KIND_WORDS = {"motor": "motor overload", "dropped": "dropped", "slipped": "slipped in the grip",
+_KIND_WORDS = {"motor": "motor overload", "tracking": "lost tracking (a joint lagged its target)",
+               "dropped": "dropped", "slipped": "slipped in the grip",
                "diverged": "simulation diverged", "not_completed": "task not completed",
                "moment": "failed a moment on its own state"}
 
@@ -1332,6 +1333,10 @@ def _own_failures_text(own: Mapping[str, tuple[int, float | None, tuple[str, ...
     if "motor" in own:
         text += ("; suggestion: check the named actuators' limits ([limits]) against the "
                  "payload range, or slow the motion where they saturate")
+    if "tracking" in own:
+        text += ("; suggestion: the named joints could not follow their targets (a servo too "
+                 "soft or too slow for the motion or the load, well under its force limit): "
+                 "check the servos' gains, or slow the motion")
     return text
 
 

@@ -250,7 +250,10 @@ def test_the_causes_name_how_the_own_rollouts_failed(boundary_reports, demo_traj
     opts = vd.DecisionOptions(threshold=boundary.scenario.cost.threshold, chain=False)
     rerun = vd.samples_to_rerun(checked.sweep, opts, nominal_completed=True).any
     truth = brute_force(demo_traj, twin=boundary, samples=checked.sweep.samples[rerun])
-    counts = Counter(o.value for o in truth.classification.outcome if o.value != "success")
+    c = truth.classification
+    counts = Counter("tracking" if o.value == "motor" and lag else o.value
+                     for o, lag in zip(c.outcome, c.motor_tracking, strict=True)
+                     if o.value != "success")
     assert sum(counts.values()) == checked.verification["failed"] > 0
     line = [c for c in checked.failure_causes
             if c.startswith("how the ") and "failing on their own full rollout failed: " in c]
@@ -258,6 +261,7 @@ def test_the_causes_name_how_the_own_rollouts_failed(boundary_reports, demo_traj
     assert line[0].startswith(f"how the {sum(counts.values())} sample(s) failing on their own "
                               f"full rollout failed: ")
     words = {"dropped": "dropped", "slipped": "slipped in the grip", "motor": "motor overload",
+             "tracking": "lost tracking (a joint lagged its target)",
              "not_completed": "task not completed", "diverged": "simulation diverged"}
     for outcome, k in counts.items():
         assert f"{k} {words[outcome]}" in line[0]
@@ -272,6 +276,11 @@ def test_the_own_failures_line_names_the_motor():
                            "motor overload (shoulder_lift; first at t = 3.31 s), 2 dropped "
                            "(first at t = 4 s); suggestion: check the named actuators' limits")
     assert _own_failures_text({}) == ""
+    lagged = _own_failures_text({"tracking": (51, 1.5, ("A_ARTz",))})
+    assert lagged.startswith("how the 51 sample(s) failing on their own full rollout failed: "
+                             "51 lost tracking (a joint lagged its target) (A_ARTz; first at "
+                             "t = 1.5 s); suggestion: the named joints could not follow")
+    assert "[limits]" not in lagged
 
 
 @pytest.mark.parametrize("seed", [0, 7, 14])
@@ -549,5 +558,14 @@ def test_the_nominal_runs_own_motor_failure_is_named(twin, demo_recording):
     text = _nominal_run_failure(motor, twin, demo_recording.dt)
     assert text.startswith(f"motor overload: actuator {name!r} held at 99.9% of its force "
                            f"limit or more for over 50 ms from t = 1.34 s")
+    assert text.endswith("the task is completed all the same)")
     incomplete = dc.replace(ref, outcome=Outcome.NOT_COMPLETED)
     assert _nominal_run_failure(incomplete, twin, demo_recording.dt) is None
+    # a run that also does not complete its task is not said to complete it; a joint that
+    # lags its target, well under its force limit, is a tracking loss, not an overload
+    lagging = dc.replace(motor, completed=False, motor_tracking=True)
+    text = _nominal_run_failure(lagging, twin, demo_recording.dt)
+    assert text.startswith(f"tracking loss: actuator {name!r}'s joint lagged its target by "
+                           f"more than the nominal run's lag + 0.1 rad for over 50 ms from "
+                           f"t = 1.34 s")
+    assert text.endswith("nor is the task completed)")

@@ -525,3 +525,28 @@ def test_a_model_without_force_limits_writes_json_with_nulls(tmp_path, capsys):
     assert main(["rollout", str(path), "--scenario", str(tmp_path), "--json"]) in (0, 1)
     doc = json.loads(capsys.readouterr().out)
     assert doc["min_fos_motor"] is None
+
+
+def test_a_full_standard_output_is_named(monkeypatch, capsys):
+    """``critmoment rollout --json > /dev/full`` said only "No space left on device"."""
+    import errno
+    import io
+
+    from critmoment import cli
+
+    class Full(io.StringIO):
+        def write(self, text):
+            raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(cli._Stdout, "closed", False)
+    monkeypatch.setattr(cli._Stdout, "silence", classmethod(lambda cls: None))
+    monkeypatch.setattr("sys.stdout", Full())
+    assert main(["inspect", _bundled_scene()]) == 2
+    err = capsys.readouterr().err
+    assert "writing to the standard output failed: No space left on device" in err
+
+
+def _bundled_scene() -> str:
+    from critmoment.scenario import load_scenario
+
+    return str(load_scenario().mjcf)

@@ -368,6 +368,29 @@ def test_gripper_values_in_raw_units_are_named(twin, demo_traj):
         check_fit(Trajectory(actions=percent, fps=demo_traj.fps), None, twin)
 
 
+def test_gripper_values_in_the_actuators_units_and_arm_ticks_are_named(twin, demo_traj):
+    """A normalised gripper given in metres, exactly its actuators' controls from closed to
+    open (ALOHA's 0.0184..0.058), ran and was called UNSAFE; arm joints in encoder ticks
+    (0..4095) were called degrees."""
+    conv = twin.scenario.actions
+    c = conv.labels.index("left/gripper")
+    closed, opened = conv.offsets[c][0], conv.offsets[c][0] + conv.scales[c][0]
+    metres = np.array(demo_traj.actions)
+    for j in (c, conv.labels.index("right/gripper")):
+        metres[:, j] = closed + metres[:, j] * (opened - closed)
+    with pytest.raises(TrajectoryError, match=r"'left/gripper' is a normalised gripper.*its "
+                                              r"actuators' own controls from closed to open"):
+        check_fit(Trajectory(actions=metres, fps=demo_traj.fps), None, twin)
+    # normalised values that only open the gripper a little are not taken for metres
+    ajar = np.array(demo_traj.actions)
+    ajar[:, c] = 0.2 * ajar[:, c]
+    check_fit(Trajectory(actions=ajar, fps=demo_traj.fps), None, twin)
+    ticks = np.array(demo_traj.actions)
+    ticks[:, :6] = np.round(2048 + ticks[:, :6] * 4096 / (2 * np.pi))
+    with pytest.raises(TrajectoryError, match=r"motor ticks \(a 12-bit encoder's 0\.\.4095\)"):
+        check_fit(Trajectory(actions=ticks, fps=demo_traj.fps), None, twin)
+
+
 # -- the CLI ---------------------------------------------------------------------------------
 def test_cli_exits_2_with_one_line_for_an_infeasible_twin(tmp_path, capsys):
     from critmoment.cli import main
@@ -617,3 +640,24 @@ def test_a_joint_held_back_by_its_own_damping_is_named(tmp_path):
     problems = check_feasibility(_record(weak, _ramp(0.0, seconds=4.0)), weak,
                                  raise_on_failure=False).problems
     assert problems and not any("own damping" in p for p in problems)
+
+
+def test_a_hands_fingers_on_channels_of_their_own_are_grippers(tmp_path):
+    """ADROIT: one channel per finger (the fingers under the ``[grippers]`` body), a finger
+    closed on the ball lags its target by design, and the twin was refused as an arm joint
+    that could not follow. The twin keeps them out of the motor checks; so does the
+    feasibility check."""
+    from inline_models import arm_scenario_toml, arm_xml
+
+    (tmp_path / "arm.xml").write_text(arm_xml())
+    text = arm_scenario_toml().replace(
+        '[[actions.channel]]\nactuators = ["finger_a_act", "finger_b_act"]\nnormalised = true\n'
+        'scales = [0.03, 0.03]\noffsets = [0.0, 0.0]\n',
+        '[[actions.channel]]\nactuators = ["finger_a_act"]\n'
+        '[[actions.channel]]\nactuators = ["finger_b_act"]\n')
+    assert 'actuators = ["finger_b_act"]' in text
+    (tmp_path / "scenario.toml").write_text(text)
+    twin = Twin(load_scenario(tmp_path))
+    fingers = {twin.actuator_names.index(n) for n in ("finger_a_act", "finger_b_act")}
+    assert not twin.motors[list(fingers)].any()
+    assert feasibility._gripper_actuators(twin) == fingers

@@ -71,6 +71,24 @@ def test_classify_takes_the_tasks_success_rule():
         gt.classify(**sig, completed=np.array([True]))
 
 
+def test_classify_tells_a_tracking_loss_from_a_saturation():
+    """Both are the MOTOR outcome; the report names which (ADROIT's lift slide lagged 25 mm
+    at 4.9 N of its 300 N and was reported as an overload, with advice about limits)."""
+    sig = _run(3)
+    norm = sig["actuator_norm"].copy()
+    norm[0, 120:] = 1.0  # saturated from step 120
+    excess = np.zeros_like(norm)
+    excess[1, 130:] = 0.5  # lags its target from step 130, far under its limit
+    norm[2, 150:] = 1.0
+    excess[2, 120:] = 0.5  # lags first, then saturates
+    c = gt.classify(**{**sig, "actuator_norm": norm}, tracking_excess=excess)
+    assert c.outcome == (gt.Outcome.MOTOR,) * 3
+    assert c.motor_tracking.tolist() == [False, True, True]
+    assert c.motor_step.tolist() == [120, 130, 120]
+    assert c.motor_column.tolist() == [0, 0, 0]
+    assert not gt.classify(**sig).motor_tracking.any()
+
+
 def test_a_reused_reference_gives_the_same_outcomes(twin, demo_traj):
     samples = np.array([[0.1, 1.0], [0.6, 0.3], [3.0, 1.0]])
     first = gt.brute_force(demo_traj, twin=twin, samples=samples[:1])

@@ -220,6 +220,9 @@ def test_the_chain_watches_tracking_as_the_ground_truth_does(scenario, twin):
     assert truth.outcome[0].value == "motor" and truth.slip_step[0] == -1
     np.testing.assert_array_equal(chain.failed, [True, False])
     assert abs(chain.motor_step[0] - truth.motor_step[0]) <= 2
+    # a joint lagging its target, which both name so (not a saturation)
+    assert truth.motor_tracking[0] == chain.motor_tracking[0]
+    assert chain.kinds()[0] == ("tracking" if truth.motor_tracking[0] else "motor")
 
 
 def test_a_chain_that_goes_non_finite_between_the_moments_fails(twin, demo_recording):

@@ -123,8 +123,27 @@ def test_init_drives_torque_motors_through_joint_servos(tmp_path):
     full = np.zeros((model.nv, model.nv))
     mujoco.mj_fullM(model, data, full)
     omega = 2 * np.pi * 5.0
-    assert gains.kp == pytest.approx(full[0, 0] * omega ** 2, rel=1e-3)
-    assert gains.kv == pytest.approx(2 * full[0, 0] * omega, rel=1e-3)
+    # the shoulder (about z: no weight to hold) has joint damping 2: kp = max(M ω², b ω),
+    # and kv makes it critical with that damping (dm_control's damped wrist: kp = b ω)
+    damping = model.dof_damping[0]
+    assert gains.kp == pytest.approx(max(full[0, 0] * omega ** 2, damping * omega), rel=1e-3)
+    assert gains.kv == pytest.approx(max(0.0, 2 * np.sqrt(gains.kp * full[0, 0]) - damping),
+                                     rel=1e-3, abs=1e-9)
+    poles = np.roots([full[0, 0], gains.kv + damping, gains.kp])
+    assert np.abs(poles.real).min() >= 0.9 * omega  # follows within about 1/ω
+    # a heavily damped joint (dm_control's wrist: kp 0.118 against damping 0.5, 4.2 s to
+    # follow): kp = b ω puts the slow pole at ω
+    heavy = tmp_path / "heavy"
+    heavy.mkdir()
+    xml = path.read_text().replace('axis="0 0 1" range="-3 3" damping="2"',
+                                   'axis="0 0 1" range="-3 3" damping="20"', 1)
+    (heavy / "arm.xml").write_text(xml)
+    init_scenario(heavy / "arm.xml", object_body="cube", task="pick_hold",
+                  out=heavy / "scenario.toml")
+    stiff = load_scenario(heavy).servos.gains["shoulder_act"]
+    assert stiff.kp == pytest.approx(20.0 * omega, rel=1e-3) and stiff.kv == 0.0
+    slow = np.abs(np.roots([full[0, 0], stiff.kv + 20.0, stiff.kp]).real).min()
+    assert slow >= 0.9 * omega
     assert sc.limits["shoulder_act"] == 50.0 and sc.limit_sources["shoulder_act"] == "mjcf"
 
 
@@ -439,7 +458,10 @@ def test_init_out_must_be_a_file_in_an_existing_folder(tmp_path):
                                                    r"file's folder to exist"),
             (tmp_path / "nowhere" / "x.toml", False, r"nowhere does not exist"),
             (tmp_path / "adir", True, r"adir is a folder; expected the path of the scenario "
-                                      r"file to write")):
+                                      r"file to write"),
+            # a trailing slash names a folder; Path drops it, and a file "newdir" was written
+            (f"{tmp_path}/newdir/", False, r"'.*newdir/' names a folder \(a trailing slash\) "
+                                           r"that does not exist")):
         with pytest.raises(ScenarioError, match=message):
             init_scenario(model_path, object_body="cube", task="pick_hold", out=out,
                           overwrite=force)
@@ -1030,3 +1052,20 @@ def test_init_warns_of_a_goal_with_nothing_below_it(tmp_path):
         warnings.simplefilter("error", CritmomentWarning)
         init_scenario(tmp_path / "arm.xml", object_body="cube", task="pick_place",
                       goal=(0.3, 0.1, 0.02), out=tmp_path / "s2.toml")
+
+
+def test_init_names_the_joints_an_object_moves_on_instead_of_a_free_joint(tmp_path):
+    """gymnasium-robotics' ADROIT ball floats on six 1-DoF joints: "expected a free body"
+    did not say why it was not one."""
+    xml = arm_xml().replace("<freejoint/>", """<joint name="bx" type="slide" axis="1 0 0"/>
+      <joint name="by" type="slide" axis="0 1 0"/><joint name="bz" type="slide" axis="0 0 1"/>
+      <joint name="brx" axis="1 0 0"/><joint name="bry" axis="0 1 0"/>
+      <joint name="brz" axis="0 0 1"/>""").replace("0.3 0 0.02 1 0 0 0", "0 0 0 0 0 0")
+    (tmp_path / "arm.xml").write_text(xml)
+    with pytest.raises(ScenarioError, match=r"got 'cube' \(it moves on 6 joint\(s\), slide, "
+                                            r"slide, slide, hinge, hinge, hinge, not on one "
+                                            r"free joint; the audited object needs one "
+                                            r"<freejoint/>"):
+        init_scenario(tmp_path / "arm.xml", object_body="cube", task="pick_hold")
+    with pytest.raises(ScenarioError, match=r"got 'ghost' \(no body of that name\)"):
+        init_scenario(tmp_path / "arm.xml", object_body="ghost", task="pick_hold")

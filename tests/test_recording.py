@@ -409,6 +409,18 @@ def test_a_target_the_warn_policy_keeps_is_replayed_as_recorded(tmp_path):
     assert controls[:, shoulder].min() >= -limit - 1e-12  # the overshoot below stays clipped
 
 
+def test_a_bad_range_policy_is_a_clear_error(twin):
+    """``range_policy="ignore"`` raised KeyError 'IGNORE', ``5`` an AttributeError."""
+    from critmoment.exceptions import ParameterError
+
+    traj = Trajectory(np.tile(START, (10, 1)), fps=50, start=START, object_pose=BOX)
+    for bad in ("ignore", 5):
+        with pytest.raises(ParameterError, match=r"range_policy: expected one of error, clip, "
+                                                 r"warn .*got " + repr(bad)):
+            prepare_controls(twin, traj, range_policy=bad)
+    assert prepare_controls(twin, traj, range_policy="WARN").shape[1] == twin.model.nu
+
+
 def test_rollout_loads_the_scenario_itself():
     rec = rollout(_hold(5), "aloha_transfer_cube")
     assert rec.scenario_name == "aloha_transfer_cube" and rec.n_steps == 50

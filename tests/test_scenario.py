@@ -178,6 +178,12 @@ def test_mjcf_that_does_not_compile(tmp_path):
      r"\[actions\] channel 'left/gripper': the closed \(action 0\) control of actuator "
      r"'left/left_finger' is -0.5, far outside its ctrlrange \[0.021, 0.057\]; expected "
      r"values in the actuator's own units"),
+    # both ends past the same end of the range (within a width of it): MuJoCo clamps both
+    # alike and the gripper never closes
+    ("gripper_close = 0.01844", "gripper_close = 0.0575",
+     r"\[actions\] channel 'left/gripper': actuator 'left/left_finger'\'s closed and open "
+     r"controls \(0.0575, 0.058\) both lie beyond the same end of its ctrlrange \[0.021, "
+     r"0.057\]; MuJoCo clamps both to 0.057 and the gripper never moves"),
     ('[uncertainty.friction]\ngeom = "box"',
      '[uncertainty.mass2]\nkind = "mass"\nbody = "box"\nrange = [0.05, 1.0]\nnominal = 0.1\n'
      '[uncertainty.friction]\ngeom = "box"',

@@ -134,6 +134,11 @@ def test_npz_time_sets_fps_and_checks(tmp_path):
     np.savez(path, actions=a, time=t)
     with pytest.raises(TrajectoryError, match=r"strictly increasing.*t\[5\] = 0\.12"):
         load_trajectory(path)
+    # float32 epoch seconds: 128 s apart at 1.7e9, every frame rounds alike; named so
+    np.savez(path, actions=a, time=(1.7e9 + np.arange(20) * 0.02).astype(np.float32))
+    with pytest.raises(TrajectoryError, match=r"strictly increasing.*the times are float32, "
+                                              r"which at 1\.7e\+09 s resolves only 128 s"):
+        load_trajectory(path)
 
     t = np.arange(20) * 0.02
     t[10:] += 0.005
@@ -538,6 +543,12 @@ def test_list_episodes(tmp_path):
     npz = tmp_path / "t.npz"
     np.savez(npz, actions=np.zeros((7, 3)), object_pose=[0, 0, 0, 1, 0, 0, 0])
     assert [(e.index, e.frames) for e in list_episodes(npz)] == [(None, 7)]
+    # a dataset folder with no episode files: the error loading it gives, not "0 episodes"
+    empty = tmp_path / "empty"
+    (empty / "meta").mkdir(parents=True)
+    (empty / "meta" / "info.json").write_text('{"fps": 50}')
+    with pytest.raises(InputFileError, match=r"expected episode parquet files.*found none"):
+        list_episodes(empty)
 
 
 def test_lerobot_float_episode_index_is_accepted_when_integral(tmp_path):
