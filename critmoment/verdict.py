@@ -1335,8 +1335,9 @@ def _own_failures_text(own: Mapping[str, tuple[int, float | None, tuple[str, ...
                  "payload range, or slow the motion where they saturate")
     if "tracking" in own:
         text += ("; suggestion: the named joints could not follow their targets (a servo too "
-                 "soft or too slow for the motion or the load, well under its force limit): "
-                 "check the servos' gains, or slow the motion")
+                 "soft or slow for the motion or the load, or a contact holding the joint "
+                 "back): check the servos' gains and what the arm touches there, or slow the "
+                 "motion")
     return text
 
 
