@@ -738,6 +738,11 @@ def _in_actuator_units(conv, c: int, cmin: float, cmax: float) -> str | None:
     return None
 
 
+#: how far [m] an object may fall in the nominal run, touching neither its support nor a
+#: gripper, before its start pose is an input error rather than a motion to audit
+FREE_FALL = 1.0
+
+
 def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *,
               strict: bool = False) -> list[str]:
     """Does ``trajectory`` belong to the twin's scenario?
@@ -757,8 +762,8 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
 
     Raises:
         TrajectoryError: a hard mismatch (action width not the scenario's, gripper values
-            that are not normalised, joint targets in degrees), or with ``strict`` the first
-            warning.
+            that are not normalised, joint targets in degrees, an object that falls through
+            the world untouched), or with ``strict`` the first warning.
         ScenarioError: with ``recording``, a task no run of this length can meet
             (:func:`critmoment.recording.check_task_window`).
     """
@@ -773,6 +778,16 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
     sig = recording.signals
     default = ("; the trajectory gives none, so the model's default pose was used"
                if trajectory.object_pose is None and trajectory.qpos0 is None else "")
+    touched = (np.asarray(sig.contact_support, bool).any()
+               or np.asarray(sig.contact_gripper, bool).any())
+    pos = np.asarray(sig.object_pos, dtype=np.float64)
+    fall = float(pos[0, 2] - pos[:, 2].min()) if pos.size else 0.0
+    if not touched and fall > FREE_FALL:
+        # nothing to audit: every sample falls alike (a pose under the table, in mm)
+        raise TrajectoryError(
+            f"the object falls {fall:.3g} m in the nominal run, touching neither its support "
+            f"nor a gripper (from z = {pos[0, 2]:.4g} m): its start pose is not on its "
+            f"support (--object-pose{default}; under the table, or in mm?)")
     depth, other = _start_penetration(twin, recording.states[0])
     if depth > START_PENETRATION:
         out.append(f"the object starts {depth * 1e3:.3g} mm inside {other}: the model pushes "

@@ -669,6 +669,8 @@ class Twin:
             _check_qpos_quaternions(model, qpos0)
             _check_qpos_ranges(model, qpos0)
             data.qpos[:] = qpos0
+            if start is not None:
+                self._warn_start_disagreement(model, qpos0, start)
         elif start is not None:
             ctrl = self.controls(np.asarray(start)[None])[0]
             for a in range(model.nu):
@@ -706,6 +708,32 @@ class Twin:
         if self.scenario.settle if settle is None else settle:
             self.settle_object(model, data)
         return data
+
+    def _warn_start_disagreement(self, model: mujoco.MjModel, qpos0: np.ndarray,
+                                 start) -> None:
+        """qpos0 and start both place the arm: qpos0 wins (the run starts there, its servos
+        pulling towards start's controls from the first step), said where an arm joint's
+        two starts differ by more than :data:`START_AGREEMENT` (rad; a tenth of it in m)."""
+        ctrl = self.controls(np.asarray(start, dtype=np.float64)[None])[0]
+        worst = None
+        for a in np.flatnonzero(self.motors):
+            q = act_info.position_target(model, int(a), ctrl[a])
+            if q is None:
+                continue
+            j = int(model.actuator_trnid[a, 0])
+            if model.jnt_limited[j]:
+                q = float(np.clip(q, *model.jnt_range[j]))
+            tol = START_AGREEMENT * (0.1 if self.slide[a] else 1.0)
+            gap = abs(float(qpos0[model.jnt_qposadr[j]]) - q)
+            if gap > tol and (worst is None or gap / tol > worst[0]):
+                worst = (gap / tol, model.joint(j).name, float(qpos0[model.jnt_qposadr[j]]), q)
+        if worst is not None:
+            _, name, there, target = worst
+            warnings.warn(
+                f"qpos0 and start disagree: joint {name!r} at {there:.4g} in qpos0, {target:.4g} "
+                f"by start; the run starts from qpos0 (its servos pull towards start's "
+                f"targets from the first step; drop one of the two if that is not meant)",
+                CritmomentWarning, stacklevel=4)
 
     def _check_object_start(self, model: mujoco.MjModel, pose) -> None:
         """An object start no gripper can reach is an error (a pose in mm), not an audit in
@@ -908,6 +936,11 @@ def quiet_mujoco_log() -> Iterator[None]:
 #: how far qpos0's object pose may lie from an object_pose given beside it before the
 #: override is warned of [m], [rad]
 POSE_AGREEMENT = (1e-3, np.radians(1.0))
+
+
+#: how far [rad] an arm joint's qpos0 and the position its start control holds may differ
+#: before a trajectory that gives both is warned of (a tenth of it in metres on a slide)
+START_AGREEMENT = 0.05
 
 
 def _warn_pose_disagreement(in_qpos0: np.ndarray, pose: np.ndarray) -> None:

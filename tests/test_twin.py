@@ -754,6 +754,30 @@ def test_a_geared_servos_channel_spans_its_joints_range(tmp_path):
     assert data.qpos[model.joint("shoulder").qposadr[0]] == pytest.approx(0.9 * joint, abs=2e-3)
 
 
+def test_qpos0_and_start_that_disagree_are_warned_of(twin):
+    """A file with both: qpos0 wins, and a start 0.3 rad away from it was dropped without a
+    word (object_pose against qpos0 was warned of)."""
+    from critmoment.exceptions import CritmomentWarning
+
+    data = twin.initial_data(settle=False)
+    qpos0 = data.qpos.copy()
+    conv = twin.scenario.actions
+    start = np.zeros(conv.width)
+    for c, acts in enumerate(twin._chan_act):
+        a = int(acts[0])
+        j = twin.model.actuator_trnid[a, 0]
+        start[c] = 1.0 if conv.normalised[c] else qpos0[twin.model.jnt_qposadr[j]]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        twin.initial_data(qpos0=qpos0, start=start, settle=False)
+    waist = conv.labels.index("left/waist")
+    start[waist] += 0.3
+    with pytest.warns(CritmomentWarning, match=r"qpos0 and start disagree: joint 'left/waist' "
+                                               r"at .* in qpos0, .* by start; the run starts "
+                                               r"from qpos0"):
+        twin.initial_data(qpos0=qpos0, start=start, settle=False)
+
+
 def test_qpos0_and_object_pose_that_disagree_are_warned_of(twin):
     """Both place the object; object_pose wins (a caller's override), silently until now,
     so a file whose two records disagree started from a pose the user did not check."""
