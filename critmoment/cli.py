@@ -305,7 +305,8 @@ def cmd_init(args) -> int:
     result = init_scenario(args.model, object_body=args.object, task=args.task,
                            supports=args.support or (), out=args.out, goal=args.goal,
                            goal_site=args.goal_site, picker=args.picker,
-                           receiver=args.receiver, overwrite=args.force)
+                           receiver=args.receiver, overwrite=args.force,
+                           grippers=args.gripper or ())
     if args.out is None:
         _Stdout.emit(result.text)
     lines = [f"wrote {result.path} (it loads as written)" if result.path else
@@ -529,6 +530,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--goal-site", default=None, help="pick_place: a site marking the goal")
     p.add_argument("--picker", default=None, help="handover: gripper that lifts first")
     p.add_argument("--receiver", default=None, help="handover: gripper that takes over")
+    p.add_argument("--gripper", action="append", metavar="BODY", default=None,
+                   help="a gripper's body, instead of the ones found (a hand whose fingers "
+                        "the search does not recognise); repeat for several")
     p.add_argument("--out", default=None, help="scenario.toml to write (default: print it)")
     p.add_argument("--force", action="store_true", help="replace an existing --out")
     p.set_defaults(func=cmd_init)

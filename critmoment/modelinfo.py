@@ -403,6 +403,48 @@ def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
     return guesses, notes
 
 
+def gripper_at(model: mujoco.MjModel, body: str, *, keyframe: int | None = None,
+               taken: set[str] | None = None) -> GripperGuess:
+    """The gripper whose fingers lie below ``body`` (``init --gripper``): the actuators
+    that move only bodies below it and open or close its collision geoms (each measured
+    alone, :func:`critmoment.actuators.closing_ends`); actuators below it that do neither
+    (a finger's spread, a wrist below the palm) are left out, to be joint channels.
+
+    Raises:
+        ScenarioError: an unknown body, one with fewer than two collision geoms below it,
+            or no actuator below it that opens or closes them.
+    """
+    b = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, body)
+    if b < 0:
+        raise ScenarioError(f"--gripper: unknown body {body!r}")
+    below = _subtree(model, b)
+    geoms = _collision_geoms(model, below)
+    if len(geoms) < 2:
+        raise ScenarioError(f"--gripper {body}: expected two or more collision geoms on it and "
+                            f"the bodies below it, found {len(geoms)}")
+    acts = [a for a in range(model.nu)
+            if (moved := _moved_bodies(model, a)) and all(below[m] and m != b for m in moved)]
+    moving, closed, opened, still = [], [], [], []
+    for a in acts:
+        try:
+            c, o = act_info.closing_ends(model, [a], geoms, keyframe=keyframe)
+        except ValueError:
+            still.append(model.actuator(a).name)
+            continue
+        moving.append(model.actuator(a).name)
+        closed.append(c[0])
+        opened.append(o[0])
+    if not moving:
+        raise ScenarioError(
+            f"--gripper {body}: no actuator below it opens or closes its geoms"
+            + (f" (of {', '.join(still)})" if still else
+               " (none drives a joint or tendon below it)"))
+    name = model.body(b).name
+    return GripperGuess(name=_short(name.split("/")[-1], set() if taken is None else taken),
+                        body=name, actuators=tuple(moving), closed=tuple(closed),
+                        open=tuple(opened), geoms=tuple(model.geom(g).name for g in geoms))
+
+
 def _suction_grippers(model: mujoco.MjModel, infos, taken: set[str], notes: list[str]
                       ) -> list[GripperGuess]:
     """One gripper per ``<adhesion>`` actuator (a suction cup or magnet): its body holds
@@ -683,7 +725,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                   supports: Sequence[str] = (), out: str | Path | None = None,
                   goal: Sequence[float] | None = None, goal_site: str | None = None,
                   picker: str | None = None, receiver: str | None = None,
-                  overwrite: bool = False) -> InitResult:
+                  overwrite: bool = False, grippers: Sequence[str] = ()) -> InitResult:
     """Write a scenario for a model as it ships (see the module docstring).
 
     Args:
@@ -697,6 +739,9 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         picker: for ``handover``, the gripper that lifts first (default: nearest the object).
         receiver: for ``handover``, the gripper that takes over.
         overwrite: replace an existing ``out``.
+        grippers: bodies to make the grippers of, instead of the ones found: each holds
+            the actuators that open or close the collision geoms below it
+            (:func:`gripper_at`); the others below it stay joint channels.
 
     Returns:
         The text, and what was guessed and should be checked. The written scenario is
@@ -733,14 +778,20 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         guesses.append(f"object geom {object_geom!r} (the largest of {len(obj['geoms'])}; "
                        f"the contacts of all of them count, and the friction parameter sets "
                        f"all of them)")
-    grippers = [g for g in info.grippers]
+    named, grippers = grippers, [g for g in info.grippers]
+    if named:
+        taken: set[str] = set()
+        grippers = [gripper_at(model, body, keyframe=key, taken=taken) for body in named]
+        guesses.append(f"grippers at the bodies given ({', '.join(named)})")
     if not grippers:
         why = [n for n in info.notes if "look like a gripper" in n]
         why += [n for n in info.notes if n.startswith("adhesion actuator")]
         raise ScenarioError(
             "found no gripper: expected actuators on slide joints, tendons, or joints/bodies "
             "named like grip/finger/jaw/claw/hand that open and close their geoms"
-            + (f" ({'; '.join(why)})" if why else "") + "; write [grippers.*] by hand")
+            + (f" ({'; '.join(why)})" if why else "") + "; name the hand's body with "
+            "--gripper BODY (its actuators that open or close the geoms below it), or write "
+            "[grippers.*] by hand")
     data = mujoco.MjData(model)
     if key is not None:
         mujoco.mj_resetDataKeyframe(model, data, key)

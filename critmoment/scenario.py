@@ -827,7 +827,7 @@ class Scenario:
                 index = p.resolve(model)
             except ScenarioError as exc:
                 raise ScenarioError(f"[uncertainty.{p.name}]: {exc}") from None
-            _check_effect(p, index, model)
+            _check_effect(p, index, model, object_body=obj)
             # one parameter per quantity: a second would overwrite the first in every
             # simulation (the friction of any of the object's geoms is the object's)
             key = (p.fields, "object" if isinstance(p, FrictionParameter)
@@ -887,10 +887,18 @@ def _spec_targets(box: UncertaintyBox) -> dict[str, tuple[str, ...]]:
                                 if isinstance(p, ComOffsetParameter))}
 
 
-def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
-    """A parameter must change what it claims to change on the compiled model."""
+def _check_effect(p: Parameter, index: int, model: mujoco.MjModel, *,
+                  object_body: int = -1) -> None:
+    """A parameter must change what it claims to change on the compiled model.
+
+    A friction on a geom the object can touch (a pad) must govern its contacts with the
+    object (a higher priority than the object's geoms there); its contacts with anything
+    else do not matter to the grip (both pads of one priority touch each other: that
+    contact is not the grip's). A friction on any other geom must govern its contacts."""
     if isinstance(p, FrictionParameter):
-        rivals = [i for i in act_info.dynamic_partners(model, index)
+        partners = act_info.dynamic_partners(model, index)
+        on_object = [i for i in partners if model.geom_bodyid[i] == object_body]
+        rivals = [i for i in (on_object or partners)
                   if model.geom_priority[i] >= model.geom_priority[index]]
         if model.opt.enableflags & mujoco.mjtEnableBit.mjENBL_OVERRIDE:
             raise ScenarioError(
@@ -914,9 +922,10 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel) -> None:
                 "friction changes nothing; set condim = 3 (or 4, 6) on it, or drop the "
                 "friction parameter")
         if rivals:
+            which = "its contacts with the object" if on_object else "its contacts"
             raise ScenarioError(
-                f"[uncertainty.{p.name}]: the friction of geom {p.target!r} never governs its "
-                f"contacts: {len(rivals)} geom(s) it can touch have priority >= its "
+                f"[uncertainty.{p.name}]: the friction of geom {p.target!r} never governs "
+                f"{which}: {len(rivals)} geom(s) it can touch there have priority >= its "
                 f"{model.geom_priority[index]} (MuJoCo mixes friction with max), so its costs "
                 "would not change over the range; vary the object's friction (critmoment gives "
                 "the object's geoms priority) or raise this geom's priority in the MJCF")

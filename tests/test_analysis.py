@@ -86,6 +86,11 @@ def test_mass_narrowed_alone_stays_conditional_at_low_friction(twin, demo_traj, 
     r = analyze(demo_traj, twin=Twin(scenario.replace(box=box)), options=FAST)
     assert r.verdict is Verdict.CONDITIONAL
     assert r.safe_region["friction"][0] > scenario.box.low[1]
+    # a gate of P ≥ 1 asks for no failure: a CONDITIONAL audit found one, whatever its
+    # samples estimate (a failing sliver gave P = 1.000 and exit 0 with --min-success 1)
+    assert not r.passes(1.0)
+    assert not dataclasses.replace(r, p_success=1.0).passes(1.0)
+    assert dataclasses.replace(r, p_success=1.0).passes(0.99)
 
 
 def test_nominal_beyond_the_critical_mass_is_unsafe(demo_traj, scenario):

@@ -1069,3 +1069,33 @@ def test_init_names_the_joints_an_object_moves_on_instead_of_a_free_joint(tmp_pa
         init_scenario(tmp_path / "arm.xml", object_body="cube", task="pick_hold")
     with pytest.raises(ScenarioError, match=r"got 'ghost' \(no body of that name\)"):
         init_scenario(tmp_path / "arm.xml", object_body="ghost", task="pick_hold")
+
+
+def test_init_takes_a_grippers_body_the_search_does_not_find(tmp_path):
+    """ADROIT's hand: init found no gripper, wrote nothing and had no way to be told one.
+    ``--gripper BODY`` makes the gripper of the actuators below it that open or close its
+    geoms; the search's own grippers are not used then."""
+    from critmoment.modelinfo import gripper_at
+
+    xml = arm_xml(gripper="jaw")
+    for old, new in (("moving_jaw", "link8"), ("fixed_jaw", "geom9"), ("jaw_act", "a7"),
+                     ("jaw_pad", "geom8"), ('name="jaw"', 'name="j7"'),
+                     ('joint="jaw"', 'joint="j7"')):
+        xml = xml.replace(old, new)
+    (tmp_path / "arm.xml").write_text(xml)
+    assert not inspect_model(tmp_path / "arm.xml").grippers
+    with pytest.raises(ScenarioError, match=r"found no gripper.*--gripper BODY"):
+        init_scenario(tmp_path / "arm.xml", object_body="cube", task="pick_hold")
+    result = init_scenario(tmp_path / "arm.xml", object_body="cube", task="pick_hold",
+                           grippers=["hand"], out=tmp_path / "scenario.toml")
+    assert any("grippers at the bodies given (hand)" in g for g in result.guesses)
+    sc = load_scenario(tmp_path)
+    assert [g.name for g in sc.grippers] == ["hand"]
+    model = mujoco.MjModel.from_xml_string(xml)
+    guess = gripper_at(model, "hand", keyframe=0)
+    assert guess.actuators == ("a7",) and guess.closed != guess.open
+    with pytest.raises(ScenarioError, match=r"--gripper: unknown body 'palm'"):
+        gripper_at(model, "palm")
+    with pytest.raises(ScenarioError, match=r"--gripper link8: expected two or more collision "
+                                            r"geoms"):
+        gripper_at(model, "link8")

@@ -340,6 +340,24 @@ def test_friction_parameter_on_a_geom_that_never_wins_is_rejected(tmp_path):
         load_scenario(folder)
 
 
+def test_a_pads_friction_that_governs_its_grip_is_accepted_beside_an_equal_pad(tmp_path):
+    """Both pads of one priority above the cube's (symmetric rubber pads): the left pad's
+    friction governs every pad-cube contact, its only rival being the other pad, whose
+    contact with it is not the grip's; it was refused as "never governs its contacts"."""
+    text = (BUNDLED / "scenario.toml").read_text()
+    start = text.index("[uncertainty.friction]")
+    end = text.index("\n\n", start)
+    pad = '[uncertainty.friction]\ngeom = "left/left_pad"\nrange = [0.3, 1.5]\nnominal = 1.0'
+    folder = _copy(tmp_path, {
+        "vx300s.xml": [('name="left_pad" class="finger"', 'name="left_pad" class="finger" '
+                        'priority="3"'),
+                       ('name="right_pad" class="finger"', 'name="right_pad" class="finger" '
+                        'priority="3"')],
+        "scenario.toml": [(text[start:end], pad)]})
+    sc = load_scenario(folder)
+    assert sc.box.names == ("mass", "friction")
+
+
 def test_friction_parameter_without_priority_is_fine_without_friction_parameter(tmp_path):
     text = (BUNDLED / "scenario.toml").read_text()
     start = text.index("[uncertainty.friction]")
