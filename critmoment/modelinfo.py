@@ -189,10 +189,20 @@ def _far_targets(model: mujoco.MjModel) -> list[str]:
         if min(ends) < lo - width or max(ends) > hi + width:
             hinge = model.jnt_type[j] == mujoco.mjtJoint.mjJNT_HINGE
             unit = "rad" if hinge else "m"
-            advice = ("MuJoCo never converts a ctrlrange from degrees; give it in radians "
-                      "(times the gear)" if hinge else
-                      "the servo's targets reach beyond what the joint allows: check the "
-                      "ctrlrange's units (m, times the gear) or the joint's range")
+            gain = float(model.actuator_gainprm[a, 0])
+            b1 = -float(model.actuator_biasprm[a, 1])
+            if b1 > 0 and not np.isclose(gain, b1, rtol=1e-3):
+                # a general servo whose gain is not its position bias: its target is
+                # gain/bias × ctrl, not ctrl (ADROIT's arm servos, gain 2.5× the bias)
+                advice = (f"its gain {gain:g} is {gain / b1:.3g}× its position bias {b1:g}, "
+                          f"so it pulls towards {gain / b1:.3g}×ctrl; a target past the "
+                          f"range may be meant (to hold a load), else check the gain and "
+                          f"bias")
+            else:
+                advice = ("MuJoCo never converts a ctrlrange from degrees; give it in radians "
+                          "(times the gear)" if hinge else
+                          "the servo's targets reach beyond what the joint allows: check the "
+                          "ctrlrange's units (m, times the gear) or the joint's range")
             notes.append(
                 f"actuator {model.actuator(a).name or a!r}: its ctrlrange "
                 f"[{model.actuator_ctrlrange[a, 0]:g}, {model.actuator_ctrlrange[a, 1]:g}] pulls "

@@ -798,6 +798,15 @@ def test_inspect_notes_a_servo_ctrlrange_far_outside_its_joints_range(tmp_path):
                for n in inspect_model(jaw).notes)
     slides = _write(tmp_path, gripper="slides")
     assert not any("never converts a ctrlrange" in n for n in inspect_model(slides).notes)
+    # a general servo whose gain is 2.5x its position bias (ADROIT's arm): its target is
+    # 2.5 ctrl, which the note names instead of blaming degrees
+    geared = tmp_path / "geared.xml"
+    geared.write_text(arm_xml().replace(
+        '<position name="finger_a_act" joint="slide_a" kp="200" ctrlrange="0 0.03"',
+        '<general name="finger_a_act" joint="slide_a" gainprm="500" biasprm="0 -200 0" '
+        'biastype="affine" ctrlrange="0 0.03"'))
+    note = [n for n in inspect_model(geared).notes if "'finger_a_act'" in n and "far" in n]
+    assert len(note) == 1 and "its gain 500 is 2.5× its position bias 200" in note[0]
 
 
 def test_init_warns_of_a_support_the_object_does_not_rest_on(tmp_path):
