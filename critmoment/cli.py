@@ -196,9 +196,11 @@ def cmd_rollout(args) -> int:
         _Stdout.emit(f"short of the task: {'; '.join(summary['shortfalls'])}")
     from critmoment.safety import format_fos
 
+    limiting = summary["limiting_actuator"]
     _Stdout.emit(f"min FOS contact {format_fos(summary['min_fos_contact'], '.3f')}, min FOS "
-                 f"motor {format_fos(summary['min_fos_motor'], '.3f')} "
-                 f"({summary['limiting_actuator']}), max cost {summary['max_cost']:.3f}")
+                 f"motor {format_fos(summary['min_fos_motor'], '.3f')}"
+                 f"{f' ({limiting})' if limiting else ' (no force limit)'}, max cost "
+                 f"{summary['max_cost']:.3f}")
     ms = summary["persistence"] * 1e3
     _Stdout.emit(f"held for {ms:g} ms ([sparse] persistence, as the audit counts a contact "
                  f"excursion): min FOS contact "

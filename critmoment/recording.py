@@ -555,7 +555,10 @@ class Recording:
             "stage_first_step": {str(k): v for k, v in self.stage_first_step().items()},
             "min_fos_contact": float(finite_c.min()) if finite_c.size else None,
             "min_fos_motor": float(sig.fos_motor.min()),
-            "limiting_actuator": self.actuator_names[int(sig.motor_argmax[np.argmin(sig.fos_motor)])],
+            # no actuator limits anything where every motor FOS is infinite (no force limit)
+            "limiting_actuator": (
+                self.actuator_names[int(sig.motor_argmax[np.argmin(sig.fos_motor)])]
+                if np.isfinite(sig.fos_motor).any() else None),
             "max_cost": float(sig.cost.max()),
             "max_cost_step": int(np.argmax(sig.cost)),
         }

@@ -524,7 +524,9 @@ def test_a_model_without_force_limits_writes_json_with_nulls(tmp_path, capsys):
     capsys.readouterr()
     assert main(["rollout", str(path), "--scenario", str(tmp_path), "--json"]) in (0, 1)
     doc = json.loads(capsys.readouterr().out)
-    assert doc["min_fos_motor"] is None
+    assert doc["min_fos_motor"] is None and doc["limiting_actuator"] is None
+    assert main(["rollout", str(path), "--scenario", str(tmp_path)]) in (0, 1)
+    assert "(no force limit)" in capsys.readouterr().out
 
 
 def test_a_full_standard_output_is_named(monkeypatch, capsys):
