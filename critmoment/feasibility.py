@@ -379,10 +379,16 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             gain = m.actuator_gainprm[a, 0]
             b0, b1 = m.actuator_biasprm[a, :2]
             target = (gain * controls[:, a] + b0) / (-b1) / gear
+            # a target past the joint's range is a push against a load (ADROIT's lift slide
+            # commanded past its range to hold the 4.9 kg hand up), not a position to reach:
+            # those steps are no lag
+            past = np.zeros(n, bool)
             if m.jnt_limited[j]:
+                past = (target < m.jnt_range[j, 0]) | (target > m.jnt_range[j, 1])
                 target = np.clip(target, *m.jnt_range[j])
             q = qpos[1:n + 1, int(m.jnt_qposadr[j])]
             lag = _tracking_error(q, target, int(round(options.delay / dt)))
+            lag = np.where(past[:lag.size], 0.0, lag)
             k = int(np.argmax(lag))
             max_lag, max_lag_time = float(lag[k]), k * dt
             span = float(np.ptp(target)) if n else 0.0

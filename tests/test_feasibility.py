@@ -679,3 +679,30 @@ def test_an_object_that_falls_through_the_world_is_an_input_error(twin, demo_tra
         check_fit(under, rec, twin)
     # the demo itself passes (its cube rests on the table, then is carried)
     check_fit(demo_traj, rollout(demo_traj, twin=twin), twin)
+
+
+def test_a_target_past_the_joints_range_is_a_push_not_a_lag(tmp_path):
+    """ADROIT's lift slide, commanded past its range so that its soft servo holds the 4.9 kg
+    hand up: the check clipped the target to the range and read the joint's distance to
+    that end as a lag ("feed that load forward": what the targets already did). Steps whose
+    target lies past the range are not checked for lag; the same servo with a target inside
+    the range it cannot reach still is."""
+    path = _scene(tmp_path, axis="0 1 0", limit=10.0,
+                  actuator='<position name="servo" joint="hinge" kp="3" kv="1" '
+                           'forcerange="-10 10"/>')
+    xml = (tmp_path / "arm.xml").read_text()
+    (tmp_path / "arm.xml").write_text(xml.replace('range="-2 2"', 'range="-0.5 2"'))
+    toml = path.read_text()
+    path.write_text(toml.replace('convention = "explicit"',
+                                 'convention = "explicit"\nrange_policy = "warn"'))
+    twin = Twin(load_scenario(path))
+    t = np.arange(100) / 50.0
+    push = Trajectory(actions=np.full((t.size, 1), -0.6), fps=50.0, start=np.full(1, -0.6))
+    rec = _record(twin, push)
+    q = rec.states[-1, 1]  # the weight holds the joint well inside its range
+    assert -0.4 < q < -0.1
+    check_feasibility(rec, twin)  # no lag: the target pushes past the range on purpose
+    sag = Trajectory(actions=np.zeros((t.size, 1)), fps=50.0, start=np.zeros(1))
+    with pytest.raises(InfeasibleTwinError, match=r"joint 'hinge' \(actuator 'servo'\) lags "
+                                                  r"its target"):
+        check_feasibility(_record(twin, sag), twin)
