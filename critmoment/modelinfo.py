@@ -983,7 +983,8 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     if servo_motors:
         lines += _servo_lines(model, servo_motors, key)
         guesses.append(f"joint servos for the torque motors {', '.join(a.name for a in servo_motors)}"
-                       f" (kp, kv for a {SERVO_HZ:g} Hz critically damped joint)")
+                       f" (kp, kv for a {SERVO_HZ:g} Hz critically damped joint, stiffer "
+                       f"against its damping and the arm's weight)")
         checks.append("[servos]: the gains of the robot's own joint controller (the torque "
                       "motors track the trajectory through them)")
     mass = float(obj["mass"])
