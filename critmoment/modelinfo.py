@@ -975,6 +975,11 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
             # a torque motor's own bound ([servos] makes it the servo's force range)
             lim = act_info.motor_limit(model, a.index)
             lines.append(f"# {a.name} = {lim:g}   (the torque motor's control range, from the MJCF)")
+        elif lim is None and info.motor_limits and info.motor_limits[a.index] is not None:
+            # a torque command's control range bounds its force (as inspect says)
+            most = info.motor_limits[a.index]
+            lines.append(f"# {a.name} = ...   # no forcerange in the MJCF; its control range "
+                         f"bounds its force at {most:g}")
         elif lim is None:
             lines.append(f"# {a.name} = ...   # no limit in the MJCF: unlimited until you set one")
             checks.append(f"actuator {a.name!r} has no force limit in the MJCF: set [limits]")

@@ -1108,3 +1108,17 @@ def test_init_takes_a_grippers_body_the_search_does_not_find(tmp_path):
     with pytest.raises(ScenarioError, match=r"--gripper link8: expected two or more collision "
                                             r"geoms"):
         gripper_at(model, "link8")
+
+
+def test_init_gives_a_motor_finger_its_control_range_bound(tmp_path):
+    """dm_control's hand: init said the gripper motor "has no force limit" (check to set
+    [limits]) where inspect gives its bound, control range × gear."""
+    xml = arm_xml().replace('<position name="finger_b_act" joint="slide_b" kp="200" '
+                            'ctrlrange="0 0.03" forcerange="-20 20"/>',
+                            '<motor name="finger_b_act" joint="slide_b" ctrlrange="-5 5"/>')
+    (tmp_path / "arm.xml").write_text(xml)
+    result = init_scenario(tmp_path / "arm.xml", object_body="cube", task="pick_hold")
+    assert "# finger_b_act = ...   # no forcerange in the MJCF; its control range bounds its " \
+           "force at 5" in result.text
+    assert not any("'finger_b_act' has no force limit" in c for c in result.checks)
+    assert "force at most 5" in inspect_model(tmp_path / "arm.xml").text()
