@@ -212,6 +212,8 @@ def initial_state(twin: Twin, traj: Trajectory, model: mujoco.MjModel | None = N
     scenario's range policy, as the actions are: an error, a warning, or clipped."""
     start = (checked_start(twin, traj) if traj.start is not None else traj.actions[0])
     model = model or twin.model
+    if traj.start is not None and traj.qpos0 is not None:
+        twin.warn_start_disagreement(traj.qpos0, start, model)
     data = twin.initial_data(start=start, qpos0=traj.qpos0, object_pose=traj.object_pose,
                              model=model, qvel0=traj.qvel0)
     return twin.get_state(model, data)

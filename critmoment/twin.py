@@ -669,8 +669,6 @@ class Twin:
             _check_qpos_quaternions(model, qpos0)
             _check_qpos_ranges(model, qpos0)
             data.qpos[:] = qpos0
-            if start is not None:
-                self._warn_start_disagreement(model, qpos0, start)
         elif start is not None:
             ctrl = self.controls(np.asarray(start)[None])[0]
             for a in range(model.nu):
@@ -709,11 +707,15 @@ class Twin:
             self.settle_object(model, data)
         return data
 
-    def _warn_start_disagreement(self, model: mujoco.MjModel, qpos0: np.ndarray,
-                                 start) -> None:
-        """qpos0 and start both place the arm: qpos0 wins (the run starts there, its servos
-        pulling towards start's controls from the first step), said where an arm joint's
-        two starts differ by more than :data:`START_AGREEMENT` (rad; a tenth of it in m)."""
+    def warn_start_disagreement(self, qpos0: np.ndarray, start,
+                                model: mujoco.MjModel | None = None) -> None:
+        """A trajectory that gives both qpos0 and a start: qpos0 wins (the run starts
+        there, its servos pulling towards start's controls from the first step), said where
+        an arm joint's two starts differ by more than :data:`START_AGREEMENT` (rad; a tenth
+        of it in m). Not for a start taken from the first action (a target that leads the
+        joint by design)."""
+        model = model or self.model
+        qpos0 = np.asarray(qpos0, dtype=np.float64)
         ctrl = self.controls(np.asarray(start, dtype=np.float64)[None])[0]
         worst = None
         for a in np.flatnonzero(self.motors):

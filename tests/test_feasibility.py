@@ -706,3 +706,25 @@ def test_a_target_past_the_joints_range_is_a_push_not_a_lag(tmp_path):
     with pytest.raises(InfeasibleTwinError, match=r"joint 'hinge' \(actuator 'servo'\) lags "
                                                   r"its target"):
         check_feasibility(_record(twin, sag), twin)
+
+
+def test_a_chunk_that_starts_in_the_grip_is_not_told_it_never_touches_its_support(
+        twin, demo_traj, demo_recording):
+    """An ALOHA chunk from mid-carry (qpos0/qvel0 of the recorded run, the cube in the
+    picker's grip) ends in the receiver's grip and never touches the table, as meant; it
+    was asked whether its object pose was right."""
+    import dataclasses
+
+    import mujoco
+
+    from critmoment.twin import state_slice
+
+    k = 210  # action 210 = physics step 2100: carried by the picker
+    step = k * 10
+    assert demo_recording.signals.contact_gripper[step].any()
+    qvel = demo_recording.states[step, state_slice(twin.model, mujoco.mjtState.mjSTATE_QVEL)]
+    chunk = dataclasses.replace(demo_traj, actions=np.asarray(demo_traj.actions)[k:],
+                                qpos0=twin.qpos(demo_recording.states)[step], qvel0=qvel,
+                                start=None, object_pose=None)
+    hints = check_fit(chunk, _record(twin, chunk), twin)
+    assert not any("never touches its support" in h for h in hints), hints

@@ -756,8 +756,11 @@ def test_a_geared_servos_channel_spans_its_joints_range(tmp_path):
 
 def test_qpos0_and_start_that_disagree_are_warned_of(twin):
     """A file with both: qpos0 wins, and a start 0.3 rad away from it was dropped without a
-    word (object_pose against qpos0 was warned of)."""
+    word (object_pose against qpos0 was warned of). A chunk with qpos0 and no start is not
+    warned of: its first action, a target that leads the joint, is not a second start."""
     from critmoment.exceptions import CritmomentWarning
+    from critmoment.recording import initial_state
+    from critmoment.trajectory import Trajectory
 
     data = twin.initial_data(settle=False)
     qpos0 = data.qpos.copy()
@@ -767,15 +770,22 @@ def test_qpos0_and_start_that_disagree_are_warned_of(twin):
         a = int(acts[0])
         j = twin.model.actuator_trnid[a, 0]
         start[c] = 1.0 if conv.normalised[c] else qpos0[twin.model.jnt_qposadr[j]]
+    actions = np.tile(start, (10, 1))
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        twin.initial_data(qpos0=qpos0, start=start, settle=False)
+        initial_state(twin, Trajectory(actions, fps=50.0, start=start, qpos0=qpos0))
     waist = conv.labels.index("left/waist")
-    start[waist] += 0.3
+    moved = start.copy()
+    moved[waist] += 0.3
     with pytest.warns(CritmomentWarning, match=r"qpos0 and start disagree: joint 'left/waist' "
                                                r"at .* in qpos0, .* by start; the run starts "
                                                r"from qpos0"):
-        twin.initial_data(qpos0=qpos0, start=start, settle=False)
+        initial_state(twin, Trajectory(actions, fps=50.0, start=moved, qpos0=qpos0))
+    leading = actions.copy()
+    leading[:, waist] += 0.3  # the first target leads the joint: no start was given
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        initial_state(twin, Trajectory(leading, fps=50.0, qpos0=qpos0))
 
 
 def test_qpos0_and_object_pose_that_disagree_are_warned_of(twin):
