@@ -287,6 +287,12 @@ def _stuck_hint(model: mujoco.MjModel, actuators: list[int]) -> str:
             f"finger)")
 
 
+def _gripper_name(body: str, taken: set[str]) -> str:
+    """A gripper's short scenario name from its body's: the prefix of an attached model
+    ("left/gripper_link": "left"), else the body's name, unique among ``taken``."""
+    return _short(body.split("/")[0] if "/" in body else body, taken)
+
+
 def _short(name: str, taken: set[str]) -> str:
     base = re.sub(r"[^A-Za-z0-9_]+", "_", name).strip("_") or "gripper"
     out, k = base, 2
@@ -406,7 +412,7 @@ def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
             continue
         name = model.body(hand).name or f"body{hand}"
         guesses.append(GripperGuess(
-            name=_short(name.split("/")[0] if "/" in name else name, taken), body=name,
+            name=_gripper_name(name, taken), body=name,
             actuators=tuple(model.actuator(a).name for a in acts),
             closed=tuple(closed), open=tuple(open_),
             geoms=tuple(model.geom(g).name for g in geoms)))
@@ -450,7 +456,7 @@ def gripper_at(model: mujoco.MjModel, body: str, *, keyframe: int | None = None,
             + (f" (of {', '.join(still)})" if still else
                " (none drives a joint or tendon below it)"))
     name = model.body(b).name
-    return GripperGuess(name=_short(name.split("/")[-1], set() if taken is None else taken),
+    return GripperGuess(name=_gripper_name(name, set() if taken is None else taken),
                         body=name, actuators=tuple(moving), closed=tuple(closed),
                         open=tuple(opened), geoms=tuple(model.geom(g).name for g in geoms))
 
@@ -481,7 +487,7 @@ def _suction_grippers(model: mujoco.MjModel, infos, taken: set[str], notes: list
             continue
         name = model.body(body).name or f"body{body}"
         out.append(GripperGuess(
-            name=_short(name.split("/")[0] if "/" in name else name, taken), body=name,
+            name=_gripper_name(name, taken), body=name,
             actuators=(model.actuator(info.index).name,), closed=(float(high),),
             open=(float(min(max(0.0, low), high)),),
             geoms=tuple(model.geom(g).name for g in geoms)))
@@ -715,10 +721,7 @@ def _toml_key(name: str) -> str:
 def _joints_instead(model_path: Path, body: str) -> str:
     """Why ``body`` is not free, in words: the joints it moves on instead (gymnasium-robotics'
     ADROIT ball floats on six 1-DoF joints), or that it has none or does not exist."""
-    try:
-        model = mujoco.MjModel.from_xml_path(str(model_path))
-    except ValueError:
-        return ""
+    model = _compile(model_path)  # as inspect_model did, just before
     b = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, body)
     if b < 0:
         return " (no body of that name)"

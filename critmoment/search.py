@@ -483,7 +483,8 @@ def _finger_limits(twin: Twin, pad_bodies: Sequence[int]) -> list[float]:
                     if model.actuator_trntype[a] == mujoco.mjtTrn.mjTRN_JOINT
                     and model.actuator_trnid[a, 0] in slides]
             if acts:
-                limits.extend(float(twin.lowest_limits[a]) for a in acts)
+                lowest = twin.lowest_limits
+                limits.extend(float(lowest[a]) for a in acts)
                 break
             if not slides:
                 break
@@ -895,8 +896,8 @@ def _solve(solver, **args) -> tuple[dict, str]:
         raise KeyboardInterrupt
 
     if threading.current_thread() is threading.main_thread():
-        for sig in (signal.SIGINT, getattr(signal, "SIGTERM", None)):
-            handler = signal.getsignal(sig) if sig is not None else None
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            handler = signal.getsignal(sig)
             if callable(handler):  # a Python handler (Ctrl-C's, the CLI's SIGTERM)
                 try:
                     signal.signal(sig, note)

@@ -229,9 +229,10 @@ def _fps_from_times(times: Any, n_steps: int, *, what: str) -> float:
         if raw_dtype is not None and np.dtype(raw_dtype).kind == "f" \
                 and np.dtype(raw_dtype).itemsize < 8:
             # float32 epoch seconds (1.7e9) are 128 s apart: every 20 ms frame rounds alike
-            step = float(np.spacing(np.asarray(np.abs(t).max(), dtype=raw_dtype)))
+            largest = float(np.abs(t).max())
+            step = float(np.spacing(np.asarray(largest, dtype=raw_dtype)))
             hint = (f"; the times are {np.dtype(raw_dtype).name}, which at "
-                    f"{float(np.abs(t).max()):.3g} s resolves only {step:.3g} s: store them "
+                    f"{largest:.3g} s resolves only {step:.3g} s: store them "
                     f"as float64, or relative to the first")
         raise TrajectoryError(
             f"{what}: expected strictly increasing times, got t[{i}] = {float(t[i])!r} "
@@ -1150,7 +1151,12 @@ def _read_info(root: Path) -> dict:
     return info
 
 
-def _load_lerobot_dir(root: Path, *, fps: float | None, episode: int | None) -> Trajectory:
+def _episode_files(root: Path) -> list[Path]:
+    """A LeRobot dataset folder's episode parquet files, sorted.
+
+    Raises:
+        InputFileError: none under ``data/``: a dataset with no episode is not one.
+    """
     files = sorted((root / "data").rglob("*.parquet")) if (root / "data").is_dir() else []
     if not files:
         raise InputFileError(
@@ -1158,6 +1164,11 @@ def _load_lerobot_dir(root: Path, *, fps: float | None, episode: int | None) -> 
             f"{str(root / 'data')!r} (e.g. data/chunk-000/episode_000000.parquet), "
             f"found none"
         )
+    return files
+
+
+def _load_lerobot_dir(root: Path, *, fps: float | None, episode: int | None) -> Trajectory:
+    files = _episode_files(root)
     return _load_lerobot_files(files, root=root, fps=fps, episode=episode, source=str(root))
 
 
@@ -1309,12 +1320,7 @@ def list_episodes(path: str | os.PathLike) -> tuple[Episode, ...]:
                 f"{str(p)!r} is a directory without meta/info.json; expected a LeRobot "
                 f"dataset directory"
             )
-        files = sorted((p / "data").rglob("*.parquet")) if (p / "data").is_dir() else []
-        if not files:  # as loading it says: a dataset with no episode is not one
-            raise InputFileError(
-                f"LeRobot dataset {str(p)!r}: expected episode parquet files under "
-                f"{str(p / 'data')!r} (e.g. data/chunk-000/episode_000000.parquet), "
-                f"found none")
+        files = _episode_files(p)
     elif p.suffix.lower() == ".parquet":
         files = [p]
     else:

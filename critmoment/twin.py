@@ -670,14 +670,8 @@ class Twin:
             _check_qpos_ranges(model, qpos0)
             data.qpos[:] = qpos0
         elif start is not None:
-            ctrl = self.controls(np.asarray(start)[None])[0]
-            for a in range(model.nu):
-                q = act_info.position_target(model, a, ctrl[a])
-                if q is not None:
-                    j = model.actuator_trnid[a, 0]
-                    if model.jnt_limited[j]:
-                        q = np.clip(q, *model.jnt_range[j])
-                    data.qpos[model.jnt_qposadr[j]] = q
+            for _, adr, q in self._start_positions(model, start, range(model.nu)):
+                data.qpos[adr] = q
         if object_pose is not None or qpos0 is not None:
             self._check_object_start(model, object_pose if object_pose is not None
                                      else qpos0[self.object_qposadr:self.object_qposadr + 3])
@@ -716,26 +710,34 @@ class Twin:
         joint by design)."""
         model = model or self.model
         qpos0 = np.asarray(qpos0, dtype=np.float64)
-        ctrl = self.controls(np.asarray(start, dtype=np.float64)[None])[0]
         worst = None
-        for a in np.flatnonzero(self.motors):
-            q = act_info.position_target(model, int(a), ctrl[a])
-            if q is None:
-                continue
-            j = int(model.actuator_trnid[a, 0])
-            if model.jnt_limited[j]:
-                q = float(np.clip(q, *model.jnt_range[j]))
+        for a, adr, q in self._start_positions(model, start, np.flatnonzero(self.motors)):
             tol = START_AGREEMENT * (0.1 if self.slide[a] else 1.0)
-            gap = abs(float(qpos0[model.jnt_qposadr[j]]) - q)
+            gap = abs(float(qpos0[adr]) - q)
             if gap > tol and (worst is None or gap / tol > worst[0]):
-                worst = (gap / tol, model.joint(j).name, float(qpos0[model.jnt_qposadr[j]]), q)
+                joint = model.joint(int(model.actuator_trnid[a, 0])).name
+                worst = (gap / tol, joint, float(qpos0[adr]), q)
         if worst is not None:
             _, name, there, target = worst
             warnings.warn(
                 f"qpos0 and start disagree: joint {name!r} at {there:.4g} in qpos0, {target:.4g} "
                 f"by start; the run starts from qpos0 (its servos pull towards start's "
                 f"targets from the first step; drop one of the two if that is not meant)",
-                CritmomentWarning, stacklevel=4)
+                CritmomentWarning, stacklevel=3)
+
+    def _start_positions(self, model: mujoco.MjModel, start, actuators):
+        """(actuator, qpos address, position) of each of ``actuators`` that pulls its joint
+        to a position at ``start``'s control (:func:`critmoment.actuators.position_target`),
+        inside the joint's range: where a start puts the joints it drives."""
+        ctrl = self.controls(np.asarray(start, dtype=np.float64)[None])[0]
+        for a in actuators:
+            q = act_info.position_target(model, int(a), ctrl[a])
+            if q is None:
+                continue
+            j = int(model.actuator_trnid[a, 0])
+            if model.jnt_limited[j]:
+                q = float(np.clip(q, *model.jnt_range[j]))
+            yield int(a), int(model.jnt_qposadr[j]), float(q)
 
     def _check_object_start(self, model: mujoco.MjModel, pose) -> None:
         """An object start no gripper can reach is an error (a pose in mm), not an audit in

@@ -676,25 +676,37 @@ SWING_MJCF = """
 """
 
 
-def _swing(folder, xml: str = SWING_MJCF, target: float = -1.2):
-    """(twin, recording) of the swing arm in ``xml``: it rests, then swings to ``target``
-    [rad] from t = 0.14 s on."""
+def _swing_twin(folder, xml: str = SWING_MJCF, *, uncertainty: str = "", rated: bool = True):
+    """The twin of the swing arm in ``xml`` (written to ``folder``), the box's mass
+    uncertain, ``uncertainty`` tables added; ``rated``: ``[limits]`` rates the hinge at
+    5 N·m (else its limit is the MJCF's forcerange alone)."""
     from scenarios import one_actuator_toml
 
-    from critmoment import recording as rollout
     from critmoment.scenario import load_scenario
-    from critmoment.trajectory import Trajectory
     from critmoment.twin import Twin
 
     (folder / "scene.xml").write_text(xml)
-    (folder / "scenario.toml").write_text(one_actuator_toml(
+    text = one_actuator_toml(
         "swing", mjcf="scene.xml", gripper="hand", gripper_geom="pad", support="table",
         actuator="hinge", limit=5.0, task=True, uncertainty="""[uncertainty.mass]
 body = "box"
 range = [0.05, 2.0]
 nominal = 0.05
-"""))
-    twin = Twin(load_scenario(folder))
+""" + uncertainty)
+    if not rated:
+        assert "[limits]\nhinge = 5.0\n" in text
+        text = text.replace("[limits]\nhinge = 5.0\n", "")
+    (folder / "scenario.toml").write_text(text)
+    return Twin(load_scenario(folder))
+
+
+def _swing(folder, xml: str = SWING_MJCF, target: float = -1.2):
+    """(twin, recording) of the swing arm in ``xml``: it rests, then swings to ``target``
+    [rad] from t = 0.14 s on."""
+    from critmoment import recording as rollout
+    from critmoment.trajectory import Trajectory
+
+    twin = _swing_twin(folder, xml)
     fps = 50.0
     t = np.arange(30) / fps
     actions = np.where(t < 0.15, 0.0, target)[:, None]
@@ -799,32 +811,17 @@ def test_a_force_limit_parameter_is_each_samples_limit_everywhere(tmp_path):
     saturation. Each sample's limit is its own value; the load bound, over the whole box,
     takes the range's low end. (With a ``[limits]`` rating the parameter is a protective
     clamp and the checks divide by the rating: test_sparse's closed-form force limit.)"""
-    from scenarios import one_actuator_toml
-
     from critmoment import groundtruth, recording
-    from critmoment.scenario import load_scenario
     from critmoment.sparse import SparseEvaluator
     from critmoment.trajectory import Trajectory
-    from critmoment.twin import Twin
 
-    (tmp_path / "scene.xml").write_text(SWING_MJCF)
-    (tmp_path / "scenario.toml").write_text(one_actuator_toml(
-        "swing", mjcf="scene.xml", gripper="hand", gripper_geom="pad", support="table",
-        actuator="hinge", limit=5.0, task=True, uncertainty="""[uncertainty.mass]
-body = "box"
-range = [0.05, 2.0]
-nominal = 0.05
-[uncertainty.hinge_limit]
+    # the limit is the parameter's alone (a [limits] rating would make it a clamp)
+    twin = _swing_twin(tmp_path, rated=False, uncertainty="""[uncertainty.hinge_limit]
 kind = "force_limit"
 actuator = "hinge"
 range = [1.0, 8.0]
 nominal = 5.0
-"""))
-    # the limit is the parameter's alone (a [limits] rating would make it a clamp)
-    text = (tmp_path / "scenario.toml").read_text()
-    assert "[limits]\nhinge = 5.0\n" in text
-    (tmp_path / "scenario.toml").write_text(text.replace("[limits]\nhinge = 5.0\n", ""))
-    twin = Twin(load_scenario(tmp_path))
+""")
     hinge = twin.actuator_names.index("hinge")
     np.testing.assert_allclose(twin.sample_limits([[0.05, 1.0], [0.05, 8.0]])[:, hinge],
                                [1.0, 8.0])
