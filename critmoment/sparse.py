@@ -1488,8 +1488,10 @@ class SparseEvaluator:
         ``SETTLE_TIME``, it moved at most ``SETTLED_SHARE`` of its whole slip over the last
         ``persistence``. One that slides past the tolerance, or moves more than in the
         block before in more than ``SETTLE_SPEEDUPS`` blocks, is sliding, not settling, and
-        is not followed further. Whether a settled sample really fails is for its own run to
-        say (a sticking failure)."""
+        is not followed further. One whose follow the recording's end cuts short, still
+        under the tolerance and not sliding faster, is undecided here: the run ends before
+        it settles or slides on, so it too is for its own run to say. Whether a settled
+        sample really fails is for its own run to say (a sticking failure)."""
         nsim, width = slip.shape
         out = np.zeros(nsim, bool)
         first = np.asarray(k) if np.ndim(k) else np.full(nsim, int(k))
@@ -1517,9 +1519,11 @@ class SparseEvaluator:
             faster = np.zeros(group.size, np.int64)  # blocks that moved more than the last
             live = np.arange(group.size)  # rows of ``group`` still followed
             done = 0
+            handed = False
             while live.size and done + p <= min(most, self.n_steps - begin):
                 if not self._alone[begin + done:begin + done + p].any(axis=-1).all():
-                    break  # the nominal run hands the object over: not measured alone
+                    handed = True  # the nominal run hands the object over: not measured alone
+                    break
                 ids = group[live]
                 batch.warning[...] = 0
                 _, more = self._roll(batch, begin + done, p, ids, raised)
@@ -1534,6 +1538,9 @@ class SparseEvaluator:
                 faster[live] += moved >= before[live]
                 before[live] = moved
                 live = live[~now & fine & (total <= tol) & (faster[live] <= SETTLE_SPEEDUPS)]
+            if not handed and done + p > self.n_steps - begin and done + p <= most:
+                # the recording ends before SETTLE_TIME: the rest is the run's own to decide
+                out[group[live]] = True
         return out
 
     def _decide(self, buf: np.ndarray, slip: np.ndarray, length: np.ndarray, mu: np.ndarray,

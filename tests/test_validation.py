@@ -3,6 +3,7 @@ the brute force on the bundled scene, and the end-to-end comparison (few samples
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import warnings
@@ -373,3 +374,26 @@ def test_predict_decides_as_the_audit_does(twin, demo_traj, scenario):
         plain = analyze(demo_traj, twin=boundary, options=strict)
         q = val.predict(demo_traj, twin=boundary, samples=plain.sweep.samples, verify=None)
     np.testing.assert_array_equal(q.failed, plain.failed)
+
+
+def test_a_run_cut_mid_carry_leaves_its_last_moments_to_the_own_runs():
+    """A pick-and-hold run of the bundled Panda cut at transport height (320 of its 50 Hz
+    frames): its last moment sits within a horizon of the recording's end, where a grip
+    that shifts some tens of µm when restored with a heavier cube cannot be followed to see
+    whether it settles. Those contact failures were final: 4 of 32 samples (1-2.6 kg) that
+    really hold the cube to the end were called failing (agreement 0.875). The run's end
+    leaves them undecided, for their own runs: no false safe, no false unsafe."""
+    import critmoment as cm
+    from critmoment import panda_demo
+    from critmoment.task import PickHoldTask
+
+    scenario = cm.load_scenario("panda_pick_place")
+    hold = PickHoldTask(grippers=scenario.task.grippers, gripper="hand")
+    twin = cm.Twin(scenario.replace(task=hold))
+    full = panda_demo.make_pick_place(0)
+    traj = dataclasses.replace(full, actions=full.actions[:320].copy())
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        check = cm.validate(traj, twin=twin, n_samples=32, seed=0)
+    assert check.confusion == {"true_safe": 19, "false_safe": 0, "true_unsafe": 13,
+                               "false_unsafe": 0}
