@@ -456,6 +456,17 @@ def _curves(evaluator, steps: np.ndarray, box, n: int) -> dict[int, dict[str, sp
     return out
 
 
+def _passing_note(one: sp.SparseResult, evaluator: sp.SparseEvaluator) -> str:
+    """Why a worst case whose cost crosses the threshold does not fail (``one``: its own
+    evaluation, one moment and one sample, passing)."""
+    persistence = float(evaluator.settings.persistence)
+    excursion = float(one.excursion[0, 0])
+    if excursion < persistence:
+        return (f"the cost stays over the threshold for {excursion * 1e3:.0f} ms, under the "
+                f"{persistence * 1e3:.0f} ms a contact failure must persist")
+    return "the grip has not moved: its force ratio on the cone is not a slip"
+
+
 def _select(res: sp.SparseResult, row: int) -> sp.SparseResult:
     """One moment's rows of a result, as a result with m = 1."""
     fields = {}
@@ -578,9 +589,12 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         if dominant is None:
             dominant = next((d for c in curves[s].values()
                              if (d := _dominant(c, 0, c.failed[0])) is not None), None)
+        worst_fails, worst_note = None, ""
         if row in again:
             one = again[row]
-            worst_failed_sparse[s] = bool(one.failed[0, 0])
+            worst_failed_sparse[s] = worst_fails = bool(one.failed[0, 0])
+            if not worst_fails:
+                worst_note = _passing_note(one, evaluator)
             # unlifted or sticking: only a rollout can say whether it really fails
             worst_unlifted[s] = dopt.only_a_rollout_decides(
                 bool(one.unlifted_failure[0, 0]), bool(one.sticking_failure[0, 0]),
@@ -607,7 +621,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             fail_fraction=float(standing.mean()), analytic=analytics.get(s),
             overturned=bool(fails_here.any() and not standing.any()),
             search=searches.get(s), reached=float((~np.isnan(res.cost[row])).mean()),
-            squeeze=bool(squeeze), audited_step=None if s == int(m.step) else s))
+            squeeze=bool(squeeze), audited_step=None if s == int(m.step) else s,
+            worst_fails=worst_fails, worst_note=worst_note))
     # the failing worst cases that only a rollout can decide (squeezes)
     worst_failed: dict[int, bool] = {}
     rerun_steps = vd.worst_cases_to_rerun(moment_reports, worst_failed_sparse, worst_unlifted,
@@ -617,6 +632,10 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         points = np.array([[by_step[s].worst_case[n] for n in box.names] for s in rerun_steps])
         real = roll(points)
         worst_failed = dict(zip(rerun_steps, map(bool, real), strict=True))
+        moment_reports = [
+            dataclasses.replace(mr, worst_fails=worst_failed[mr.step], worst_note=(
+                "" if worst_failed[mr.step] else "its own full run completes the task"))
+            if mr.step in worst_failed else mr for mr in moment_reports]
         if verification is not None:
             verification["worst_cases"] = len(rerun_steps)
             verification["worst_cases_failed"] = int(real.sum())

@@ -166,6 +166,8 @@ def report_json(report, *, timings: bool = True) -> dict:
             "limiting_actuator": mr.limiting_actuator,
             "fail_fraction": float(mr.fail_fraction),
             "overturned": bool(mr.overturned),
+            "worst_fails": mr.worst_fails,
+            "worst_note": mr.worst_note,
             "reached": float(mr.reached),
             "squeeze": bool(mr.squeeze),
             "analytic": jsonable(mr.analytic),
@@ -406,13 +408,15 @@ def summary_text(report) -> str:
         m = mr.moment
         crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
                          if v is not None) or (
-                             "none of one parameter alone (the others at nominal)"
+                             "none: the worst case does not fail" if mr.worst_fails is False
+                             else "none of one parameter alone (the others at nominal)"
                              if mr.max_cost >= report.scenario.cost.threshold else "never crosses")
+        passing = f" (not a failure: {mr.worst_note})" if mr.worst_fails is False else ""
         worst = ", ".join(f"{k}={v:.3g}" for k, v in mr.worst_case.items())
         # a force ratio the cost does not use (contact chatter) is not shown bare beside it
         trust = " (not trusted)" if int(m.step) in untrusted else ""
         lines.append(f"  {i}. {m.label.value:12s} step {m.step:5d} (t = {m.time:.2f} s): max cost "
-                     f"{mr.max_cost:.3f} at {worst}; min FOS contact {format_fos(mr.min_fos_contact)}"
+                     f"{mr.max_cost:.3f} at {worst}{passing}; min FOS contact {format_fos(mr.min_fos_contact)}"
                      f"{trust}, motor {format_fos(mr.min_fos_motor)}; fails {mr.fail_fraction:.0%} "
                      f"of the box here (reached by {mr.reached:.0%}); critical: {crit}")
     v = report.verification
@@ -849,6 +853,8 @@ def _html(report, doc, images) -> str:
         fc = "—" if mr["min_fos_contact"] is None else f"{mr['min_fos_contact']:.3g}"
         fm = "—" if mr["min_fos_motor"] is None else f"{mr['min_fos_motor']:.3g}"
         mc = "—" if mr["max_cost"] is None else f"{mr['max_cost']:.3f}"
+        if mr.get("worst_fails") is False:
+            mc += f"<br><span class=muted>not a failure: {e(mr.get('worst_note', ''))}</span>"
         an = mr.get("analytic") or {}
         an_txt = ""
         if an:

@@ -208,6 +208,11 @@ class MomentReport:
         audited_step: the step its sparse evaluation starts from when that is not the
             moment's own (a moment within the horizon of the recording's end is audited
             from the last step whose horizon fits), else None; see :attr:`step`.
+        worst_fails: whether the worst case fails here by the samples' decision (its sparse
+            evaluation, or its own rollout where one decided it); None where its cost
+            stays at or under the threshold. A cost over the threshold that does not fail
+            (a contact excursion shorter than the persistence) is no failure.
+        worst_note: why a worst case whose cost crosses the threshold does not fail, or "".
     """
 
     moment: Moment
@@ -226,6 +231,8 @@ class MomentReport:
     squeeze: bool = False
     audited_step: int | None = None
     overturned: bool = False
+    worst_fails: bool | None = None
+    worst_note: str = ""
 
     @property
     def step(self) -> int:
@@ -1424,8 +1431,9 @@ def _causes(reports: Sequence[MomentReport], threshold: float) -> list[str]:
     groups: dict[str, list[str]] = {}
     for mr in reports:
         crossed = any(v is not None for v in mr.critical.values())
+        worst = mr.worst_fails if mr.worst_fails is not None else mr.max_cost > threshold
         if mr.dominant is None or mr.overturned or (mr.fail_fraction == 0 and not crossed
-                                                    and not mr.max_cost > threshold):
+                                                    and not worst):
             continue
         name = _SUGGEST[mr.dominant][0]
         if mr.dominant == "motor":

@@ -5,6 +5,7 @@ from __future__ import annotations
 import errno
 import json
 import os
+import re
 import threading
 import warnings
 
@@ -302,3 +303,36 @@ def test_a_moment_audited_before_the_runs_end_is_drawn(tmp_path, twin, demo_traj
     doc = json.loads((tmp_path / "out" / "report.json").read_text())
     assert [m["audited_step"] for m in doc["moments"]] == [mr.step for mr in report.moments]
     assert (tmp_path / "out" / f"moment_{moved[0].moment.step}.png").is_file()
+
+
+def test_a_worst_case_over_the_threshold_that_does_not_fail_says_why(twin, demo_recording,
+                                                                     audit):
+    """The demo's hand-over moment read "max cost 0.923 at mass=10, friction=0.2; ... fails
+    0% of the box here; critical: none of one parameter alone": a cost over the threshold
+    0.9 beside no failure. The worst case's own evaluation passes it (the contact term
+    keeps the cost over the threshold for less than the persistence): the line says so,
+    and report.json carries it."""
+    import dataclasses
+
+    from critmoment.analysis import _passing_note, audit_evaluator
+    from critmoment.report import report_json, summary_text
+
+    ev, _ = audit_evaluator(demo_recording, twin)
+    one = ev.evaluate([3241], [[10.0, 0.2]])
+    assert one.cost[0, 0] > twin.scenario.cost.threshold and not one.failed[0, 0]
+    note = _passing_note(one, ev)
+    assert re.fullmatch(r"the cost stays over the threshold for \d+ ms, under the 20 ms a "
+                        r"contact failure must persist", note)
+    mr = dataclasses.replace(audit.moments[0], max_cost=float(one.cost[0, 0]),
+                             critical={k: None for k in audit.moments[0].critical},
+                             worst_fails=False, worst_note=note)
+    report = dataclasses.replace(audit, moments=[mr])
+    line = next(ln for ln in summary_text(report).splitlines() if ln.startswith("  1."))
+    assert f"(not a failure: {note})" in line
+    assert line.endswith("critical: none: the worst case does not fail")
+    doc = report_json(report)
+    assert doc["moments"][0]["worst_fails"] is False and doc["moments"][0]["worst_note"] == note
+    # and the failure causes do not list it
+    from critmoment.verdict import _causes
+
+    assert _causes([dataclasses.replace(mr, dominant="contact", fail_fraction=0.0)], 0.9) == []
