@@ -501,6 +501,13 @@ class _Probe:
             s.type = mujoco.mjtSensor.mjSENS_ACTUATORPOS
             s.objtype = mujoco.mjtObj.mjOBJ_ACTUATOR
             s.objname = base.actuator(int(a)).name
+        # the actuator's length is gear × the joint's position: read back in joint units,
+        # the lag is compared with the joint target (Twin.target_scale/offset) whatever
+        # the gear or the servo's bias
+        gear = base.actuator_gear[self.motors, 0]
+        self.gear = np.where(gear == 0, 1.0, gear)
+        self.target_scale = twin.target_scale[self.motors]
+        self.target_offset = twin.target_offset[self.motors]
         self.model = spec.compile()
         twin.write_parameters(self.model, sc.box.nominal[None, :])
         nsd = twin.nsensordata
@@ -805,7 +812,7 @@ class _Frames:
                    actuator_norm=sd[..., twin._force_ids[probe.motors]]
                    / limits[..., probe.motors],
                    position=sensordata[..., probe.pos].reshape(c, t, -1, 3),
-                   q=sensordata[..., probe.q], success=twin.task.success(evidence))
+                   q=sensordata[..., probe.q] / probe.gear, success=twin.task.success(evidence))
 
     def row(self, i: int) -> _Frames:
         return _Frames(**{f.name: getattr(self, f.name)[i] for f in dataclasses.fields(self)})
@@ -828,7 +835,7 @@ def tracking_tolerances(criteria: OutcomeCriteria, slide: np.ndarray,
 def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, probe: _Probe,
                      dt: float, criteria: OutcomeCriteria, diverged: np.ndarray,
                      diverged_step: np.ndarray) -> Classification:
-    target = controls[:, probe.motors]
+    target = controls[:, probe.motors] * probe.target_scale + probe.target_offset
     excess = np.abs(frames.q - target[None]) - np.abs(reference.q - target)[None]
     # a slide axis's lag [m] against its own tolerance, in the criteria's one comparison
     excess = excess * tracking_tolerances(criteria, probe.slide, criteria.tracking_tolerance)

@@ -374,12 +374,14 @@ class _Watch:
         self.limits = (twin.limits[motors] if per_sample is None
                        else per_sample[:, motors])
         self.saturation = float(criteria.saturation)
-        # tracking: each motor-checked actuator's position (gear × joint angle, as MuJoCo's
-        # actuator length) against its target, beyond the nominal run's own lag
+        # tracking: each motor-checked actuator's joint position against the joint target
+        # its control sets (Twin.target_scale/offset: a geared or offset servo's target is
+        # not its ctrl), beyond the nominal run's own lag, both in joint units
         model = twin.model
         self.act = motors
         self.qadr = model.jnt_qposadr[model.actuator_trnid[motors, 0]]
-        self.gear = model.actuator_gear[motors, 0]
+        self.target_scale = twin.target_scale[motors]
+        self.target_offset = twin.target_offset[motors]
         self.nominal_q = twin.qpos(ev._states)  # the nominal run's positions
         # per column [rad or m] (an arm's slide axis has its own tolerance)
         self.tracking_tolerance = 1.0 / tracking_tolerances(criteria, twin.slide[motors])
@@ -451,9 +453,10 @@ class _Watch:
             limits = self.limits if self.limits.ndim == 1 else self.limits[ids][:, None]
             load = np.abs(sensordata[..., self.force_adr] / limits)
         saturated = load >= self.saturation
-        target = ev._controls[k:k + s][:, self.act]                          # (s, r)
-        nominal = self.nominal_q[k + 1:k + s + 1, self.qadr] * self.gear
-        q = qpos[..., self.qadr] * self.gear                                 # (c, s, r)
+        target = (ev._controls[k:k + s][:, self.act] * self.target_scale
+                  + self.target_offset)                                      # (s, r)
+        nominal = self.nominal_q[k + 1:k + s + 1, self.qadr]
+        q = qpos[..., self.qadr]                                             # (c, s, r)
         excess = np.abs(q - target[None]) - np.abs(nominal - target)[None]
         lagging = excess > self.tracking_tolerance
         flags = {"slip": over[..., None], "drop": lost[..., None], "saturation": saturated,

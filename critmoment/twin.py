@@ -511,6 +511,11 @@ class Twin:
         joint_act = np.array([model.actuator_trntype[i] == mujoco.mjtTrn.mjTRN_JOINT
                               for i in range(model.nu)], dtype=bool)
         self.fingers = joint_act & ~on_arm
+        #: per actuator, its joint target as ``scale·ctrl + offset`` [rad or m]
+        #: (:func:`critmoment.actuators.position_target`: a servo geared 50:1 holds its
+        #: joint at ctrl / 50): the tracking rules compare the joint's own position with it,
+        #: so a joint's lag is in the tolerance's units whatever the gear or bias
+        self.target_scale, self.target_offset = _joint_targets(model)
         self.actuator_names = tuple(model.actuator(i).name for i in range(model.nu))
         #: the motor-checked actuators with no force limit in the scenario or the MJCF:
         #: their motor FOS is not checked (a gripper's, never checked, are not listed)
@@ -665,7 +670,12 @@ class Twin:
         if qpos0 is not None:
             qpos0 = np.asarray(qpos0, dtype=np.float64)
             if qpos0.shape != (model.nq,):
-                raise TrajectoryError(f"expected qpos0 of shape ({model.nq},), got {qpos0.shape}")
+                raise TrajectoryError(
+                    f"the trajectory's qpos0: expected the model's full joint positions, "
+                    f"shape ({model.nq},), got {qpos0.shape}; {_qpos_layout(model)} (a "
+                    f"qpos0 recorded on a model with other joints, such as a free body "
+                    f"added or removed, does not fit: record it on this model, or give "
+                    f"the start in the action convention instead)")
             _check_qpos_quaternions(model, qpos0)
             _check_qpos_ranges(model, qpos0)
             data.qpos[:] = qpos0
@@ -1087,6 +1097,39 @@ def _mocap_hint(model: mujoco.MjModel) -> str:
     return (f"; the model moves its arm with a {', '.join(welds)} (end-effector control): "
             "critmoment replays joint-space actions through the model's actuators, so give "
             "the arm's joints position actuators and remove the weld")
+
+
+def _qpos_layout(model: mujoco.MjModel) -> str:
+    """The model's joint coordinates in a few words: how many, and where its free and ball
+    joints (several coordinates each) sit."""
+    multi = []
+    for j in range(model.njnt):
+        kind = int(model.jnt_type[j])
+        if kind in (int(mujoco.mjtJoint.mjJNT_FREE), int(mujoco.mjtJoint.mjJNT_BALL)):
+            name = (repr(model.joint(j).name) if model.joint(j).name
+                    else f"of body {model.body(model.jnt_bodyid[j]).name!r}")
+            size = 7 if kind == int(mujoco.mjtJoint.mjJNT_FREE) else 4
+            adr = int(model.jnt_qposadr[j])
+            multi.append(f"{'free' if size == 7 else 'ball'} joint {name} at "
+                         f"qpos[{adr}:{adr + size}]")
+    return (f"the model has {model.njnt} joints, {model.nq} coordinates"
+            + (f", with {', '.join(multi)}" if multi else ""))
+
+
+def _joint_targets(model: mujoco.MjModel) -> tuple[np.ndarray, np.ndarray]:
+    """Per actuator, the joint position it holds at rest as ``scale·ctrl + offset``
+    (:func:`critmoment.actuators.position_target`, linear in ctrl); for an actuator that
+    tracks no position or drives no joint, ctrl / gear."""
+    scale = np.empty(model.nu)
+    offset = np.zeros(model.nu)
+    for a in range(model.nu):
+        zero = act_info.position_target(model, a, 0.0)
+        one = act_info.position_target(model, a, 1.0)
+        if zero is None or one is None:
+            scale[a] = 1.0 / (float(model.actuator_gear[a, 0]) or 1.0)
+        else:
+            scale[a], offset[a] = one - zero, zero
+    return scale, offset
 
 
 def _arm_actuators(model: mujoco.MjModel, scenario: Scenario) -> tuple[str, ...]:

@@ -188,3 +188,74 @@ def test_tracking_tolerances_give_a_slide_axis_its_own_unit():
     assert scaled[1] == pytest.approx(0.2)
     with pytest.raises(ParameterError, match="tracking_tolerance_slide"):
         OutcomeCriteria(tracking_tolerance_slide=0.0)
+
+
+GEARED_SWING = """
+<mujoco model="swing">
+  <option timestep="0.002" gravity="0 0 -9.81"/>
+  <worldbody>
+    <geom name="table" type="plane" size="2 2 0.1"/>
+    <body name="arm" pos="0 0 0.8">
+      <joint name="hinge" type="hinge" axis="0 1 0"/>
+      <geom name="link" type="capsule" fromto="0 0 0 0.3 0 0" size="0.02" mass="1"/>
+      <geom name="pad" type="box" pos="0.3 0 0" size="0.01 0.02 0.02" mass="0.05"/>
+    </body>
+    <body name="box" pos="1.2 0 0.02">
+      <freejoint/>
+      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.05" priority="1"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="hinge" joint="hinge" GEAR/>
+  </actuator>
+</mujoco>
+"""
+
+
+def _geared_swing(folder, gear: float):
+    """The swing arm driven by a position servo geared ``gear``:1 whose joint-side physics
+    is the same for every gear (kp/gear², forcerange/gear, the channel scaled by the gear),
+    its link's mass uncertain (a heavier arm sags and lags more)."""
+    from scenarios import one_actuator_toml
+
+    from critmoment.scenario import load_scenario
+    from critmoment.twin import Twin
+
+    folder.mkdir()
+    servo = (f'gear="{gear:g}" kp="{300.0 / gear ** 2:.12g}" '
+             f'forcerange="{-20.0 / gear:.12g} {20.0 / gear:.12g}"')
+    (folder / "scene.xml").write_text(GEARED_SWING.replace("GEAR", servo))
+    text = one_actuator_toml(
+        "swing", mjcf="scene.xml", gripper="hand", gripper_geom="pad", support="table",
+        actuator="hinge", limit=20.0 / gear, task=True, uncertainty="""[uncertainty.arm]
+kind = "mass"
+body = "arm"
+range = [1.0, 2.5]
+nominal = 1.0
+""")
+    text = text.replace('actuators = ["hinge"]\n',
+                        f'actuators = ["hinge"]\nscales = [{gear:g}]\n')
+    (folder / "scenario.toml").write_text(text)
+    return Twin(load_scenario(folder))
+
+
+def test_a_geared_servo_is_tracked_in_joint_units(tmp_path):
+    """A servo geared 50:1 whose joint feels the same physics as a direct one gives the same
+    outcomes: its lag is the joint's (actuator length / gear against ctrl's joint target),
+    not 50 times it (a geared Panda called failing at 2.2 kg what holds; twenty-fifth round)."""
+    from critmoment.trajectory import Trajectory
+
+    fps = 50.0
+    t = np.arange(30) / fps
+    # a ramp the servo follows within its force range, its lag a gravity sag of 0.01 rad
+    traj = Trajectory(actions=np.clip(0.15 - t, -0.45, 0.0)[:, None] * 1.2, fps=fps,
+                      start=np.zeros(1))
+    samples = np.array([[1.0], [1.8], [2.5]])
+    direct = gt.brute_force(traj, twin=_geared_swing(tmp_path / "g1", 1.0), samples=samples)
+    geared_twin = _geared_swing(tmp_path / "g50", 50.0)
+    assert geared_twin.target_scale[0] == pytest.approx(1 / 50)
+    geared = gt.brute_force(traj, twin=geared_twin, samples=samples)
+    assert direct.outcome == geared.outcome
+    assert (direct.classification.motor_step < 0).all()
+    np.testing.assert_array_equal(direct.classification.motor_step,
+                                  geared.classification.motor_step)
