@@ -25,7 +25,8 @@ import numpy as np
 
 __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
            "gripper_gap", "into_ranges", "control_span", "closing_ends", "moves_geoms",
-           "position_target", "body_chain", "common_ancestor", "collision_geoms", "geom_pairs",
+           "position_target", "joint_force_limit", "body_chain", "common_ancestor",
+           "collision_geoms", "geom_pairs",
            "filtered_actuators", "ContactParameters", "contact_parameters",
            "dynamic_partners", "grip_friction_sources", "grip_condims", "source_friction"]
 
@@ -314,24 +315,34 @@ def _kind(model: mujoco.MjModel, i: int) -> ActuatorKind:
 
 
 def force_limit(model: mujoco.MjModel, i: int) -> float | None:
-    """Default force limit of actuator ``i`` from the MJCF [N·m or N], or None.
+    """Default force limit of actuator ``i`` from the MJCF [N·m or N, in the actuator's own
+    units: before its gear], or None.
 
-    The actuator's own ``forcerange`` when ``forcelimited``; else the ``actuatorfrcrange``
-    of the joint it drives (scaled by the gear); the limit is the smaller magnitude of the
-    two ends (a one-sided range gives its one side).
+    The smaller of its own ``forcerange`` (when ``forcelimited``) and the
+    ``actuatorfrcrange`` of the joint it drives (divided by the gear): MuJoCo clamps the
+    force by both, so the tighter one is the limit. Each range's limit is the smaller
+    magnitude of its two ends (a one-sided range gives its one side).
     """
-    if model.actuator_forcelimited[i]:
-        limit = range_limit(model.actuator_forcerange[i])
-        if limit is not None:
-            return limit
-    if int(model.actuator_trntype[i]) in (int(mujoco.mjtTrn.mjTRN_JOINT),
-                                          int(mujoco.mjtTrn.mjTRN_JOINTINPARENT)):
-        j = model.actuator_trnid[i, 0]
-        if model.jnt_actfrclimited[j]:
-            limit = range_limit(model.jnt_actfrcrange[j])
-            if limit is not None:
-                return limit / (abs(model.actuator_gear[i, 0]) or 1.0)
-    return None
+    own = range_limit(model.actuator_forcerange[i]) if model.actuator_forcelimited[i] else None
+    return _tighter(own, joint_force_limit(model, i))
+
+
+def joint_force_limit(model: mujoco.MjModel, i: int) -> float | None:
+    """The limit the ``actuatorfrcrange`` of the joint actuator ``i`` drives sets on its
+    force, in the actuator's units (the joint's range over the gear), or None."""
+    if int(model.actuator_trntype[i]) not in (int(mujoco.mjtTrn.mjTRN_JOINT),
+                                              int(mujoco.mjtTrn.mjTRN_JOINTINPARENT)):
+        return None
+    j = model.actuator_trnid[i, 0]
+    if not model.jnt_actfrclimited[j]:
+        return None
+    limit = range_limit(model.jnt_actfrcrange[j])
+    return None if limit is None else limit / (abs(float(model.actuator_gear[i, 0])) or 1.0)
+
+
+def _tighter(*limits: float | None) -> float | None:
+    given = [v for v in limits if v is not None]
+    return min(given) if given else None
 
 
 def range_limit(bounds: Sequence[float]) -> float | None:
@@ -365,7 +376,7 @@ def motor_limit(model: mujoco.MjModel, i: int) -> float | None:
         model.actuator_forcerange[i], ctrl_limited=bool(model.actuator_ctrllimited[i]),
         force_limited=bool(model.actuator_forcelimited[i]))
     limit = range_limit(bounds) if bounds is not None else None
-    return limit if limit is not None else force_limit(model, i)
+    return _tighter(limit, joint_force_limit(model, i))
 
 
 def describe(model: mujoco.MjModel, i: int) -> ActuatorInfo:

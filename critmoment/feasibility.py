@@ -32,6 +32,7 @@ import warnings
 import mujoco
 import numpy as np
 
+from critmoment import actuators as act_info
 from critmoment.exceptions import (
     CritmomentError,
     CritmomentWarning,
@@ -40,7 +41,7 @@ from critmoment.exceptions import (
     TrajectoryError,
 )
 from critmoment.recording import Recording
-from critmoment.scenario import FeasibilityOptions
+from critmoment.scenario import GENERATED, FeasibilityOptions
 from critmoment.trajectory import Trajectory
 from critmoment.twin import STATE_SPEC, Twin, carried_flags
 
@@ -161,6 +162,9 @@ class JointFeasibility:
         friction_band: how far a position servo's error must grow before it overcomes the
             joint's dry friction, frictionloss / (kp × gear²) [rad or m] (0 for other
             actuators).
+        spring_force: the joint's own spring (its ``stiffness`` times the distance from
+            its ``springref``) at its largest over the longest saturation, else over the lag
+            stretch [N·m or N, at the joint].
         force_flips: of the consecutive steps both at the force limit, the fraction whose
             force changes sign (a numerical oscillation between +limit and −limit, not a
             load).
@@ -192,6 +196,7 @@ class JointFeasibility:
     damping_lag: float = 0.0
     friction_band: float = 0.0
     load_lag: float = 0.0
+    spring_force: float = 0.0
 
     def to_json(self) -> dict:
         """JSON-able dict (kind as its value, non-finite numbers as None)."""
@@ -297,12 +302,11 @@ def _force_limit(twin: Twin, a: int) -> tuple[float, str]:
     # is the model's own, read from the attributes below); first, so that it wins a tie
     source = twin.scenario.limit_sources.get(twin.actuator_names[a], "scenario")
     candidates = [(float(twin.limits[a]), "[limits]")] if source == "scenario" else []
-    if m.actuator_forcelimited[a]:
-        candidates.append((float(np.abs(m.actuator_forcerange[a]).min()), "forcerange"))
-    j = int(m.actuator_trnid[a, 0])
-    gear = abs(float(m.actuator_gear[a, 0])) or 1.0
-    if m.jnt_actfrclimited[j]:
-        candidates.append((float(np.abs(m.jnt_actfrcrange[j]).min()) / gear, "actuatorfrcrange"))
+    own = act_info.range_limit(m.actuator_forcerange[a]) if m.actuator_forcelimited[a] else None
+    joint = act_info.joint_force_limit(m, a)
+    candidates += [(float(v), where) for v, where in ((own, "forcerange"),
+                                                      (joint, "actuatorfrcrange"))
+                   if v is not None]
     if not candidates:
         candidates.append((float(twin.limits[a]), "the model"))
     return min(candidates, key=lambda c: c[0])
@@ -421,6 +425,12 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             driving = np.sign(push) * np.sign(v) > 0
             sat_speed = float(np.abs(v[driving]).max(initial=0.0))
             damping_force = float(m.dof_damping[m.jnt_dofadr[j]]) * sat_speed
+        spring_force = 0.0
+        start, length = (sat_start, sat_len) if sat_len else (lag_start, lag_len)
+        if length and m.jnt_stiffness[j] > 0:
+            adr = int(m.jnt_qposadr[j])
+            stretch = qpos[start:start + length + 1, adr] - m.qpos_spring[adr]
+            spring_force = float(m.jnt_stiffness[j] * np.abs(stretch).max(initial=0.0))
         entry = JointFeasibility(
             actuator=name, joint=jname, kind=kind.value, unit=unit, gripper=is_gripper,
             max_lag=max_lag, max_lag_time=max_lag_time, lag_duration=lag_len * dt,
@@ -429,7 +439,8 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             saturation_total=float(saturated.sum()) * dt, force_limit=limit, limit_source=source,
             frictionloss=friction, target_span=span, note=note, target_speed=speed,
             damping_lag=damping_lag, friction_band=band, force_flips=force_flips,
-            load_lag=load_lag, damping_force=damping_force, saturation_speed=sat_speed)
+            load_lag=load_lag, damping_force=damping_force, saturation_speed=sat_speed,
+            spring_force=spring_force)
         stretch = _failing_stretch(entry, tol, abs(gear), options)
         if stretch is not None:
             blocked = _blocking_contact(m, states, *stretch, joint=j)
@@ -536,8 +547,10 @@ def _blocking_contact(model: mujoco.MjModel, states: np.ndarray, start: float,
 
 
 def _geom_name(model: mujoco.MjModel, geom: int) -> str:
+    # critmoment's own name for a geom the MJCF leaves unnamed (critmoment:geom:6) is not
+    # in the user's file: the body it belongs to says where to look
     name = model.geom(geom).name
-    if name:
+    if name and not name.startswith(GENERATED):
         return name
     body = model.body(int(model.geom_bodyid[geom])).name
     return f"geom #{geom} of body {body!r}"
@@ -566,6 +579,8 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
             cause = _oscillation(e, fu)
         elif e.saturation_total > 0 and e.saturation_start is not None and _damped(e, gear):
             cause = _damping_cause(e, fu, gear, model, joint)
+        elif e.saturation_total > 0 and e.saturation_start is not None and _sprung(e, gear):
+            cause = _spring_cause(e, fu, gear, model, joint)
         elif e.saturation_total > 0 and e.saturation_start is not None:
             cause = (f"the actuator is at its force limit {e.force_limit:g} {fu} "
                      f"({e.limit_source}) for {e.saturation_total:.3g} s in all: too weak "
@@ -607,6 +622,7 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
         cause = (f"the contact {e.blocked_by} holds it back" if e.blocked_by else
                  _oscillation(e, fu) if e.force_flips >= FLIP_SHARE else
                  _damping_cause(e, fu, gear, model, joint) if _damped(e, gear) else
+                 _spring_cause(e, fu, gear, model, joint) if _sprung(e, gear) else
                  "too weak for the load; check [limits], the model's forcerange and gear"
                  + _explicit_hint(model))
         out.append(
@@ -631,6 +647,21 @@ def _damping_cause(e: JointFeasibility, fu: str, gear: float, model: mujoco.MjMo
             f"its damping {model.dof_damping[model.jnt_dofadr[joint]]:g} takes "
             f"{e.damping_force:.3g} {fu} of the {e.force_limit * gear:.3g} {fu} the actuator "
             f"can give; slow the motion there, or check the model's joint damping")
+
+
+def _sprung(e: JointFeasibility, gear: float) -> bool:
+    """The joint's own spring takes most of what the actuator can give."""
+    return e.spring_force >= DAMPING_SHARE * e.force_limit * abs(gear)
+
+
+def _spring_cause(e: JointFeasibility, fu: str, gear: float, model: mujoco.MjModel,
+                  joint: int) -> str:
+    adr = int(model.jnt_qposadr[joint])
+    return (f"the joint's own spring: its stiffness {model.jnt_stiffness[joint]:g} {fu}/"
+            f"{e.unit} pulls it towards its springref {model.qpos_spring[adr]:g} {e.unit} "
+            f"with up to {e.spring_force:.3g} {fu} of the {e.force_limit * abs(gear):.3g} {fu} "
+            f"the actuator can give; check the model's joint stiffness and springref (a "
+            f"spring the robot does not have, or one its controller compensates)")
 
 
 def _explicit_hint(model: mujoco.MjModel) -> str:

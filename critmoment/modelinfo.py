@@ -451,10 +451,17 @@ def gripper_at(model: mujoco.MjModel, body: str, *, keyframe: int | None = None,
         closed.append(c[0])
         opened.append(o[0])
     if not moving:
+        # an actuator on the body's own joint moves it whole (one jaw, or the wrist): the
+        # gripper is the body above that holds both jaws
+        own = [model.actuator(a).name for a in range(model.nu) if b in _moved_bodies(model, a)]
+        parent = model.body(int(model.body_parentid[b])).name
+        hint = (f"; {', '.join(own)} moves {body!r} itself as a whole (one jaw, or the "
+                f"wrist): name the body that holds both jaws, such as its parent {parent!r}"
+                if own and parent else "")
         raise ScenarioError(
             f"--gripper {body}: no actuator below it opens or closes its geoms"
             + (f" (of {', '.join(still)})" if still else
-               " (none drives a joint or tendon below it)"))
+               " (none drives a joint or tendon below it)") + hint)
     name = model.body(b).name
     return GripperGuess(name=_gripper_name(name, set() if taken is None else taken),
                         body=name, actuators=tuple(moving), closed=tuple(closed),
@@ -928,7 +935,12 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                                 f"(e.g. {out_path / 'scenario.toml'})")
         _check_out(out_path, overwrite)
     base = out_path.parent if out_path is not None else Path.cwd()
-    rel = os.path.relpath(model_path.resolve(), base.resolve())
+    # the path as given, through the user's links (a linked assets folder beside the
+    # scenario stays the way to the model); where a ".." of it would cross a link and land
+    # elsewhere, the path between the real files
+    rel = os.path.relpath(os.path.abspath(model_path), os.path.abspath(base))
+    if (base / rel).resolve() != model_path.resolve():
+        rel = os.path.relpath(model_path.resolve(), base.resolve())
     lines.append(f"mjcf = {_toml_str(rel)}")
     if info.keyframes:
         k0 = info.keyframes[0]

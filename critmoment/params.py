@@ -281,17 +281,21 @@ class ComOffsetParameter(Parameter):
 class ForceLimitParameter(Parameter):
     """Symmetric force limit of an actuator [N or N·m] (e.g. the gripper's grip force).
 
-    ``torque``: the actuator drives a hinge joint, so its force is a torque (N·m); set by
-    :func:`with_units` once the model is known.
+    ``torque``: the actuator drives a hinge joint, so its force is a torque (N·m); ``gear``:
+    its gear, where the limit (in the actuator's units, before the gear) is not the joint's
+    (a value v then means v × gear at the joint). Both set by :func:`with_units` once the
+    model is known.
     """
 
     fields: ClassVar[tuple[str, ...]] = ("actuator_forcerange",)
     minimum: ClassVar[float] = 0.0
     torque: bool = False
+    gear: float = 1.0
 
     @property
     def unit(self) -> str:  # type: ignore[override]
-        return "N·m" if self.torque else "N"
+        unit = "N·m" if self.torque else "N"
+        return unit if self.gear == 1.0 else f"×{self.gear:g} {unit}"
 
     def with_units(self, model: mujoco.MjModel) -> ForceLimitParameter:
         """This parameter with its unit read from ``model``: N·m for an actuator on a hinge
@@ -301,7 +305,8 @@ class ForceLimitParameter(Parameter):
                                                       int(mujoco.mjtTrn.mjTRN_JOINTINPARENT))
         kind = int(model.jnt_type[model.actuator_trnid[a, 0]]) if on_joint else -1
         torque = kind in (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_BALL))
-        return dataclasses.replace(self, torque=torque)
+        gear = abs(float(model.actuator_gear[a, 0])) if on_joint else 1.0
+        return dataclasses.replace(self, torque=torque, gear=gear or 1.0)
 
     def resolve(self, model):
         return _resolve(model, mujoco.mjtObj.mjOBJ_ACTUATOR, self.target, "actuator")

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
+import hashlib
 import math
 import os
 import re
@@ -616,6 +617,9 @@ class Scenario:
     feasibility: FeasibilityOptions = FeasibilityOptions()
     #: ``[actions] fps`` was given (else ``fps`` is the 50 Hz default)
     fps_given: bool = False
+    #: the SHA-256 of the scenario file's bytes as parsed (:func:`load_scenario`), for the
+    #: report's manifest; None for a scenario built in code
+    sha256: str | None = dataclasses.field(default=None, compare=False)
 
     def __post_init__(self):
         # load_scenario builds these checked; a Scenario built or replaced in code gets the
@@ -1288,7 +1292,39 @@ def _resolve_limits(raw: Mapping[str, Any], resolver: _ActuatorResolver
             set_by[name] = key
             limits[name] = float(value)
             sources[name] = "scenario"
+    _warn_limits_over_model(model, {resolver.names.index(name): (key, limits[name])
+                                    for name, key in set_by.items()})
     return limits, sources
+
+
+def _warn_limits_over_model(model: mujoco.MjModel, given: Mapping[int, tuple[str, float]]
+                            ) -> None:
+    """Warn, once, where [limits] values (``given``: actuator -> its key and value) exceed
+    the force the model lets the actuator give (its ``forcerange``, its joint's
+    ``actuatorfrcrange`` over the gear): it can never reach them, so its saturation check
+    cannot fail however heavy the load, and a rating copied in joint units onto a geared
+    actuator reads ``gear`` times too high."""
+    over, geared = [], []
+    for i, (key, value) in sorted(given.items()):
+        physical = act_info.force_limit(model, i)
+        if physical is None or value <= 1.01 * physical:
+            continue
+        over.append(f"{key} = {value:g} (actuator {model.actuator(i).name!r} gives at most "
+                    f"{physical:.4g})")
+        gear = abs(float(model.actuator_gear[i, 0])) or 1.0
+        if gear != 1.0:
+            geared.append(f"{model.actuator(i).name!r} gear {gear:g}: {value:g} / {gear:g} = "
+                          f"{value / gear:.4g}")
+    if not over:
+        return
+    warnings.warn(
+        f"[limits] {'; '.join(over)}: above what the model's forcerange / the joint's "
+        f"actuatorfrcrange lets the actuator give; MuJoCo clamps its force there, so its "
+        f"motor FOS stays above the ratio and a load it cannot hold shows only as a "
+        f"tracking loss"
+        + (f". [limits] is in the actuator's own units (force before the gear), so a joint "
+           f"rating R is R / gear there ({'; '.join(geared)})" if geared else ""),
+        ScenarioWarning, stacklevel=4)
 
 
 def _check_channel_kinds(actions: ActionConvention, resolver: _ActuatorResolver) -> None:
@@ -1615,7 +1651,8 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
             raise InputFileError(
                 f"scenario {_not_a_file(path)}: {path} (expected a scenario.toml, a folder with one, "
                 f"or a bundled name: {', '.join(BUNDLED_SCENARIOS)}){hint}")
-        text = path.read_text(encoding="utf-8-sig")  # (a byte-order mark some editors write)
+        data = path.read_bytes()
+        text = data.decode("utf-8-sig")  # (a byte-order mark some editors write)
     except OSError as exc:
         raise InputFileError(f"{path}: cannot read the scenario file ({exc.strerror or exc})"
                              ) from exc
@@ -1626,7 +1663,9 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise ScenarioError(f"{path}: not valid TOML: {exc}") from exc
-    return scenario_from_dict(raw, base=path.parent, path=path)
+    # the manifest names the bytes parsed here, not what the file holds at report time
+    return dataclasses.replace(scenario_from_dict(raw, base=path.parent, path=path),
+                               sha256=hashlib.sha256(data).hexdigest())
 
 
 _TOP = ("name", "description", "model", "object", "grippers", "support", "actions", "task",

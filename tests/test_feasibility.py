@@ -644,6 +644,21 @@ def test_a_joint_held_back_by_its_own_damping_is_named(tmp_path):
     assert problems and not any("own damping" in p for p in problems)
 
 
+def test_a_joint_held_by_its_own_spring_is_named(tmp_path):
+    """A joint stiffness pulling the joint to its springref took the servo's whole force,
+    and the message blamed "the load (gravity, the object)" (twenty-fifth round)."""
+    path = _scene(tmp_path, axis="0 0 1", limit=20.0)
+    arm = path.parent / "arm.xml"
+    arm.write_text(arm.read_text().replace('range="-2 2" damping="1"',
+                                           'range="-2 2" damping="1" stiffness="40"'))
+    twin = Twin(load_scenario(path))
+    rec = _record(twin, _ramp(1.5))
+    with pytest.raises(InfeasibleTwinError, match=r"joint 'hinge'.*likely cause: the joint's "
+                       r"own spring: its stiffness 40 N·m/rad pulls it towards its springref "
+                       r"0 rad with up to [\d.]+ N·m of the 20 N·m the actuator can give"):
+        check_feasibility(rec, twin)
+
+
 def test_a_hands_fingers_on_channels_of_their_own_are_grippers(tmp_path):
     """ADROIT: one channel per finger (the fingers under the ``[grippers]`` body), a finger
     closed on the ball lags its target by design, and the twin was refused as an arm joint
@@ -728,3 +743,15 @@ def test_a_chunk_that_starts_in_the_grip_is_not_told_it_never_touches_its_suppor
                                 start=None, object_pose=None)
     hints = check_fit(chunk, _record(twin, chunk), twin)
     assert not any("never touches its support" in h for h in hints), hints
+
+
+def test_a_contact_on_a_geom_the_mjcf_leaves_unnamed_names_its_body():
+    """critmoment's own name for an unnamed geom is not in the user's file: "the contact
+    critmoment:geom:6–critmoment:geom:8 holds it back" said nothing (an Archer arm)."""
+    import mujoco
+
+    model = mujoco.MjModel.from_xml_string(
+        '<mujoco><worldbody><body name="link_4"><geom name="mesh" size=".1"/>'
+        '<geom name="critmoment:geom:1" size=".1"/></body></worldbody></mujoco>')
+    assert feasibility._geom_name(model, 0) == "mesh"
+    assert feasibility._geom_name(model, 1) == "geom #1 of body 'link_4'"

@@ -52,6 +52,37 @@ def test_force_limit_defaults_from_the_mjcf():
     assert [act_info.force_limit(model, i) for i in range(3)] == [7.0, 3.0, None]
 
 
+def test_force_limit_is_the_tighter_of_forcerange_and_the_joints_actuatorfrcrange():
+    """MuJoCo clamps by both: a joint's actuatorfrcrange 50 under a forcerange 87 holds
+    the joint at 50 N·m, and the motor checks read 87 (a Panda called safe up to 1.23 kg
+    that fails at 1.6 kg on its shoulder; twenty-fifth round). Geared: the joint's range over
+    the gear."""
+    model = mujoco.MjModel.from_xml_string("""
+<mujoco><worldbody><body><joint name="a" type="hinge" actuatorfrcrange="-50 50"/>
+<geom size=".1" mass="1"/><body><joint name="b" type="hinge" actuatorfrcrange="-100 100"/>
+<geom size=".1" mass="1"/></body></body></worldbody><actuator>
+<position joint="a" kp="10" forcerange="-87 87"/>
+<position joint="b" kp="10" gear="50" forcerange="-3 3"/></actuator></mujoco>""")
+    assert act_info.force_limit(model, 0) == 50.0
+    assert act_info.force_limit(model, 1) == pytest.approx(2.0)
+
+
+def test_init_keeps_the_model_path_through_the_users_link(tmp_path):
+    """A linked assets folder beside the scenario: init wrote the path through the resolved
+    link (into a package cache), which breaks when the cache moves (twenty-fifth round)."""
+    real = tmp_path / "cache" / "pkg"
+    real.mkdir(parents=True)
+    _write(real, gripper=GRIPPERS[0], named=True)
+    project = tmp_path / "project"
+    project.mkdir()
+    (project / "assets").symlink_to(real, target_is_directory=True)
+    out = project / "scenario.toml"
+    init_scenario(project / "assets" / "arm.xml", object_body="cube", task="pick_place",
+                  goal_site="goal", out=out)
+    assert 'mjcf = "assets/arm.xml"' in out.read_text()
+    assert load_scenario(out).mjcf.resolve() == (real / "arm.xml").resolve()
+
+
 @pytest.mark.parametrize("named", [True, False], ids=["named", "unnamed"])
 @pytest.mark.parametrize("gripper", GRIPPERS)
 def test_init_writes_a_scenario_that_loads_and_closes_the_gripper(tmp_path, gripper, named):
@@ -1122,3 +1153,23 @@ def test_init_gives_a_motor_finger_its_control_range_bound(tmp_path):
            "force at 5" in result.text
     assert not any("'finger_b_act' has no force limit" in c for c in result.checks)
     assert "force at most 5" in inspect_model(tmp_path / "arm.xml").text()
+
+
+def test_a_gripper_body_moved_whole_by_its_own_actuator_points_at_its_parent():
+    """Koch: ``--gripper link_6`` (the moving jaw) said no actuator below it opens or closes
+    its geoms; joint_6 moves link_6 itself, and the gripper is link_5, which holds both
+    jaws (twenty-fifth round)."""
+    from critmoment.modelinfo import gripper_at
+
+    model = mujoco.MjModel.from_xml_string("""
+<mujoco><worldbody><body name="link_5"><joint name="joint_5"/><geom size=".02"/>
+<geom name="fixed_jaw" type="box" size=".01 .01 .03" pos=".03 0 0"/>
+<body name="link_6" pos="0 .05 0"><joint name="joint_6"/>
+<geom name="jaw_a" type="box" size=".01 .01 .03"/><geom name="jaw_b" type="box"
+size=".01 .01 .03" pos="0 .02 0"/></body></body></worldbody><actuator>
+<position joint="joint_5" kp="10"/><position name="joint_6" joint="joint_6" kp="10"/>
+</actuator></mujoco>""")
+    with pytest.raises(ScenarioError, match=r"--gripper link_6: no actuator below it opens or "
+                       r"closes its geoms .*; joint_6 moves 'link_6' itself as a whole .*"
+                       r"such as its parent 'link_5'"):
+        gripper_at(model, "link_6")

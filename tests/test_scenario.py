@@ -581,6 +581,49 @@ def test_a_force_limit_on_a_hinge_is_a_torque_and_on_a_slide_a_force(tmp_path):
     assert box.parameters[box.index("shoulder")].unit == "N·m"
 
 
+def test_a_joint_actuatorfrcrange_under_the_forcerange_is_the_limit(tmp_path):
+    """A joint's actuatorfrcrange 50 under its actuator's forcerange 87: MuJoCo holds the
+    joint at 50 N·m, and the motor checks read 87 (twenty-fifth round). [limits] of 87
+    above it is warned of, the gear named where the actuator has one."""
+    from critmoment.scenario import ScenarioWarning
+
+    j2 = '<joint name="joint2" axis="0 0 1" range="-1.7628 1.7628"/>'
+    limited = j2.replace('/>', ' actuatorfrcrange="-50 50"/>')
+    folder = _copy(tmp_path / "mjcf", {"panda.xml": [(j2, limited)],
+                                       "scenario.toml": [("joint2 = 87.0\n", "")]},
+                   source=bundled_scenario_path("panda_pick_place").parent)
+    sc = load_scenario(folder)
+    assert sc.limits["joint2"] == 50.0 and sc.limit_sources["joint2"] == "mjcf"
+    folder = _copy(tmp_path / "rated", {"panda.xml": [(j2, limited)]},
+                   source=bundled_scenario_path("panda_pick_place").parent)
+    with pytest.warns(ScenarioWarning, match=r"\[limits\] joint2 = 87 \(actuator 'joint2' "
+                      r"gives at most 50\): above what"):
+        load_scenario(folder)
+    servo = '<position name="joint2" joint="joint2" kp="4500" kv="450" forcerange="-87 87"'
+    geared = ('<position name="joint2" joint="joint2" gear="50" kp="1.8" kv="0.18" '
+              'forcerange="-1.74 1.74"')
+    folder = _copy(tmp_path / "geared", {"panda.xml": [(servo, geared)]},
+                   source=bundled_scenario_path("panda_pick_place").parent)
+    with pytest.warns(ScenarioWarning, match=r"a joint rating R is R / gear there "
+                      r"\('joint2' gear 50: 87 / 50 = 1.74\)"):
+        load_scenario(folder)
+
+
+def test_a_force_limit_on_a_geared_actuator_says_its_unit(tmp_path):
+    """A force_limit on a gear-50 hinge actuator is in the actuator's units: 0.94 of them
+    are 47 N·m at the joint; it printed "≥ 0.94 N·m"."""
+    servo = '<position name="joint2" joint="joint2" kp="4500" kv="450" forcerange="-87 87"'
+    geared = ('<position name="joint2" joint="joint2" gear="50" kp="1.8" kv="0.18" '
+              'forcerange="-1.74 1.74"')
+    folder = _copy(tmp_path, {"panda.xml": [(servo, geared)], "scenario.toml": [
+        ("joint2 = 87.0\n", ""),
+        ("[uncertainty.friction]", '[uncertainty.j2]\nkind = "force_limit"\nactuator = '
+         '"joint2"\nrange = [0.5, 1.74]\nnominal = 1.74\n[uncertainty.friction]')]},
+        source=bundled_scenario_path("panda_pick_place").parent)
+    sc = load_scenario(folder)
+    assert sc.box.parameters[sc.box.index("j2")].unit == "×50 N·m"
+
+
 def test_a_friction_range_beyond_real_materials_is_warned_of(tmp_path):
     from critmoment.scenario import ScenarioWarning, load_scenario
 

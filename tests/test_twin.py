@@ -605,7 +605,12 @@ def test_initial_data_places_arms_and_object(twin):
 def test_initial_data_rejects_bad_shapes(twin):
     with pytest.raises(TrajectoryError, match=r"object_pose \(7,\)"):
         twin.initial_data(object_pose=np.zeros(3))
-    with pytest.raises(TrajectoryError, match=rf"qpos0 of shape \({twin.model.nq},\)"):
+    # the message names the trajectory's qpos0 and where the model's free joints sit (a
+    # tool body added to the model said only "expected qpos0 of shape (23,), got (16,)")
+    with pytest.raises(TrajectoryError, match=rf"the trajectory's qpos0: expected the model's "
+                       rf"full joint positions, shape \({twin.model.nq},\), got \(5,\); the "
+                       rf"model has \d+ joints, {twin.model.nq} coordinates, with free joint "
+                       rf".* at qpos\[\d+:\d+\]"):
         twin.initial_data(qpos0=np.zeros(5))
     with pytest.raises(TrajectoryError, match="expected actions with 14 values"):
         twin.initial_data(start=np.zeros(6))
