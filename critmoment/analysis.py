@@ -169,7 +169,7 @@ class AnalyzeOptions:
         _option_real("confidence", self.confidence, "in (0, 1)", lambda v: 0 < v < 1)
         _option_real("min_success", self.min_success, "in [0, 1]", lambda v: 0 <= v <= 1,
                      none=True)
-        _option_real("verify", self.verify, "a fraction of the threshold in (0, 1]",
+        _option_real("verify", self.verify, "in (0, 1] (a fraction of the threshold)",
                      lambda v: 0 < v <= 1, none=True)
         for name in ("search", "require_task", "verify_unlifted", "exhaustive",
                      "check_feasibility", "chain"):
@@ -294,6 +294,8 @@ class AuditReport:
             return True
         if self.verdict is Verdict.UNSAFE:
             return False
+        _option_real("min_success", min_success, "in [0, 1]", lambda v: 0 <= v <= 1,
+                     none=True)
         threshold = self.options.min_success if min_success is None else min_success
         return threshold is not None and threshold < 1.0 and self.p_success >= threshold
 
@@ -301,7 +303,10 @@ class AuditReport:
         """The ``report.json`` document (schema ``critmoment.report/1``)."""
         from critmoment.report import report_json
 
-        return report_json(self, timings=timings)
+        if not isinstance(timings, (bool, np.bool_)):
+            raise ParameterError(f"timings: expected True or False, got "
+                                 f"{type(timings).__name__} {timings!r}")
+        return report_json(self, timings=bool(timings))
 
 
 # -- stage: critical moments ----------------------------------------------------------
@@ -1394,10 +1399,12 @@ def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory) -> dict:
         "scenario": sc.name,
         # file names and content hashes, not paths: identical inputs, identical manifests
         "scenario_file": input_identity(sc.path)["name"] if sc.path else None,
-        "scenario_sha256": input_identity(sc.path)["sha256"] if sc.path else None,
+        "scenario_sha256": (sc.sha256 if sc.sha256 is not None
+                            else input_identity(sc.path)["sha256"] if sc.path else None),
         "model_sha256": model_hash(sc),
         "trajectory": input_identity(traj.source)["name"],
-        "trajectory_sha256": input_identity(traj.source)["sha256"],
+        "trajectory_sha256": (traj.source_sha256 if traj.source_sha256 is not None
+                              else input_identity(traj.source)["sha256"]),
         "seed": opt.seed,
         "options": dataclasses.asdict(opt),
         "task": sc.task.to_json(),

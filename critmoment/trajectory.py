@@ -294,6 +294,9 @@ class Trajectory:
     #: ``[actions] fps`` replaces it, :meth:`with_rate_from`)
     fps_assumed: bool = field(default=False, compare=False)
     qvel0: np.ndarray | None = None
+    #: the SHA-256 of the file's bytes as read (:func:`load_trajectory`), for the report's
+    #: manifest; None for a trajectory built in code or read from a dataset folder
+    source_sha256: str | None = field(default=None, compare=False)
 
     def with_rate_from(self, fps: float | None) -> Trajectory:
         """This trajectory at ``fps`` (a scenario's ``[actions] fps``) where its file
@@ -443,6 +446,8 @@ class Trajectory:
         if not isinstance(other, Trajectory):
             return NotImplemented
         for f in fields(self):
+            if not f.compare:
+                continue
             a, b = getattr(self, f.name), getattr(other, f.name)
             if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
                 if a is None or b is None or not np.array_equal(a, b):
@@ -517,7 +522,16 @@ def load_trajectory(
         ResourceLimitError: the file declares more data than the budget allows.
     """
     pose = None if object_pose is None else as_object_pose(object_pose)
+    before = input_identity(path)["sha256"] if isinstance(path, (str, os.PathLike)) else None
     traj = _load_any(path, fps=fps, episode=episode)
+    if before is not None:
+        # the manifest names the bytes the audit read, not what the file holds at report
+        # time: a file rewritten while it was read (a policy loop writing its next chunk)
+        # is an error, not a trajectory of two versions
+        if input_identity(path)["sha256"] != before:
+            raise InputFileError(f"trajectory file {str(path)!r} changed while it was read; "
+                                 f"expected a file that stays the same while it is loaded")
+        traj = replace(traj, source_sha256=before)
     if pose is not None:
         return replace(traj, object_pose=pose)
     if traj.object_pose is None and traj.qpos0 is None:

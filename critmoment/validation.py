@@ -444,6 +444,9 @@ class ValidationResult:
         Args:
             timings: include the wall times (off for byte-comparable documents).
         """
+        if not isinstance(timings, (bool, np.bool_)):
+            raise ParameterError(f"timings: expected True or False, got "
+                                 f"{type(timings).__name__} {timings!r}")
         doc = {
             "schema": VALIDATION_SCHEMA,
             "trajectory": self.trajectory,

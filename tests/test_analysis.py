@@ -91,6 +91,12 @@ def test_mass_narrowed_alone_stays_conditional_at_low_friction(twin, demo_traj, 
     assert not r.passes(1.0)
     assert not dataclasses.replace(r, p_success=1.0).passes(1.0)
     assert dataclasses.replace(r, p_success=1.0).passes(0.99)
+    # a gate that is no probability is an error, not a silent False (or a raw TypeError)
+    for bad in ("0.5", 2, -0.1, float("nan")):
+        with pytest.raises(ParameterError, match=r"min_success: expected a number in \[0, 1\]"):
+            r.passes(bad)
+    with pytest.raises(ParameterError, match=r"timings: expected True or False, got str"):
+        r.to_json(timings="no")
 
 
 def test_nominal_beyond_the_critical_mass_is_unsafe(demo_traj, scenario):
@@ -574,3 +580,28 @@ def test_the_nominal_runs_own_motor_failure_is_named(twin, demo_recording):
                            f"more than the nominal run's lag + 0.1 rad for over 50 ms from "
                            f"t = 1.34 s")
     assert text.endswith("nor is the task completed)")
+
+
+def test_the_manifest_names_the_bytes_read_not_the_file_at_report_time(tmp_path, demo_traj):
+    """A scenario or trajectory file rewritten while the audit runs: the manifest hashed
+    the file at report time and named bytes the audit never read (twenty-fifth round)."""
+    import hashlib
+    import shutil
+
+    from critmoment.analysis import AnalyzeOptions, _manifest
+    from critmoment.scenario import bundled_scenario_path, load_scenario
+    from critmoment.trajectory import load_trajectory, save_trajectory
+
+    folder = tmp_path / "scn"
+    shutil.copytree(bundled_scenario_path("aloha_transfer_cube").parent, folder)
+    toml = folder / "scenario.toml"
+    read = hashlib.sha256(toml.read_bytes()).hexdigest()
+    sc = load_scenario(folder)
+    save_trajectory(demo_traj, tmp_path / "t.npz")
+    traj_read = hashlib.sha256((tmp_path / "t.npz").read_bytes()).hexdigest()
+    traj = load_trajectory(tmp_path / "t.npz")
+    toml.write_text(toml.read_text() + "\n# edited after loading\n")
+    (tmp_path / "t.npz").write_bytes(b"rewritten")
+    man = _manifest(sc, AnalyzeOptions(), traj)
+    assert man["scenario_sha256"] == read
+    assert man["trajectory_sha256"] == traj_read

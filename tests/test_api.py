@@ -88,7 +88,7 @@ def test_a_twin_or_a_wrong_type_in_the_scenario_position(twin, demo_traj):
     (dict(critical_grid=5.5), r"critical_grid: expected an integer >= 5"),
     (dict(map_resolution=float("nan")), r"map_resolution: expected an integer >= 0"),
     (dict(confidence="0.9"), r"confidence: expected a number in \(0, 1\), got str '0.9'"),
-    (dict(verify="0.5"), r"verify: expected a number a fraction of the threshold in \(0, 1\] "
+    (dict(verify="0.5"), r"verify: expected a number in \(0, 1\] \(a fraction of the threshold\) "
                          r"or None, got str '0.5'"),
     (dict(verify=float("nan")), r"verify: expected a number"),
     (dict(search_trials="x"), r"search_trials: expected an integer >= 1, got str 'x'"),
