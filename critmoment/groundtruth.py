@@ -97,6 +97,9 @@ class Outcome(enum.Enum):
     SLIPPED = "slipped"
     NOT_COMPLETED = "not_completed"
 
+    def __str__(self) -> str:  # print(outcome) says dropped
+        return self.value
+
 
 #: precedence of the failure outcomes: the first that applies names the sample's outcome
 _PRECEDENCE = (Outcome.DIVERGED, Outcome.MOTOR, Outcome.DROPPED, Outcome.SLIPPED,

@@ -136,6 +136,9 @@ class MomentLabel(enum.Enum):
     CHANGE_POINT = "change-point"
     """Abrupt change of the safety signals without a contact event."""
 
+    def __str__(self) -> str:  # print(moment.label) says lift-off
+        return self.value
+
 
 _PRIORITY = {label: rank for rank, label in enumerate(MomentLabel)}
 

@@ -84,6 +84,9 @@ class Verdict(enum.Enum):
     CONDITIONAL = "CONDITIONAL"  #: fails somewhere in the box; safe in a stated sub-box
     UNSAFE = "UNSAFE"            #: fails at the nominal parameters
 
+    def __str__(self) -> str:  # print(report.verdict) says CONDITIONAL, not Verdict.CONDITIONAL
+        return self.value
+
 
 @dataclasses.dataclass(frozen=True)
 class DecisionOptions:

@@ -210,3 +210,15 @@ def test_a_range_with_units_in_it_says_plain_numbers(tmp_path):
                                             r"two plain numbers in the parameter's unit \(kg; no "
                                             r"unit text\)"):
         load_scenario(folder)
+
+
+def test_the_public_enums_print_as_their_values():
+    """README's ``print(report.verdict, ...)`` printed ``Verdict.CONDITIONAL`` and the
+    tutorial's moments ``MomentLabel.CHANGE_POINT`` (twenty-fifth round)."""
+    from critmoment.groundtruth import Outcome
+    from critmoment.moments import MomentLabel
+    from critmoment.verdict import Verdict
+
+    assert str(Verdict.CONDITIONAL) == "CONDITIONAL" and f"{Verdict.SAFE}" == "SAFE"
+    assert str(MomentLabel.CHANGE_POINT) == "change-point"
+    assert f"{Outcome.DROPPED}" == "dropped"
