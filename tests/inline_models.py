@@ -144,3 +144,26 @@ range = [0.05, 1.0]
 nominal = 0.1
 {extra}
 """
+
+
+#: a one-hinge arm with a pad and a free box out of its reach (a 300 kp servo, ±5 N·m)
+SWING_MJCF = """
+<mujoco model="swing">
+  <option timestep="0.002" gravity="0 0 -9.81"/>
+  <worldbody>
+    <geom name="table" type="plane" size="2 2 0.1"/>
+    <body name="arm" pos="0 0 0.8">
+      <joint name="hinge" type="hinge" axis="0 1 0"/>
+      <geom name="link" type="capsule" fromto="0 0 0 0.3 0 0" size="0.02" mass="1"/>
+      <geom name="pad" type="box" pos="0.3 0 0" size="0.01 0.02 0.02" mass="0.05"/>
+    </body>
+    <body name="box" pos="1.2 0 0.02">
+      <freejoint/>
+      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.05" priority="1"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <position name="hinge" joint="hinge" kp="300" forcerange="-5 5"/>
+  </actuator>
+</mujoco>
+"""

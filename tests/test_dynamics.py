@@ -8,6 +8,7 @@ import mujoco
 import numpy as np
 import pinocchio as pin
 import pytest
+from inline_models import SWING_MJCF
 
 from critmoment import dynamics as dyn
 from critmoment.exceptions import ParameterError, ScenarioError, TrajectoryError
@@ -654,26 +655,6 @@ def test_scene_payload_regressor_loads_only_the_holding_arm():
 
 #: a 0.3 m, 1 kg hinge arm about y with a stiff, force-limited position servo (±5 N·m), a
 #: pad at its tip, and a box resting on the table far from it: the arm never touches it
-SWING_MJCF = """
-<mujoco model="swing">
-  <option timestep="0.002" gravity="0 0 -9.81"/>
-  <worldbody>
-    <geom name="table" type="plane" size="2 2 0.1"/>
-    <body name="arm" pos="0 0 0.8">
-      <joint name="hinge" type="hinge" axis="0 1 0"/>
-      <geom name="link" type="capsule" fromto="0 0 0 0.3 0 0" size="0.02" mass="1"/>
-      <geom name="pad" type="box" pos="0.3 0 0" size="0.01 0.02 0.02" mass="0.05"/>
-    </body>
-    <body name="box" pos="1.2 0 0.02">
-      <freejoint/>
-      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.05" priority="1"/>
-    </body>
-  </worldbody>
-  <actuator>
-    <position name="hinge" joint="hinge" kp="300" forcerange="-5 5"/>
-  </actuator>
-</mujoco>
-"""
 
 
 def _swing_twin(folder, xml: str = SWING_MJCF, *, uncertainty: str = "", rated: bool = True):

@@ -190,32 +190,13 @@ def test_tracking_tolerances_give_a_slide_axis_its_own_unit():
         OutcomeCriteria(tracking_tolerance_slide=0.0)
 
 
-GEARED_SWING = """
-<mujoco model="swing">
-  <option timestep="0.002" gravity="0 0 -9.81"/>
-  <worldbody>
-    <geom name="table" type="plane" size="2 2 0.1"/>
-    <body name="arm" pos="0 0 0.8">
-      <joint name="hinge" type="hinge" axis="0 1 0"/>
-      <geom name="link" type="capsule" fromto="0 0 0 0.3 0 0" size="0.02" mass="1"/>
-      <geom name="pad" type="box" pos="0.3 0 0" size="0.01 0.02 0.02" mass="0.05"/>
-    </body>
-    <body name="box" pos="1.2 0 0.02">
-      <freejoint/>
-      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.05" priority="1"/>
-    </body>
-  </worldbody>
-  <actuator>
-    <position name="hinge" joint="hinge" GEAR/>
-  </actuator>
-</mujoco>
-"""
 
 
 def _geared_swing(folder, gear: float):
     """The swing arm driven by a position servo geared ``gear``:1 whose joint-side physics
     is the same for every gear (kp/gear², forcerange/gear, the channel scaled by the gear),
     its link's mass uncertain (a heavier arm sags and lags more)."""
+    from inline_models import SWING_MJCF
     from scenarios import one_actuator_toml
 
     from critmoment.scenario import load_scenario
@@ -224,7 +205,8 @@ def _geared_swing(folder, gear: float):
     folder.mkdir()
     servo = (f'gear="{gear:g}" kp="{300.0 / gear ** 2:.12g}" '
              f'forcerange="{-20.0 / gear:.12g} {20.0 / gear:.12g}"')
-    (folder / "scene.xml").write_text(GEARED_SWING.replace("GEAR", servo))
+    (folder / "scene.xml").write_text(SWING_MJCF.replace(
+        'kp="300" forcerange="-5 5"', servo))
     text = one_actuator_toml(
         "swing", mjcf="scene.xml", gripper="hand", gripper_geom="pad", support="table",
         actuator="hinge", limit=20.0 / gear, task=True, uncertainty="""[uncertainty.arm]
