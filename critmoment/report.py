@@ -720,8 +720,9 @@ class StagedOutput:
             self._tmpdir = Path(tempfile.mkdtemp(
                 prefix=f".{self.destination.name[:80]}.critmoment-tmp-", dir=anchor))
         except OSError as exc:
-            raise OutputError(f"{self.option} {_short(self._raw)!r}: cannot write in "
-                              f"{_short(anchor)!r}: {exc.strerror or exc}") from None
+            raise OutputError(f"{self.option} {_short(self._raw)!r}: cannot create files in "
+                              f"{_short(anchor)!r} ({exc.strerror or exc}); expected a "
+                              f"folder on a writable file system") from None
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(self._tmpdir, 0o777 & ~umask)  # mkdtemp's 0700 would outlive the rename

@@ -8,6 +8,7 @@ import os
 import re
 import threading
 import warnings
+from pathlib import Path
 
 import pytest
 
@@ -132,6 +133,15 @@ def test_bad_destinations_are_refused_before_work(tmp_path, setup, match):
     with pytest.raises(OutputError, match=match):
         StagedOutput(dest, command="test")
     assert _files(tmp_path) == before
+
+
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux's /proc")
+def test_a_folder_where_no_file_can_be_created_says_so():
+    """/proc takes no new files: the message said only "No such file or directory"."""
+    with pytest.raises(OutputError, match=r"cannot create files in '/proc' \(.*\); expected "
+                                          r"a folder on a writable file system"):
+        with StagedOutput("/proc/critmoment-report", command="analyze"):
+            pass
 
 
 def test_a_file_destination_and_a_folder_in_its_place(tmp_path):
