@@ -241,3 +241,27 @@ def test_a_geared_servo_is_tracked_in_joint_units(tmp_path):
     assert (direct.classification.motor_step < 0).all()
     np.testing.assert_array_equal(direct.classification.motor_step,
                                   geared.classification.motor_step)
+
+
+def test_a_chain_watches_a_geared_servo_in_joint_units(tmp_path):
+    """The chained segments' tracking rule, as the ground truth's: the geared swing arm's
+    chains fail where the direct one's do, no earlier (gear × the joint's lag was compared
+    with the tolerance)."""
+    from critmoment.analysis import audit_evaluator
+    from critmoment.history import chained_failures
+    from critmoment.recording import rollout
+    from critmoment.trajectory import Trajectory
+
+    fps = 50.0
+    t = np.arange(30) / fps
+    traj = Trajectory(actions=np.clip(0.15 - t, -0.45, 0.0)[:, None] * 1.2, fps=fps,
+                      start=np.zeros(1))
+    samples = np.array([[1.0], [1.8], [2.5]])
+    steps = {}
+    for gear in (1.0, 50.0):
+        twin = _geared_swing(tmp_path / f"c{gear:g}", gear)
+        evaluator, _ = audit_evaluator(rollout(traj, twin=twin), twin)
+        chained = chained_failures(evaluator, [100], samples)
+        steps[gear] = chained.motor_step
+    assert (steps[1.0] < 0).all()
+    np.testing.assert_array_equal(steps[1.0], steps[50.0])
