@@ -720,7 +720,7 @@ class StagedOutput:
             self._tmpdir = Path(tempfile.mkdtemp(
                 prefix=f".{self.destination.name[:80]}.critmoment-tmp-", dir=anchor))
         except OSError as exc:
-            raise OutputError(f"{self.option} {_short(self._raw)!r}: cannot create files in "
+            raise OutputError(f"{self.option} {_short(self._raw)!r}: cannot write in "
                               f"{_short(anchor)!r} ({exc.strerror or exc}); expected a "
                               f"folder on a writable file system") from None
         umask = os.umask(0)

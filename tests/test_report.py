@@ -138,7 +138,7 @@ def test_bad_destinations_are_refused_before_work(tmp_path, setup, match):
 @pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="needs Linux's /proc")
 def test_a_folder_where_no_file_can_be_created_says_so():
     """/proc takes no new files: the message said only "No such file or directory"."""
-    with pytest.raises(OutputError, match=r"cannot create files in '/proc' \(.*\); expected "
+    with pytest.raises(OutputError, match=r"cannot write in '/proc' \(.*\); expected "
                                           r"a folder on a writable file system"):
         with StagedOutput("/proc/critmoment-report", command="analyze"):
             pass
