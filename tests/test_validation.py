@@ -376,6 +376,31 @@ def test_predict_decides_as_the_audit_does(twin, demo_traj, scenario):
     np.testing.assert_array_equal(q.failed, plain.failed)
 
 
+def test_a_grip_that_creeps_too_slowly_to_call_is_left_to_the_own_runs():
+    """The bundled Panda carries the cube to its goal and holds it there for a second (a
+    pick-and-hold, the run does not place it). Restored with 1-1.9 kg, the grip sits on the
+    friction cone and creeps 5-9 µm per 20 ms, a pace that varies as the arm slows: the
+    settle follow-up read that as a slide, and two samples that hold the cube to the end
+    (moving under 2.1 mm in all) were called failing (agreement 0.938; an independent
+    plain-MuJoCo classifier agreed they succeed). A creep under the slip floor over the
+    whole follow-up is now for the sample's own run."""
+    import critmoment as cm
+    from critmoment import panda_demo
+    from critmoment.task import PickHoldTask
+
+    scenario = cm.load_scenario("panda_pick_place")
+    hold = PickHoldTask(grippers=scenario.task.grippers, gripper="hand")
+    twin = cm.Twin(scenario.replace(task=hold))
+    full = panda_demo.make_pick_place(0)
+    actions = np.concatenate([full.actions[:310], np.repeat(full.actions[309:310], 50, axis=0)])
+    traj = dataclasses.replace(full, actions=actions)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        check = cm.validate(traj, twin=twin, n_samples=32, seed=0)
+    assert check.confusion == {"true_safe": 19, "false_safe": 0, "true_unsafe": 13,
+                               "false_unsafe": 0}
+
+
 def test_a_run_cut_mid_carry_leaves_its_last_moments_to_the_own_runs():
     """A pick-and-hold run of the bundled Panda cut at transport height (320 of its 50 Hz
     frames): its last moment sits within a horizon of the recording's end, where a grip
