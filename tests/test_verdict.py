@@ -679,3 +679,29 @@ def test_a_moment_whose_failures_the_own_runs_overturn_is_no_cause():
     assert vd._causes([base], THRESHOLD)  # a worst case over the threshold: a cause
     overturned = dataclasses.replace(base, overturned=True)
     assert vd._causes([overturned], THRESHOLD) == []
+
+
+def test_a_face_cut_keeps_the_nominal_inside_where_another_cut_clears_the_failure():
+    """A failure where the CoM offset reaches its end, beside the nominal grip force: the
+    greedy cut took the larger volume, through the grip's face (grip ≤ 34.7 N of a rated and
+    nominal 35 N), and the region excluded the nominal (twenty-sixth round). A cut through
+    the CoM's face clears it as well and keeps the nominal."""
+    from critmoment.params import ComOffsetParameter, ForceLimitParameter
+
+    box = UncertaintyBox((ComOffsetParameter("com", "box", -0.02, 0.02, 0.0),
+                          ForceLimitParameter("grip", "finger", 5.0, 35.0, 35.0)))
+    failing = box.from_unit(np.array([[0.9975, 0.9967]]))
+    passing = box.from_unit(np.array([[0.9, 0.5], [0.5, 0.95]]))
+    cut = vd._any_face_cut(box.low, box.high, failing, box, 0.01, passing)
+    assert cut["grip"] == (5.0, 35.0)
+    assert cut["com"][0] == -0.02 and 0.0 < cut["com"][1] < 0.0199
+
+
+def test_a_log_uniform_regions_ends_are_the_boxs_own():
+    """A log-uniform prior's round trip through its quantiles gave a region of mass ≥
+    0.05000000000000001 for a box from 0.05: the box's own end tested as outside it."""
+    box = UncertaintyBox((MassParameter("mass", "box", 0.05, 2.0, 0.1, prior="loguniform"),
+                          FrictionParameter("friction", "box", 0.2, 1.5, 1.0)))
+    region = {"mass": (0.05000000000000001, 0.217), "friction": (0.28, 1.4999999999999996)}
+    out = vd.round_inward(region, box)
+    assert out == {"mass": (0.05, 0.217), "friction": (0.28, 1.5)}
