@@ -859,8 +859,98 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
             out.append(f"the nominal run touches the object but never lifts it: too heavy or "
                        f"slippery at the nominal parameters, a grasp that does not close on "
                        f"it, or a wrong object pose (--object-pose{default})?")
+    if not recording.completed:
+        out += _clutter(twin, recording)
     if strict and out:
         raise TrajectoryError(out[0])
+    return out
+
+
+#: physics steps between the nominal states scanned for contacts with the scene's other
+#: bodies (a contact lasting a few ms is seen)
+CLUTTER_STRIDE = 5
+#: rise [m] of another free body held by a gripper that counts as lifting it
+CLUTTER_LIFT = 0.01
+
+
+def _clutter(twin: Twin, recording: Recording) -> list[str]:
+    """What else in the scene a nominal run that fails its task touches: the object's
+    contacts with other free bodies and with fixed geoms that are not its supports, and
+    other free bodies the grippers lift (a cube stacked on the object, a neighbour a pad
+    lands on). The audit's causes speak of the object's mass and friction; these name the
+    scene's part in the failure. Contacts with the robot itself are the feasibility
+    check's (``blocked_by``)."""
+    model = twin.model
+    sc = twin.scenario
+    grip = {model.geom(g).id for gr in sc.grippers for g in gr.geoms}
+    support = {model.geom(g).id for g in sc.support_geoms}
+    obj = twin.object_body_id
+
+    def owner(body: int) -> tuple[str, int]:
+        # ("free", root) for a body that moves freely (a free joint above it), ("fixed", 0)
+        # for one welded to the world, ("robot", -1) for one on a jointed chain
+        b = body
+        while b > 0:
+            first, num = model.body_jntadr[b], model.body_jntnum[b]
+            if num:
+                free = any(model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE
+                           for j in range(first, first + num))
+                return ("free", b) if free else ("robot", -1)
+            b = int(model.body_parentid[b])
+        return ("fixed", 0)
+
+    others = [b for b in range(1, model.nbody) if b != obj and owner(b) == ("free", b)
+              and model.body_jntnum[b]]
+    adr = {b: int(model.jnt_qposadr[model.body_jntadr[b]]) for b in others}
+    up = np.asarray(sc.task.up, dtype=float)
+    states = recording.states
+    steps = np.arange(0, states.shape[0], CLUTTER_STRIDE)
+    data = mujoco.MjData(model)
+    touched: dict[str, float] = {}  # what the object touched -> first time [s]
+    lifted: dict[str, float] = {}   # other free body -> its highest rise while gripped
+    start = {b: float(twin.qpos(states[:1])[0, adr[b]:adr[b] + 3] @ up) for b in others}
+    dt = float(model.opt.timestep)
+    for k in steps:
+        twin.set_state(model, data, states[k])
+        mujoco.mj_forward(model, data)
+        n = data.ncon
+        if not n:
+            continue
+        geoms = np.asarray(data.contact.geom).reshape(-1, 2)[:n]
+        gripped = set()
+        for g1, g2 in geoms:
+            for g, h in ((int(g1), int(g2)), (int(g2), int(g1))):
+                bg, bh = int(model.geom_bodyid[g]), int(model.geom_bodyid[h])
+                if bg == obj and bh != obj and h not in grip and h not in support:
+                    kind, root = owner(bh)
+                    if kind == "free":
+                        name = f"free body {model.body(root).name or root!r}"
+                    elif kind == "fixed":
+                        name = f"fixed geom {_geom_name(model, h)!r}"
+                    else:
+                        continue
+                    touched.setdefault(name, k * dt)
+                if g in grip and owner(bh)[0] == "free" and owner(bh)[1] != obj:
+                    gripped.add(owner(bh)[1])
+        for b in gripped & set(others):
+            rise = float(data.qpos[adr[b]:adr[b] + 3] @ up) - start[b]
+            if rise > CLUTTER_LIFT:
+                key = repr(model.body(b).name or f"body {b}")
+                lifted[key] = max(lifted.get(key, 0.0), rise)
+    out = []
+    if touched:
+        listed = ", ".join(f"{name} from t = {t:.2f} s" for name, t in
+                           sorted(touched.items(), key=lambda item: item[1])[:4])
+        out.append(f"the object touches {listed} in the nominal run, which does not complete "
+                   f"the task: something in the object's way or under it (clutter, an "
+                   f"obstacle, a geom missing from [support])? The failure causes speak of "
+                   f"the object's mass and friction; the scene may be the cause")
+    if lifted:
+        listed = ", ".join(f"{name} ({rise * 100:.3g} cm)" for name, rise in lifted.items())
+        out.append(f"the grippers lift {listed}, another free body than the object "
+                   f"{model.body(obj).name!r}, in the nominal run, which does not complete "
+                   f"the task: does the grasp close on the wrong object (one stacked on it, "
+                   f"a neighbour)?")
     return out
 
 

@@ -11,6 +11,7 @@ Small scenes are written inline (MJCF + scenario.toml in tmp folders):
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import re
 import warnings
@@ -755,3 +756,46 @@ def test_a_contact_on_a_geom_the_mjcf_leaves_unnamed_names_its_body():
         '<geom name="critmoment:geom:1" size=".1"/></body></worldbody></mujoco>')
     assert feasibility._geom_name(model, 0) == "mesh"
     assert feasibility._geom_name(model, 1) == "geom #1 of body 'link_4'"
+
+
+def test_a_failing_run_names_the_clutter_it_touches_and_lifts(tmp_path):
+    """A second cube stacked on the object: the grasp closes on it and carries it to the
+    goal, the object stays behind. The warnings spoke of the object being too heavy or
+    slippery; they now name the other free body the object touches and the grippers lift
+    (twenty-sixth round)."""
+    import shutil
+
+    from critmoment import panda_demo
+    from critmoment.recording import rollout
+    from critmoment.scenario import bundled_scenario_path
+
+    folder = tmp_path / "stacked"
+    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
+    # the demo's qpos0 is the bundled model's: the start and object pose say the same
+    traj = dataclasses.replace(panda_demo.make_pick_place(0), qpos0=None, qvel0=None)
+    x, y = (float(v) for v in traj.object_pose[:2])
+    scene = (folder / "scene.xml").read_text()
+    tail = "0.5 -0.15 0.02 1 0 0 0"
+    assert scene.count(tail) == 1 and scene.count("  </worldbody>") == 1
+    scene = scene.replace("  </worldbody>", f"""    <body name="d1" pos="{x} {y} 0.06">
+      <freejoint/>
+      <geom name="d1" type="box" size="0.02 0.02 0.02" mass="0.1"/>
+    </body>
+  </worldbody>""").replace(tail, f"{tail} {x} {y} 0.06 1 0 0 0")
+    (folder / "scene.xml").write_text(scene)
+    twin = Twin(load_scenario(folder))
+    rec = _record(twin, traj)
+    assert not rec.completed
+    found = feasibility.check_fit(traj, rec, twin)
+    assert any(w.startswith("the object touches free body 'd1' from t = 0.00 s") for w in found)
+    assert any(re.match(r"the grippers lift 'd1' \([\d.]+ cm\), another free body than the "
+                        r"object 'cube'", w) for w in found)
+    # the same cube beside the object, never in the way: the run completes, nothing said
+    beside = scene.replace(f'<body name="d1" pos="{x} {y} 0.06">',
+                           f'<body name="d1" pos="{x + 0.15} {y} 0.02">').replace(
+        f"{tail} {x} {y} 0.06 1 0 0 0", f"{tail} {x + 0.15} {y} 0.02 1 0 0 0")
+    (folder / "scene.xml").write_text(beside)
+    twin = Twin(load_scenario(folder))
+    rec = rollout(traj, twin=twin)
+    assert rec.completed
+    assert not [w for w in feasibility.check_fit(traj, rec, twin) if "free body" in w]
