@@ -830,6 +830,12 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
         out.append(f"the object starts {depth * 1e3:.3g} mm inside {other}: the model pushes "
                    f"it out at once (which reads as a lift-off); is the object pose right "
                    f"(--object-pose{default})?")
+    unlisted = _unlisted_supports(twin, recording.states[0])
+    if unlisted:
+        out.append(f"the object starts resting on {', '.join(repr(g) for g in unlisted)}, "
+                   f"fixed geom(s) not in [support]: its lift-off from them is not seen as "
+                   f"one, nor a drop back onto them; add them to [support] geoms (or their "
+                   f"body to [support] bodies) if the object rests there")
     # a chunk that starts mid-carry (the object in a grip from the first step) need never
     # touch its support: a hand-over ends in the receiver's grip
     held_at_start = bool(np.asarray(sig.contact_gripper, bool)[:1].any())
@@ -952,6 +958,31 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
                    f"the task: does the grasp close on the wrong object (one stacked on it, "
                    f"a neighbour)?")
     return out
+
+
+def _unlisted_supports(twin: Twin, state: np.ndarray) -> list[str]:
+    """The fixed geoms (on no moving body) the object touches at ``state`` that are
+    neither [support] geoms nor a gripper's: a pedestal's top left out of the list."""
+    model = twin.model
+    data = mujoco.MjData(model)
+    twin.set_state(model, data, state)
+    mujoco.mj_forward(model, data)
+    sc = twin.scenario
+    known = ({model.geom(g).id for g in sc.support_geoms}
+             | {model.geom(g).id for gr in sc.grippers for g in gr.geoms})
+    obj = twin.object_body_id
+    found = []
+    for g1, g2 in np.asarray(data.contact.geom).reshape(-1, 2)[:data.ncon]:
+        for g, h in ((int(g1), int(g2)), (int(g2), int(g1))):
+            if model.geom_bodyid[g] != obj or h in known or model.geom_bodyid[h] == obj:
+                continue
+            body = int(model.geom_bodyid[h])
+            while body > 0 and not model.body_jntnum[body]:
+                body = int(model.body_parentid[body])
+            name = _geom_name(model, h)
+            if body == 0 and name not in found:  # welded to the world all the way up
+                found.append(name)
+    return found
 
 
 def _start_penetration(twin: Twin, state: np.ndarray) -> tuple[float, str]:

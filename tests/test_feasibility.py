@@ -799,3 +799,29 @@ def test_a_failing_run_names_the_clutter_it_touches_and_lifts(tmp_path):
     rec = rollout(traj, twin=twin)
     assert rec.completed
     assert not [w for w in feasibility.check_fit(traj, rec, twin) if "free body" in w]
+
+
+def test_an_object_resting_on_an_unlisted_fixed_geom_is_named(tmp_path):
+    """A cube on a pedestal whose top geom was left out of [support]: no warning, and its
+    lift-off from it was no lift-off moment (twenty-sixth round). The table here: the
+    scenario lists only a floor far below."""
+    import shutil
+
+    from critmoment import panda_demo
+    from critmoment.scenario import bundled_scenario_path
+
+    folder = tmp_path / "unlisted"
+    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
+    scene = (folder / "scene.xml").read_text()
+    scene = scene.replace("  <worldbody>\n", '  <worldbody>\n    <geom name="floor" '
+                                             'type="plane" size="3 3 0.1" pos="0 0 -0.8"/>\n', 1)
+    (folder / "scene.xml").write_text(scene)
+    toml = (folder / "scenario.toml").read_text()
+    assert toml.count('[support]\ngeoms = ["table"]') == 1
+    (folder / "scenario.toml").write_text(toml.replace('[support]\ngeoms = ["table"]',
+                                                       '[support]\ngeoms = ["floor"]'))
+    twin = Twin(load_scenario(folder))
+    traj = panda_demo.make_pick_place(0)
+    found = feasibility.check_fit(traj, _record(twin, traj), twin)
+    assert any(w.startswith("the object starts resting on 'table', fixed geom(s) not in "
+                            "[support]") for w in found)
