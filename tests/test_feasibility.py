@@ -626,14 +626,21 @@ def test_check_feasibility_takes_the_scenarios_tolerances(twin, demo_recording):
         dataclasses.asdict(FeasibilityOptions())
 
 
+def _turned_joint(tmp_path, joint_attrs: str):
+    """(twin, recording) of the vertical-axis arm (20 N·m) whose hinge has
+    ``joint_attrs`` instead of its damping 1, turned 1.5 rad."""
+    path = _scene(tmp_path, axis="0 0 1", limit=20.0)
+    arm = path.parent / "arm.xml"
+    arm.write_text(arm.read_text().replace('range="-2 2" damping="1"',
+                                           f'range="-2 2" {joint_attrs}'))
+    twin = Twin(load_scenario(path))
+    return twin, _record(twin, _ramp(1.5))
+
+
 def test_a_joint_held_back_by_its_own_damping_is_named(tmp_path):
     """franka_sim's Panda wrist (joint damping 10, 12 N·m) turned 1 rad in 1.5 s saturated,
     and the message said "too weak for the load" (gravity there: 0.1 N·m)."""
-    path = _scene(tmp_path, axis="0 0 1", limit=20.0)
-    arm = path.parent / "arm.xml"
-    arm.write_text(arm.read_text().replace('range="-2 2" damping="1"', 'range="-2 2" damping="40"'))
-    twin = Twin(load_scenario(path))
-    rec = _record(twin, _ramp(1.5))
+    twin, rec = _turned_joint(tmp_path, 'damping="40"')
     with pytest.raises(InfeasibleTwinError, match=r"joint 'hinge'.*likely cause: the joint's "
                        r"own damping: moving at up to [\d.]+ rad/s, its damping 40 takes "
                        r"[\d.]+ N·m of the 20 N·m the actuator can give"):
@@ -648,12 +655,7 @@ def test_a_joint_held_back_by_its_own_damping_is_named(tmp_path):
 def test_a_joint_held_by_its_own_spring_is_named(tmp_path):
     """A joint stiffness pulling the joint to its springref took the servo's whole force,
     and the message blamed "the load (gravity, the object)" (twenty-fifth round)."""
-    path = _scene(tmp_path, axis="0 0 1", limit=20.0)
-    arm = path.parent / "arm.xml"
-    arm.write_text(arm.read_text().replace('range="-2 2" damping="1"',
-                                           'range="-2 2" damping="1" stiffness="40"'))
-    twin = Twin(load_scenario(path))
-    rec = _record(twin, _ramp(1.5))
+    twin, rec = _turned_joint(tmp_path, 'damping="1" stiffness="40"')
     with pytest.raises(InfeasibleTwinError, match=r"joint 'hinge'.*likely cause: the joint's "
                        r"own spring: its stiffness 40 N·m/rad pulls it towards its springref "
                        r"0 rad with up to [\d.]+ N·m of the 20 N·m the actuator can give"):
