@@ -891,22 +891,8 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
     grip = {model.geom(g).id for gr in sc.grippers for g in gr.geoms}
     support = {model.geom(g).id for g in sc.support_geoms}
     obj = twin.object_body_id
-
-    def owner(body: int) -> tuple[str, int]:
-        # ("free", root) for a body that moves freely (a free joint above it), ("fixed", 0)
-        # for one welded to the world, ("robot", -1) for one on a jointed chain
-        b = body
-        while b > 0:
-            first, num = model.body_jntadr[b], model.body_jntnum[b]
-            if num:
-                free = any(model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE
-                           for j in range(first, first + num))
-                return ("free", b) if free else ("robot", -1)
-            b = int(model.body_parentid[b])
-        return ("fixed", 0)
-
-    others = [b for b in range(1, model.nbody) if b != obj and owner(b) == ("free", b)
-              and model.body_jntnum[b]]
+    owner = _body_owners(model)
+    others = [b for b in range(1, model.nbody) if b != obj and owner[b] == ("free", b)]
     adr = {b: int(model.jnt_qposadr[model.body_jntadr[b]]) for b in others}
     up = np.asarray(sc.task.up, dtype=float)
     states = recording.states
@@ -928,7 +914,7 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
             for g, h in ((int(g1), int(g2)), (int(g2), int(g1))):
                 bg, bh = int(model.geom_bodyid[g]), int(model.geom_bodyid[h])
                 if bg == obj and bh != obj and h not in grip and h not in support:
-                    kind, root = owner(bh)
+                    kind, root = owner[bh]
                     if kind == "free":
                         name = f"free body {model.body(root).name or root!r}"
                     elif kind == "fixed":
@@ -936,8 +922,8 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
                     else:
                         continue
                     touched.setdefault(name, k * dt)
-                if g in grip and owner(bh)[0] == "free" and owner(bh)[1] != obj:
-                    gripped.add(owner(bh)[1])
+                if g in grip and owner[bh][0] == "free" and owner[bh][1] != obj:
+                    gripped.add(owner[bh][1])
         for b in gripped & set(others):
             rise = float(data.qpos[adr[b]:adr[b] + 3] @ up) - start[b]
             if rise > CLUTTER_LIFT:
@@ -971,18 +957,34 @@ def _unlisted_supports(twin: Twin, state: np.ndarray) -> list[str]:
     known = ({model.geom(g).id for g in sc.support_geoms}
              | {model.geom(g).id for gr in sc.grippers for g in gr.geoms})
     obj = twin.object_body_id
+    owner = _body_owners(model)
     found = []
     for g1, g2 in np.asarray(data.contact.geom).reshape(-1, 2)[:data.ncon]:
         for g, h in ((int(g1), int(g2)), (int(g2), int(g1))):
             if model.geom_bodyid[g] != obj or h in known or model.geom_bodyid[h] == obj:
                 continue
-            body = int(model.geom_bodyid[h])
-            while body > 0 and not model.body_jntnum[body]:
-                body = int(model.body_parentid[body])
             name = _geom_name(model, h)
-            if body == 0 and name not in found:  # welded to the world all the way up
+            if owner[int(model.geom_bodyid[h])][0] == "fixed" and name not in found:
                 found.append(name)
     return found
+
+
+def _body_owners(model: mujoco.MjModel) -> list[tuple[str, int]]:
+    """Per body, what moves it: ("free", root) below a free joint (the root body that
+    carries it), ("fixed", 0) welded to the world all the way up, ("robot", -1) on a
+    chain of hinges or slides."""
+    out = [("fixed", 0)] * model.nbody
+    for body in range(1, model.nbody):
+        b = body
+        while b > 0:
+            first, num = model.body_jntadr[b], model.body_jntnum[b]
+            if num:
+                free = any(model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE
+                           for j in range(first, first + num))
+                out[body] = ("free", b) if free else ("robot", -1)
+                break
+            b = int(model.body_parentid[b])
+    return out
 
 
 def _start_penetration(twin: Twin, state: np.ndarray) -> tuple[float, str]:
