@@ -290,12 +290,12 @@ class AuditReport:
         A ``min_success`` of 1 asks for no failure anywhere: a CONDITIONAL audit found one
         (a worst case or a region point that fails), whatever its samples estimate (a
         failing sliver of 0.2 % of the box gave P = 1.000 over 256 samples)."""
+        _option_real("min_success", min_success, "in [0, 1]", lambda v: 0 <= v <= 1,
+                     none=True)
         if self.verdict is Verdict.SAFE:
             return True
         if self.verdict is Verdict.UNSAFE:
             return False
-        _option_real("min_success", min_success, "in [0, 1]", lambda v: 0 <= v <= 1,
-                     none=True)
         threshold = self.options.min_success if min_success is None else min_success
         return threshold is not None and threshold < 1.0 and self.p_success >= threshold
 
