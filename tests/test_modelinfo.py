@@ -1173,3 +1173,18 @@ size=".01 .01 .03" pos="0 .02 0"/></body></body></worldbody><actuator>
                        r"closes its geoms .*; joint_6 moves 'link_6' itself as a whole .*"
                        r"such as its parent 'link_5'"):
         gripper_at(model, "link_6")
+
+
+def test_init_writes_a_handover_scenario_with_its_task_keys(tmp_path):
+    """ALOHA's scene: init's hand-over names the picker (nearest the object), the receiver,
+    and, as for pick_place, the lift height it counts with (it listed only the roles)."""
+    from critmoment.scenario import bundled_scenario_path
+
+    sc = load_scenario("aloha_transfer_cube")
+    out = tmp_path / "scenario.toml"
+    init_scenario(bundled_scenario_path("aloha_transfer_cube").parent / sc.mjcf.name,
+                  object_body=sc.object_body, task="handover", out=out)
+    made = load_scenario(out)
+    assert made.task.kind == "handover"
+    assert {made.task.picker, made.task.receiver} == {g.name for g in made.grippers}
+    assert "lift_height = 0.02" in out.read_text() and made.task.lift_height == 0.02
