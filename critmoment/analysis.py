@@ -173,10 +173,14 @@ class AnalyzeOptions:
                      lambda v: 0 < v <= 1, none=True)
         for name in ("search", "require_task", "verify_unlifted", "exhaustive",
                      "check_feasibility", "chain"):
-            value = getattr(self, name)
-            if not isinstance(value, (bool, np.bool_)):
-                raise ParameterError(f"{name}: expected True or False, got "
-                                     f"{type(value).__name__} {value!r}")
+            _option_bool(name, getattr(self, name))
+
+
+def _option_bool(name: str, value: Any) -> None:
+    """An option that must be True or False (a string such as "no" is not)."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise ParameterError(f"{name}: expected True or False, got "
+                             f"{type(value).__name__} {value!r}")
 
 
 def _option_int(name: str, value: Any, least: int, *, none: bool = False,
@@ -303,9 +307,7 @@ class AuditReport:
         """The ``report.json`` document (schema ``critmoment.report/1``)."""
         from critmoment.report import report_json
 
-        if not isinstance(timings, (bool, np.bool_)):
-            raise ParameterError(f"timings: expected True or False, got "
-                                 f"{type(timings).__name__} {timings!r}")
+        _option_bool("timings", timings)
         return report_json(self, timings=bool(timings))
 
 

@@ -825,12 +825,13 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
             f"the object falls {fall:.3g} m in the nominal run, touching neither its support "
             f"nor a gripper (from z = {pos[0, 2]:.4g} m): its start pose is not on its "
             f"support (--object-pose{default}; under the table, or in mm?)")
-    depth, other = _start_penetration(twin, recording.states[0])
+    start = _data_at(twin, recording.states[0])
+    depth, other = _start_penetration(twin, start)
     if depth > START_PENETRATION:
         out.append(f"the object starts {depth * 1e3:.3g} mm inside {other}: the model pushes "
                    f"it out at once (which reads as a lift-off); is the object pose right "
                    f"(--object-pose{default})?")
-    unlisted = _unlisted_supports(twin, recording.states[0])
+    unlisted = _unlisted_supports(twin, start)
     if unlisted:
         out.append(f"the object starts resting on {', '.join(repr(g) for g in unlisted)}, "
                    f"fixed geom(s) not in [support]: its lift-off from them is not seen as "
@@ -888,8 +889,7 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
     check's (``blocked_by``)."""
     model = twin.model
     sc = twin.scenario
-    grip = {model.geom(g).id for gr in sc.grippers for g in gr.geoms}
-    support = {model.geom(g).id for g in sc.support_geoms}
+    grip, support = _role_geoms(twin)
     obj = twin.object_body_id
     owner = _body_owners(model)
     others = [b for b in range(1, model.nbody) if b != obj and owner[b] == ("free", b)]
@@ -905,25 +905,21 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
     for k in steps:
         twin.set_state(model, data, states[k])
         mujoco.mj_forward(model, data)
-        n = data.ncon
-        if not n:
+        if not data.ncon:
             continue
-        geoms = np.asarray(data.contact.geom).reshape(-1, 2)[:n]
+        for h in _object_partners(model, data, obj):
+            kind, root = owner[int(model.geom_bodyid[h])]
+            if h in grip or h in support or kind == "robot":
+                continue
+            name = (f"free body {model.body(root).name or root!r}" if kind == "free"
+                    else f"fixed geom {_geom_name(model, h)!r}")
+            touched.setdefault(name, k * dt)
         gripped = set()
-        for g1, g2 in geoms:
+        for g1, g2 in np.asarray(data.contact.geom).reshape(-1, 2)[:data.ncon]:
             for g, h in ((int(g1), int(g2)), (int(g2), int(g1))):
-                bg, bh = int(model.geom_bodyid[g]), int(model.geom_bodyid[h])
-                if bg == obj and bh != obj and h not in grip and h not in support:
-                    kind, root = owner[bh]
-                    if kind == "free":
-                        name = f"free body {model.body(root).name or root!r}"
-                    elif kind == "fixed":
-                        name = f"fixed geom {_geom_name(model, h)!r}"
-                    else:
-                        continue
-                    touched.setdefault(name, k * dt)
-                if g in grip and owner[bh][0] == "free" and owner[bh][1] != obj:
-                    gripped.add(owner[bh][1])
+                kind, root = owner[int(model.geom_bodyid[h])]
+                if g in grip and kind == "free" and root != obj:
+                    gripped.add(root)
         for b in gripped & set(others):
             rise = float(data.qpos[adr[b]:adr[b] + 3] @ up) - start[b]
             if rise > CLUTTER_LIFT:
@@ -946,27 +942,44 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
     return out
 
 
-def _unlisted_supports(twin: Twin, state: np.ndarray) -> list[str]:
-    """The fixed geoms (on no moving body) the object touches at ``state`` that are
-    neither [support] geoms nor a gripper's: a pedestal's top left out of the list."""
+def _unlisted_supports(twin: Twin, data: mujoco.MjData) -> list[str]:
+    """The fixed geoms (on no moving body) the object touches in ``data`` (forwarded)
+    that are neither [support] geoms nor a gripper's: a pedestal's top left out of the
+    list."""
     model = twin.model
-    data = mujoco.MjData(model)
-    twin.set_state(model, data, state)
-    mujoco.mj_forward(model, data)
-    sc = twin.scenario
-    known = ({model.geom(g).id for g in sc.support_geoms}
-             | {model.geom(g).id for gr in sc.grippers for g in gr.geoms})
-    obj = twin.object_body_id
+    grip, support = _role_geoms(twin)
     owner = _body_owners(model)
     found = []
+    for h in _object_partners(model, data, twin.object_body_id):
+        name = _geom_name(model, h)
+        if (h not in grip and h not in support and owner[int(model.geom_bodyid[h])][0] == "fixed"
+                and name not in found):
+            found.append(name)
+    return found
+
+
+def _role_geoms(twin: Twin) -> tuple[set[int], set[int]]:
+    """The ids of the grippers' geoms and of the [support] geoms."""
+    model, sc = twin.model, twin.scenario
+    return ({model.geom(g).id for gr in sc.grippers for g in gr.geoms},
+            {model.geom(g).id for g in sc.support_geoms})
+
+
+def _object_partners(model: mujoco.MjModel, data: mujoco.MjData, obj: int):
+    """The geoms of other bodies in contact with body ``obj``'s in ``data``, one per
+    contact."""
     for g1, g2 in np.asarray(data.contact.geom).reshape(-1, 2)[:data.ncon]:
         for g, h in ((int(g1), int(g2)), (int(g2), int(g1))):
-            if model.geom_bodyid[g] != obj or h in known or model.geom_bodyid[h] == obj:
-                continue
-            name = _geom_name(model, h)
-            if owner[int(model.geom_bodyid[h])][0] == "fixed" and name not in found:
-                found.append(name)
-    return found
+            if model.geom_bodyid[g] == obj and model.geom_bodyid[h] != obj:
+                yield h
+
+
+def _data_at(twin: Twin, state: np.ndarray) -> mujoco.MjData:
+    """The twin's model forwarded at integration state ``state`` (contacts found)."""
+    data = mujoco.MjData(twin.model)
+    twin.set_state(twin.model, data, state)
+    mujoco.mj_forward(twin.model, data)
+    return data
 
 
 def _body_owners(model: mujoco.MjModel) -> list[tuple[str, int]]:
@@ -987,13 +1000,10 @@ def _body_owners(model: mujoco.MjModel) -> list[tuple[str, int]]:
     return out
 
 
-def _start_penetration(twin: Twin, state: np.ndarray) -> tuple[float, str]:
-    """The deepest penetration of the object's contacts at ``state`` [m] (0 when none) and
-    the geom it goes into."""
+def _start_penetration(twin: Twin, data: mujoco.MjData) -> tuple[float, str]:
+    """The deepest penetration of the object's contacts in ``data`` (forwarded) [m] (0
+    when none) and the geom it goes into."""
     model = twin.model
-    data = mujoco.MjData(model)
-    twin.set_state(model, data, state)
-    mujoco.mj_forward(model, data)
     if data.ncon == 0:
         return 0.0, ""
     geoms = np.asarray(data.contact.geom).reshape(-1, 2)[:data.ncon]

@@ -34,6 +34,7 @@ from critmoment import budget
 from critmoment import sparse as sp
 from critmoment.analysis import (
     AnalyzeOptions,
+    _option_bool,
     _Rollouts,
     _Timer,
     audit_evaluator,
@@ -444,9 +445,7 @@ class ValidationResult:
         Args:
             timings: include the wall times (off for byte-comparable documents).
         """
-        if not isinstance(timings, (bool, np.bool_)):
-            raise ParameterError(f"timings: expected True or False, got "
-                                 f"{type(timings).__name__} {timings!r}")
+        _option_bool("timings", timings)
         doc = {
             "schema": VALIDATION_SCHEMA,
             "trajectory": self.trajectory,
