@@ -938,21 +938,26 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel, *,
             f"[uncertainty.{p.name}]: body {p.target!r} is fixed to the world (no joint "
             "between it and the world), so its mass or centre of mass changes nothing; "
             "name a body that moves (the object, or a link of the arm)")
-    elif isinstance(p, ComOffsetParameter) and (reach := _body_reach(model, index)) is not None:
-        ipos = model.body_ipos[index]
-        far = [v for v in (p.low, p.high)
-               if np.linalg.norm(ipos + np.array([v, 0.0, 0.0])) > reach]
-        if far:
-            raise ScenarioError(
-                f"[uncertainty.{p.name}]: an offset of {far[0]:g} m along x puts the centre of "
-                f"mass of body {p.target!r} outside every geom it has (they lie within "
-                f"{reach:.3g} m of its frame); expected a range within the body, whose centre "
-                f"of mass lies inside its matter (is the range in mm?)")
     elif isinstance(p, MassParameter) and not model.body_mass[index] > 0:
         raise ScenarioError(
             f"[uncertainty.{p.name}]: body {p.target!r} has no mass in the MJCF "
             f"({model.body_mass[index]:g} kg), so its inertia cannot scale with a mass; "
             "name a body with mass (inertial or geoms with density)")
+    elif isinstance(p, ComOffsetParameter) and not model.body_mass[index] > 0:
+        raise ScenarioError(
+            f"[uncertainty.{p.name}]: body {p.target!r} has no mass in the MJCF "
+            f"({model.body_mass[index]:g} kg), so moving its centre of mass changes nothing; "
+            "name a body with mass (the object, or a link of the arm)")
+    elif isinstance(p, ComOffsetParameter) and (span := _com_span(model, index)) is not None:
+        lo, hi = span
+        far = [v for v in (p.low, p.high) if not lo - 1e-9 <= v <= hi + 1e-9]
+        if far:
+            raise ScenarioError(
+                f"[uncertainty.{p.name}]: an offset of {far[0]:g} m along x puts the centre of "
+                f"mass of body {p.target!r} outside every geom it has (along its x axis "
+                f"through its centre of mass they span offsets {lo:.3g} to {hi:.3g} m); "
+                "expected a range within the body, whose centre of mass lies inside its "
+                "matter (is the range in mm?)")
     elif isinstance(p, ForceLimitParameter) and not model.actuator_forcelimited[index]:
         raise ScenarioError(
             f"[uncertainty.{p.name}]: actuator {p.target!r} has no forcerange in the MJCF "
@@ -962,13 +967,71 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel, *,
 
 def _body_reach(model: mujoco.MjModel, body: int) -> float | None:
     """The radius about a body's frame that holds all its own geoms (their bounding
-    spheres), or None for a body without geoms. A rigid body's centre of mass lies inside
-    its matter, so inside this sphere."""
+    spheres), or None for a body without geoms."""
     geoms = np.flatnonzero(model.geom_bodyid == body)
     if geoms.size == 0:
         return None
     return float(np.max(np.linalg.norm(model.geom_pos[geoms], axis=1)
                         + model.geom_rbound[geoms]))
+
+
+def _inside_geom(model: mujoco.MjModel, geom: int, points: np.ndarray) -> np.ndarray:
+    """Whether each point (n, 3), in its body's frame, lies inside the geom (its exact
+    shape for MuJoCo's primitives, its bounding box for a mesh or another shape)."""
+    rot = np.zeros(9)
+    mujoco.mju_quat2Mat(rot, model.geom_quat[geom])
+    local = (points - model.geom_pos[geom]) @ rot.reshape(3, 3)  # into the geom's frame
+    size, kind = model.geom_size[geom], int(model.geom_type[geom])
+    tol = 1e-9
+    if kind == mujoco.mjtGeom.mjGEOM_SPHERE:
+        return np.linalg.norm(local, axis=1) <= size[0] + tol
+    if kind == mujoco.mjtGeom.mjGEOM_CAPSULE:
+        axial = np.clip(local[:, 2], -size[1], size[1])
+        return np.linalg.norm(local - np.outer(axial, [0, 0, 1]), axis=1) <= size[0] + tol
+    if kind == mujoco.mjtGeom.mjGEOM_CYLINDER:
+        return ((np.linalg.norm(local[:, :2], axis=1) <= size[0] + tol)
+                & (np.abs(local[:, 2]) <= size[1] + tol))
+    if kind == mujoco.mjtGeom.mjGEOM_ELLIPSOID:
+        return (np.sum((local / size) ** 2, axis=1) <= 1.0 + tol)
+    if kind == mujoco.mjtGeom.mjGEOM_BOX:
+        return (np.abs(local) <= size + tol).all(axis=1)
+    box = model.geom_aabb[geom]  # centre (3), half sizes (3), in the geom's frame
+    return (np.abs(local - box[:3]) <= box[3:] + tol).all(axis=1)
+
+
+def _com_span(model: mujoco.MjModel, body: int) -> tuple[float, float] | None:
+    """The offsets along a body's x axis from its centre of mass that stay inside its own
+    geoms, (low, high) [m], without leaving them; None for a body without geoms or whose
+    centre of mass lies in none (a rigid body's centre of mass lies inside its matter)."""
+    geoms = np.flatnonzero(model.geom_bodyid == body)
+    if geoms.size == 0:
+        return None
+    ipos = model.body_ipos[body]
+    reach = float(np.max(np.linalg.norm(model.geom_pos[geoms] - ipos, axis=1)
+                         + model.geom_rbound[geoms]))
+    offsets = np.linspace(-reach, reach, 4001)
+    points = ipos + np.outer(offsets, [1.0, 0.0, 0.0])
+    inside = np.zeros(offsets.size, bool)
+    for g in geoms:
+        inside |= _inside_geom(model, int(g), points)
+    centre = offsets.size // 2
+    if not inside[centre]:
+        return None
+    def within(v: float) -> bool:
+        point = (ipos + np.array([v, 0.0, 0.0]))[None]
+        return any(_inside_geom(model, int(g), point)[0] for g in geoms)
+
+    def edge(i_in: int, i_out: int) -> float:  # bisected between an inside and an outside
+        a, b = float(offsets[i_in]), float(offsets[i_out])
+        for _ in range(40):
+            a, b = ((a + b) / 2, b) if within((a + b) / 2) else (a, (a + b) / 2)
+        return a
+
+    outside = np.flatnonzero(~inside)
+    below, above = outside[outside < centre], outside[outside > centre]
+    low = edge(int(below[-1]) + 1, int(below[-1])) if below.size else float(offsets[0])
+    high = edge(int(above[0]) - 1, int(above[0])) if above.size else float(offsets[-1])
+    return low, high
 
 
 # ---------------------------------------------------------------------------

@@ -745,20 +745,40 @@ def test_a_creep_window_as_long_as_the_motion_is_an_error(tmp_path, demo_traj):
                 options=AnalyzeOptions(n_samples=8, check_feasibility=False))
 
 
-@pytest.mark.parametrize("offset", ["[-100.0, 100.0]", "[-0.01, 0.05]"])
+@pytest.mark.parametrize("offset", ["[-100.0, 100.0]", "[-0.01, 0.05]", "[-0.03, 0.03]"])
 def test_a_centre_of_mass_outside_the_body_is_an_error(tmp_path, offset):
     """A CoM offset of ±100 m (or 5 cm on the 4 cm cube) was audited: every sample tipped
     the cube before any grasp and the report blamed the grip. A rigid body's centre of mass
-    lies inside its matter; ±1 cm on the cube stays accepted."""
+    lies inside its matter. ±3 cm on the cube had passed a check against the cube's
+    bounding sphere (3.46 cm): the cube's faces are 2 cm from its centre, and every sample
+    past 2 cm dropped it at lift-off. ±1 cm, and ±2 cm to its faces, stay accepted."""
     edits = (('[uncertainty.friction]\ngeom = "box"', '[uncertainty.com_offset]\nbody = "box"'),
              ("range = [0.2, 1.5]", f"range = {offset}"), ("nominal = 1.0", "nominal = 0.0"))
     with pytest.raises(ScenarioError, match=r"\[uncertainty.com_offset\]: an offset of "
                        r"[-0-9.]+ m along x puts the centre of mass of body 'box' outside "
-                       r"every geom it has \(they lie within 0.0346 m"):
+                       r"every geom it has \(along its x axis through its centre of mass they "
+                       r"span offsets -0.02 to 0.02 m\)"):
         load_scenario(_toml(tmp_path, *edits))
-    ok = _toml(tmp_path / "ok", edits[0], ("range = [0.2, 1.5]", "range = [-0.01, 0.01]"),
-               edits[2])
-    assert load_scenario(ok).box.high[-1] == 0.01
+    for i, span in enumerate(("[-0.01, 0.01]", "[-0.02, 0.02]")):
+        ok = _toml(tmp_path / f"ok{i}", edits[0], ("range = [0.2, 1.5]", f"range = {span}"),
+                   edits[2])
+        assert load_scenario(ok).box.high[-1] == float(span.split(", ")[1][:-1])
+
+
+def test_a_centre_of_mass_offset_on_a_massless_body_is_an_error(tmp_path):
+    """A CoM offset on a body without mass changes nothing: it was audited as if it did
+    (a ±0.5 m range on a marker body gave "safe for mass ≤ 1.67 kg" over it)."""
+    folder = _copy(tmp_path, {
+        "scenario.toml": [('[uncertainty.friction]\ngeom = "box"',
+                           '[uncertainty.com_offset]\nbody = "marker"'),
+                          ("range = [0.2, 1.5]", "range = [-0.5, 0.5]"),
+                          ("nominal = 1.0", "nominal = 0.0")],
+        "scene.xml": [('<freejoint name="box_joint"/>',
+                       '<freejoint name="box_joint"/><body name="marker" pos="0 0 0.05"/>')]})
+    with pytest.raises(ScenarioError, match=r"\[uncertainty.com_offset\]: body 'marker' has "
+                       r"no mass in the MJCF \(0 kg\), so moving its centre of mass changes "
+                       r"nothing"):
+        Twin(load_scenario(folder))
 
 
 def test_a_slip_tolerance_beyond_the_objects_size_is_an_error(tmp_path):
