@@ -330,6 +330,15 @@ PARAMETER_KINDS: dict[str, tuple[type[Parameter], str]] = {
 }
 
 
+def kind_of(parameter: Parameter) -> str:
+    """The scenario's ``kind`` of a parameter (``"com_offset"``, ...): the key of
+    :data:`PARAMETER_KINDS` whose class it is."""
+    for kind, (cls, _) in PARAMETER_KINDS.items():
+        if type(parameter) is cls:
+            return kind
+    return type(parameter).__name__
+
+
 @dataclasses.dataclass(frozen=True)
 class UncertaintyBox:
     """The box of uncertain parameters, in a fixed order.

@@ -34,6 +34,7 @@ from matplotlib.figure import Figure
 
 from critmoment.exceptions import OutputError, ParameterError
 from critmoment.moments import Moment, plot_moments
+from critmoment.params import kind_of
 from critmoment.safety import format_fos
 
 __all__ = ["plot_recording", "moment_json", "figure_png", "Figures", "write_report",
@@ -188,7 +189,7 @@ def report_json(report, *, timings: bool = True) -> dict:
         "failure_causes": list(report.failure_causes),
         "moments": moments,
         "candidates": [moment_json(m) for m in report.candidates],
-        "uncertainty": {p.name: {"kind": type(p).__name__.replace("Parameter", "").lower(),
+        "uncertainty": {p.name: {"kind": kind_of(p),
                                  "target": p.target, "range": [p.low, p.high],
                                  "nominal": p.nominal, "prior": p.prior.value, "unit": p.unit}
                         for p in box.parameters},

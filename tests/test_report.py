@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import errno
 import json
 import os
@@ -14,7 +15,14 @@ import pytest
 
 from critmoment import report
 from critmoment.exceptions import OutputError
-from critmoment.report import MARKER, Figures, StagedOutput, check_output_path, write_report
+from critmoment.report import (
+    MARKER,
+    Figures,
+    StagedOutput,
+    check_output_path,
+    report_json,
+    write_report,
+)
 
 
 @pytest.fixture(scope="module")
@@ -346,3 +354,22 @@ def test_a_worst_case_over_the_threshold_that_does_not_fail_says_why(twin, demo_
     from critmoment.verdict import _causes
 
     assert _causes([dataclasses.replace(mr, dominant="contact", fail_fraction=0.0)], 0.9) == []
+
+
+def test_the_report_names_each_parameter_kind_as_the_scenario_does(audit):
+    """report.json wrote com_offset and force_limit as "comoffset" and "forcelimit", names
+    no scenario accepts."""
+    from critmoment import params
+
+    box = audit.scenario.box
+    extra = (params.ComOffsetParameter(name="com", target="box", low=-0.01, high=0.01,
+                                       nominal=0.0),
+             params.ForceLimitParameter(name="grip", target="left/left_finger", low=1.0,
+                                        high=5.0, nominal=5.0))
+    wide = dataclasses.replace(box, parameters=box.parameters + extra)
+    doc = report_json(dataclasses.replace(
+        audit, scenario=dataclasses.replace(audit.scenario, box=wide)))
+    assert {k: v["kind"] for k, v in doc["uncertainty"].items()} == {
+        "mass": "mass", "friction": "friction", "com": "com_offset", "grip": "force_limit"}
+    assert all(params.kind_of(cls.__new__(cls)) == kind
+               for kind, (cls, _) in params.PARAMETER_KINDS.items())
