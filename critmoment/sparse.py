@@ -57,10 +57,11 @@ diverging sample can never count as safe) and its factors of safety NaN; with
 names the moment and the sample.
 
 Deciding. A pair (moment, sample) fails (:class:`Failure`) when, within the horizon,
-the cost exceeds the threshold through the motor term (MOTOR, at once), when the cost
-exceeds it through the contact term for ``persistence`` seconds in a row (CONTACT: an
-excursion that starts within the horizon and lasts; a one-step chatter of the contact
-forces does not fail a good grasp), when the object moves in its holding gripper by more
+the cost exceeds the threshold through the motor term for ``persistence`` seconds in a row
+(MOTOR: a motor that touches its force limit for a few milliseconds and lets go has not
+failed), when the cost exceeds it through the contact term for ``persistence`` seconds in a
+row (CONTACT: an excursion that starts within the horizon and lasts; a one-step chatter of
+the contact forces does not fail a good grasp), when the object moves in its holding gripper by more
 than ``slip_tolerance`` relative to the nominal run (SLIP, measured, see below), or when
 it diverges. An excursion still open at the horizon's end is followed, with the recorded
 controls, until it has lasted ``persistence`` or ended; one still open where no more steps
@@ -200,7 +201,7 @@ class Failure(enum.IntEnum):
     PASS = 0
     """It does not fail."""
     MOTOR = 1
-    """The cost exceeds the threshold through the motor term, within the horizon."""
+    """The cost exceeds the threshold through the motor term for ``persistence`` [s]."""
     CONTACT = 2
     """The cost exceeds the threshold through the contact term for ``persistence`` [s]."""
     SLIP = 3
@@ -224,12 +225,14 @@ SLIP_FLOOR = 0.1
 STICKING_MARGIN = 0.05
 #: how far under its force limit a motor must stay (motor FOS at least 1 + this over the
 #: whole evaluation) for a motor failure to be a *margin* one: the actuator never reached its
-#: limit, the cost crossed the threshold through its margin (the motor term alone is 0.9 at
-#: FOS 1.05 with the default β = 2) or through the sum of both terms (gymnasium-robotics'
-#: kitchen Franka on an elliptic cone: a wrist at FOS 1.17 beside a grip at FOS 2.65, cost
-#: 1.03; 39 of 64 samples failed so and really succeed). Whether it really fails is for the
-#: sample's own run to say
-MOTOR_MARGIN = 0.05
+#: limit (the ground truth's saturation, :class:`critmoment.groundtruth.OutcomeCriteria`'s
+#: 0.999 of the limit), the cost crossed the threshold through its margin (the motor term
+#: alone is 0.9 at FOS 1.05 with the default β = 2) or through the sum of both terms
+#: (gymnasium-robotics' kitchen Franka on an elliptic cone: a wrist at FOS 1.17 beside a grip
+#: at FOS 2.65, cost 1.03; 39 of 64 samples failed so and really succeed; the bundled ALOHA
+#: with its shoulder's force limit 3-7 N·m in the box and no rating: samples at FOS
+#: 1.001-1.05 really succeed). Whether it really fails is for the sample's own run to say
+MOTOR_MARGIN = 1.0 / 0.999 - 1.0
 #: largest displacement [m] of the object in its holding gripper over an evaluation that
 #: is a soft contact's give under load, not a slide: on an elliptic cone, a contact failure
 #: whose object, measured at every step decided, moved no more is a sticking one whatever
@@ -840,9 +843,11 @@ class SparseEvaluator:
         self._anchors, self._projectors = grip_frames(model, twin.scenario)
         held = sig.contact_gripper & ~sig.contact_support[:, None]
         self._held = held
-        # slip counts where the nominal run holds the object with one gripper alone: an
-        # object moves in a gripper that lets go (the release), which is not slip
-        self._alone = held & (held.sum(axis=1, keepdims=True) == 1)
+        # slip counts where the nominal run holds the object with one gripper alone, and
+        # that gripper does not open (Twin.letting_go): an object moves in a gripper that
+        # lets go (the release), which is not slip
+        self._alone = (held & (held.sum(axis=1, keepdims=True) == 1)
+                       & ~twin.letting_go(recording.controls, sig.contact_gripper))
         self._nominal_rel = np.full((self._states.shape[0], len(self._anchors), 3), np.nan)
         self._sensordata = getattr(recording, "sensordata", None)
         self._completed = bool(getattr(recording, "completed", False))
@@ -1577,7 +1582,6 @@ class SparseEvaluator:
             # the flags of real lifts only: lifted steps are a subset of the carried ones
             lifted_c = np.where(self._lifted[at], term_c, 0.0)
         valid = np.arange(total)[None, :] < length[:, None]
-        in_horizon = np.arange(total)[None, :] < h
         slipped = valid & (slip > self.settings.slip_tolerance)
         # on a model whose nominal grip touches the cone without slipping, where the
         # object's slip in a gripper holding it alone is measured and has stayed under a
@@ -1588,7 +1592,7 @@ class SparseEvaluator:
             unmoved = (self._alone[at].any(axis=-1)
                        & (np.maximum.accumulate(slip, axis=1)
                           < SLIP_FLOOR * self.settings.slip_tolerance))
-        out = [self._first_failure(term_c, term_m, slipped, valid, in_horizon, length, p,
+        out = [self._first_failure(term_c, term_m, slipped, valid, length, p,
                                    final, unmoved) for term_c in (term_c, lifted_c)]
         (failure, _, excursion, follow_c), (stop_kind, stop_step, _, follow_l) = out
         follow = follow_c | follow_l
@@ -1632,40 +1636,47 @@ class SparseEvaluator:
                          sticking=sticking, signals=sig)
 
     def _first_failure(self, term_c: np.ndarray, term_m: np.ndarray, slipped: np.ndarray,
-                       valid: np.ndarray, in_horizon: np.ndarray, length: np.ndarray, p: int,
+                       valid: np.ndarray, length: np.ndarray, p: int,
                        final: bool, unmoved: np.ndarray | None = None):
         """(failure kind, its step, longest excursion [steps], open excursion) (nsim,) of
         per-step cost terms (nsim, L)."""
         nsim, total = term_c.shape
         threshold = self.twin.scenario.cost.threshold
         over = valid & (term_c + term_m > threshold)
-        motor = over & (term_m > term_c) & in_horizon
-        excursion = over & ~(term_m > term_c)
-        run = np.zeros((nsim, total), np.int64)
-        for j in range(total):
-            run[:, j] = (run[:, j - 1] + 1 if j else 1) * excursion[:, j]
-        starts_in = (np.arange(total)[None, :] - run + 1) < self.horizon
-        counted = excursion & starts_in
-        contact = counted & (run >= p)
-        if unmoved is not None:
-            contact &= ~unmoved
+        dominant = term_m > term_c
         rows = np.arange(nsim)
         last = np.maximum(length - 1, 0)
-        open_end = counted[rows, last] & (run[rows, last] < p) & (length > 0)
         final = np.broadcast_to(np.asarray(final, dtype=bool), (nsim,))
-        if final.any():
-            # no more steps to follow it: an excursion still open counts
-            ends = open_end & final
-            if unmoved is not None:
-                ends &= ~unmoved[rows, last]
-            contact[rows[ends], last[ends]] = True
+
+        def excursions(excursion, still=None):
+            # the steps where an excursion starting within the horizon has lasted p steps
+            # (or is open where no more steps can be taken), those counted, the run lengths,
+            # and the excursions open at the last step taken
+            run = np.zeros((nsim, total), np.int64)
+            for j in range(total):
+                run[:, j] = (run[:, j - 1] + 1 if j else 1) * excursion[:, j]
+            counted = excursion & ((np.arange(total)[None, :] - run + 1) < self.horizon)
+            fails = counted & (run >= p)
+            if still is not None:
+                fails &= ~still
+            open_end = counted[rows, last] & (run[rows, last] < p) & (length > 0)
+            ends = open_end & final  # no more steps to follow it: it counts
+            if still is not None:
+                ends &= ~still[rows, last]
+            fails[rows[ends], last[ends]] = True
+            return fails, counted, run, open_end
+
+        # a motor at its limit for a few milliseconds has not failed either (the bundled
+        # ALOHA's shoulder limited to 5.8 N·m touches it for 16 ms and the run completes)
+        motor, _, _, open_motor = excursions(over & dominant)
+        contact, counted, run, open_end = excursions(over & ~dominant, unmoved)
         kinds = np.select([motor, contact, slipped],
                           [Failure.MOTOR, Failure.CONTACT, Failure.SLIP], Failure.PASS)
         failing = kinds > 0
         step = np.where(failing.any(axis=1), np.argmax(failing, axis=1), -1)
         kind = np.where(step >= 0, kinds[rows, np.maximum(step, 0)], Failure.PASS)
         longest = np.where(counted, run, 0).max(axis=1, initial=0)
-        follow = open_end & (step < 0) & ~final
+        follow = (open_end | open_motor) & (step < 0) & ~final
         return kind.astype(np.int8), step, longest, follow
 
     def _slip(self, xpos: np.ndarray, xmat: np.ndarray, k: int) -> np.ndarray:

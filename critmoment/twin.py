@@ -48,6 +48,13 @@ __all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "Twin", "carried_flags", "l
 #: how far [m] the object must rise in a carried run for the run to count as a lift
 LIFT_RISE = 0.002
 
+#: how far a gripper's command must open past its tightest in a hold, as a fraction of its
+#: channel's closed-to-open range, for the hold to be letting go (the release): the object
+#: moves in a gripper that opens, which is not slip
+RELEASE_OPENING = 0.1
+#: longest gap [s] in a gripper's contact with the object that does not end its hold (the
+#: contacts of a loosening grip flicker)
+HOLD_GAP = 0.05
 #: contact slots read per object/geom pair; MuJoCo's box-box collider makes at most 8
 CONTACT_SLOTS = 8
 #: the state saved in recordings: enough to restore a step bit-exactly (warmstart included)
@@ -849,6 +856,69 @@ class Twin:
     @property
     def nsensordata(self) -> int:
         return int(self.model.nsensordata)
+
+    def gripper_opening(self, controls: np.ndarray) -> np.ndarray:
+        """Each gripper's commanded opening, (T, G): the mean over the actuators of the
+        normalised channels that move its geoms of (ctrl − closed) / (open − closed), 0
+        closed and 1 open; NaN for a gripper no normalised channel drives."""
+        controls = np.asarray(controls, dtype=np.float64)
+        out = np.full(controls.shape[:-1] + (len(self.scenario.grippers),), np.nan)
+        conv = self.scenario.actions
+        for g, channels in enumerate(self._gripper_channels()):
+            parts = [(controls[..., a] - o) / sc
+                     for c in channels
+                     for a, sc, o in zip(self._chan_act[c], conv.scales[c], conv.offsets[c],
+                                         strict=True) if sc != 0]
+            if parts:
+                out[..., g] = np.mean(parts, axis=0)
+        return out
+
+    def _gripper_channels(self) -> list[list[int]]:
+        """Per gripper, the normalised action channels whose actuators move its geoms."""
+        if getattr(self, "_grip_chan", None) is None:
+            conv, model = self.scenario.actions, self.model
+            found: list[list[int]] = [[] for _ in self.scenario.grippers]
+            for c, acts in enumerate(self._chan_act):
+                if not conv.normalised[c]:
+                    continue
+                for g, grip in enumerate(self.scenario.grippers):
+                    ids = [model.geom(name).id for name in grip.geoms]
+                    if len(ids) >= 2 and act_info.moves_geoms(model, [int(a) for a in acts],
+                                                              ids):
+                        found[g].append(c)
+                        break
+            self._grip_chan = found
+        return self._grip_chan
+
+    def letting_go(self, controls: np.ndarray, touching: np.ndarray) -> np.ndarray:
+        """Where each gripper lets its object go, (T, G) bool: within a hold (the gripper
+        touching the object, gaps up to ``HOLD_GAP`` bridged), from where its command has
+        opened by ``RELEASE_OPENING`` of its range past its tightest in that hold, for as
+        long as it stays so open. ACT's scripted hand-over opens the picker 0.95 s before
+        the receiver touches the cube: the cube slid 5-6 mm down the opening fingers into
+        the receiver and the hand-over succeeded, but that had counted as a slip.
+
+        Args:
+            controls: per-step controls, (T, nu).
+            touching: the gripper touches the object, (T, G) bool.
+        """
+        touching = np.asarray(touching, bool)
+        opening = self.gripper_opening(controls)
+        out = np.zeros(touching.shape, bool)
+        gap = int(round(HOLD_GAP / float(self.model.opt.timestep)))
+        for g in range(touching.shape[1]):
+            if np.isnan(opening[:, g]).all():
+                continue
+            hold = touching[:, g].copy()
+            idle = np.flatnonzero(np.diff(np.concatenate([[1], hold.astype(np.int8), [1]])))
+            for a, b in zip(idle[::2], idle[1::2], strict=True):  # gaps [a, b)
+                if 0 < a and b < hold.size and b - a <= gap:
+                    hold[a:b] = True
+            edges = np.flatnonzero(np.diff(np.concatenate([[0], hold.astype(np.int8), [0]])))
+            for a, b in zip(edges[::2], edges[1::2], strict=True):
+                u = opening[a:b, g]
+                out[a:b, g] = u > np.minimum.accumulate(u) + RELEASE_OPENING
+        return out
 
     def contact_flags(self, sensordata: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Which grippers and supports the object touches, from ``sensordata``

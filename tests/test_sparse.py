@@ -1071,3 +1071,39 @@ def test_a_contact_failure_while_two_grippers_hold_is_for_the_own_run(scenario, 
     res = ev.evaluate([step], samples, settle=False)
     np.testing.assert_array_equal(res.failure[0], sparse.Failure.CONTACT)
     assert res.sticking_failure[0].all()
+
+
+def test_a_motor_at_its_limit_fails_only_once_it_stays_there(demo_recording, twin):
+    """A motor that touches its force limit for a few milliseconds and lets go has not
+    failed (the bundled ALOHA with its shoulder limited to 5.8 N·m touches it for 16 ms and
+    completes the task): a motor excursion counts, as a contact one does, once it lasts
+    ``persistence``; one still open where no more steps can be taken counts, and one open
+    at the horizon's end is followed."""
+    engine = SparseEvaluator(demo_recording, twin)
+    p, h = engine.persistence_steps, engine.horizon
+    total = h + p
+    term_m = np.zeros((4, total))
+    term_m[0, 2:2 + p - 2] = 2.0  # brief: p - 2 steps, then under the threshold
+    term_m[1, 2:2 + p] = 2.0  # lasts p steps
+    term_m[2, h - 3:h] = 2.0  # open at the end of the steps taken
+    term_m[3, h - 3:h] = 2.0  # the same, where no more steps can be taken
+    term_c = np.zeros_like(term_m)
+    length = np.array([total, total, h, h])
+    valid = np.arange(total)[None, :] < length[:, None]
+    final = np.array([False, False, False, True])
+    kind, step, _, follow = engine._first_failure(term_c, term_m, np.zeros_like(valid),
+                                                  valid, length, p, final)
+    assert kind.tolist() == [sparse.Failure.PASS, sparse.Failure.MOTOR, sparse.Failure.PASS,
+                             sparse.Failure.MOTOR]
+    assert step[1] == 2 + p - 1
+    assert follow.tolist() == [False, False, True, False]
+
+
+def test_a_motor_failure_that_never_saturates_is_a_margin_one():
+    """The margin under a motor's limit that makes a motor failure a margin one (for the
+    sample's own run) is the ground truth's saturation: a motor at 0.99 of its limit has not
+    reached it (samples at motor FOS 1.001-1.05 had been decided failing, and really
+    succeed)."""
+    from critmoment.groundtruth import OutcomeCriteria
+
+    assert sparse.MOTOR_MARGIN == pytest.approx(1.0 / OutcomeCriteria().saturation - 1.0)
