@@ -106,6 +106,7 @@ import numpy as np
 from critmoment import budget, safety
 from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
+from critmoment.groundtruth import OutcomeCriteria
 from critmoment.params import UncertaintyBox
 from critmoment.scenario import CostParams
 from critmoment.twin import STATE_SPEC, Signals, Twin, carried_flags, state_slice
@@ -700,6 +701,7 @@ class _Decision(NamedTuple):
     stop_step: np.ndarray  # (nsim,) step of that failure within the evaluation, −1
     excursion: np.ndarray  # (nsim,) longest contact excursion [s]
     follow: np.ndarray  # (nsim,) bool: needs steps past the horizon
+    follow_motor: np.ndarray  # (nsim,) bool: of those, a motor excursion's (motor_steps)
     sticking: np.ndarray  # (nsim,) bool: a contact failure inside the cone (STICKING_MARGIN)
     signals: Signals  # of every row decided, leading (nsim, L)
 
@@ -840,6 +842,12 @@ class SparseEvaluator:
         dt = float(model.opt.timestep)
         #: steps a contact excursion must last to count
         self.persistence_steps = max(1, int(round(self.settings.persistence / dt)))
+        #: steps a motor excursion must last to count: the persistence, or the ground
+        #: truth's saturation time where longer (a motor at its limit for 20-50 ms that lets go
+        #: has not failed: the bundled ALOHA's shoulder limited to 5.4-5.7 N·m, unrated)
+        criteria = OutcomeCriteria()
+        self.motor_steps = max(self.persistence_steps,
+                               criteria.steps(criteria.motor_time, dt))
         self._anchors, self._projectors = grip_frames(model, twin.scenario)
         held = sig.contact_gripper & ~sig.contact_support[:, None]
         self._held = held
@@ -1327,6 +1335,13 @@ class SparseEvaluator:
             return 0
         return max(self.persistence_steps - 1, self.settings.creep_horizon - self.horizon, 0)
 
+    def _motor_extension(self) -> int:
+        """Most steps past the horizon an evaluation takes to follow a motor excursion until
+        it has lasted :attr:`motor_steps` (at least :meth:`_extension_steps`)."""
+        if self.mode is SparseMode.SOLVE:
+            return 0
+        return max(self._extension_steps(), self.motor_steps - 1)
+
     def trace(self, step: int, samples: Any, nstep: int | None = None) -> dict[str, np.ndarray]:
         """Body poses and positions of the samples over ``nstep`` steps from moment ``step``
         (default: the horizon), for tools that follow a sample's own state
@@ -1408,10 +1423,10 @@ class SparseEvaluator:
         per_sim = np.ndim(k) > 0  # a start step per simulation (restored), (nsim,)
         if per_sim:
             k = np.asarray(k, dtype=np.int64)
-            extras = np.minimum(self._extension_steps(), self.n_steps - k - h)
+            extras = np.minimum(self._motor_extension(), self.n_steps - k - h)
             extra = int(extras[run].max(initial=0))
         else:
-            extra = min(self._extension_steps(), self.n_steps - k - h) if restore else 0
+            extra = min(self._motor_extension(), self.n_steps - k - h) if restore else 0
             extras = np.full(nsim, extra)
         nsd = self.twin.nsensordata
         buf = np.zeros((nsim, h + extra, nsd))
@@ -1454,9 +1469,12 @@ class SparseEvaluator:
         follow = run[decided.follow[run] & ~raised[run] & ~(warned[run] > 0).any(axis=1)
                      & (extras[run] > 0)]
         if follow.size and extra:
-            # the simulations followed take their own extra steps (fewer near the end)
-            for e in np.unique(extras[follow]):
-                part = follow[extras[follow] == e]
+            # the simulations followed take their own extra steps (fewer near the end): a
+            # motor excursion's up to motor_steps, a contact one's up to the persistence
+            need = np.minimum(extras, np.where(decided.follow_motor, self._motor_extension(),
+                                               self._extension_steps()))
+            for e in np.unique(need[follow]):
+                part = follow[need[follow] == e]
                 buf[part, h:h + e], slip[part, h:h + e] = self._roll(
                     batch, (k[part] if per_sim else k) + h, int(e), part, raised)
                 length[part] = h + e
@@ -1594,8 +1612,10 @@ class SparseEvaluator:
                           < SLIP_FLOOR * self.settings.slip_tolerance))
         out = [self._first_failure(term_c, term_m, slipped, valid, length, p,
                                    final, unmoved) for term_c in (term_c, lifted_c)]
-        (failure, _, excursion, follow_c), (stop_kind, stop_step, _, follow_l) = out
+        (failure, _, excursion, follow_c, motor_c), (stop_kind, stop_step, _, follow_l,
+                                                     motor_l) = out
         follow = follow_c | follow_l
+        follow_motor = motor_c | motor_l
         if self.settings.creep_horizon > h:
             follow |= (failure == Failure.PASS) & (length > 0)
         # on an elliptic cone a sliding contact's force lies on the cone: a contact failure
@@ -1633,13 +1653,13 @@ class SparseEvaluator:
         return _Decision(failure=failure, stop=(stop_kind > 0) & ~sticking,
                          stop_step=stop_step,
                          excursion=excursion * self.twin.model.opt.timestep, follow=follow,
-                         sticking=sticking, signals=sig)
+                         follow_motor=follow_motor, sticking=sticking, signals=sig)
 
     def _first_failure(self, term_c: np.ndarray, term_m: np.ndarray, slipped: np.ndarray,
                        valid: np.ndarray, length: np.ndarray, p: int,
                        final: bool, unmoved: np.ndarray | None = None):
-        """(failure kind, its step, longest excursion [steps], open excursion) (nsim,) of
-        per-step cost terms (nsim, L)."""
+        """(failure kind, its step, longest contact excursion [steps], an excursion open to
+        follow, a motor one among those) (nsim,) of per-step cost terms (nsim, L)."""
         nsim, total = term_c.shape
         threshold = self.twin.scenario.cost.threshold
         over = valid & (term_c + term_m > threshold)
@@ -1648,18 +1668,18 @@ class SparseEvaluator:
         last = np.maximum(length - 1, 0)
         final = np.broadcast_to(np.asarray(final, dtype=bool), (nsim,))
 
-        def excursions(excursion, still=None):
-            # the steps where an excursion starting within the horizon has lasted p steps
+        def excursions(excursion, steps, still=None):
+            # the steps where an excursion starting within the horizon has lasted ``steps``
             # (or is open where no more steps can be taken), those counted, the run lengths,
             # and the excursions open at the last step taken
             run = np.zeros((nsim, total), np.int64)
             for j in range(total):
                 run[:, j] = (run[:, j - 1] + 1 if j else 1) * excursion[:, j]
             counted = excursion & ((np.arange(total)[None, :] - run + 1) < self.horizon)
-            fails = counted & (run >= p)
+            fails = counted & (run >= steps)
             if still is not None:
                 fails &= ~still
-            open_end = counted[rows, last] & (run[rows, last] < p) & (length > 0)
+            open_end = counted[rows, last] & (run[rows, last] < steps) & (length > 0)
             ends = open_end & final  # no more steps to follow it: it counts
             if still is not None:
                 ends &= ~still[rows, last]
@@ -1667,9 +1687,10 @@ class SparseEvaluator:
             return fails, counted, run, open_end
 
         # a motor at its limit for a few milliseconds has not failed either (the bundled
-        # ALOHA's shoulder limited to 5.8 N·m touches it for 16 ms and the run completes)
-        motor, _, _, open_motor = excursions(over & dominant)
-        contact, counted, run, open_end = excursions(over & ~dominant, unmoved)
+        # ALOHA's shoulder limited to 5.8 N·m touches it for 16 ms and the run completes):
+        # its excursion counts once it lasts motor_steps
+        motor, _, _, open_motor = excursions(over & dominant, self.motor_steps)
+        contact, counted, run, open_end = excursions(over & ~dominant, p, unmoved)
         kinds = np.select([motor, contact, slipped],
                           [Failure.MOTOR, Failure.CONTACT, Failure.SLIP], Failure.PASS)
         failing = kinds > 0
@@ -1677,7 +1698,7 @@ class SparseEvaluator:
         kind = np.where(step >= 0, kinds[rows, np.maximum(step, 0)], Failure.PASS)
         longest = np.where(counted, run, 0).max(axis=1, initial=0)
         follow = (open_end | open_motor) & (step < 0) & ~final
-        return kind.astype(np.int8), step, longest, follow
+        return kind.astype(np.int8), step, longest, follow, open_motor & follow
 
     def _slip(self, xpos: np.ndarray, xmat: np.ndarray, k: int) -> np.ndarray:
         """Slip (c, s) [m] of recorded poses (c, s, nbody, 3 | 9) of steps k .. k+s−1 (k an

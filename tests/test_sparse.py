@@ -1075,28 +1075,32 @@ def test_a_contact_failure_while_two_grippers_hold_is_for_the_own_run(scenario, 
 
 def test_a_motor_at_its_limit_fails_only_once_it_stays_there(demo_recording, twin):
     """A motor that touches its force limit for a few milliseconds and lets go has not
-    failed (the bundled ALOHA with its shoulder limited to 5.8 N·m touches it for 16 ms and
-    completes the task): a motor excursion counts, as a contact one does, once it lasts
-    ``persistence``; one still open where no more steps can be taken counts, and one open
-    at the horizon's end is followed."""
+    failed (the bundled ALOHA with its shoulder limited to 5.4-5.8 N·m, unrated, touches
+    it for 16-40 ms and completes the task): a motor excursion counts, as a contact one
+    does, once it lasts, here as long as the ground truth's saturation (``motor_steps``,
+    50 ms); one still open where no more steps can be taken counts, and one open at the
+    horizon's end is followed."""
+    from critmoment.groundtruth import OutcomeCriteria
+
     engine = SparseEvaluator(demo_recording, twin)
-    p, h = engine.persistence_steps, engine.horizon
-    total = h + p
+    p, h, pm = engine.persistence_steps, engine.horizon, engine.motor_steps
+    assert pm == OutcomeCriteria().steps(0.05, 0.002) > p
+    total = h + pm
     term_m = np.zeros((4, total))
-    term_m[0, 2:2 + p - 2] = 2.0  # brief: p - 2 steps, then under the threshold
-    term_m[1, 2:2 + p] = 2.0  # lasts p steps
+    term_m[0, 2:2 + pm - 2] = 2.0  # brief: pm - 2 steps, then under the threshold
+    term_m[1, 2:2 + pm] = 2.0  # lasts pm steps
     term_m[2, h - 3:h] = 2.0  # open at the end of the steps taken
     term_m[3, h - 3:h] = 2.0  # the same, where no more steps can be taken
     term_c = np.zeros_like(term_m)
     length = np.array([total, total, h, h])
     valid = np.arange(total)[None, :] < length[:, None]
     final = np.array([False, False, False, True])
-    kind, step, _, follow = engine._first_failure(term_c, term_m, np.zeros_like(valid),
-                                                  valid, length, p, final)
+    kind, step, _, follow, motor = engine._first_failure(term_c, term_m, np.zeros_like(valid),
+                                                         valid, length, p, final)
     assert kind.tolist() == [sparse.Failure.PASS, sparse.Failure.MOTOR, sparse.Failure.PASS,
                              sparse.Failure.MOTOR]
-    assert step[1] == 2 + p - 1
-    assert follow.tolist() == [False, False, True, False]
+    assert step[1] == 2 + pm - 1
+    assert follow.tolist() == motor.tolist() == [False, False, True, False]
 
 
 def test_a_motor_failure_that_never_saturates_is_a_margin_one():
