@@ -827,3 +827,29 @@ def test_an_object_resting_on_an_unlisted_fixed_geom_is_named(tmp_path):
     found = feasibility.check_fit(traj, _record(twin, traj), twin)
     assert any(w.startswith("the object starts resting on 'table', fixed geom(s) not in "
                             "[support]") for w in found)
+
+
+def test_an_arm_too_weak_for_its_load_that_sags_onto_the_table_is_infeasible(tmp_path):
+    """The Panda's shoulder limited to 10 N·m (a force_limit parameter's nominal) cannot
+    hold the arm up: it sank onto the table and rested there for 9.3 s, at its limit. The
+    table was named as the contact holding the joint back, so the check only warned and the
+    run was audited (UNSAFE, P 0.625, exit 1). The table pushes the arm back toward its
+    target: it holds nothing back, the joint is too weak."""
+    import shutil
+
+    from critmoment import panda_demo
+    from critmoment.scenario import bundled_scenario_path
+
+    folder = tmp_path / "weak"
+    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
+    toml = (folder / "scenario.toml").read_text()
+    assert toml.count("[uncertainty.mass]") == 1
+    toml = toml.replace("[uncertainty.mass]", '[uncertainty.shoulder]\nkind = "force_limit"\n'
+                        'actuator = "joint2"\nrange = [5.0, 87.0]\nnominal = 10.0\n\n'
+                        "[uncertainty.mass]")
+    (folder / "scenario.toml").write_text(toml)
+    twin = Twin(load_scenario(folder))
+    traj = panda_demo.make_pick_place(0)
+    with pytest.raises(InfeasibleTwinError, match=r"the twin cannot reproduce the nominal "
+                       r"motion: joint 'joint2'.*too weak for the load"):
+        feasibility.preflight(traj, _record(twin, traj), twin)
