@@ -1270,7 +1270,7 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
     text = region_text(region, box, verdict, check)
     if verdict is Verdict.CONDITIONAL and region is None and n and failed.all():
         text = f"no safe region: all {n} samples of the box fail"
-    causes = tuple(_causes(evidence.moments, options.threshold))
+    causes = tuple(_causes(evidence.moments, options.threshold, box))
     if nominal_squeeze:
         where = ("only where the grip squeezes the object off its support without lifting it"
                  if evidence.nominal_unlifted else "at a moment")
@@ -1424,15 +1424,36 @@ def region_text(region: Mapping[str, tuple[float, float]] | None, box: Uncertain
 
 
 _SUGGEST = {
-    "contact": ("grip slip", "reduce the uncertainty of the object's mass and friction, grip "
-                "differently (more pad contact, more grip force), or lift more slowly"),
+    "contact": ("grip slip", "reduce the uncertainty of {box}, grip differently (more pad "
+                "contact, more grip force), or lift more slowly"),
     "motor": ("motor overload", "slow down, carry the object closer to the arm's base, reduce "
-              "the mass uncertainty, or push the object instead of lifting it"),
+              "the uncertainty of {box}, or push the object instead of lifting it"),
     "diverged": ("simulation diverged", "check the model and the trajectory near this moment"),
 }
+#: how a suggestion names a parameter of each kind
+_PARAMETER_WORDS = {"MassParameter": "mass", "FrictionParameter": "friction",
+               "ComOffsetParameter": "centre of mass", "ForceLimitParameter": "force limit"}
 
 
-def _causes(reports: Sequence[MomentReport], threshold: float) -> list[str]:
+def _box_words(box: UncertaintyBox | None) -> str:
+    """The box's parameters as a suggestion names them: "the object's mass and friction",
+    "joint2's force limit", ..."""
+    if box is None:
+        return "the uncertain parameters"
+    words = [(p.target, _PARAMETER_WORDS.get(type(p).__name__, p.name))
+             for p in box.parameters]
+    targets = {t for t, _ in words}
+    object_kinds = {"MassParameter", "FrictionParameter", "ComOffsetParameter"}
+    if all(type(p).__name__ in object_kinds for p in box.parameters) and len(targets) == 1:
+        names = [w for _, w in words]
+        return "the object's " + (" and ".join(names) if len(names) <= 2 else
+                                  ", ".join(names[:-1]) + " and " + names[-1])
+    names = [f"{t}'s {w}" for t, w in words]
+    return " and ".join(names) if len(names) <= 2 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
+def _causes(reports: Sequence[MomentReport], threshold: float,
+            box: UncertaintyBox | None = None) -> list[str]:
     """One line per failure cause (grip slip, overload of one actuator, ...), the moments where
     it limits (with their critical values) and the suggestion.
 
@@ -1441,6 +1462,7 @@ def _causes(reports: Sequence[MomentReport], threshold: float) -> list[str]:
     sweep a later moment's failures are hidden behind earlier ones; its critical values and
     worst case still say where it would fail).
     """
+    units = {p.name: f" {p.unit}" if p.unit else "" for p in box.parameters} if box else {}
     groups: dict[str, list[str]] = {}
     for mr in reports:
         crossed = any(v is not None for v in mr.critical.values())
@@ -1451,8 +1473,8 @@ def _causes(reports: Sequence[MomentReport], threshold: float) -> list[str]:
         name = _SUGGEST[mr.dominant][0]
         if mr.dominant == "motor":
             name = f"{name} at {mr.limiting_actuator}"
-        crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
-                         if v is not None)
+        crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}{units.get(k, '')}"
+                         for k, v in mr.critical.items() if v is not None)
         if mr.squeeze:
             where = (f" (a squeeze without a lift: sparse evaluation fails "
                      f"{'for ' + crit if crit else 'there'}; the samples' own rollouts decide)")
@@ -1461,9 +1483,11 @@ def _causes(reports: Sequence[MomentReport], threshold: float) -> list[str]:
         elif mr.fail_fraction > 0:
             where = f" ({mr.fail_fraction:.0%} of the box)"
         else:
-            where = " (at " + ", ".join(f"{k} = {v:.3g}" for k, v in mr.worst_case.items()) + ")"
+            where = " (at " + ", ".join(f"{k} = {v:.3g}{units.get(k, '')}"
+                                        for k, v in mr.worst_case.items()) + ")"
         groups.setdefault(f"{mr.dominant}|{name}", []).append(
             f"{mr.moment.label.value} at t = {mr.moment.time:.2f} s{where}")
     return [f"{key.split('|', 1)[1]}: {'; '.join(where)}; suggestion: "
-            f"{_SUGGEST[key.split('|', 1)[0]][1]}" for key, where in groups.items()]
+            f"{_SUGGEST[key.split('|', 1)[0]][1].format(box=_box_words(box))}"
+            for key, where in groups.items()]
 

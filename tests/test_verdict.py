@@ -705,3 +705,25 @@ def test_a_log_uniform_regions_ends_are_the_boxs_own():
     region = {"mass": (0.05000000000000001, 0.217), "friction": (0.28, 1.4999999999999996)}
     out = vd.round_inward(region, box)
     assert out == {"mass": (0.05, 0.217), "friction": (0.28, 1.5)}
+
+
+def test_a_cause_speaks_of_the_boxs_own_parameters_with_their_units():
+    """A box holding only the shoulder's force limit was told "reduce the uncertainty of the
+    object's mass and friction", and the values came without units ("fails for shoulder
+    below 23.5")."""
+    from critmoment.params import ForceLimitParameter, MassParameter
+
+    shoulder = ForceLimitParameter(name="shoulder", target="joint2", low=5.0, high=87.0,
+                                   nominal=87.0, torque=True)
+    mr = vd.MomentReport(moment=_moment(100).moment, worst_case={"shoulder": 5.0},
+                         max_cost=1.5, min_fos_contact=3.0, min_fos_motor=1.0,
+                         critical={"shoulder": 23.5}, critical_side={"shoulder": "below"},
+                         dominant="motor", limiting_actuator="joint2", fail_fraction=0.4)
+    (cause,) = vd._causes([mr], THRESHOLD, UncertaintyBox((shoulder,)))
+    assert "fails for shoulder below 23.5 N·m" in cause
+    assert cause.endswith("reduce the uncertainty of joint2's force limit, or push the "
+                          "object instead of lifting it")
+    mass = MassParameter(name="mass", target="box", low=0.05, high=1.0, nominal=0.05)
+    both = UncertaintyBox((mass, shoulder))
+    assert vd._box_words(both) == "box's mass and joint2's force limit"
+    assert vd._box_words(UncertaintyBox((mass,))) == "the object's mass"
