@@ -257,7 +257,7 @@ def cmd_analyze(args) -> int:
         twin, traj = _load(args)
         budget.check_audit(traj, twin, options)
         result = analyze(traj, twin.scenario, twin=twin, options=options,
-                         progress=not args.json and (sys.stderr.isatty() or args.verbose))
+                         progress=args.verbose or (not args.json and sys.stderr.isatty()))
         if out is not None:
             report.write_report_files(result, out, figures=report.Figures.parse(args.figures))
     code = EXIT_OK if result.passes(args.min_success) else EXIT_UNSAFE
@@ -615,7 +615,7 @@ def _signals_held() -> Iterator[None]:
     import signal
     import threading
 
-    held = {signal.SIGINT, signal.SIGTERM}
+    held = {signal.SIGINT, *_stop_signals()}
     if (not hasattr(signal, "pthread_sigmask")
             or threading.current_thread() is not threading.main_thread()):
         yield
@@ -627,11 +627,22 @@ def _signals_held() -> Iterator[None]:
         signal.pthread_sigmask(signal.SIG_SETMASK, previous)
 
 
+def _stop_signals() -> list:
+    """The signals that end a run as Ctrl-C does, where the platform has them: SIGTERM
+    (``kill``, a job scheduler's stop), SIGHUP (the terminal closed), SIGQUIT, SIGUSR1 and
+    SIGUSR2 (whose default would end the process and leave its staged output behind)."""
+    import signal
+
+    names = ("SIGTERM", "SIGHUP", "SIGQUIT", "SIGUSR1", "SIGUSR2")
+    return [getattr(signal, n) for n in names if hasattr(signal, n)]
+
+
 @contextlib.contextmanager
 def _terminate_as_interrupt() -> Iterator[None]:
-    """SIGTERM (``kill``, a job scheduler's stop) ends the run as Ctrl-C does: the output
+    """The stop signals (:func:`_stop_signals`) end the run as Ctrl-C does: the output
     being written is removed, the previous one kept, exit 2. Only in the main thread (where
-    Python runs signal handlers); the previous handler comes back after."""
+    Python runs signal handlers), and only for a signal not ignored (``nohup`` ignores
+    SIGHUP); the previous handlers come back after."""
     import signal
     import threading
 
@@ -642,22 +653,31 @@ def _terminate_as_interrupt() -> Iterator[None]:
     def stop(signum, frame):
         raise KeyboardInterrupt
 
+    previous = {}
     try:
-        previous = signal.signal(signal.SIGTERM, stop)
+        for sig in _stop_signals():
+            if signal.getsignal(sig) is not signal.SIG_IGN:
+                previous[sig] = signal.signal(sig, stop)
     except (ValueError, OSError):  # no signals here (an embedded interpreter)
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
         yield
         return
     try:
         yield
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
 
 
 def _main(argv: list[str] | None) -> int:
     try:
         parser = build_parser()
     except KeyboardInterrupt:
-        print("critmoment: error: interrupted; no output was written", file=sys.stderr)
+        # the line names the command, as every other error line does
+        words = [a for a in (sys.argv[1:] if argv is None else argv) if not a.startswith("-")]
+        name = f"critmoment {words[0]}" if words else "critmoment"
+        print(f"{name}: error: interrupted; no output was written", file=sys.stderr)
         return EXIT_ERROR
     try:
         args, extra = parser.parse_known_args(argv)
@@ -734,13 +754,18 @@ def run() -> None:
     (the verdict's exit code lost); one just before is exit 2, interrupted."""
     import signal
 
+    # a console that cannot encode "≤" or "—" (PYTHONIOENCODING=ascii, a Windows code page)
+    # gets them escaped: an audit whose report was written whole had exited 2 on its summary
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(AttributeError, ValueError, OSError):
+            stream.reconfigure(errors="backslashreplace")
     code = EXIT_ERROR
     try:
         code = main()
     except KeyboardInterrupt:
         print("critmoment: error: interrupted", file=sys.stderr)
     try:
-        for sig in (signal.SIGINT, signal.SIGTERM):
+        for sig in (signal.SIGINT, *_stop_signals()):
             signal.signal(sig, signal.SIG_IGN)
     except (ValueError, OSError):  # not the main thread, or no signals here
         pass

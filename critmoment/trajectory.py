@@ -240,7 +240,9 @@ def _fps_from_times(times: Any, n_steps: int, *, what: str) -> float:
             f"step(s) in total){hint}"
         )
     median = float(np.median(dt))
-    if median > 1.0:
+    # a step of 1 is a sample index as much as a second: a control rate of 1 Hz or less is
+    # no robot's (50 frames indexed 0..49 had been played over 50 s)
+    if median >= 1.0:
         raise TrajectoryError(
             f"{what}: times {median:g} apart, a control rate of {1.0 / median:.3g} Hz; "
             f"expected times in seconds (milliseconds, or sample indices?)")

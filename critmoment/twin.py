@@ -727,6 +727,8 @@ class Twin:
         joint by design)."""
         model = model or self.model
         qpos0 = np.asarray(qpos0, dtype=np.float64)
+        if qpos0.shape != (model.nq,):
+            return  # the length is checked, and named, where qpos0 is used
         worst = None
         for a, adr, q in self._start_positions(model, start, np.flatnonzero(self.motors)):
             tol = START_AGREEMENT * (0.1 if self.slide[a] else 1.0)

@@ -188,6 +188,19 @@ def test_times_in_milliseconds_are_named(tmp_path):
         load_trajectory(path)
 
 
+def test_times_one_apart_are_sample_indices(tmp_path):
+    """Timestamps 0, 1, 2, ... (a LeRobot episode's frame indices) were played at 1 Hz, a
+    50-frame episode over 50 s, while 1.0001 apart was refused."""
+    from critmoment.trajectory import load_trajectory
+
+    path = tmp_path / "idx.npz"
+    np.savez(path, actions=np.zeros((20, 14)), time=np.arange(20.0))
+    with pytest.raises(TrajectoryError, match=r"times 1 apart, a control rate of 1 Hz; "
+                                              r"expected times in seconds \(milliseconds, or "
+                                              r"sample indices\?\)"):
+        load_trajectory(path)
+
+
 def test_a_near_bundled_name_is_suggested(tmp_path, monkeypatch):
     from critmoment.exceptions import InputFileError
     from critmoment.scenario import load_scenario

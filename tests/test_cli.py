@@ -216,14 +216,20 @@ def test_verbose_errors_add_the_traceback(capsys):
         "critmoment rollout: error: ")
 
 
-def test_sigterm_ends_a_run_as_ctrl_c_does(traj_file, tmp_path, capsys, monkeypatch):
+@pytest.mark.parametrize("name", ["SIGTERM", "SIGHUP", "SIGQUIT", "SIGUSR1"])
+def test_sigterm_ends_a_run_as_ctrl_c_does(traj_file, tmp_path, capsys, monkeypatch, name):
     """``kill`` (SIGTERM) during an audit: exit 2, "interrupted", the previous output kept
     whole and no temporary folder left behind (it used to leave ``.DIR.critmoment-tmp-*``
-    and die with 143); the process's own SIGTERM handler is back afterwards."""
+    and die with 143); the process's own SIGTERM handler is back afterwards. The same for a
+    closed terminal's SIGHUP, SIGQUIT and SIGUSR1 (they had left the folder, exit 129)."""
     import os
     import signal
 
     from critmoment import analysis
+
+    if not hasattr(signal, name):
+        pytest.skip(f"no {name} here")
+    sig = getattr(signal, name)
 
     out = tmp_path / "report"
     assert main(["rollout", str(traj_file), "--out", str(out)]) == 0
@@ -231,16 +237,33 @@ def test_sigterm_ends_a_run_as_ctrl_c_does(traj_file, tmp_path, capsys, monkeypa
     capsys.readouterr()
 
     def killed(*args, **kwargs):
-        os.kill(os.getpid(), signal.SIGTERM)
-        raise AssertionError("SIGTERM did not stop the audit")
+        os.kill(os.getpid(), sig)
+        raise AssertionError(f"{name} did not stop the audit")
 
     monkeypatch.setattr(analysis, "analyze", killed)
-    handler = signal.getsignal(signal.SIGTERM)
+    handler = signal.getsignal(sig)
     assert main(["analyze", str(traj_file), "--samples", "8", "--out", str(out)]) == 2
     assert "critmoment analyze: error: interrupted; no output was written" in capsys.readouterr().err
     assert sorted(p.name for p in out.iterdir()) == before
     assert [p.name for p in tmp_path.iterdir()] == ["report"]
-    assert signal.getsignal(signal.SIGTERM) is handler
+    assert signal.getsignal(sig) is handler
+
+
+def test_a_console_that_cannot_encode_the_summary_keeps_the_exit_code(traj_file):
+    """With PYTHONIOENCODING=ascii (or a console code page without "≤"), a SAFE or
+    CONDITIONAL audit wrote its report whole and then exited 2 on a UnicodeEncodeError
+    printing its summary: the characters are escaped, the code is the command's."""
+    import os
+    import subprocess
+    import sys
+
+    env = {**os.environ, "PYTHONIOENCODING": "ascii", "MPLBACKEND": "Agg"}
+    proc = subprocess.run(
+        [sys.executable, "-c", "from critmoment.cli import run; run()", "moments",
+         str(traj_file)], capture_output=True, text=True, encoding="ascii",
+        errors="strict", env=env, timeout=300)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert "UnicodeEncodeError" not in proc.stderr
 
 
 def test_the_command_line_loads_the_heavy_libraries_inside_its_interrupt_handling():
@@ -475,6 +498,10 @@ def test_verbose_after_the_command_logs_the_audits_progress(traj_file, capsys):
     assert main(["analyze", str(traj_file), "--samples", "8", "--figures", "none", "-v"]) in (0, 1)
     err = capsys.readouterr().err
     assert "critmoment: rollout ..." in err and "critmoment: sweep done in" in err
+    # with --json too (on stderr: stdout holds only the JSON); it had printed nothing
+    assert main(["-v", "analyze", str(traj_file), "--samples", "8", "--json"]) in (0, 1)
+    out, err = capsys.readouterr()
+    assert "critmoment: sweep done in" in err and json.loads(out)["verdict"]
 
 
 def test_version(capsys):

@@ -793,6 +793,21 @@ def test_qpos0_and_start_that_disagree_are_warned_of(twin):
         initial_state(twin, Trajectory(leading, fps=50.0, qpos0=qpos0))
 
 
+def test_a_short_qpos0_beside_a_start_is_named(twin):
+    """A qpos0 of 1-13 values beside a start (every demo file has one) crashed with an
+    IndexError in the start comparison, before its length was checked."""
+    from critmoment.exceptions import TrajectoryError
+    from critmoment.recording import initial_state
+    from critmoment.trajectory import Trajectory
+
+    width = twin.scenario.actions.width
+    traj = Trajectory(np.zeros((10, width)), fps=50.0, start=np.zeros(width),
+                      qpos0=np.zeros(3))
+    with pytest.raises(TrajectoryError, match=r"qpos0: expected the model's full joint "
+                                              r"positions, shape \(23,\), got \(3,\)"):
+        initial_state(twin, traj)
+
+
 def test_qpos0_and_object_pose_that_disagree_are_warned_of(twin):
     """Both place the object; object_pose wins (a caller's override), silently until now,
     so a file whose two records disagree started from a pose the user did not check."""
