@@ -36,6 +36,7 @@ import mujoco
 import numpy as np
 from scipy.spatial.transform import Rotation, Slerp
 
+from critmoment import budget
 from critmoment.exceptions import ParameterError
 from critmoment.scenario import Scenario, load_scenario
 from critmoment.trajectory import Trajectory
@@ -101,7 +102,8 @@ class DemoOptions:
 
 def sample_box_pose(seed: int | np.random.Generator) -> np.ndarray:
     """ACT's cube spawn, sampled with ``seed``: (7,) xyz [m] + quat (w, x, y, z) at rest."""
-    rng = seed if isinstance(seed, np.random.Generator) else np.random.default_rng(seed)
+    rng = (seed if isinstance(seed, np.random.Generator)
+           else np.random.default_rng(budget.check_seed(seed)))
     x = rng.uniform(*BOX_X)
     y = rng.uniform(*BOX_Y)
     return np.array([x, y, BOX_REST_Z, 1.0, 0.0, 0.0, 0.0])

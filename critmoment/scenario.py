@@ -1725,7 +1725,10 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise ScenarioError(f"{path}: not valid TOML: {exc}") from exc
+        hint = ("; this is an MJCF model: a scenario is a scenario.toml naming it (critmoment "
+                "init MODEL.xml --object BODY --task KIND writes one)"
+                if text.lstrip().startswith("<") else "")
+        raise ScenarioError(f"{path}: not valid TOML: {exc}{hint}") from exc
     # the manifest names the bytes parsed here, not what the file holds at report time
     return dataclasses.replace(scenario_from_dict(raw, base=path.parent, path=path),
                                sha256=hashlib.sha256(data).hexdigest())

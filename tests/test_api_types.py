@@ -235,3 +235,20 @@ def test_the_public_enums_print_as_their_values():
     assert str(Verdict.CONDITIONAL) == "CONDITIONAL" and f"{Verdict.SAFE}" == "SAFE"
     assert str(MomentLabel.CHANGE_POINT) == "change-point"
     assert f"{Outcome.DROPPED}" == "dropped"
+
+
+def test_a_demo_seed_and_an_mjcf_given_as_scenario_are_named(tmp_path):
+    """demos.scripted_transfer(seed=-1) raised numpy's ValueError, and --scenario scene.xml
+    said only "not valid TOML: Invalid statement"."""
+    from critmoment import demos
+    from critmoment.exceptions import ParameterError, ScenarioError
+    from critmoment.scenario import load_scenario
+
+    for seed in (-1, "a", 1.5):
+        with pytest.raises(ParameterError, match=r"seed: expected an integer"):
+            demos.sample_box_pose(seed)
+    xml = tmp_path / "scene.xml"
+    xml.write_text("<mujoco><worldbody/></mujoco>\n")
+    with pytest.raises(ScenarioError, match=r"not valid TOML: .*; this is an MJCF model: a "
+                                            r"scenario is a scenario.toml naming it"):
+        load_scenario(xml)
