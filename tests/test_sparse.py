@@ -345,15 +345,26 @@ def test_critical_force_limit_has_the_closed_form_value(pulling):
     exact = 5.0 / (1.0 + math.log(cost.B / cost.threshold) / cost.beta)
     res = sparse.evaluate(recording, twin, [0], [[0.5 * exact], [2 * exact]])
     np.testing.assert_allclose(res.fos_motor[0], [2 * 5 / exact, 0.5 * 5 / exact], rtol=1e-12)
-    (cv,) = sparse.critical_values(recording, twin, [0], rtol=1e-4, others=[OthersAt.NOMINAL])
+    # a motor excursion counts once it lasts the ground truth's saturation time; here the
+    # cost's crossing itself is tested, as one step decides it
+    engine = SparseEvaluator(recording, twin)
+    engine.motor_steps = 1
+    (cv,) = sparse.critical_values(recording, twin, [0], rtol=1e-4, others=[OthersAt.NOMINAL],
+                                   evaluator=engine)
     assert cv.parameter == "force_limit" and cv.others == {}
     assert cv.value == pytest.approx(exact, rel=1e-4)
     assert cv.direction == FailSide.ABOVE and cv.dominant is Term.MOTOR
     # under the uniform prior on [1, 30] N·m the motion succeeds with P = (L* − 1) / 29;
     # 256 Sobol points put one point in each 1/256 of the range
-    ps = sparse.probability_of_success(recording, twin, [0], n=256, seed=5)
+    ps = sparse.probability_of_success(recording, twin, [0], n=256, seed=5, evaluator=engine)
     assert abs(ps.p - (exact - 1.0) / 29.0) <= 1 / 256
     assert ps.dominant is Term.MOTOR and ps.dominant_actuator == "hinge"
+    # with the default decision, 20 N·m over the 5 N·m rating that falls under the threshold
+    # within 40 ms (the joint reaching its target) is no motor failure, 10 N·m held to the
+    # recording's end is
+    brief = SparseEvaluator(recording, twin).evaluate([0], [[10.0], [20.0]])
+    assert (brief.cost[0] > cost.threshold).all()
+    assert brief.failure[0].tolist() == [sparse.Failure.MOTOR, sparse.Failure.PASS]
 
 
 def _describe(cv: sparse.CriticalValue) -> str:
