@@ -132,6 +132,12 @@ def at_scenario_rate(traj: Trajectory, twin: Twin) -> Trajectory:
     return traj.with_rate_from(sc.fps)
 
 
+def _too_short(duration: float) -> str:
+    """A hint where the trajectory, not the scenario, is the likely mistake."""
+    return (f": a trajectory of {duration:g} s is too short to audit (a chunk of a few "
+            "samples? give the whole motion)" if duration < 0.2 else "")
+
+
 def check_task_window(twin: Twin, traj: Trajectory) -> None:
     """The task's final window (``settle_time``) must be at most half the motion, or its
     success rule reaches back toward the start, where the object rests untouched on its
@@ -149,13 +155,14 @@ def check_task_window(twin: Twin, traj: Trajectory) -> None:
         raise ScenarioError(
             f"[task] settle_time: {twin.task.settle_time:g} s, but the trajectory{_source(traj)} "
             f"lasts {duration:g} s; expected a final window of at most half the motion "
-            f"(default 0.05 s)")
+            f"(default 0.05 s, where [task] sets none){_too_short(duration)}")
     persistence = twin.scenario.sparse.persistence
     if persistence > 0.5 * duration:
         raise ScenarioError(
             f"[sparse] persistence: {persistence:g} s, but the trajectory{_source(traj)} lasts "
             f"{duration:g} s; expected a time a contact-FOS excursion must last to count "
-            f"(default 0.02 s), at most half the motion (else almost no excursion counts)")
+            f"(default 0.02 s, where [sparse] sets none), at most half the motion (else almost "
+            f"no excursion counts){_too_short(duration)}")
     creep = twin.scenario.sparse.creep_horizon * float(twin.model.opt.timestep)
     if creep >= duration:
         raise ScenarioError(

@@ -936,3 +936,15 @@ def test_an_anisotropic_pair_made_isotropic_by_the_friction_parameter_is_warned_
     with pytest.warns(CritmomentWarning, match=r"explicit <pair> left/left_pad–box has "
                                               r"anisotropic sliding friction \(1.2, 0.3\)"):
         Twin(load_scenario(folder))
+
+
+def test_a_trajectory_of_a_few_samples_is_named_too_short(twin):
+    """Two samples at 50 Hz passed the T >= 2 check and then failed on "[task] settle_time",
+    a key the user never set."""
+    import critmoment as cm
+    from critmoment.trajectory import Trajectory
+
+    actions = np.tile(np.r_[np.zeros(6), 1.0, np.zeros(6), 1.0], (2, 1))
+    with pytest.raises(ScenarioError, match=r"\(default 0.05 s, where \[task\] sets none\): a "
+                                            r"trajectory of 0.04 s is too short to audit"):
+        cm.analyze(Trajectory(actions, fps=50.0), twin=twin)
