@@ -57,14 +57,14 @@ diverging sample can never count as safe) and its factors of safety NaN; with
 names the moment and the sample.
 
 Deciding. A pair (moment, sample) fails (:class:`Failure`) when, within the horizon,
-the cost exceeds the threshold through the motor term for ``persistence`` seconds in a row
-(MOTOR: a motor that touches its force limit for a few milliseconds and lets go has not
-failed), when the cost exceeds it through the contact term for ``persistence`` seconds in a
+the cost exceeds the threshold through the motor term for as long as the ground truth's
+saturation must last (MOTOR, :attr:`SparseEvaluator.motor_steps`, 50 ms: a motor that
+touches its force limit for a few milliseconds and lets go has not failed), when the cost exceeds it through the contact term for ``persistence`` seconds in a
 row (CONTACT: an excursion that starts within the horizon and lasts; a one-step chatter of
 the contact forces does not fail a good grasp), when the object moves in its holding gripper by more
 than ``slip_tolerance`` relative to the nominal run (SLIP, measured, see below), or when
 it diverges. An excursion still open at the horizon's end is followed, with the recorded
-controls, until it has lasted ``persistence`` or ended; one still open where no more steps
+controls, until it has lasted ``persistence`` (a motor one ``motor_steps``) or ended; one still open where no more steps
 can be taken (SOLVE mode, the recording's end) counts. With ``creep_horizon`` longer than
 the horizon, every pair that has not failed is stepped that long to measure its slip: on
 soft contact models (see :mod:`critmoment.contactmodel`) a grip creeps while its force
@@ -202,7 +202,8 @@ class Failure(enum.IntEnum):
     PASS = 0
     """It does not fail."""
     MOTOR = 1
-    """The cost exceeds the threshold through the motor term for ``persistence`` [s]."""
+    """The cost exceeds the threshold through the motor term for
+    :attr:`SparseEvaluator.motor_steps`."""
     CONTACT = 2
     """The cost exceeds the threshold through the contact term for ``persistence`` [s]."""
     SLIP = 3
@@ -233,7 +234,7 @@ STICKING_MARGIN = 0.05
 #: at FOS 2.65, cost 1.03; 39 of 64 samples failed so and really succeed; the bundled ALOHA
 #: with its shoulder's force limit 3-7 N·m in the box and no rating: samples at FOS
 #: 1.001-1.05 really succeed). Whether it really fails is for the sample's own run to say
-MOTOR_MARGIN = 1.0 / 0.999 - 1.0
+MOTOR_MARGIN = 1.0 / OutcomeCriteria.saturation - 1.0
 #: largest displacement [m] of the object in its holding gripper over an evaluation that
 #: is a soft contact's give under load, not a slide: on an elliptic cone, a contact failure
 #: whose object, measured at every step decided, moved no more is a sticking one whatever
