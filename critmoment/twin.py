@@ -629,10 +629,18 @@ class Twin:
     def lowest_limits(self) -> np.ndarray:
         """The force limits at the worst corner of the box, (nu,): :attr:`limits` with each
         force-limit parameter at the low end of its range (the analytic bounds hold over
-        the whole box with them)."""
+        the whole box with them). Where ``[limits]`` rates the actuator and the parameter is
+        a protective clamp, the clamp's low end where it is tighter than the rating: the
+        actuator cannot give more (a bound had said "no motor saturates" where every sample's
+        clamped shoulder lost its tracking)."""
         out = np.asarray(self.limits, dtype=np.float64).copy()
         for j, a in self._limit_columns:
             out[a] = float(self.scenario.box.parameters[j].low)
+        columns = {j for j, _ in self._limit_columns}
+        for j, (p, a) in enumerate(zip(self.scenario.box.parameters, self._param_ids,
+                                       strict=True)):
+            if isinstance(p, ForceLimitParameter) and j not in columns:
+                out[int(a)] = min(out[int(a)], float(p.low))
         return out
 
     def controls(self, actions: np.ndarray) -> np.ndarray:

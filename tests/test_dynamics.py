@@ -832,3 +832,20 @@ def test_load_bound_rejects_bad_options(swing):
         dyn.trajectory_load_bound(rec, twin, masses=[-1.0])
     with pytest.raises(ParameterError, match="saturation"):
         dyn.trajectory_load_bound(rec, twin, saturation=1.5)
+
+
+@pytest.mark.parametrize(("low", "lowest"), [(1.0, 1.0), (6.0, 5.0)])
+def test_a_rated_actuators_clamp_bounds_the_load_where_tighter(tmp_path, low, lowest):
+    """With a ``[limits]`` rating (5 N·m) a force_limit parameter is a protective clamp;
+    the analytic bounds took the rating alone and said "no motor saturates" beside runs
+    whose clamped shoulder lost its tracking. The box's worst corner is the tighter of the
+    two."""
+    twin = _swing_twin(tmp_path, uncertainty=f"""[uncertainty.hinge_limit]
+kind = "force_limit"
+actuator = "hinge"
+range = [{low}, 8.0]
+nominal = 8.0
+""")
+    hinge = twin.actuator_names.index("hinge")
+    assert twin.limits[hinge] == 5.0  # the checks divide by the rating
+    assert twin.lowest_limits[hinge] == lowest
