@@ -438,7 +438,7 @@ class _Watch:
             started = found[:, None, :] | (new[:, None, :] & (
                 np.arange(s)[None, :, None] >= first[:, None, :]))
             moved = np.einsum("gij,csgj->csgi", ev._projectors, diff - offset[:, None])
-            counted = both & started & ev._alone[k:k + s][None]
+            counted = both & started & ev._counted[k:k + s][None]
             slip = np.where(counted, np.linalg.norm(moved, axis=-1), 0.0).max(axis=-1)
             self.offset[ids] = offset
             self.found[ids] = found | new

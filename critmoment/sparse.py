@@ -852,11 +852,14 @@ class SparseEvaluator:
         self._anchors, self._projectors = grip_frames(model, twin.scenario)
         held = sig.contact_gripper & ~sig.contact_support[:, None]
         self._held = held
-        # slip counts where the nominal run holds the object with one gripper alone, and
-        # that gripper does not open (Twin.letting_go): an object moves in a gripper that
-        # lets go (the release), which is not slip
-        self._alone = (held & (held.sum(axis=1, keepdims=True) == 1)
-                       & ~twin.letting_go(recording.controls, sig.contact_gripper))
+        # slip counts where the nominal run holds the object with one gripper alone: an
+        # object moves in a gripper that lets go (the release), which is not slip
+        self._alone = held & (held.sum(axis=1, keepdims=True) == 1)
+        # the ground truth's rule, for the chains' watch: nor where that gripper's command
+        # opens the hold's release (Twin.letting_go). Sparse evaluation keeps measuring
+        # there: a contact failure in a release whose measured slip settles is for its own
+        # run (a Panda opening to 0.3 for the carry, 4 false unsafes of 64 without it)
+        self._counted = self._alone & ~twin.letting_go(recording.controls, sig.contact_gripper)
         self._nominal_rel = np.full((self._states.shape[0], len(self._anchors), 3), np.nan)
         self._sensordata = getattr(recording, "sensordata", None)
         self._completed = bool(getattr(recording, "completed", False))

@@ -189,6 +189,26 @@ def _channel_range(model: mujoco.MjModel, a: int, scale: float, offset: float
     return min(lo, hi), max(lo, hi)
 
 
+def _release_start(u: np.ndarray) -> int | None:
+    """Where a hold's release starts, an index into its commanded opening ``u`` (0 closed,
+    1 open), or None where the hold does not end in one: the hold ends opened by
+    ``RELEASE_OPENING`` past the tightest command before (the last such stretch reaching the
+    end), and the release is that stretch's last rise through halfway from the tightest to
+    the largest opening in it."""
+    if u.size == 0:
+        return None
+    low = np.minimum.accumulate(u)
+    opened = u > low + RELEASE_OPENING
+    if not opened[-1]:
+        return None
+    closed = np.flatnonzero(~opened)
+    first = int(closed[-1]) + 1 if closed.size else 0
+    base = float(low[first])
+    half = base + 0.5 * (float(u[first:].max()) - base)
+    under = np.flatnonzero(u[first:] <= half)
+    return first + (int(under[-1]) + 1 if under.size else 0)
+
+
 class Twin:
     """A scenario bound to its compiled model.
 
@@ -901,12 +921,16 @@ class Twin:
         return self._grip_chan
 
     def letting_go(self, controls: np.ndarray, touching: np.ndarray) -> np.ndarray:
-        """Where each gripper lets its object go, (T, G) bool: within a hold (the gripper
-        touching the object, gaps up to ``HOLD_GAP`` bridged), from where its command has
-        opened by ``RELEASE_OPENING`` of its range past its tightest in that hold, for as
-        long as it stays so open. ACT's scripted hand-over opens the picker 0.95 s before
+        """Where each gripper lets its object go, (T, G) bool: the release that ends a hold
+        (the gripper touching the object, gaps up to ``HOLD_GAP`` bridged), from where the
+        command's last rise crosses halfway to its opening at the hold's end, where it ends
+        the hold opened by ``RELEASE_OPENING`` of its range or more past its tightest
+        (:func:`_release_start`). ACT's scripted hand-over opens the picker 0.95 s before
         the receiver touches the cube: the cube slid 5-6 mm down the opening fingers into
-        the receiver and the hand-over succeeded, but that had counted as a slip.
+        the receiver and the hand-over succeeded, but that had counted as a slip. A command
+        that jitters or opens partly during the carry and closes again, or stays partly open
+        until a later release, is no release there: a cube falling out of a jittering grip
+        1.7 s before the release had been called a success once its slip stopped counting.
 
         Args:
             controls: per-step controls, (T, nu).
@@ -926,8 +950,9 @@ class Twin:
                     hold[a:b] = True
             edges = np.flatnonzero(np.diff(np.concatenate([[0], hold.astype(np.int8), [0]])))
             for a, b in zip(edges[::2], edges[1::2], strict=True):
-                u = opening[a:b, g]
-                out[a:b, g] = u > np.minimum.accumulate(u) + RELEASE_OPENING
+                start = _release_start(opening[a:b, g])
+                if start is not None:
+                    out[a + start:b, g] = True
         return out
 
     def contact_flags(self, sensordata: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
