@@ -948,10 +948,22 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel, *,
             f"[uncertainty.{p.name}]: body {p.target!r} has no mass in the MJCF "
             f"({model.body_mass[index]:g} kg), so moving its centre of mass changes nothing; "
             "name a body with mass (the object, or a link of the arm)")
-    elif isinstance(p, ComOffsetParameter) and (span := _com_span(model, index)) is not None:
-        lo, hi = span
-        far = [v for v in (p.low, p.high) if not lo - 1e-9 <= v <= hi + 1e-9]
+    elif isinstance(p, ComOffsetParameter) and (reach := _body_reach(model, index)) is not None:
+        span = _com_span(model, index)
+        ipos = model.body_ipos[index]
+        # a centre of mass in no geom (a frame, two separate parts): within their reach
+        far = ([v for v in (p.low, p.high) if not span[0] - 1e-9 <= v <= span[1] + 1e-9]
+               if span is not None else
+               [v for v in (p.low, p.high)
+                if np.linalg.norm(ipos + np.array([v, 0.0, 0.0])) > reach])
+        if far and span is None:
+            raise ScenarioError(
+                f"[uncertainty.{p.name}]: an offset of {far[0]:g} m along x puts the centre of "
+                f"mass of body {p.target!r} outside every geom it has (they lie within "
+                f"{reach:.3g} m of its frame); expected a range within the body, whose centre "
+                f"of mass lies inside its matter (is the range in mm?)")
         if far:
+            lo, hi = span
             raise ScenarioError(
                 f"[uncertainty.{p.name}]: an offset of {far[0]:g} m along x puts the centre of "
                 f"mass of body {p.target!r} outside every geom it has (along its x axis "
@@ -1004,6 +1016,10 @@ def _com_span(model: mujoco.MjModel, body: int) -> tuple[float, float] | None:
     geoms, (low, high) [m], without leaving them; None for a body without geoms or whose
     centre of mass lies in none (a rigid body's centre of mass lies inside its matter)."""
     geoms = np.flatnonzero(model.geom_bodyid == body)
+    # the body's matter is what it collides with, where it has such geoms (a large visual
+    # mesh beside a small collision box is no matter)
+    solid = geoms[(model.geom_contype[geoms] != 0) | (model.geom_conaffinity[geoms] != 0)]
+    geoms = solid if solid.size else geoms
     if geoms.size == 0:
         return None
     ipos = model.body_ipos[body]

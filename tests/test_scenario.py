@@ -948,3 +948,21 @@ def test_a_trajectory_of_a_few_samples_is_named_too_short(twin):
     with pytest.raises(ScenarioError, match=r"\(default 0.05 s, where \[task\] sets none\): a "
                                             r"trajectory of 0.04 s is too short to audit"):
         cm.analyze(Trajectory(actions, fps=50.0), twin=twin)
+
+
+def test_a_centre_of_mass_offset_is_checked_against_the_bodys_solid_geoms(tmp_path):
+    """A 40 cm visual geom (no collisions, no mass) beside the 4 cm cube counted as its
+    matter, and a centre of mass in no geom (a frame, two separate parts) skipped the
+    check: ±0.1 m loaded on both."""
+    edits = [('[uncertainty.friction]\ngeom = "box"', '[uncertainty.com_offset]\nbody = "box"'),
+             ("range = [0.2, 1.5]", "range = [-0.1, 0.1]"), ("nominal = 1.0", "nominal = 0.0")]
+    visual = _copy(tmp_path / "visual", {"scenario.toml": edits, "scene.xml": [(
+        '<freejoint name="box_joint"/>', '<freejoint name="box_joint"/><geom type="box" '
+        'size="0.2 0.2 0.2" contype="0" conaffinity="0" mass="0" group="1"/>')]})
+    with pytest.raises(ScenarioError, match=r"span offsets -0.02 to 0.02 m"):
+        load_scenario(visual)
+    apart = _copy(tmp_path / "apart", {"scenario.toml": edits, "scene.xml": [(
+        '<freejoint name="box_joint"/>', '<freejoint name="box_joint"/><geom type="sphere" '
+        'size="0.01" pos="0 0.05 0" mass="0.05"/>')]})
+    with pytest.raises(ScenarioError, match=r"outside every geom it has \(they lie within"):
+        load_scenario(apart)
