@@ -853,3 +853,27 @@ def test_an_arm_too_weak_for_its_load_that_sags_onto_the_table_is_infeasible(tmp
     with pytest.raises(InfeasibleTwinError, match=r"the twin cannot reproduce the nominal "
                        r"motion: joint 'joint2'.*too weak for the load"):
         feasibility.preflight(traj, _record(twin, traj), twin)
+
+
+def test_a_rated_actuator_at_its_clamp_that_tracks_is_no_error(tmp_path, demo_traj):
+    """ALOHA's right elbow rated 15 N·m in [limits], its force_limit parameter (a clamp)
+    at 3.6 N·m nominal: the elbow sits at the clamp for 0.29 s and tracks within 0.016 rad,
+    every sample from 3.28 N·m up succeeds, and the pre-flight refused the run (exit 2). The
+    ground truth reads saturation against the rating; the check says so and goes on."""
+    import shutil
+
+    from critmoment.scenario import bundled_scenario_path
+
+    folder = tmp_path / "clamp"
+    shutil.copytree(bundled_scenario_path().parent, folder)
+    toml = (folder / "scenario.toml").read_text()
+    assert toml.count("[uncertainty.mass]") == 1 and "\nelbow = 15.0" in toml
+    toml = toml.replace("[uncertainty.mass]", '[uncertainty.elbow]\nkind = "force_limit"\n'
+                        'actuator = "right/elbow"\nrange = [2.5, 3.6]\nnominal = 3.6\n\n'
+                        "[uncertainty.mass]")
+    (folder / "scenario.toml").write_text(toml)
+    twin = Twin(load_scenario(folder))
+    report = feasibility.preflight(demo_traj, _record(twin, demo_traj), twin)
+    assert any("actuator 'right/elbow' (joint 'right/elbow') is at its forcerange 3.6 N·m" in w
+               and "under its rating 15 N·m in [limits]; it tracks its targets" in w
+               for w in report.warnings)
