@@ -995,6 +995,9 @@ def _h5_dataset(fh: Any, name: str, *, path: Path) -> Any:
 def _h5_read(dset: Any, *, path: Path) -> np.ndarray:
     """Reads a numeric HDF5 dataset after checking its declared size."""
     what = f"{_short(path)!r} dataset {dset.name}"
+    if dset.shape is None:  # an HDF5 null dataspace: declared, holding nothing
+        raise TrajectoryError(f"{what}: expected an array of numbers, got an empty (null) "
+                              f"dataset with no shape")
     if dset.dtype.kind not in "iufb":
         raise TrajectoryError(
             f"{what}: expected a numeric dataset, got dtype {dset.dtype}"
@@ -1077,6 +1080,9 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
                 qpos = _h5_read(qpos_dset, path=path)
             object_pose = _h5_object_pose(fh, path=path)
             attrs = {str(k): _json_value(v) for k, v in fh.attrs.items()}
+            # the rates as stored (the JSON form of meta spells a NaN as text)
+            stored = {key: fh.attrs[key] for key in ("fps", "frame_rate", "control_freq")
+                      if key in fh.attrs}
     except CritmomentError:
         raise
     except (OSError, KeyError, RuntimeError, ValueError, TypeError, MemoryError) as exc:
@@ -1113,9 +1119,9 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
 
     # a rate the file records (a root attribute ``fps``, as some exporters write it) is the
     # episode's; without one, ACT's own 50 Hz
-    rates = {key: _as_rate(attrs[key], what=f"{_short(path)!r} attribute {key!r}",
+    rates = {key: _as_rate(value, what=f"{_short(path)!r} attribute {key!r}",
                            error=TrajectoryError)
-             for key in ("fps", "frame_rate", "control_freq") if key in attrs}
+             for key, value in stored.items()}
     if len(set(rates.values())) > 1 and fps not in rates.values():
         raise TrajectoryError(
             f"{str(path)!r}: the root attributes record different rates "

@@ -219,6 +219,28 @@ def test_act_hdf5_reads_start_and_attrs(tmp_path):
     assert load_trajectory(path, fps=25).fps == 25.0
 
 
+def test_act_hdf5_null_action_is_named(tmp_path):
+    """A /action declared with no shape (an HDF5 null dataspace) was "corrupt or truncated
+    HDF5 data ... TypeError: 'NoneType' object is not iterable"."""
+    path = tmp_path / "null.hdf5"
+    with h5py.File(path, "w") as f:
+        f.create_dataset("action", data=h5py.Empty("f8"))
+    with pytest.raises(TrajectoryError, match=r"dataset /action: expected an array of "
+                                              r"numbers, got an empty \(null\) dataset"):
+        load_trajectory(path)
+
+
+def test_act_hdf5_nan_rate_is_named_as_a_number(tmp_path):
+    """A float attribute control_freq = NaN was reported as "got text 'nan'"."""
+    path = tmp_path / "nan.hdf5"
+    with h5py.File(path, "w") as f:
+        f.attrs["control_freq"] = np.nan
+        f.create_dataset("action", data=np.zeros((10, 14)))
+    with pytest.raises(TrajectoryError, match=r"attribute 'control_freq': expected a finite "
+                                              r"number > 0 \[Hz\], got (float64 )?nan"):
+        load_trajectory(path)
+
+
 def test_act_hdf5_missing_action(tmp_path):
     path = tmp_path / "episode_1.h5"
     with h5py.File(path, "w") as f:
