@@ -409,9 +409,7 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
         return report
     settings = sparse_settings(sc, slip_tolerance=slip_tolerance)
     sig = recording.signals
-    held = np.asarray(sig.contact_gripper, bool) & ~np.asarray(sig.contact_support, bool)[:, None]
-    alone = (held & (held.sum(axis=1, keepdims=True) == 1)
-             & ~twin.letting_go(recording.controls, sig.contact_gripper))
+    alone = twin.slip_counted(sig.contact_gripper, sig.contact_support, recording.controls)
     best = None  # (length, start, gripper)
     for g in range(alone.shape[1]):
         edges = np.flatnonzero(np.diff(np.concatenate([[0], alone[:, g].astype(np.int8), [0]])))

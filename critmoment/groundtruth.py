@@ -29,8 +29,8 @@ Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
   gripper's base body, along the pads (the fingers' closing axes removed: squeezing is not
   slip), counted from the step both the sample and the nominal run first hold it with that
   gripper, minus the nominal run's own displacement, at steps where the nominal run holds it
-  with that gripper alone and that gripper's command does not open (an object moves in a
-  gripper that lets go: that is the release; :meth:`~critmoment.twin.Twin.letting_go`).
+  with that gripper alone and not in the release that ends its hold (an object moves in a
+  gripper that lets go: that is the release; :meth:`~critmoment.twin.Twin.slip_counted`).
   With ``slip_is_failure`` (default) a run that slips counts as a failure even when it
   completes the task; otherwise it is ``SUCCESS`` when completed.
 * ``NOT_COMPLETED``: the task is not completed (``completed`` of :func:`classify`: the task's
@@ -698,7 +698,7 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
     everything = samples if reference is not None else np.vstack([box.nominal[None, :],
                                                                   samples])
     frames_ref = None if reference is None else reference.frames
-    letting_go = None
+    counted = None
     parts, diverged = [], []
     for first, out, _mu in batched_rollouts(twin, state0, controls, everything,
                                             model=probe.model, chunk=chunk, nthread=nthread):
@@ -706,10 +706,11 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
         frames = _Frames.read(twin, probe, out["sensordata"], twin.sample_limits(rows))
         if frames_ref is None:
             frames_ref = frames.row(0)
-        if letting_go is None:
-            letting_go = twin.letting_go(controls, frames_ref.contact_gripper)
+        if counted is None:
+            counted = twin.slip_counted(frames_ref.contact_gripper, frames_ref.contact_support,
+                                        controls)
         parts.append(_classify_frames(frames, frames_ref, controls, probe, dt, criteria,
-                                      out["diverged"], out["diverged_step"], letting_go))
+                                      out["diverged"], out["diverged_step"], counted))
         diverged.append(out["diverged"])
     result = Classification.concatenate(parts)
     keep = slice(skip, None)
@@ -783,7 +784,7 @@ def reference_from_recording(recording, twin: Twin,
     ref = frames.row(0)
     own = _classify_frames(frames, ref, controls, probe, dt, criteria, np.zeros(1, bool),
                            np.full(1, -1, np.int64),
-                           twin.letting_go(controls, ref.contact_gripper))
+                           twin.slip_counted(ref.contact_gripper, ref.contact_support, controls))
     return NominalReference(frames=ref, completed=bool(own.completed[0]), n_steps=n,
                             nominal=box.nominal.copy(), outcome=own.outcome[0],
                             first_failure_step=int(own.first_failure_step[0]),
@@ -842,16 +843,15 @@ def tracking_tolerances(criteria: OutcomeCriteria, slide: np.ndarray,
 
 def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, probe: _Probe,
                      dt: float, criteria: OutcomeCriteria, diverged: np.ndarray,
-                     diverged_step: np.ndarray, letting_go: np.ndarray) -> Classification:
+                     diverged_step: np.ndarray, counted: np.ndarray) -> Classification:
+    """Classify the runs ``frames`` against the nominal ``reference``; ``counted``: where a
+    gripper's slip counts (:meth:`Twin.slip_counted` of the nominal run), (T, G)."""
     target = controls[:, probe.motors] * probe.target_scale + probe.target_offset
     excess = np.abs(frames.q - target[None]) - np.abs(reference.q - target)[None]
     # a slide axis's lag [m] against its own tolerance, in the criteria's one comparison
     excess = excess * tracking_tolerances(criteria, probe.slide, criteria.tracking_tolerance)
-    nominal_held = reference.held
-    # nor in a gripper the nominal run opens (``letting_go``, Twin.letting_go): the release
-    alone = (nominal_held & (nominal_held.sum(axis=-1, keepdims=True) == 1)) & ~letting_go
-    slip = grip_slip(frames.position, reference.position, frames.held, nominal_held,
-                     counted=alone, projectors=probe.projectors)
+    slip = grip_slip(frames.position, reference.position, frames.held, reference.held,
+                     counted=counted, projectors=probe.projectors)
     nominal_carried = carried_flags(reference.contact_support, reference.contact_gripper)
     # the task's own physical success rule decides completion (critmoment.task)
     return classify(dt=dt, stage=frames.stage, contact_gripper=frames.contact_gripper,

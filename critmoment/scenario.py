@@ -514,13 +514,19 @@ def _gripper_ends(entry, acts, where, model, grippers, keyframe):
     return [o - c for c, o in zip(closed, open_, strict=True)], closed
 
 
-def _channel_gripper_geoms(model, act_ids, grippers):
-    """Geom ids of the gripper whose geoms move with actuators ``act_ids``, or None."""
-    for g in grippers:
+def channel_gripper(model, act_ids, grippers) -> int | None:
+    """The index of the gripper whose geoms move with actuators ``act_ids``, or None."""
+    for i, g in enumerate(grippers):
         ids = [model.geom(name).id for name in g.geoms]
         if len(ids) >= 2 and act_info.moves_geoms(model, act_ids, ids):
-            return ids
+            return i
     return None
+
+
+def _channel_gripper_geoms(model, act_ids, grippers):
+    """Geom ids of the gripper whose geoms move with actuators ``act_ids``, or None."""
+    i = channel_gripper(model, act_ids, grippers)
+    return None if i is None else [model.geom(name).id for name in grippers[i].geoms]
 
 
 _CONVENTIONS = {"aloha14": _aloha14, "explicit": _explicit}
@@ -938,38 +944,32 @@ def _check_effect(p: Parameter, index: int, model: mujoco.MjModel, *,
             f"[uncertainty.{p.name}]: body {p.target!r} is fixed to the world (no joint "
             "between it and the world), so its mass or centre of mass changes nothing; "
             "name a body that moves (the object, or a link of the arm)")
-    elif isinstance(p, MassParameter) and not model.body_mass[index] > 0:
+    elif isinstance(p, (MassParameter, ComOffsetParameter)) and not model.body_mass[index] > 0:
+        why, which = (("its inertia cannot scale with a mass",
+                       "inertial or geoms with density") if isinstance(p, MassParameter) else
+                      ("moving its centre of mass changes nothing",
+                       "the object, or a link of the arm"))
         raise ScenarioError(
             f"[uncertainty.{p.name}]: body {p.target!r} has no mass in the MJCF "
-            f"({model.body_mass[index]:g} kg), so its inertia cannot scale with a mass; "
-            "name a body with mass (inertial or geoms with density)")
-    elif isinstance(p, ComOffsetParameter) and not model.body_mass[index] > 0:
-        raise ScenarioError(
-            f"[uncertainty.{p.name}]: body {p.target!r} has no mass in the MJCF "
-            f"({model.body_mass[index]:g} kg), so moving its centre of mass changes nothing; "
-            "name a body with mass (the object, or a link of the arm)")
+            f"({model.body_mass[index]:g} kg), so {why}; name a body with mass ({which})")
     elif isinstance(p, ComOffsetParameter) and (reach := _body_reach(model, index)) is not None:
         span = _com_span(model, index)
-        ipos = model.body_ipos[index]
-        # a centre of mass in no geom (a frame, two separate parts): within their reach
-        far = ([v for v in (p.low, p.high) if not span[0] - 1e-9 <= v <= span[1] + 1e-9]
-               if span is not None else
-               [v for v in (p.low, p.high)
-                if np.linalg.norm(ipos + np.array([v, 0.0, 0.0])) > reach])
-        if far and span is None:
-            raise ScenarioError(
-                f"[uncertainty.{p.name}]: an offset of {far[0]:g} m along x puts the centre of "
-                f"mass of body {p.target!r} outside every geom it has (they lie within "
-                f"{reach:.3g} m of its frame); expected a range within the body, whose centre "
-                f"of mass lies inside its matter (is the range in mm?)")
+        if span is None:
+            # a centre of mass in no geom (a frame, two separate parts): within their reach
+            ipos = model.body_ipos[index]
+            far = [v for v in (p.low, p.high)
+                   if np.linalg.norm(ipos + np.array([v, 0.0, 0.0])) > reach]
+            where = f"they lie within {reach:.3g} m of its frame"
+        else:
+            far = [v for v in (p.low, p.high) if not span[0] - 1e-9 <= v <= span[1] + 1e-9]
+            where = (f"along its x axis through its centre of mass they span offsets "
+                     f"{span[0]:.3g} to {span[1]:.3g} m")
         if far:
-            lo, hi = span
             raise ScenarioError(
                 f"[uncertainty.{p.name}]: an offset of {far[0]:g} m along x puts the centre of "
-                f"mass of body {p.target!r} outside every geom it has (along its x axis "
-                f"through its centre of mass they span offsets {lo:.3g} to {hi:.3g} m); "
-                "expected a range within the body, whose centre of mass lies inside its "
-                "matter (is the range in mm?)")
+                f"mass of body {p.target!r} outside every geom it has ({where}); expected a "
+                f"range within the body, whose centre of mass lies inside its matter (is the "
+                f"range in mm?)")
     elif isinstance(p, ForceLimitParameter) and not model.actuator_forcelimited[index]:
         raise ScenarioError(
             f"[uncertainty.{p.name}]: actuator {p.target!r} has no forcerange in the MJCF "

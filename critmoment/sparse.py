@@ -854,9 +854,9 @@ class SparseEvaluator:
         self._held = held
         # slip counts where the nominal run holds the object with one gripper alone: an
         # object moves in a gripper that lets go (the release), which is not slip
-        self._alone = held & (held.sum(axis=1, keepdims=True) == 1)
+        self._alone = twin.held_alone(sig.contact_gripper, sig.contact_support)
         # the ground truth's rule, for the chains' watch: nor where that gripper's command
-        # opens the hold's release (Twin.letting_go). Sparse evaluation keeps measuring
+        # opens the hold's release (Twin.slip_counted). Sparse evaluation keeps measuring
         # there: a contact failure in a release whose measured slip settles is for its own
         # run (a Panda opening to 0.3 for the carry, 4 false unsafes of 64 without it)
         self._counted = self._alone & ~twin.letting_go(recording.controls, sig.contact_gripper)
@@ -1676,9 +1676,10 @@ class SparseEvaluator:
             # the steps where an excursion starting within the horizon has lasted ``steps``
             # (or is open where no more steps can be taken), those counted, the run lengths,
             # and the excursions open at the last step taken
-            run = np.zeros((nsim, total), np.int64)
-            for j in range(total):
-                run[:, j] = (run[:, j - 1] + 1 if j else 1) * excursion[:, j]
+            # the run length at each step: steps since the last one off the excursion
+            j = np.arange(total, dtype=np.int64)[None, :]
+            last_off = np.maximum.accumulate(np.where(excursion, -1, j), axis=1)
+            run = np.where(excursion, j - last_off, 0)
             counted = excursion & ((np.arange(total)[None, :] - run + 1) < self.horizon)
             fails = counted & (run >= steps)
             if still is not None:

@@ -21,6 +21,7 @@ from __future__ import annotations
 import contextlib
 import copy
 import dataclasses
+import functools
 import math
 import os
 import types
@@ -39,7 +40,7 @@ from critmoment.exceptions import (
     TrajectoryError,
 )
 from critmoment.params import ForceLimitParameter, FrictionParameter
-from critmoment.scenario import Scenario
+from critmoment.scenario import Scenario, channel_gripper
 from critmoment.task import TaskEvidence
 
 __all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "Twin", "carried_flags", "lifted_flags",
@@ -654,13 +655,11 @@ class Twin:
         actuator cannot give more (a bound had said "no motor saturates" where every sample's
         clamped shoulder lost its tracking)."""
         out = np.asarray(self.limits, dtype=np.float64).copy()
-        for j, a in self._limit_columns:
-            out[a] = float(self.scenario.box.parameters[j].low)
         columns = {j for j, _ in self._limit_columns}
         for j, (p, a) in enumerate(zip(self.scenario.box.parameters, self._param_ids,
                                        strict=True)):
-            if isinstance(p, ForceLimitParameter) and j not in columns:
-                out[int(a)] = min(out[int(a)], float(p.low))
+            if isinstance(p, ForceLimitParameter):
+                out[int(a)] = float(p.low) if j in columns else min(out[int(a)], float(p.low))
         return out
 
     def controls(self, actions: np.ndarray) -> np.ndarray:
@@ -894,7 +893,7 @@ class Twin:
         controls = np.asarray(controls, dtype=np.float64)
         out = np.full(controls.shape[:-1] + (len(self.scenario.grippers),), np.nan)
         conv = self.scenario.actions
-        for g, channels in enumerate(self._gripper_channels()):
+        for g, channels in enumerate(self._grip_channels):
             parts = [(controls[..., a] - o) / sc
                      for c in channels
                      for a, sc, o in zip(self._chan_act[c], conv.scales[c], conv.offsets[c],
@@ -903,22 +902,33 @@ class Twin:
                 out[..., g] = np.mean(parts, axis=0)
         return out
 
-    def _gripper_channels(self) -> list[list[int]]:
+    @functools.cached_property
+    def _grip_channels(self) -> list[list[int]]:
         """Per gripper, the normalised action channels whose actuators move its geoms."""
-        if getattr(self, "_grip_chan", None) is None:
-            conv, model = self.scenario.actions, self.model
-            found: list[list[int]] = [[] for _ in self.scenario.grippers]
-            for c, acts in enumerate(self._chan_act):
-                if not conv.normalised[c]:
-                    continue
-                for g, grip in enumerate(self.scenario.grippers):
-                    ids = [model.geom(name).id for name in grip.geoms]
-                    if len(ids) >= 2 and act_info.moves_geoms(model, [int(a) for a in acts],
-                                                              ids):
-                        found[g].append(c)
-                        break
-            self._grip_chan = found
-        return self._grip_chan
+        grippers = self.scenario.grippers
+        found: list[list[int]] = [[] for _ in grippers]
+        for c, acts in enumerate(self._chan_act):
+            g = (channel_gripper(self.model, [int(a) for a in acts], grippers)
+                 if self.scenario.actions.normalised[c] else None)
+            if g is not None:
+                found[g].append(c)
+        return found
+
+    @staticmethod
+    def held_alone(contact_gripper: np.ndarray, contact_support: np.ndarray) -> np.ndarray:
+        """Where each gripper holds the object alone, (T, G) bool: touching it off its
+        support, no other gripper touching it (an object moves in a gripper that lets go
+        to another, the hand-over's release)."""
+        held = np.asarray(contact_gripper, bool) & ~np.asarray(contact_support, bool)[..., None]
+        return held & (held.sum(axis=-1, keepdims=True) == 1)
+
+    def slip_counted(self, contact_gripper: np.ndarray, contact_support: np.ndarray,
+                     controls: np.ndarray) -> np.ndarray:
+        """Where the ground truth counts a gripper's slip in the nominal run, (T, G) bool:
+        it holds the object alone (:meth:`held_alone`) and is not in the release that ends
+        its hold (:meth:`letting_go`)."""
+        return (self.held_alone(contact_gripper, contact_support)
+                & ~self.letting_go(controls, contact_gripper))
 
     def letting_go(self, controls: np.ndarray, touching: np.ndarray) -> np.ndarray:
         """Where each gripper lets its object go, (T, G) bool: the release that ends a hold

@@ -45,7 +45,7 @@ import numpy as np
 
 from critmoment.exceptions import ParameterError
 from critmoment.moments import Moment
-from critmoment.params import UncertaintyBox
+from critmoment.params import UncertaintyBox, kind_of
 from critmoment.sparse import SparseResult, wilson_interval
 
 __all__ = [
@@ -1430,9 +1430,9 @@ _SUGGEST = {
               "the uncertainty of {box}, or push the object instead of lifting it"),
     "diverged": ("simulation diverged", "check the model and the trajectory near this moment"),
 }
-#: how a suggestion names a parameter of each kind
-_PARAMETER_WORDS = {"MassParameter": "mass", "FrictionParameter": "friction",
-               "ComOffsetParameter": "centre of mass", "ForceLimitParameter": "force limit"}
+#: how a suggestion names a parameter of each kind (:data:`critmoment.params.PARAMETER_KINDS`)
+_PARAMETER_WORDS = {"mass": "mass", "friction": "friction", "com_offset": "centre of mass",
+                    "force_limit": "force limit"}
 
 
 def _box_words(box: UncertaintyBox | None) -> str:
@@ -1440,15 +1440,16 @@ def _box_words(box: UncertaintyBox | None) -> str:
     "joint2's force limit", ..."""
     if box is None:
         return "the uncertain parameters"
-    words = [(p.target, _PARAMETER_WORDS.get(type(p).__name__, p.name))
-             for p in box.parameters]
-    targets = {t for t, _ in words}
-    object_kinds = {"MassParameter", "FrictionParameter", "ComOffsetParameter"}
-    if all(type(p).__name__ in object_kinds for p in box.parameters) and len(targets) == 1:
-        names = [w for _, w in words]
-        return "the object's " + (" and ".join(names) if len(names) <= 2 else
-                                  ", ".join(names[:-1]) + " and " + names[-1])
-    names = [f"{t}'s {w}" for t, w in words]
+    kinds = [kind_of(p) for p in box.parameters]
+    words = [_PARAMETER_WORDS.get(k, p.name) for k, p in zip(kinds, box.parameters, strict=True)]
+    targets = {p.target for p in box.parameters}
+    if len(targets) == 1 and set(kinds) <= {"mass", "friction", "com_offset"}:  # the object's
+        return "the object's " + _and(words)
+    return _and([f"{p.target}'s {w}" for p, w in zip(box.parameters, words, strict=True)])
+
+
+def _and(names: Sequence[str]) -> str:
+    """``a``, ``a and b``, ``a, b and c``."""
     return " and ".join(names) if len(names) <= 2 else ", ".join(names[:-1]) + " and " + names[-1]
 
 

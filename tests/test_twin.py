@@ -851,7 +851,7 @@ def test_a_gripper_that_opens_during_a_hold_is_letting_go(twin):
     once its slip stopped counting)."""
     t = 1200
     conv = twin.scenario.actions
-    right = twin._gripper_channels()[1][0]
+    right = twin._grip_channels[1][0]
     u = np.full(t, 0.3)
     u[100:200] = np.linspace(0.3, 0.05, 100)  # tightens
     u[200:400] = 0.05 + 0.2 * (np.arange(200) % 20 < 5)  # jitters past a tenth, and back
