@@ -1075,7 +1075,7 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
         twin: its twin.
         evaluator: the audit's sparse evaluator.
         steps: the audited moments' steps, (m,).
-        sides: per parameter, the failing side ("above"/"below").
+        sides: per parameter, the failing side ("above"/"below"/"both").
         options: the decision options.
         nominal_completed: the nominal run completes the task.
         exhaustive: evaluate every moment over its whole horizon (else first failure).

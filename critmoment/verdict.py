@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import dataclasses
 import enum
+import itertools
 import math
 import numbers
 from collections.abc import Mapping, Sequence
@@ -543,31 +544,40 @@ def worst_cases_to_rerun(moments: Sequence[MomentReport], worst_failed: Mapping[
 def fail_sides(samples: np.ndarray, failed: np.ndarray, box: UncertaintyBox,
                critical_sides: Sequence[Mapping[str, str | None]] = (),
                trend: Mapping[str, float] | None = None) -> list[str]:
-    """Per parameter, the side where the motion fails: "above" or "below".
+    """Per parameter, the side where the motion fails: "above", "below" or "both".
 
-    In order: the critical values' sides (``MomentReport.critical_side`` of each moment) by
-    majority; else the sign of the rank correlation of the parameter with the samples'
-    failures (the decisions themselves, chained and rolled-out ones included) where it is
-    significant (|ρ| > 2/√n); else the sign of ``trend`` (how much the cost grows from the
-    low to the high end of the parameter's 1-D curve with the others at nominal, summed
-    over the moments); else the sign of the correlation, however weak. The cost's trend
-    comes after the failures themselves: where the cost never crosses the threshold, the
-    failures come from what the cost does not see (a soft grip's slip, watched on each
-    sample's own run), and its slope can point the other way (ACT's scene with an elliptic
-    cone: the motor term grows with friction, the slips that fail come at low friction).
+    "both": the parameter fails on both sides of its nominal value (a centre-of-mass offset
+    either way, a force limit that is both too weak to lift and too strong for the grip):
+    the moments' critical values name both sides, or the failures grow significantly
+    towards each end of the box, below and above the nominal (:func:`_both_sides`).
+
+    Else, in order: the critical values' sides (``MomentReport.critical_side`` of each
+    moment) by majority; else the sign of the rank correlation of the parameter with the
+    samples' failures (the decisions themselves, chained and rolled-out ones included)
+    where it is significant (|ρ| > 2/√n); else the sign of ``trend`` (how much the cost
+    grows from the low to the high end of the parameter's 1-D curve with the others at
+    nominal, summed over the moments); else the sign of the correlation, however weak. The
+    cost's trend comes after the failures themselves: where the cost never crosses the
+    threshold, the failures come from what the cost does not see (a soft grip's slip,
+    watched on each sample's own run), and its slope can point the other way (ACT's scene
+    with an elliptic cone: the motor term grows with friction, the slips that fail come at
+    low friction).
     """
     sides = []
     failed = np.asarray(failed, dtype=np.float64)
     n = samples.shape[0]
+    u_nom = box.to_unit(np.asarray(box.nominal, dtype=np.float64)[None])[0]
     for j, p in enumerate(box.parameters):
         votes = [cs.get(p.name) for cs in critical_sides]
         above, below = votes.count("above"), votes.count("below")
+        inner = 0.0 < u_nom[j] < 1.0
+        if inner and ((above and below) or _both_sides(samples[:, j], failed, p)):
+            sides.append("both")
+            continue
         if above != below:
             sides.append("above" if above > below else "below")
             continue
-        rank_x = np.argsort(np.argsort(samples[:, j], kind="stable"), kind="stable")
-        corr = (float(np.corrcoef(rank_x, failed)[0, 1])
-                if n > 1 and np.std(failed) > 0 else 0.0)
+        corr = _rank_corr(samples[:, j], failed)
         if abs(corr) > 2.0 / np.sqrt(max(n, 1)):
             sides.append("below" if corr < 0 else "above")
             continue
@@ -579,17 +589,43 @@ def fail_sides(samples: np.ndarray, failed: np.ndarray, box: UncertaintyBox,
     return sides
 
 
+def _rank_corr(x: np.ndarray, failed: np.ndarray) -> float:
+    """Spearman's correlation of ``x`` with the failures (0 where either is constant)."""
+    if x.size < 2 or np.std(failed) == 0:
+        return 0.0
+    rank_x = np.argsort(np.argsort(x, kind="stable"), kind="stable")
+    if np.std(rank_x) == 0:
+        return 0.0
+    return float(np.corrcoef(rank_x, failed)[0, 1])
+
+
+def _both_sides(x: np.ndarray, failed: np.ndarray, parameter) -> bool:
+    """Whether the failures grow significantly towards both ends of a parameter: on each
+    side of the nominal value, at least 8 samples, a failure, and failures correlating with
+    the distance from the nominal beyond chance (ρ > 2/√n of that side)."""
+    x_nom = float(np.asarray(parameter.nominal, dtype=np.float64))
+    for side in (x < x_nom, x > x_nom):
+        m = int(side.sum())
+        if m < 8 or not failed[side].any():
+            return False
+        if not _rank_corr(np.abs(x[side] - x_nom), failed[side]) > 2.0 / np.sqrt(m):
+            return False
+    return True
+
+
 def _oriented(box: UncertaintyBox, points: np.ndarray, sides: Sequence[str]) -> np.ndarray:
     """Unit coordinates, each axis oriented so that failure lies at large values."""
     unit = box.to_unit(np.asarray(points, dtype=np.float64).reshape(-1, box.ndim))
     return np.where(np.array(sides) == "below", 1.0 - unit, unit)
 
 
-def _region_of_cut(box: UncertaintyBox, cut: np.ndarray, sides: Sequence[str]
-                   ) -> dict[str, tuple[float, float]]:
+def _region_of_cut(box: UncertaintyBox, cut: np.ndarray, sides: Sequence[str],
+                   low: np.ndarray | None = None) -> dict[str, tuple[float, float]]:
+    """The region of oriented unit coordinates [``low``, ``cut``] (``low`` 0 where None)."""
+    low = np.zeros(box.ndim) if low is None else low
     region = {}
     for j, p in enumerate(box.parameters):
-        lo_u, hi_u = (0.0, cut[j]) if sides[j] == "above" else (1.0 - cut[j], 1.0)
+        lo_u, hi_u = (low[j], cut[j]) if sides[j] != "below" else (1.0 - cut[j], 1.0 - low[j])
         pts = box.from_unit(np.array([[lo_u if i == j else 0.5 for i in range(box.ndim)],
                                       [hi_u if i == j else 0.5 for i in range(box.ndim)]]))
         region[p.name] = (float(np.clip(pts[0, j], p.low, p.high)),
@@ -694,13 +730,17 @@ def safe_subbox(samples: np.ndarray, failed: np.ndarray, box: UncertaintyBox,
 
     Each parameter keeps its safe end (the one opposite its failing side) and gets a cut
     chosen among the failing samples' coordinates (minus ``margin``); with k ≤ 2 every pair
-    of cuts is tried, above that the cuts shrink one coordinate at a time.
+    of cuts is tried, above that the cuts shrink one coordinate at a time. A parameter that
+    fails on both sides of its nominal value (side "both") gets both faces cut: its low
+    face is tried at the box's low end and just above each failing sample below the
+    nominal value (at most 64 places, spread in quantiles; 16 each for two or more such
+    parameters), its high face as a one-sided parameter's.
 
     Args:
         samples: parameter samples, (n, k).
         failed: which samples fail, (n,).
         box: the uncertainty box.
-        sides: per parameter, "above" (large values fail) or "below".
+        sides: per parameter, "above" (large values fail), "below" or "both".
         margin: distance kept from each failing sample, in the unit (prior-quantile)
             coordinates: 0 lets a failing sample lie on the region's edge.
 
@@ -709,8 +749,35 @@ def safe_subbox(samples: np.ndarray, failed: np.ndarray, box: UncertaintyBox,
     """
     u = _oriented(box, samples, sides)
     bad = u[np.asarray(failed, dtype=bool)]
-    cut = _best_cut(bad, np.zeros(box.ndim), np.ones(box.ndim), float(margin))
-    return None if cut is None else _region_of_cut(box, cut, sides)
+    margin = float(margin)
+    both = [j for j, side in enumerate(sides) if side == "both"]
+    ones = np.ones(box.ndim)
+    if not both:
+        cut = _best_cut(bad, np.zeros(box.ndim), ones, margin)
+        return None if cut is None else _region_of_cut(box, cut, sides)
+    u_nom = box.to_unit(np.asarray(box.nominal, dtype=np.float64)[None])[0]
+    most = 64 if len(both) == 1 else 16
+    lows = []
+    for j in both:
+        c = bad[:, j] + margin
+        c = np.unique(np.concatenate([[0.0], c[(bad[:, j] < u_nom[j]) & (c <= u_nom[j])]]))
+        if c.size > most:
+            c = np.unique(np.concatenate([[0.0], np.quantile(c, np.linspace(0, 1, most - 1),
+                                                             method="lower")]))
+        lows.append(c)
+    best, best_vol = None, 0.0
+    for low in itertools.product(*lows):
+        a = np.zeros(box.ndim)
+        a[both] = low
+        # a failing sample at or under a low face is out of the region
+        out = (bad[:, both] <= a[both] - margin + 1e-12).any(axis=1)
+        cut = _best_cut(bad[~out], a, ones, margin)
+        if cut is None:
+            continue
+        vol = float(np.prod(cut - a))
+        if vol > best_vol:
+            best, best_vol = (a, cut), vol
+    return None if best is None else _region_of_cut(box, best[1], sides, best[0])
 
 
 def candidate_region(samples: np.ndarray, failed: np.ndarray, box: UncertaintyBox,
@@ -901,7 +968,8 @@ def shrink_region(region: Mapping[str, tuple[float, float]], failing: np.ndarray
         region: {name: (low, high)}.
         failing: the failing check points, (q, k).
         box: the box.
-        sides: per parameter, the failing side ("above"/"below").
+        sides: per parameter, the failing side ("above"/"below"; with a "both", any face
+            may move: :func:`_any_face_cut`).
         margin: distance kept from each failing point.
         passing: the check points that passed, (r, k), or None.
 
@@ -911,6 +979,9 @@ def shrink_region(region: Mapping[str, tuple[float, float]], failing: np.ndarray
     orient = np.array(sides) == "below"
     lo = np.array([region[n][0] for n in box.names], dtype=np.float64)
     hi = np.array([region[n][1] for n in box.names], dtype=np.float64)
+    if "both" in sides:
+        # a parameter failing on both sides of its nominal value: either of its faces may move
+        return _any_face_cut(lo, hi, failing, box, float(margin), passing)
     u_lo, u_hi = box.to_unit(lo[None])[0], box.to_unit(hi[None])[0]
     a = np.where(orient, 1.0 - u_hi, u_lo)
     b = np.where(orient, 1.0 - u_lo, u_hi)

@@ -370,6 +370,85 @@ def test_failures_at_both_ends_of_a_parameter_move_both_faces():
                             np.array([[0.05, 0.2]]), box, ["above", "above"]) is None
 
 
+def _com_box() -> UncertaintyBox:
+    from critmoment.params import ComOffsetParameter
+
+    return UncertaintyBox((MassParameter("mass", "box", 0.05, 1.0, 0.05),
+                           ComOffsetParameter("com", "box", -0.02, 0.02, 0.0)))
+
+
+def _com_fails(x: np.ndarray) -> np.ndarray:
+    """A centre of mass past 1.2 cm either way drops the object; so does mass > 0.8 kg."""
+    return (np.abs(x[:, 1]) > 0.012) | (x[:, 0] > 0.8)
+
+
+def test_a_parameter_failing_on_both_sides_of_its_nominal_is_two_sided():
+    from scipy.stats import qmc
+
+    box = _com_box()
+    x = box.from_unit(qmc.Sobol(2, seed=0).random(256))
+    failed = _com_fails(x)
+    assert vd.fail_sides(x, failed, box) == ["above", "both"]
+    # the moments' critical values naming both sides say so too, without the samples
+    votes = [{"mass": "above", "com": "below"}, {"mass": "above", "com": "above"}]
+    assert vd.fail_sides(x, np.zeros(len(x), bool), box, votes) == ["above", "both"]
+    # a side with no failure is one-sided, as before
+    assert vd.fail_sides(x, failed & (x[:, 1] > -0.012), box) == ["above", "above"]
+
+
+def test_a_two_sided_parameter_gets_a_region_around_its_nominal():
+    """Failing past ±1.2 cm: with one side per parameter no sub-box at the box's corner is
+    free of failures (the old answer, "no safe region"); two-sided, the region keeps the
+    nominal inside, excludes every failing sample and reaches near both true faces."""
+    from scipy.stats import qmc
+
+    box = _com_box()
+    x = box.from_unit(qmc.Sobol(2, seed=0).random(256))
+    failed = _com_fails(x)
+    assert vd.safe_subbox(x, failed, box, ["above", "above"]) is not None  # a sliver
+    one = vd.safe_subbox(x, failed, box, ["above", "above"])
+    region = vd.safe_subbox(x, failed, box, ["above", "both"])
+    lo, hi = region["com"]
+    assert -0.013 < lo < -0.0105 and 0.0105 < hi < 0.013
+    assert 0.7 < region["mass"][1] <= 0.8 + 1e-9 and region["mass"][0] == 0.05
+    inside = vd.within(x, region, box)
+    assert not (inside & failed & ~np.isclose(x[:, 1], lo) & ~np.isclose(x[:, 1], hi)
+                & ~np.isclose(x[:, 0], region["mass"][1])).any()
+    # it holds far more of the prior than the one-sided cut
+    vol = np.prod([box.to_unit(np.array([[region[n][1] for n in box.names]]))[0]
+                   - box.to_unit(np.array([[region[n][0] for n in box.names]]))[0]])
+    vol_one = np.prod([box.to_unit(np.array([[one[n][1] for n in box.names]]))[0]
+                       - box.to_unit(np.array([[one[n][0] for n in box.names]]))[0]])
+    assert vol > 1.5 * vol_one
+    # and the check's rounds move whichever face a failing check point is at, until the
+    # region holds on a dense check of its corners and edges
+    out = {"mass": (0.05, 0.5), "com": (-0.016, 0.016)}
+    for _ in range(8):
+        pts, _ = vd.region_points(out, box, per_edge=9)
+        fails = _com_fails(pts)
+        if not fails.any():
+            break
+        out = vd.round_inward(vd.shrink_region(out, pts[fails], box, ["above", "both"],
+                                               passing=pts[~fails]), box)
+    dense, _ = vd.region_points(out, box, per_edge=41)
+    assert not _com_fails(dense).any()
+    assert out["mass"] == (0.05, 0.5)
+    assert -0.012 <= out["com"][0] < -0.009 and 0.009 < out["com"][1] <= 0.012
+
+
+def test_decide_states_a_two_sided_region():
+    from scipy.stats import qmc
+
+    box = _com_box()
+    x = box.from_unit(qmc.Sobol(2, seed=0).random(64))
+    cost = np.where(_com_fails(x), 2.0, 0.1)
+    d = vd.decide(_evidence(box, x, cost, moments=(_moment(100),)), OPT)
+    assert d.verdict is vd.Verdict.CONDITIONAL
+    lo, hi = d.region_to_check["com"]
+    assert -0.014 < lo < -0.008 and 0.008 < hi < 0.014
+    assert d.region_to_check["mass"][1] > 0.5
+
+
 def test_region_points_cover_corners_and_densified_edges():
     box = _box()
     region = {"mass": (0.05, 0.5), "friction": (0.4, 1.5)}
