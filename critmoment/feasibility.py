@@ -133,10 +133,13 @@ class JointFeasibility:
         gripper: the actuator belongs to a normalised (gripper) channel.
         max_lag: largest |q − target| [rad or m] (NaN when not tracked).
         max_lag_time: when it occurs [s] (NaN when not tracked).
-        lag_duration: longest continuous stretch with the lag above tolerance [s].
+        lag_duration: longest continuous stretch with the lag above tolerance [s]; where
+            a contact holds the joint back over it, a shorter failing stretch that no
+            contact explains, if any (the one the twin cannot follow).
         lag_start: start of that stretch [s] (None when there is none).
         lag_in_run: largest lag within that stretch [rad or m] (0 when none).
-        saturation_duration: longest continuous stretch at the force limit [s].
+        saturation_duration: longest continuous stretch at the force limit [s] (chosen as
+            ``lag_duration``'s).
         saturation_start: start of that stretch [s] (None when there is none).
         saturation_total: total time at the force limit [s].
         force_limit: the limit used, in actuator units [N·m or N] (inf when none).
@@ -256,14 +259,28 @@ class FeasibilityReport:
                 "joints": [j.to_json() for j in self.joints]}
 
 
-def _longest_run(flags: np.ndarray) -> tuple[int, int]:
-    """(start, length) of the longest run of True in ``flags`` (T,); (0, 0) when none."""
+#: failing stretches of one joint looked at for one that no contact explains
+_STRETCHES = 6
+
+
+def _runs(flags: np.ndarray) -> list[tuple[int, int]]:
+    """(start, length) of each run of True in ``flags`` (T,), longest first (earliest first
+    among equal lengths); [] when none."""
     if not flags.any():
-        return 0, 0
+        return []
     edges = np.flatnonzero(np.diff(np.concatenate([[0], flags.astype(np.int8), [0]])))
     starts, stops = edges[::2], edges[1::2]
-    i = int(np.argmax(stops - starts))
-    return int(starts[i]), int(stops[i] - starts[i])
+    order = np.argsort(-(stops - starts), kind="stable")
+    return [(int(starts[i]), int(stops[i] - starts[i])) for i in order]
+
+
+def _overlapping(runs: list[tuple[int, int]], run: tuple[int, int]) -> tuple[int, int]:
+    """The longest of ``runs`` that overlaps ``run`` (start, length), or (0, 0)."""
+    start, length = run
+    for s0, n0 in runs:
+        if s0 < start + length and start < s0 + n0:
+            return s0, n0
+    return 0, 0
 
 
 def _tracking_error(q: np.ndarray, target: np.ndarray, shift: int) -> np.ndarray:
@@ -376,9 +393,10 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         is_gripper = a in grippers
         max_lag = max_lag_time = span = float("nan")
         toward = None
-        lag_start, lag_len, lag_in_run = 0, 0, 0.0
-        speed = damping_lag = band = load_lag = 0.0
+        lag = None
+        band = 0.0
         friction = float(m.dof_frictionloss[m.jnt_dofadr[j]])
+        b1 = 0.0
         if kind is _Kind.POSITION and int(m.jnt_type[j]) in (
                 int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)):
             gain = m.actuator_gainprm[a, 0]
@@ -398,10 +416,24 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             k = int(np.argmax(lag))
             max_lag, max_lag_time = float(lag[k]), k * dt
             span = float(np.ptp(target)) if n else 0.0
-            lag_start, lag_len = _longest_run(lag > tol)
-            lag_in_run = float(lag[lag_start:lag_start + lag_len].max()) if lag_len else 0.0
             if b1 < 0:
                 band = friction / (-b1 * gear ** 2)
+        saturated = np.abs(force[:, a]) >= options.saturation_fraction * limit
+        both = saturated[1:] & saturated[:-1]
+        flips = both & (np.sign(force[1:, a]) != np.sign(force[:-1, a]))
+        force_flips = float(flips.sum()) / max(1, int(both.sum()))
+        lag_runs = [] if lag is None else _runs(lag > tol)
+        sat_runs = _runs(saturated)
+
+        def stretch_entry(lag_run: tuple[int, int], sat_run: tuple[int, int]
+                          ) -> JointFeasibility:
+            """The joint's entry with these (start, length) stretches of lag and saturation,
+            and the contact that holds it back over its failing one, if any."""
+            lag_start, lag_len = lag_run
+            sat_start, sat_len = sat_run
+            lag_in_run = speed = damping_lag = load_lag = 0.0
+            if lag_len:
+                lag_in_run = float(lag[lag_start:lag_start + lag_len].max())
             if lag_len and n > 1 and b1 < 0:
                 part = target[lag_start:lag_start + lag_len + 1]
                 speed = float(np.abs(np.diff(part)).max(initial=0.0)) / dt
@@ -410,44 +442,59 @@ def check_feasibility(recording: Recording, twin: Twin, *,
                 damping_lag = (kv + damping / gear ** 2) / (-b1) * speed
                 exerted = np.abs(force[lag_start:lag_start + lag_len, a])
                 load_lag = float(exerted.max(initial=0.0)) / (-b1 * abs(gear))
-        saturated = np.abs(force[:, a]) >= options.saturation_fraction * limit
-        sat_start, sat_len = _longest_run(saturated)
-        both = saturated[1:] & saturated[:-1]
-        flips = both & (np.sign(force[1:, a]) != np.sign(force[:-1, a]))
-        force_flips = float(flips.sum()) / max(1, int(both.sum()))
-        damping_force = sat_speed = 0.0
-        if sat_len and n > 1:
-            # the joint's own viscous damping at its speed over the saturation, where the
-            # actuator drives the motion (pushes the way the joint moves; a joint sagging
-            # against its push is a load the damping only slows): a heavily damped joint
-            # moved fast uses its actuator up on the damping alone
-            qs = qpos[sat_start:sat_start + sat_len + 1, int(m.jnt_qposadr[j])]
-            v = np.diff(qs) / dt
-            push = force[sat_start:sat_start + v.size, a] * np.sign(gear)
-            driving = np.sign(push) * np.sign(v) > 0
-            sat_speed = float(np.abs(v[driving]).max(initial=0.0))
-            damping_force = float(m.dof_damping[m.jnt_dofadr[j]]) * sat_speed
-        spring_force = 0.0
-        start, length = (sat_start, sat_len) if sat_len else (lag_start, lag_len)
-        if length and m.jnt_stiffness[j] > 0:
-            adr = int(m.jnt_qposadr[j])
-            stretch = qpos[start:start + length + 1, adr] - m.qpos_spring[adr]
-            spring_force = float(m.jnt_stiffness[j] * np.abs(stretch).max(initial=0.0))
-        entry = JointFeasibility(
-            actuator=name, joint=jname, kind=kind.value, unit=unit, gripper=is_gripper,
-            max_lag=max_lag, max_lag_time=max_lag_time, lag_duration=lag_len * dt,
-            lag_start=lag_start * dt if lag_len else None, lag_in_run=lag_in_run,
-            saturation_duration=sat_len * dt, saturation_start=sat_start * dt if sat_len else None,
-            saturation_total=float(saturated.sum()) * dt, force_limit=limit, limit_source=source,
-            frictionloss=friction, target_span=span, note=note, target_speed=speed,
-            damping_lag=damping_lag, friction_band=band, force_flips=force_flips,
-            load_lag=load_lag, damping_force=damping_force, saturation_speed=sat_speed,
-            spring_force=spring_force)
-        stretch = _failing_stretch(entry, tol, abs(gear), options)
-        if stretch is not None:
-            blocked = _blocking_contact(m, states, *stretch, joint=j, toward=toward)
-            if blocked:
-                entry = dataclasses.replace(entry, blocked_by=blocked)
+            damping_force = sat_speed = 0.0
+            if sat_len and n > 1:
+                # the joint's own viscous damping at its speed over the saturation, where the
+                # actuator drives the motion (pushes the way the joint moves; a joint sagging
+                # against its push is a load the damping only slows): a heavily damped joint
+                # moved fast uses its actuator up on the damping alone
+                qs = qpos[sat_start:sat_start + sat_len + 1, int(m.jnt_qposadr[j])]
+                v = np.diff(qs) / dt
+                push = force[sat_start:sat_start + v.size, a] * np.sign(gear)
+                driving = np.sign(push) * np.sign(v) > 0
+                sat_speed = float(np.abs(v[driving]).max(initial=0.0))
+                damping_force = float(m.dof_damping[m.jnt_dofadr[j]]) * sat_speed
+            spring_force = 0.0
+            start, length = (sat_start, sat_len) if sat_len else (lag_start, lag_len)
+            if length and m.jnt_stiffness[j] > 0:
+                adr = int(m.jnt_qposadr[j])
+                stretch = qpos[start:start + length + 1, adr] - m.qpos_spring[adr]
+                spring_force = float(m.jnt_stiffness[j] * np.abs(stretch).max(initial=0.0))
+            entry = JointFeasibility(
+                actuator=name, joint=jname, kind=kind.value, unit=unit, gripper=is_gripper,
+                max_lag=max_lag, max_lag_time=max_lag_time, lag_duration=lag_len * dt,
+                lag_start=lag_start * dt if lag_len else None, lag_in_run=lag_in_run,
+                saturation_duration=sat_len * dt,
+                saturation_start=sat_start * dt if sat_len else None,
+                saturation_total=float(saturated.sum()) * dt, force_limit=limit,
+                limit_source=source, frictionloss=friction, target_span=span, note=note,
+                target_speed=speed, damping_lag=damping_lag, friction_band=band,
+                force_flips=force_flips, load_lag=load_lag, damping_force=damping_force,
+                saturation_speed=sat_speed, spring_force=spring_force)
+            failing = _failing_stretch(entry, tol, abs(gear), options)
+            if failing is not None:
+                blocked = _blocking_contact(m, states, *failing, joint=j, toward=toward)
+                if blocked:
+                    entry = dataclasses.replace(entry, blocked_by=blocked)
+            return entry
+
+        none = (0, 0)
+        entry = stretch_entry(lag_runs[0] if lag_runs else none,
+                              sat_runs[0] if sat_runs else none)
+        if entry.blocked_by:
+            # a contact holds the joint back over its longest failing stretch; a shorter
+            # one that no contact explains is still a motion the twin cannot follow (a
+            # servo too weak for its load elsewhere in the run), and it is what is said
+            others = [(lr, _overlapping(sat_runs, lr)) for lr in lag_runs[1:_STRETCHES]
+                      if lr[1] * dt > options.lag_duration]
+            others += [(none, sr) for sr in sat_runs[:_STRETCHES]
+                       if sr[1] * dt > options.saturation_duration]
+            for lag_run, sat_run in others:
+                alt = stretch_entry(lag_run, sat_run)
+                if (_failing_stretch(alt, tol, abs(gear), options) is not None
+                        and not alt.blocked_by):
+                    entry = alt
+                    break
         joints.append(entry)
         found = _problems(entry, tol, abs(gear), options, m, j)
         if found and _clamp_only(twin, a, entry, tol, abs(gear), options):

@@ -877,3 +877,31 @@ def test_a_rated_actuator_at_its_clamp_that_tracks_is_no_error(tmp_path, demo_tr
     assert any("actuator 'right/elbow' (joint 'right/elbow') is at its forcerange 3.6 N·m" in w
                and "under its rating 15 N·m in [limits]; it tracks its targets" in w
                for w in report.warnings)
+
+
+def test_a_shorter_stretch_no_contact_explains_is_still_infeasible(tmp_path):
+    """A weak servo (0.5 N·m) pushes its arm into a wall for 6 s (a contact holds it back:
+    a fact of the motion), then swings it away faster than it can follow (lag ≈ 1 rad for
+    almost 2 s, in free space). The longest stretch is the wall's; the shorter one is what
+    the twin cannot reproduce, and it is said, not hidden behind the wall's warning."""
+    path = _scene(tmp_path, axis="0 0 1", limit=0.5, gravity="0 0 0",
+                  link_contact="",
+                  obstacle='<geom name="wall" type="box" size="0.05 0.01 0.1" '
+                           'pos="0.2 0.12 0.5"/>',
+                  actuator='<position name="servo" joint="hinge" kp="50" kv="5" '
+                           'forcerange="-0.5 0.5"/>')
+    twin = Twin(load_scenario(path))
+    fps = 50.0
+    t = np.arange(int(10.0 * fps)) / fps
+    q = np.interp(t, [0.0, 0.5, 1.5, 7.5, 7.7, 10.0], [0.0, 0.0, 1.0, 1.0, -0.5, -0.5])
+    rec = _record(twin, Trajectory(actions=q[:, None], fps=fps, start=np.zeros(1),
+                                   source="wall then swing"))
+    report = check_feasibility(rec, twin, raise_on_failure=False)
+    entry = report.joint("hinge")
+    assert not report.feasible
+    assert entry.blocked_by == ""
+    assert entry.lag_start == pytest.approx(7.5, abs=0.3) and 1.0 < entry.lag_duration < 3.0
+    assert "from t = 7." in report.problems[0] and "contact" not in report.problems[0]
+    assert 7.5 <= entry.saturation_start < 8.0  # the swing's own saturation
+    with pytest.raises(InfeasibleTwinError, match="joint 'hinge'"):
+        check_feasibility(rec, twin)
