@@ -989,7 +989,8 @@ def _body_reach(model: mujoco.MjModel, body: int) -> float | None:
 
 def _inside_geom(model: mujoco.MjModel, geom: int, points: np.ndarray) -> np.ndarray:
     """Whether each point (n, 3), in its body's frame, lies inside the geom (its exact
-    shape for MuJoCo's primitives, its bounding box for a mesh or another shape)."""
+    shape for MuJoCo's primitives, a mesh's convex hull, which is what MuJoCo collides,
+    the bounding box for another shape or a flat mesh)."""
     rot = np.zeros(9)
     mujoco.mju_quat2Mat(rot, model.geom_quat[geom])
     local = (points - model.geom_pos[geom]) @ rot.reshape(3, 3)  # into the geom's frame
@@ -1007,8 +1008,27 @@ def _inside_geom(model: mujoco.MjModel, geom: int, points: np.ndarray) -> np.nda
         return (np.sum((local / size) ** 2, axis=1) <= 1.0 + tol)
     if kind == mujoco.mjtGeom.mjGEOM_BOX:
         return (np.abs(local) <= size + tol).all(axis=1)
+    if kind == mujoco.mjtGeom.mjGEOM_MESH and model.geom_dataid[geom] >= 0:
+        hull = _mesh_hull(model, int(model.geom_dataid[geom]))
+        if hull is not None:  # facets n·x + d ≤ 0 inside, in the geom's frame
+            return (local @ hull[:, :3].T + hull[:, 3] <= tol).all(axis=1)
     box = model.geom_aabb[geom]  # centre (3), half sizes (3), in the geom's frame
     return (np.abs(local - box[:3]) <= box[3:] + tol).all(axis=1)
+
+
+def _mesh_hull(model: mujoco.MjModel, mesh: int) -> np.ndarray | None:
+    """The facets (f, 4) of a mesh's convex hull in its geom's frame (MuJoCo's compiled
+    vertices are there), or None where qhull finds no volume (a flat mesh)."""
+    from scipy.spatial import ConvexHull, QhullError
+
+    start, count = int(model.mesh_vertadr[mesh]), int(model.mesh_vertnum[mesh])
+    vert = np.asarray(model.mesh_vert[start:start + count], dtype=np.float64)
+    if count < 4:
+        return None
+    try:
+        return ConvexHull(vert).equations
+    except (QhullError, ValueError):
+        return None
 
 
 def _com_span(model: mujoco.MjModel, body: int) -> tuple[float, float] | None:

@@ -966,3 +966,25 @@ def test_a_centre_of_mass_offset_is_checked_against_the_bodys_solid_geoms(tmp_pa
         'size="0.01" pos="0 0.05 0" mass="0.05"/>')]})
     with pytest.raises(ScenarioError, match=r"outside every geom it has \(they lie within"):
         load_scenario(apart)
+
+
+def test_a_mesh_objects_centre_of_mass_range_is_checked_against_its_hull(tmp_path):
+    """A square pyramid (base 4 cm, 4 cm high) as the object: through its centroid, a
+    quarter of the way up, it spans ±1.5 cm along x, its bounding box ±2 cm. ±1.8 cm had
+    passed against the box; MuJoCo collides a mesh's convex hull, and that is its matter."""
+    pyramid = ('<mesh name="pyramid" vertex="-0.02 -0.02 0  0.02 -0.02 0  0.02 0.02 0  '
+               '-0.02 0.02 0  0 0 0.04"/>')
+    geom = ('<geom name="box" type="box" size="0.02 0.02 0.02" mass="0.05" rgba="0.9 0.1 '
+            '0.1 1"')
+    edits = {"scene.xml": [("<asset>", "<asset>" + pyramid),
+                           (geom, '<geom name="box" type="mesh" mesh="pyramid" mass="0.05" '
+                                  'rgba="0.9 0.1 0.1 1"')]}
+
+    def scenario(name, span):
+        return _copy(tmp_path / name, {**edits, "scenario.toml": [
+            ('[uncertainty.friction]\ngeom = "box"', '[uncertainty.com_offset]\nbody = "box"'),
+            ("range = [0.2, 1.5]", f"range = {span}"), ("nominal = 1.0", "nominal = 0.0")]})
+
+    with pytest.raises(ScenarioError, match=r"span offsets -0.015 to 0.015 m"):
+        load_scenario(scenario("wide", "[-0.018, 0.018]"))
+    assert load_scenario(scenario("ok", "[-0.014, 0.014]")).box.high[-1] == 0.014
