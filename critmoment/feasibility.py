@@ -333,6 +333,80 @@ def _unit(model: mujoco.MjModel, joint: int) -> str:
     return "m" if model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_SLIDE else "rad"
 
 
+@dataclasses.dataclass(frozen=True, eq=False)
+class _JointSignals:
+    """One actuated joint's signals over the run, for :meth:`entry`: its lag (None where not
+    tracked), its target, its position servo's bias gain (−kp, 0 when none) and, per step,
+    the sign of its target less its position."""
+
+    model: mujoco.MjModel
+    states: np.ndarray
+    qpos: np.ndarray
+    force: np.ndarray
+    dt: float
+    actuator: int
+    joint: int
+    gear: float
+    tol: float
+    options: FeasibilityOptions
+    lag: np.ndarray | None
+    target: np.ndarray | None
+    bias: float
+    toward: np.ndarray | None
+
+    def entry(self, base: JointFeasibility, lag_run: tuple[int, int],
+              sat_run: tuple[int, int]) -> JointFeasibility:
+        """``base`` with these (start, length) stretches of lag and saturation, and the
+        contact that holds the joint back over its failing one, if any."""
+        m, a, j, dt, gear, b1 = (self.model, self.actuator, self.joint, self.dt, self.gear,
+                                 self.bias)
+        n = self.force.shape[0]
+        lag_start, lag_len = lag_run
+        sat_start, sat_len = sat_run
+        lag_in_run = speed = damping_lag = load_lag = 0.0
+        if lag_len:
+            lag_in_run = float(self.lag[lag_start:lag_start + lag_len].max())
+        if lag_len and n > 1 and b1 < 0:
+            part = self.target[lag_start:lag_start + lag_len + 1]
+            speed = float(np.abs(np.diff(part)).max(initial=0.0)) / dt
+            kv = max(0.0, -float(m.actuator_biasprm[a, 2]))
+            damping = float(m.dof_damping[m.jnt_dofadr[j]])
+            damping_lag = (kv + damping / gear ** 2) / (-b1) * speed
+            exerted = np.abs(self.force[lag_start:lag_start + lag_len, a])
+            load_lag = float(exerted.max(initial=0.0)) / (-b1 * abs(gear))
+        damping_force = sat_speed = 0.0
+        if sat_len and n > 1:
+            # the joint's own viscous damping at its speed over the saturation, where the
+            # actuator drives the motion (pushes the way the joint moves; a joint sagging
+            # against its push is a load the damping only slows): a heavily damped joint
+            # moved fast uses its actuator up on the damping alone
+            qs = self.qpos[sat_start:sat_start + sat_len + 1, int(m.jnt_qposadr[j])]
+            v = np.diff(qs) / dt
+            push = self.force[sat_start:sat_start + v.size, a] * np.sign(gear)
+            driving = np.sign(push) * np.sign(v) > 0
+            sat_speed = float(np.abs(v[driving]).max(initial=0.0))
+            damping_force = float(m.dof_damping[m.jnt_dofadr[j]]) * sat_speed
+        spring_force = 0.0
+        start, length = (sat_start, sat_len) if sat_len else (lag_start, lag_len)
+        if length and m.jnt_stiffness[j] > 0:
+            adr = int(m.jnt_qposadr[j])
+            stretch = self.qpos[start:start + length + 1, adr] - m.qpos_spring[adr]
+            spring_force = float(m.jnt_stiffness[j] * np.abs(stretch).max(initial=0.0))
+        entry = dataclasses.replace(
+            base, lag_duration=lag_len * dt, lag_start=lag_start * dt if lag_len else None,
+            lag_in_run=lag_in_run, saturation_duration=sat_len * dt,
+            saturation_start=sat_start * dt if sat_len else None, target_speed=speed,
+            damping_lag=damping_lag, load_lag=load_lag, damping_force=damping_force,
+            saturation_speed=sat_speed, spring_force=spring_force)
+        failing = _failing_stretch(entry, self.tol, abs(gear), self.options)
+        if failing is not None:
+            blocked = _blocking_contact(m, self.states, *failing, joint=j,
+                                        toward=self.toward)
+            if blocked:
+                entry = dataclasses.replace(entry, blocked_by=blocked)
+        return entry
+
+
 def check_feasibility(recording: Recording, twin: Twin, *,
                       options: FeasibilityOptions | None = None,
                       raise_on_failure: bool = True) -> FeasibilityReport:
@@ -393,7 +467,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         is_gripper = a in grippers
         max_lag = max_lag_time = span = float("nan")
         toward = None
-        lag = None
+        lag = target = None
         band = 0.0
         friction = float(m.dof_frictionloss[m.jnt_dofadr[j]])
         b1 = 0.0
@@ -425,62 +499,20 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         lag_runs = [] if lag is None else _runs(lag > tol)
         sat_runs = _runs(saturated)
 
-        def stretch_entry(lag_run: tuple[int, int], sat_run: tuple[int, int]
-                          ) -> JointFeasibility:
-            """The joint's entry with these (start, length) stretches of lag and saturation,
-            and the contact that holds it back over its failing one, if any."""
-            lag_start, lag_len = lag_run
-            sat_start, sat_len = sat_run
-            lag_in_run = speed = damping_lag = load_lag = 0.0
-            if lag_len:
-                lag_in_run = float(lag[lag_start:lag_start + lag_len].max())
-            if lag_len and n > 1 and b1 < 0:
-                part = target[lag_start:lag_start + lag_len + 1]
-                speed = float(np.abs(np.diff(part)).max(initial=0.0)) / dt
-                kv = max(0.0, -float(m.actuator_biasprm[a, 2]))
-                damping = float(m.dof_damping[m.jnt_dofadr[j]])
-                damping_lag = (kv + damping / gear ** 2) / (-b1) * speed
-                exerted = np.abs(force[lag_start:lag_start + lag_len, a])
-                load_lag = float(exerted.max(initial=0.0)) / (-b1 * abs(gear))
-            damping_force = sat_speed = 0.0
-            if sat_len and n > 1:
-                # the joint's own viscous damping at its speed over the saturation, where the
-                # actuator drives the motion (pushes the way the joint moves; a joint sagging
-                # against its push is a load the damping only slows): a heavily damped joint
-                # moved fast uses its actuator up on the damping alone
-                qs = qpos[sat_start:sat_start + sat_len + 1, int(m.jnt_qposadr[j])]
-                v = np.diff(qs) / dt
-                push = force[sat_start:sat_start + v.size, a] * np.sign(gear)
-                driving = np.sign(push) * np.sign(v) > 0
-                sat_speed = float(np.abs(v[driving]).max(initial=0.0))
-                damping_force = float(m.dof_damping[m.jnt_dofadr[j]]) * sat_speed
-            spring_force = 0.0
-            start, length = (sat_start, sat_len) if sat_len else (lag_start, lag_len)
-            if length and m.jnt_stiffness[j] > 0:
-                adr = int(m.jnt_qposadr[j])
-                stretch = qpos[start:start + length + 1, adr] - m.qpos_spring[adr]
-                spring_force = float(m.jnt_stiffness[j] * np.abs(stretch).max(initial=0.0))
-            entry = JointFeasibility(
-                actuator=name, joint=jname, kind=kind.value, unit=unit, gripper=is_gripper,
-                max_lag=max_lag, max_lag_time=max_lag_time, lag_duration=lag_len * dt,
-                lag_start=lag_start * dt if lag_len else None, lag_in_run=lag_in_run,
-                saturation_duration=sat_len * dt,
-                saturation_start=sat_start * dt if sat_len else None,
-                saturation_total=float(saturated.sum()) * dt, force_limit=limit,
-                limit_source=source, frictionloss=friction, target_span=span, note=note,
-                target_speed=speed, damping_lag=damping_lag, friction_band=band,
-                force_flips=force_flips, load_lag=load_lag, damping_force=damping_force,
-                saturation_speed=sat_speed, spring_force=spring_force)
-            failing = _failing_stretch(entry, tol, abs(gear), options)
-            if failing is not None:
-                blocked = _blocking_contact(m, states, *failing, joint=j, toward=toward)
-                if blocked:
-                    entry = dataclasses.replace(entry, blocked_by=blocked)
-            return entry
-
+        sig = _JointSignals(model=m, states=states, qpos=qpos, force=force, dt=dt, actuator=a,
+                            joint=j, gear=gear, tol=tol, options=options, lag=lag,
+                            target=target, bias=float(b1),
+                            toward=toward)
+        base = JointFeasibility(
+            actuator=name, joint=jname, kind=kind.value, unit=unit, gripper=is_gripper,
+            max_lag=max_lag, max_lag_time=max_lag_time, lag_duration=0.0, lag_start=None,
+            lag_in_run=0.0, saturation_duration=0.0, saturation_start=None,
+            saturation_total=float(saturated.sum()) * dt, force_limit=limit,
+            limit_source=source, frictionloss=friction, target_span=span, note=note,
+            friction_band=band, force_flips=force_flips)
         none = (0, 0)
-        entry = stretch_entry(lag_runs[0] if lag_runs else none,
-                              sat_runs[0] if sat_runs else none)
+        entry = sig.entry(base, lag_runs[0] if lag_runs else none,
+                          sat_runs[0] if sat_runs else none)
         if entry.blocked_by:
             # a contact holds the joint back over its longest failing stretch; a shorter
             # one that no contact explains is still a motion the twin cannot follow (a
@@ -490,7 +522,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             others += [(none, sr) for sr in sat_runs[:_STRETCHES]
                        if sr[1] * dt > options.saturation_duration]
             for lag_run, sat_run in others:
-                alt = stretch_entry(lag_run, sat_run)
+                alt = sig.entry(base, lag_run, sat_run)
                 if (_failing_stretch(alt, tol, abs(gear), options) is not None
                         and not alt.blocked_by):
                     entry = alt

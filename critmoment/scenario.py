@@ -1180,6 +1180,28 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
         spec = mujoco.MjSpec.from_file(str(mjcf.resolve()))
     except Exception as exc:  # MuJoCo raises ValueError, OSError or its own errors
         raise ScenarioError(f"could not read MJCF {mjcf}: {exc}") from exc
+    try:
+        return _prepared(spec, object_body, friction_geoms, com_bodies, servos)
+    except UnicodeDecodeError as exc:  # a name MuJoCo keeps but Python cannot read
+        raise ScenarioError(_not_utf8(mjcf, exc.object)) from exc
+
+
+def _not_utf8(mjcf: Path, text: bytes) -> str:
+    bad = next((part for part in bytes(text).split(b"\0") if not _is_utf8(part)), text)
+    return (f"could not read MJCF {mjcf}: the name {bytes(bad)!r} is not UTF-8 text; "
+            f"MuJoCo's names must be (save the file, and any file it includes, as UTF-8)")
+
+
+def _is_utf8(raw: bytes) -> bool:
+    try:
+        raw.decode("utf-8")
+    except UnicodeDecodeError:
+        return False
+    return True
+
+
+def _prepared(spec: mujoco.MjSpec, object_body, friction_geoms, com_bodies, servos
+              ) -> mujoco.MjSpec:
     geoms = list(spec.geoms)
     taken = {g.name for g in geoms}
     for i, g in enumerate(geoms):
@@ -1267,7 +1289,7 @@ def compile_spec(spec: mujoco.MjSpec, mjcf: Path) -> mujoco.MjModel:
     """Compile a spec from :func:`prepare_spec`; a ScenarioError says what failed, and
     which element of the model a generated name (``critmoment:geom:3``) stands for."""
     try:
-        return spec.compile()
+        model = spec.compile()
     except Exception as exc:
         text = str(exc).strip()
         hint = ""
@@ -1276,6 +1298,9 @@ def compile_spec(spec: mujoco.MjSpec, mjcf: Path) -> mujoco.MjModel:
             hint = (f" ({found.group(0)!r} is critmoment's name for the model's unnamed "
                     f"{found.group(1)} #{found.group(2)}, in the order of the MJCF)")
         raise ScenarioError(f"could not compile MJCF {mjcf}: {text}{hint}") from exc
+    if not _is_utf8(bytes(model.names)):
+        raise ScenarioError(_not_utf8(mjcf, bytes(model.names)))
+    return model
 
 
 # ---------------------------------------------------------------------------

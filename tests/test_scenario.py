@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import shutil
 from pathlib import Path
 
@@ -988,3 +989,20 @@ def test_a_mesh_objects_centre_of_mass_range_is_checked_against_its_hull(tmp_pat
     with pytest.raises(ScenarioError, match=r"span offsets -0.015 to 0.015 m"):
         load_scenario(scenario("wide", "[-0.018, 0.018]"))
     assert load_scenario(scenario("ok", "[-0.014, 0.014]")).box.high[-1] == 0.014
+
+
+@pytest.mark.parametrize("where", ["body", "geom"])
+def test_a_name_that_is_not_utf8_names_the_file_and_the_name(tmp_path, where):
+    """MuJoCo keeps a Latin-1 name as bytes; Python then failed on it with "expected UTF-8
+    text, got bytes that are not: ... position 1", naming neither the file nor the name."""
+    from critmoment.modelinfo import inspect_model
+
+    body, geom = (b"b\xfe", b"g") if where == "body" else (b"b", b"g\xfe")
+    path = tmp_path / "latin1.xml"
+    path.write_bytes(b'<mujoco model="m"><worldbody><body name="' + body + b'"><freejoint/>'
+                     b'<geom name="' + geom + b'" type="box" size=".1 .1 .1"/></body>'
+                     b'</worldbody></mujoco>')
+    bad = body if where == "body" else geom
+    with pytest.raises(ScenarioError, match=re.escape(
+            f"could not read MJCF {path}: the name {bad!r} is not UTF-8 text")):
+        inspect_model(path)
