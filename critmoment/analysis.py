@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import concurrent.futures
 import contextlib
+import contextvars
 import dataclasses
 import functools
 import logging
@@ -797,7 +798,9 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
         return chain()
 
     with _pool(nthread) as pool:
-        chaining = pool.submit(physics)
+        # in a copy of this thread's context: the budget in force (budget.limits, the
+        # CLI's --max-steps) holds in the physics thread too
+        chaining = pool.submit(contextvars.copy_context().run, physics)
         if not isinstance(chaining, _Done):
             # while the physics thread steps (with all MuJoCo threads), this thread's sparse
             # evaluations take one: five busy threads on two cores cost 6.5 s of CPU for

@@ -88,6 +88,7 @@ from __future__ import annotations
 
 import collections
 import concurrent.futures
+import contextvars
 import copy
 import dataclasses
 import enum
@@ -1153,7 +1154,10 @@ class SparseEvaluator:
         rows = np.array_split(np.arange(n), parts)
         forks = [self.fork(nthread=max(1, threads // parts), prefill=False) for _ in rows]
         with concurrent.futures.ThreadPoolExecutor(max_workers=parts - 1) as pool:
-            later = [pool.submit(run, f, r) for f, r in zip(forks[1:], rows[1:], strict=True)]
+            # each in a copy of this thread's context: the budget in force
+            # (critmoment.budget.limits) holds there too
+            later = [pool.submit(contextvars.copy_context().run, run, f, r)
+                     for f, r in zip(forks[1:], rows[1:], strict=True)]
             first = run(forks[0], rows[0])
             return [first] + [f.result() for f in later]
 

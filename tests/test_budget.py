@@ -67,3 +67,17 @@ def test_analyze_refuses_before_any_work():
         analysis.analyze(traj, twin=twin, options=analysis.AnalyzeOptions(n_samples=10**9))
     with budget.limits(max_steps=100), pytest.raises(ResourceLimitError, match="rollout"):
         analysis.analyze(traj, twin=twin)
+
+
+def test_limits_hold_in_the_audits_own_threads(monkeypatch, twin, demo_traj):
+    """The budget lives in a context variable: the audit's physics thread and its shared-out
+    sweeps ran with the environment's limit, so `--max-steps 10000` over
+    CRITMOMENT_MAX_STEPS=3000 failed the verification rollouts with "raise the limit with
+    --max-steps" (a one-thread audit and rollout/validate passed)."""
+    from critmoment.analysis import AnalyzeOptions, analyze
+
+    monkeypatch.setenv("CRITMOMENT_MAX_STEPS", "3000")
+    assert demo_traj.duration / twin.model.opt.timestep > 3000
+    with budget.limits(max_steps=10_000):
+        res = analyze(demo_traj, twin=twin, options=AnalyzeOptions(n_samples=16, nthread=2))
+    assert res.verdict is not None
