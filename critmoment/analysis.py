@@ -1402,14 +1402,17 @@ def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory) -> dict:
         "python": sys.version.split()[0],
         "platform": platform.platform(terse=True),
         "scenario": sc.name,
-        # file names and content hashes, not paths: identical inputs, identical manifests
+        # file names and hashes, not paths: identical inputs, identical manifests. The
+        # files' hashes say what was read (None for what was built in code: not whatever
+        # file of that name lies in the working folder); the content hashes say what was
+        # audited (a file read with another --object-pose, a scenario narrowed in code)
         "scenario_file": input_identity(sc.path)["name"] if sc.path else None,
-        "scenario_sha256": (sc.sha256 if sc.sha256 is not None
-                            else input_identity(sc.path)["sha256"] if sc.path else None),
+        "scenario_sha256": sc.sha256,
+        "scenario_content_sha256": sc.content_sha256(),
         "model_sha256": model_hash(sc),
         "trajectory": input_identity(traj.source)["name"],
-        "trajectory_sha256": (traj.source_sha256 if traj.source_sha256 is not None
-                              else input_identity(traj.source)["sha256"]),
+        "trajectory_sha256": traj.source_sha256,
+        "trajectory_content_sha256": traj.content_sha256(),
         "seed": opt.seed,
         "options": dataclasses.asdict(opt),
         "task": sc.task.to_json(),

@@ -689,6 +689,17 @@ class Scenario:
         """Actuators without a force limit (neither the scenario nor the MJCF gives one)."""
         return tuple(a for a, v in self.limits.items() if not math.isfinite(v))
 
+    def content_sha256(self) -> str:
+        """SHA-256 of what an audit reads from the scenario: every field but its file's
+        path, its file hash and its description, with the MJCF by file name (the report's
+        ``model_sha256`` hashes the model files). A scenario changed in code
+        (:meth:`replace`) hashes differently from the file it was read from."""
+        skip = {"path", "sha256", "description", "mjcf"}
+        parts = [(f.name, getattr(self, f.name)) for f in dataclasses.fields(self)
+                 if f.name not in skip]
+        parts.append(("mjcf", self.mjcf.name))
+        return hashlib.sha256(repr(parts).encode()).hexdigest()
+
     def replace(self, **changes) -> Scenario:
         """A copy with fields replaced (e.g. ``box=scenario.box.with_range(...)``)."""
         fields = {f.name for f in dataclasses.fields(self)}

@@ -273,7 +273,9 @@ class Trajectory:
         actions: (T, na) joint-position targets in the scenario's action
             convention (ALOHA: 14 values, joints [rad] and grippers normalised
             0..1). T >= 2, all finite.
-        fps: control rate [Hz]; action ``i`` applies at time ``i / fps`` [s].
+        fps: control rate [Hz]; action ``i`` applies at time ``i / fps`` [s]. None (the
+            default): the scenario's ``[actions] fps`` where it states one, else
+            :data:`DEFAULT_FPS` (``fps_assumed`` is then True).
         start: (na,) initial joint state in the action convention (e.g. ACT's
             ``observations/qpos[0]``), or ``None`` when unknown.
         qpos0: (nq,) full MuJoCo initial ``qpos`` when known, else ``None``.
@@ -286,7 +288,7 @@ class Trajectory:
     """
 
     actions: np.ndarray
-    fps: float = DEFAULT_FPS
+    fps: float | None = None
     start: np.ndarray | None = None
     qpos0: np.ndarray | None = None
     object_pose: np.ndarray | None = None
@@ -299,6 +301,25 @@ class Trajectory:
     #: the SHA-256 of the file's bytes as read (:func:`load_trajectory`), for the report's
     #: manifest; None for a trajectory built in code or read from a dataset folder
     source_sha256: str | None = field(default=None, compare=False)
+
+    def content_sha256(self) -> str:
+        """SHA-256 of what an audit plays: the actions, the rate and the initial state
+        (``start``, ``qpos0``, ``qvel0``, ``object_pose``); not ``meta`` or ``source``. Two
+        trajectories with the same hash are audited alike (the report's manifest carries
+        it beside the file's own hash: a file read with another ``--object-pose``, or a
+        loaded trajectory changed in code, is another trajectory)."""
+        h = hashlib.sha256()
+        h.update(repr(float(self.fps)).encode())
+        for name in ("actions", "start", "qpos0", "qvel0", "object_pose"):
+            value = getattr(self, name)
+            h.update(name.encode())
+            if value is None:
+                h.update(b"none")
+                continue
+            arr = np.ascontiguousarray(value, dtype=np.float64)
+            h.update(repr(arr.shape).encode())
+            h.update(arr.tobytes())
+        return h.hexdigest()
 
     def with_rate_from(self, fps: float | None) -> Trajectory:
         """This trajectory at ``fps`` (a scenario's ``[actions] fps``) where its file
@@ -344,6 +365,12 @@ class Trajectory:
             )
         object.__setattr__(self, "actions", _read_only(actions))
 
+        if self.fps is None:
+            # no rate given: the scenario's [actions] fps where it states one, as for a file
+            # that records none (a policy's chunk built in code had played at 50 Hz against
+            # a 30 Hz scenario)
+            object.__setattr__(self, "fps", DEFAULT_FPS)
+            object.__setattr__(self, "fps_assumed", True)
         object.__setattr__(
             self, "fps", _as_rate(self.fps, what="fps", error=TrajectoryError)
         )
@@ -903,7 +930,8 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
 def save_trajectory(traj: Trajectory, path: str | os.PathLike) -> None:
     """Writes a trajectory in critmoment's ``.npz`` schema.
 
-    Keys written: ``actions`` (T, na) float64; ``fps`` 0-d float64 [Hz];
+    Keys written: ``actions`` (T, na) float64; ``fps`` 0-d float64 [Hz] (not where the rate
+    was assumed, ``fps_assumed``);
     ``start`` (na,), ``qpos0`` (nq,), ``qvel0`` (nv,), ``object_pose`` (7,) when present; and
     ``meta`` as a 0-d unicode array holding JSON. ``source`` is not stored (a
     loaded trajectory's source is the path it was read from). Reading the file
@@ -929,9 +957,10 @@ def save_trajectory(traj: Trajectory, path: str | os.PathLike) -> None:
         )
     arrays: dict[str, np.ndarray] = {
         "actions": np.asarray(traj.actions),
-        "fps": np.asarray(traj.fps, dtype=np.float64),
         "meta": np.asarray(json.dumps(traj.meta, allow_nan=False)),
     }
+    if not traj.fps_assumed:  # an assumed rate stays one: read back, the scenario's applies
+        arrays["fps"] = np.asarray(traj.fps, dtype=np.float64)
     for name in ("start", "qpos0", "qvel0", "object_pose"):
         value = getattr(traj, name)
         if value is not None:

@@ -605,3 +605,37 @@ def test_the_manifest_names_the_bytes_read_not_the_file_at_report_time(tmp_path,
     man = _manifest(sc, AnalyzeOptions(), traj)
     assert man["scenario_sha256"] == read
     assert man["trajectory_sha256"] == traj_read
+
+
+def test_the_manifest_tells_apart_what_was_audited(tmp_path, demo_traj):
+    """One file read with another object pose, a loaded trajectory changed in code, a
+    scenario narrowed with Scenario.replace: each carried the file's hash alone, so audits
+    with different verdicts had identical manifests; and a trajectory built in code with
+    source='traj.npz' got the hash of whatever file of that name lay in the working
+    folder."""
+    import dataclasses
+
+    from critmoment.analysis import AnalyzeOptions, _manifest
+    from critmoment.scenario import load_scenario
+    from critmoment.trajectory import Trajectory, load_trajectory, save_trajectory
+
+    sc = load_scenario()
+    save_trajectory(demo_traj, tmp_path / "t.npz")
+    traj = load_trajectory(tmp_path / "t.npz")
+    opt = AnalyzeOptions()
+    base = _manifest(sc, opt, traj)
+    posed = load_trajectory(tmp_path / "t.npz", object_pose=[0.2, 0.45, 0.02, 1, 0, 0, 0])
+    changed = dataclasses.replace(traj, actions=traj.actions * 0.9)
+    narrow = sc.replace(box=sc.box.with_range("mass", 0.05, 1.0))
+    for other in (_manifest(sc, opt, posed), _manifest(sc, opt, changed)):
+        assert other["trajectory_sha256"] == base["trajectory_sha256"]  # the file read
+        assert other["trajectory_content_sha256"] != base["trajectory_content_sha256"]
+    other = _manifest(narrow, opt, traj)
+    assert other["scenario_content_sha256"] != base["scenario_content_sha256"]
+    # the same inputs read again: the same identities
+    again = _manifest(load_scenario(), opt, load_trajectory(tmp_path / "t.npz"))
+    assert again["trajectory_content_sha256"] == base["trajectory_content_sha256"]
+    assert again["scenario_content_sha256"] == base["scenario_content_sha256"]
+    # built in code: no file hash, whatever lies in the working folder
+    built = Trajectory(traj.actions, fps=traj.fps, source=str(tmp_path / "t.npz"))
+    assert _manifest(sc, opt, built)["trajectory_sha256"] is None

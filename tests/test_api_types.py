@@ -160,6 +160,33 @@ def test_a_recorded_rate_other_than_the_scenarios_is_warned_of(twin, demo_traj):
         assert at_scenario_rate(demo_traj, twin) is demo_traj
 
 
+def test_a_trajectory_built_without_a_rate_takes_the_scenarios(twin, demo_traj, tmp_path):
+    """`Trajectory(actions)` played at 50 Hz against a scenario stating 30 Hz, with only a
+    warning that it "records 50 Hz" (it recorded none): a policy's chunk audited 1.67×
+    too fast. It now takes the scenario's rate, as a file without one does, and keeps
+    the rate unrecorded through save and load."""
+    import warnings as _w
+
+    from critmoment.recording import at_scenario_rate
+    from critmoment.trajectory import load_trajectory, save_trajectory
+    from critmoment.twin import Twin
+
+    thirty = Twin(twin.scenario.replace(fps=30.0, fps_given=True))
+    bare = Trajectory(demo_traj.actions)
+    assert bare.fps == 50.0 and bare.fps_assumed
+    with _w.catch_warnings():
+        _w.simplefilter("error")
+        assert at_scenario_rate(bare, thirty).fps == 30.0
+    save_trajectory(bare, tmp_path / "bare.npz")
+    again = load_trajectory(tmp_path / "bare.npz")
+    assert again.fps_assumed and at_scenario_rate(again, thirty).fps == 30.0
+    # a rate given is kept, and saved
+    given = Trajectory(demo_traj.actions, fps=50.0)
+    assert not given.fps_assumed
+    save_trajectory(given, tmp_path / "given.npz")
+    assert not load_trajectory(tmp_path / "given.npz").fps_assumed
+
+
 def test_scenario_replace_names_an_unknown_field(scenario):
     with pytest.raises(ScenarioError, match=r"Scenario.replace: unknown key 'boxx' \(did you "
                                             r"mean 'box'\?\)"):
