@@ -26,13 +26,14 @@ import os
 import re
 import shutil
 import tempfile
+import warnings
 from collections.abc import Iterator, Sequence
 from pathlib import Path
 
 import numpy as np
 from matplotlib.figure import Figure
 
-from critmoment.exceptions import OutputError, ParameterError
+from critmoment.exceptions import CritmomentWarning, OutputError, ParameterError
 from critmoment.moments import Moment, plot_moments
 from critmoment.params import kind_of
 from critmoment.safety import format_fos
@@ -674,6 +675,19 @@ def _previous_files(folder: Path) -> set[str]:
             e.name in _KNOWN_OUTPUTS or _FIGURE_FILE.fullmatch(e.name))}
 
 
+def _remove_tree(path: Path) -> None:
+    """Removes a staged or replaced folder, read-only parts included (an earlier output made
+    read-only stayed behind, whole, as ``.DIR.critmoment-tmp-*``, where a batch reading
+    every ``report.json`` found it); warns where something still cannot be removed."""
+    with contextlib.suppress(OSError):
+        for root, _, _ in os.walk(path):
+            os.chmod(root, os.stat(root).st_mode | 0o700)
+    shutil.rmtree(path, ignore_errors=True)
+    if os.path.lexists(path):
+        warnings.warn(f"could not remove {str(path)!r} (an earlier output or a staged one); "
+                      f"remove it by hand", CritmomentWarning, stacklevel=3)
+
+
 class StagedOutput:
     """Builds an output folder (or file) in a temporary place and moves it into position.
 
@@ -742,7 +756,7 @@ class StagedOutput:
                                   f"nothing was changed: {exc.strerror or exc}") from None
         finally:
             if self._tmpdir is not None and self._tmpdir.exists():
-                shutil.rmtree(self._tmpdir, ignore_errors=True)
+                _remove_tree(self._tmpdir)
         return False
 
     def _merge_into(self, dest: Path) -> None:
@@ -784,7 +798,7 @@ class StagedOutput:
                         os.rename(aside / dest.name, dest)  # put the old output back
                         raise
                     finally:
-                        shutil.rmtree(aside, ignore_errors=True)
+                        _remove_tree(aside)
         except OutputError:
             raise
         except OSError as exc:

@@ -373,3 +373,36 @@ def test_the_report_names_each_parameter_kind_as_the_scenario_does(audit):
         "mass": "mass", "friction": "friction", "com": "com_offset", "grip": "force_limit"}
     assert all(params.kind_of(cls.__new__(cls)) == kind
                for kind, (cls, _) in params.PARAMETER_KINDS.items())
+
+
+_READ_ONLY_SCRIPT = """
+import os, sys
+from pathlib import Path
+from critmoment.report import StagedOutput
+out = Path(sys.argv[1]) / "r"
+with StagedOutput(out, command="test") as stage:
+    (stage.path / "report.json").write_text("old")
+os.chmod(out, 0o555)
+with StagedOutput(out, command="test") as stage:
+    (stage.path / "report.json").write_text("new")
+print(sorted(os.listdir(out.parent)), (out / "report.json").read_text())
+"""
+
+
+def test_a_read_only_earlier_output_leaves_nothing_behind(tmp_path):
+    """An earlier output folder made read-only was replaced, and the old one stayed, whole,
+    as ``.r.critmoment-tmp-*`` (its files could not be removed from a read-only folder),
+    where a batch globbing ``**/report.json`` found the old report. Run without the
+    privilege to ignore permissions (root's is dropped with setpriv)."""
+    import shutil
+    import subprocess
+    import sys
+
+    cmd = [sys.executable, "-c", _READ_ONLY_SCRIPT, str(tmp_path)]
+    if os.geteuid() == 0:
+        if shutil.which("setpriv") is None:
+            pytest.skip("root without setpriv: permissions cannot be made to apply")
+        cmd = ["setpriv", "--bounding-set", "-dac_override,-dac_read_search,-fowner"] + cmd
+    run = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == "['r'] new"
