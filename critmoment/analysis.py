@@ -259,6 +259,10 @@ class AuditReport:
             largest mass: per mass the first time [s] a joint saturates (as the ground truth
             counts it) and which, and the smallest payload any step can take; None without
             ``search``.
+        warnings: the warnings of the run the caller attached, one line each, for the
+            report's record (the command line attaches every warning of the run: actions
+            clipped to their range, an object pose assumed, keys ignored, ...; the library
+            leaves them to the caller's ``warnings`` handling and this empty).
         unlimited_motors: the motor-checked actuators (``Twin.motors``: the arm's, not a
             gripper's fingers, whose squeeze is limited on purpose) with no force limit in
             the scenario or the MJCF: their motor FOS is not checked.
@@ -289,6 +293,7 @@ class AuditReport:
     load_bound: Mapping | None = None
     force_ratio_untrusted: tuple[int, ...] = ()
     unlimited_motors: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
 
     def passes(self, min_success: float | None = None) -> bool:
         """SAFE, or CONDITIONAL with P(success) ≥ ``min_success`` (the CLI's exit code 0).

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import dataclasses
 import json
 import logging
 import math
@@ -258,6 +259,9 @@ def cmd_analyze(args) -> int:
         budget.check_audit(traj, twin, options)
         result = analyze(traj, twin.scenario, twin=twin, options=options,
                          progress=args.verbose or (not args.json and sys.stderr.isatty()))
+        # the run's warnings so far (reading the inputs, the audit) go on the record too
+        result = dataclasses.replace(result, warnings=tuple(dict.fromkeys(
+            _one_line(str(w.message)) for w in getattr(args, "caught", ()))))
         if out is not None:
             report.write_report_files(result, out, figures=report.Figures.parse(args.figures))
     code = EXIT_OK if result.passes(args.min_success) else EXIT_UNSAFE
@@ -698,6 +702,7 @@ def _main(argv: list[str] | None) -> int:
         warnings.simplefilter("always")
         warnings.filterwarnings("ignore", category=DeprecationWarning)
         try:
+            args.caught = caught
             with budget.limits(max_steps=getattr(args, "max_steps", None),
                                max_batch_steps=getattr(args, "max_batch_steps", None),
                                max_input_bytes=getattr(args, "max_input_bytes", None)):

@@ -204,6 +204,7 @@ def report_json(report, *, timings: bool = True) -> dict:
         "load_bound": jsonable(getattr(report, "load_bound", None)),
         "rollout": jsonable(report.recording.summary()),  # inf: no force limit
         "manifest": jsonable(report.manifest),
+        "warnings": list(getattr(report, "warnings", ())),
     }
     if timings:
         doc["timings"] = {k: round(float(v), 4) for k, v in report.timings.items()}

@@ -579,3 +579,20 @@ def _bundled_scene() -> str:
     from critmoment.scenario import load_scenario
 
     return str(load_scenario().mjcf)
+
+
+def test_report_json_records_the_runs_warnings(traj_file, tmp_path, capsys):
+    """Input warnings (here: an unknown key in the trajectory file, which is ignored) went
+    to stderr only; the archived report said nothing of them."""
+    with np.load(traj_file) as z:
+        arrays = dict(z)
+    arrays["my_extra_key"] = np.zeros(3)
+    np.savez(tmp_path / "extra.npz", **arrays)
+    out = tmp_path / "rep"
+    assert main(["analyze", str(tmp_path / "extra.npz"), "--samples", "16", "--max-moments",
+                 "2", "--no-verify", "--figures", "none", "--out", str(out)]) == 1
+    err = capsys.readouterr().err
+    doc = json.loads((out / "report.json").read_text())
+    assert doc["warnings"] and any("my_extra_key" in w for w in doc["warnings"])
+    for w in doc["warnings"]:
+        assert f"critmoment analyze: warning: {w}" in err
