@@ -1396,6 +1396,14 @@ def _search_all(rec, twin, evaluator, steps, opt):
 
 
 def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory) -> dict:
+    return input_manifest(sc, traj, seed=opt.seed, options=dataclasses.asdict(opt))
+
+
+def input_manifest(sc: Scenario, traj: Trajectory, *, seed: int | None,
+                   options: Mapping) -> dict:
+    """What an audit or a validation ran on, for its document: the versions, the scenario,
+    the model and the trajectory by name and hash (not paths), the seed and ``options``,
+    the task and the force limits."""
     import mujoco
 
     import critmoment
@@ -1418,8 +1426,8 @@ def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory) -> dict:
         "trajectory": input_identity(traj.source)["name"],
         "trajectory_sha256": traj.source_sha256,
         "trajectory_content_sha256": traj.content_sha256(),
-        "seed": opt.seed,
-        "options": dataclasses.asdict(opt),
+        "seed": seed,
+        "options": dict(options),
         "task": sc.task.to_json(),
         # each actuator's force limit and where it comes from; None where nothing limits it
         "limits": {a: {"limit": v if np.isfinite(v) else None,

@@ -40,6 +40,7 @@ from critmoment.analysis import (
     audit_evaluator,
     audit_moments,
     decision_options,
+    input_manifest,
     sample_runs,
 )
 from critmoment.exceptions import ParameterError
@@ -397,6 +398,9 @@ class ValidationResult:
     verified: np.ndarray
     seed: int | None = None
     runs: Mapping[str, int] = dataclasses.field(default_factory=dict)
+    #: what the validation ran on (:func:`critmoment.analysis.input_manifest`: versions,
+    #: scenario, model and trajectory by name and hash, the box, the options), or None
+    manifest: Mapping | None = None
 
     @property
     def n_samples(self) -> int:
@@ -475,6 +479,7 @@ class ValidationResult:
                  "max_cost": _finite(self.max_cost[i]),
                  "first_failure_step": int(self.first_failure_step[i])}
                 for i in range(self.n_samples)],
+            "manifest": self.manifest,
         }
         if timings:  # every wall time under "timings": the rest is identical run to run
             doc["timings"] = {"sparse_seconds": self.sparse_seconds,
@@ -629,5 +634,15 @@ def validate(traj: Trajectory, scenario: Scenario | str | None = None, *,
     brute = brute_force(traj, twin=twin, samples=samples, criteria=criteria, chunk=chunk,
                         nthread=nthread)
     # the file's name, not its path: identical inputs give identical documents
-    return compare(brute, prediction, trajectory=input_identity(traj.source)["name"],
-                   seed=used_seed)
+    result = compare(brute, prediction, trajectory=input_identity(traj.source)["name"],
+                     seed=used_seed)
+    options = {"n_samples": int(samples.shape[0]), "horizon": prediction.horizon,
+               "mode": prediction.mode.value, "max_moments": prediction.max_moments,
+               "envelope": envelope, "verify": verify, "verify_unlifted": verify_unlifted,
+               "require_task": require_task, "chain": chain,
+               "criteria": dataclasses.asdict(criteria),
+               "box": {p.name: {"range": [p.low, p.high], "nominal": p.nominal,
+                                "prior": p.prior.value} for p in box.parameters},
+               "samples_given": used_seed is None}
+    return dataclasses.replace(result, manifest=input_manifest(
+        twin.scenario, traj, seed=used_seed, options=options))

@@ -298,6 +298,13 @@ def test_validate_end_to_end_is_deterministic(twin, demo_traj):
     assert set(c) == {"true_safe", "false_safe", "true_unsafe", "false_unsafe"}
     assert a.sparse_seconds > 0 and a.brute_force_seconds > 0
     assert a.moment_steps.size == 8
+    # the document says what it ran on (it had no scenario, box, versions or hash)
+    man = a.to_json()["manifest"]
+    assert man["scenario"] == twin.scenario.name and man["seed"] == 3
+    assert man["trajectory_content_sha256"] == demo_traj.content_sha256()
+    assert man["options"]["box"]["mass"]["range"] == [twin.scenario.box.low[0],
+                                                      twin.scenario.box.high[0]]
+    assert man["options"]["max_moments"] == 8 and man["options"]["horizon"] == 10
     # the CLI's interface
     assert isinstance(a.confusion["false_safe"], int)
     assert "confusion:" in a.summary_text()
