@@ -30,6 +30,9 @@ _EXPORTS: dict[str, str] = {
     "ScenarioError": "exceptions",
     "SimulationDivergedError": "exceptions",
     "TrajectoryError": "exceptions",
+    "OutputError": "exceptions",
+    "ResourceLimitError": "exceptions",
+    "CritmomentWarning": "exceptions",
     "FeasibilityReport": "feasibility",
     "check_feasibility": "feasibility",
     "BruteForce": "groundtruth",
@@ -70,13 +73,16 @@ _EXPORTS: dict[str, str] = {
 if TYPE_CHECKING:  # the same names, eagerly, for type checkers and IDEs
     from critmoment.analysis import AnalyzeOptions, AuditReport, Verdict, analyze
     from critmoment.exceptions import (
-                                       CritmomentError,
-                                       InfeasibleTwinError,
-                                       InputFileError,
-                                       ParameterError,
-                                       ScenarioError,
-                                       SimulationDivergedError,
-                                       TrajectoryError,
+        CritmomentError,
+        CritmomentWarning,
+        InfeasibleTwinError,
+        InputFileError,
+        OutputError,
+        ParameterError,
+        ResourceLimitError,
+        ScenarioError,
+        SimulationDivergedError,
+        TrajectoryError,
     )
     from critmoment.feasibility import FeasibilityReport, check_feasibility
     from critmoment.groundtruth import BruteForce, brute_force
@@ -86,12 +92,12 @@ if TYPE_CHECKING:  # the same names, eagerly, for type checkers and IDEs
     from critmoment.recording import Recording, rollout, simulate
     from critmoment.scenario import CostParams, Scenario, load_scenario
     from critmoment.sparse import (
-                                       SparseEvaluator,
-                                       SparseMode,
-                                       SparseResult,
-                                       evaluate,
-                                       probability_of_success,
-                                       sweep,
+        SparseEvaluator,
+        SparseMode,
+        SparseResult,
+        evaluate,
+        probability_of_success,
+        sweep,
     )
     from critmoment.task import TASK_KINDS, Task
     from critmoment.trajectory import Trajectory, load_trajectory, save_trajectory
@@ -132,6 +138,9 @@ __all__ = [
     "SimulationDivergedError",
     "TrajectoryError",
     "InfeasibleTwinError",
+    "OutputError",
+    "ResourceLimitError",
+    "CritmomentWarning",
     "FeasibilityReport",
     "check_feasibility",
     "init_scenario",
