@@ -38,7 +38,7 @@ from critmoment.exceptions import (
 from critmoment.scenario import Scenario
 from critmoment.task import Task, TaskEvidence
 from critmoment.trajectory import Trajectory
-from critmoment.twin import STATE_SPEC, Signals, Twin, resolve_twin
+from critmoment.twin import STATE_SPEC, Signals, Twin, resolve_twin, with_quiet_mujoco_log
 
 __all__ = [
     "Recording",
@@ -653,6 +653,7 @@ def check_recording(value: Any, what: str = "recording") -> Recording:
     return value
 
 
+@with_quiet_mujoco_log
 def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
             twin: Twin | None = None, range_policy: str | None = None) -> Recording:
     """Run the frequent rollout of a trajectory at nominal parameters.

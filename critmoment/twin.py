@@ -24,6 +24,7 @@ import dataclasses
 import functools
 import math
 import os
+import threading
 import types
 import warnings
 from collections.abc import Iterator, Mapping
@@ -1041,25 +1042,48 @@ def _as_slice(index: np.ndarray) -> np.ndarray | slice:
     return index
 
 
+_QUIET_LOCK = threading.Lock()
+_QUIET = {"depth": 0, "before": None}
+
+
 @contextlib.contextmanager
 def quiet_mujoco_log() -> Iterator[None]:
     """MuJoCo's own log (the ``MUJOCO_LOG.TXT`` file in the current folder and the console)
     off inside the block, its previous settings back after; MuJoCo's warning counters, which
-    critmoment reads, still count."""
-    try:
-        config = mujoco.MjLogConfig.get()
-        before = (config.logto_file, config.logto_console)
-        config.logto_file, config.logto_console = False, False
-        config.set()
-    except AttributeError:  # a MuJoCo without the log settings
+    critmoment reads, still count. The settings are the process's: blocks nested or in
+    several threads at once switch them off at the first entry and back at the last exit.
+    ``analyze``, ``validate``, ``rollout`` and ``brute_force`` run in one (a library call
+    that met a diverging sample had left ``MUJOCO_LOG.TXT`` in the caller's folder)."""
+    if not hasattr(mujoco, "MjLogConfig"):  # a MuJoCo without the log settings
         yield
         return
+    with _QUIET_LOCK:
+        if _QUIET["depth"] == 0:
+            config = mujoco.MjLogConfig.get()
+            _QUIET["before"] = (config.logto_file, config.logto_console)
+            config.logto_file, config.logto_console = False, False
+            config.set()
+        _QUIET["depth"] += 1
     try:
         yield
     finally:
-        config = mujoco.MjLogConfig.get()
-        config.logto_file, config.logto_console = before
-        config.set()
+        with _QUIET_LOCK:
+            _QUIET["depth"] -= 1
+            if _QUIET["depth"] == 0:
+                config = mujoco.MjLogConfig.get()
+                config.logto_file, config.logto_console = _QUIET["before"]
+                config.set()
+
+
+def with_quiet_mujoco_log(fn):
+    """``fn`` run inside :func:`quiet_mujoco_log` (the library's entry points)."""
+
+    @functools.wraps(fn)
+    def run(*args, **kwargs):
+        with quiet_mujoco_log():
+            return fn(*args, **kwargs)
+
+    return run
 
 
 #: how far qpos0's object pose may lie from an object_pose given beside it before the

@@ -510,3 +510,36 @@ def test_a_chunk_cut_mid_motion_starts_moving_with_qvel0(tmp_path):
     assert in_motion.signals.fos_motor[:50].min() == pytest.approx(episode, rel=0.05)
     with pytest.raises(TrajectoryError, match="qvel0: expected it with qpos0"):
         dataclasses.replace(moving, qpos0=None)
+
+
+def test_a_library_rollout_that_diverges_writes_no_mujoco_log(stiff_twin, tmp_path, monkeypatch,
+                                                              capfd):
+    """The command line kept MuJoCo's log off; a library call (a service auditing in its own
+    folder) left MUJOCO_LOG.TXT there and MuJoCo's warning on stderr. The settings are the
+    process's: back as they were after the call, also with calls in several threads."""
+    import threading
+
+    import mujoco
+
+    monkeypatch.chdir(tmp_path)
+    before = mujoco.MjLogConfig.get()
+    errors = []
+
+    def one():
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                rollout(_hold(20), twin=stiff_twin)
+        except SimulationDivergedError as exc:
+            errors.append(exc)
+
+    threads = [threading.Thread(target=one) for _ in range(3)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert len(errors) == 3
+    assert not (tmp_path / "MUJOCO_LOG.TXT").exists()
+    assert "Nan, Inf or huge value" not in capfd.readouterr().err
+    after = mujoco.MjLogConfig.get()
+    assert (after.logto_file, after.logto_console) == (before.logto_file, before.logto_console)
