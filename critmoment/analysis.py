@@ -803,9 +803,9 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
         verifying.run()
         return chain()
 
-    with _pool(nthread) as pool:
+    with budget.cancel_scope() as cancel, _pool(nthread) as pool:
         # in a copy of this thread's context: the budget in force (budget.limits, the
-        # CLI's --max-steps) holds in the physics thread too
+        # CLI's --max-steps) holds in the physics thread too, and so does the cancel scope
         chaining = pool.submit(contextvars.copy_context().run, physics)
         if not isinstance(chaining, _Done):
             # while the physics thread steps (with all MuJoCo threads), this thread's sparse
@@ -813,12 +813,19 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
             # the demo audit, three 6.1 s (2026-12-03, medians of 8)
             evaluator.busy = lambda: not chaining.done()
         try:
-            extra = alongside() if alongside is not None else None
-        finally:
-            evaluator.busy = None
-        verifying.run()  # this thread takes the rollouts if that thread has not
-        chained, chained_failed, suspect, kinds = chaining.result()
-        rerun_failed = verifying.result()
+            try:
+                extra = alongside() if alongside is not None else None
+            finally:
+                evaluator.busy = None
+            verifying.run()  # this thread takes the rollouts if that thread has not
+            chained, chained_failed, suspect, kinds = chaining.result()
+            rerun_failed = verifying.result()
+        except BaseException:
+            # stopped (an interrupt, a timeout, an error here): the physics thread stops at
+            # its next batch, not at the end of its stage (4 s on the demo; minutes on a
+            # long run, past a CI runner's grace before SIGKILL)
+            cancel.set()
+            raise
     if suspect.any() and options.verify is not None:
         with timer("chained segments"):
             # failed on its own path (approximately its own run): its own rollout decides
@@ -1397,7 +1404,10 @@ def _search_all(rec, twin, evaluator, steps, opt):
 
 
 def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory) -> dict:
-    return input_manifest(sc, traj, seed=opt.seed, options=dataclasses.asdict(opt))
+    # not the threads: the report is the same on any number (the CLI's default, all CPUs,
+    # and the library's gave byte-different documents for the same audit)
+    options = {k: v for k, v in dataclasses.asdict(opt).items() if k != "nthread"}
+    return input_manifest(sc, traj, seed=opt.seed, options=options)
 
 
 def input_manifest(sc: Scenario, traj: Trajectory, *, seed: int | None,

@@ -40,6 +40,7 @@ import contextvars
 import dataclasses
 import math
 import os
+import threading
 from collections.abc import Iterator
 from typing import Any
 
@@ -158,6 +159,35 @@ def limits(budget: Budget | None = None, **overrides: int | None) -> Iterator[Bu
         yield new
     finally:
         _ACTIVE.reset(token)
+
+
+class Cancelled(BaseException):
+    """Raised in an audit's physics thread once its caller has stopped (an interrupt, a
+    timeout, an error): the thread stops between batches instead of finishing its stage.
+    A BaseException, so that no ``except Exception`` takes it for a result."""
+
+
+_CANCEL: contextvars.ContextVar[threading.Event | None] = contextvars.ContextVar(
+    "critmoment_cancel", default=None)
+
+
+@contextlib.contextmanager
+def cancel_scope() -> Iterator[threading.Event]:
+    """A block whose threads (run in copies of this context) stop at their next
+    :func:`check_cancelled` once the returned event is set."""
+    event = threading.Event()
+    token = _CANCEL.set(event)
+    try:
+        yield event
+    finally:
+        _CANCEL.reset(token)
+
+
+def check_cancelled() -> None:
+    """Raises :class:`Cancelled` where the enclosing :func:`cancel_scope` was cancelled."""
+    event = _CANCEL.get()
+    if event is not None and event.is_set():
+        raise Cancelled
 
 
 def _refuse(limit: str, *, what: str, got: float, unit: str, hint: str = "") -> None:

@@ -703,6 +703,7 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
     parts, diverged = [], []
     for first, out, _mu in batched_rollouts(twin, state0, controls, everything,
                                             model=probe.model, chunk=chunk, nthread=nthread):
+        budget.check_cancelled()
         rows = everything[first:first + out["sensordata"].shape[0]]
         frames = _Frames.read(twin, probe, out["sensordata"], twin.sample_limits(rows))
         if frames_ref is None:

@@ -35,6 +35,7 @@ import mujoco
 import numpy as np
 import scipy.ndimage
 
+from critmoment import budget
 from critmoment.exceptions import ParameterError
 from critmoment.groundtruth import OutcomeCriteria, tracking_tolerances
 from critmoment.sparse import SparseEvaluator, _object_in_grippers
@@ -808,6 +809,7 @@ def _chain_chunk(ev: SparseEvaluator, watch: _Watch, samples: np.ndarray, rows: 
     for j, k in enumerate([*kept, None]):
         target = end if k is None else k
         while current < target and alive.any():
+            budget.check_cancelled()
             nstep = min(block, target - current)
             step(current, nstep, np.flatnonzero(alive))
             current += nstep

@@ -81,3 +81,34 @@ def test_limits_hold_in_the_audits_own_threads(monkeypatch, twin, demo_traj):
     with budget.limits(max_steps=10_000):
         res = analyze(demo_traj, twin=twin, options=AnalyzeOptions(n_samples=16, nthread=2))
     assert res.verdict is not None
+
+
+def test_an_audit_stopped_in_its_main_thread_stops_its_physics_thread(twin, demo_traj):
+    """An interrupt or a timeout in the caller's thread waited for the physics thread to
+    finish its stage (4 s on the demo, minutes on a long run: past a CI runner's grace
+    before SIGKILL). The physics thread now stops at its next batch: its stage never says
+    it is done, and no worker is left running."""
+    import threading
+    import time
+
+    from critmoment.analysis import AnalyzeOptions, analyze
+
+    class Stop(Exception):
+        pass
+
+    said = []
+
+    def progress(text):
+        said.append((threading.current_thread() is threading.main_thread(), text))
+        if said[-1][0] and "critical values ..." in text:
+            raise Stop
+
+    before = threading.active_count()
+    with pytest.raises(Stop):
+        analyze(demo_traj, twin=twin, progress=progress,
+                options=AnalyzeOptions(n_samples=64, nthread=2))
+    time.sleep(0.5)
+    assert threading.active_count() == before
+    worker = [text for main, text in said if not main]
+    assert any("chained segments ..." in t or "verification ..." in t for t in worker)
+    assert not any("chained segments done" in t for t in worker)
