@@ -508,6 +508,10 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         twin: a twin to reuse (its scenario wins).
         options: audit options (:class:`AnalyzeOptions`).
         progress: True to print stage progress on stderr, or a callable taking a message.
+            It is called from the audit's own threads too (the physics thread says
+            "verification ..." and "chained segments ..." while this one works), so it
+            must be thread-safe; an exception it raises stops the audit, as an interrupt
+            does.
 
     Returns:
         The audit report.
@@ -517,6 +521,14 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             or a horizon longer than half the recording.
         ResourceLimitError: the rollout or the audit's simulations beyond the limits of
             :mod:`critmoment.budget` (:func:`critmoment.budget.check_audit`).
+        TrajectoryError: a trajectory the scenario cannot play (its width, its units, a
+            rate it cannot reach, targets out of range under ``range_policy = "error"``).
+        ScenarioError: a scenario that cannot be loaded or does not fit the model.
+        InputFileError: a scenario given by a path that does not exist, or an unknown
+            bundled name.
+        InfeasibleTwinError: the twin cannot reproduce the nominal motion
+            (:func:`critmoment.feasibility.check_feasibility`).
+        SimulationDivergedError: the nominal run diverges.
     """
     check_trajectory(trajectory)
     say = _progress(progress)
