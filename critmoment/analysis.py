@@ -52,7 +52,7 @@ from critmoment.recording import (
 )
 from critmoment.scenario import Scenario
 from critmoment.trajectory import Trajectory, check_trajectory, input_identity
-from critmoment.twin import Twin, resolve_twin, with_quiet_mujoco_log
+from critmoment.twin import Twin, entry_point, resolve_twin
 from critmoment.verdict import MomentReport, Verdict, safe_subbox
 
 __all__ = [
@@ -494,7 +494,7 @@ def _select(res: sp.SparseResult, row: int) -> sp.SparseResult:
     return sp.SparseResult(**fields)
 
 
-@with_quiet_mujoco_log
+@entry_point
 def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             seed: int | None = None, twin: Twin | None = None,
             options: AnalyzeOptions | None = None,

@@ -69,7 +69,7 @@ from critmoment.recording import (
     prepare_controls,
 )
 from critmoment.trajectory import Trajectory
-from critmoment.twin import Twin, carried_flags, with_quiet_mujoco_log
+from critmoment.twin import Twin, carried_flags, entry_point
 
 __all__ = [
     "Outcome",
@@ -613,7 +613,7 @@ class BruteForce:
         return self.classification.failed
 
 
-@with_quiet_mujoco_log
+@entry_point
 def brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
                 criteria: OutcomeCriteria = OutcomeCriteria(), chunk: int = 16,
                 nthread: int = 0, reference: NominalReference | None = None) -> BruteForce:

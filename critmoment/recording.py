@@ -38,7 +38,7 @@ from critmoment.exceptions import (
 from critmoment.scenario import Scenario
 from critmoment.task import Task, TaskEvidence
 from critmoment.trajectory import Trajectory
-from critmoment.twin import STATE_SPEC, Signals, Twin, resolve_twin, with_quiet_mujoco_log
+from critmoment.twin import STATE_SPEC, Signals, Twin, entry_point, resolve_twin, warn_once
 
 __all__ = [
     "Recording",
@@ -96,14 +96,7 @@ def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None =
     actions = trajectory_mod.check_ranges(traj.actions, twin.channel_lower, twin.channel_upper,
                                           policy=policy, names=conv.labels)
     dt = float(twin.model.opt.timestep)
-    if traj.fps * dt > 1.0 + 1e-9:
-        # the targets are held over the physics steps between two rows (upsampled); a
-        # faster trajectory would skip rows without saying so
-        raise TrajectoryError(
-            f"trajectory at {traj.fps:g} Hz{_source(traj)}: expected at most the physics rate, "
-            f"{1.0 / dt:g} Hz (the model's timestep {dt:g} s); resample it to {1.0 / dt:g} Hz "
-            f"or less (e.g. keep one row in {math.ceil(traj.fps * dt - 1e-9)}), or lower the "
-            f"model's timestep")
+    _check_rate(traj, dt)
     # the interpolation stays within the channel's range or the values the policy kept
     # beyond it: a target past a joint's limit that the policy kept (a heavy hand's lift
     # slide, ADROIT's ARTy, commanded past its range to hold its weight) is replayed as
@@ -116,6 +109,18 @@ def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None =
     return twin.controls(targets)
 
 
+def _check_rate(traj: Trajectory, dt: float) -> None:
+    if traj.fps * dt > 1.0 + 1e-9:
+        # the targets are held over the physics steps between two rows (upsampled); a
+        # faster trajectory would skip rows without saying so
+        raise TrajectoryError(
+            f"trajectory at {traj.fps:g} Hz{_source(traj)}: expected at most the physics rate, "
+            f"{1.0 / dt:g} Hz (the model's timestep {dt:g} s); resample it to {1.0 / dt:g} Hz "
+            f"or less (e.g. keep one row in {math.ceil(traj.fps * dt - 1e-9)}), or lower the "
+            f"model's timestep")
+
+
+
 def at_scenario_rate(traj: Trajectory, twin: Twin) -> Trajectory:
     """The trajectory at the scenario's ``[actions] fps`` where its file recorded no rate
     (:meth:`Trajectory.with_rate_from`); a recorded rate, or a scenario that states none,
@@ -125,11 +130,13 @@ def at_scenario_rate(traj: Trajectory, twin: Twin) -> Trajectory:
     sc = twin.scenario
     if not sc.fps_given:
         return traj
+    rated = traj.with_rate_from(sc.fps)
+    _check_rate(rated, float(twin.model.opt.timestep))  # refused before it is warned of
     if not traj.fps_assumed and not trajectory_mod._rates_agree(traj.fps, sc.fps):
-        warnings.warn(f"the trajectory{_source(traj)} records {traj.fps:g} Hz, the scenario's "
-                      f"[actions] fps says {sc.fps:g} Hz: the recorded rate is used",
-                      CritmomentWarning, stacklevel=2)
-    return traj.with_rate_from(sc.fps)
+        warn_once(f"the trajectory{_source(traj)} records {traj.fps:g} Hz, the scenario's "
+                  f"[actions] fps says {sc.fps:g} Hz: the recorded rate is used",
+                  CritmomentWarning, stacklevel=2)
+    return rated
 
 
 def _too_short(duration: float) -> str:
@@ -653,7 +660,7 @@ def check_recording(value: Any, what: str = "recording") -> Recording:
     return value
 
 
-@with_quiet_mujoco_log
+@entry_point
 def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
             twin: Twin | None = None, range_policy: str | None = None) -> Recording:
     """Run the frequent rollout of a trajectory at nominal parameters.

@@ -19,6 +19,7 @@ batch in exactly one way (:meth:`Twin.write_parameters`).
 from __future__ import annotations
 
 import contextlib
+import contextvars
 import copy
 import dataclasses
 import functools
@@ -1052,7 +1053,7 @@ def quiet_mujoco_log() -> Iterator[None]:
     off inside the block, its previous settings back after; MuJoCo's warning counters, which
     critmoment reads, still count. The settings are the process's: blocks nested or in
     several threads at once switch them off at the first entry and back at the last exit.
-    ``analyze``, ``validate``, ``rollout`` and ``brute_force`` run in one (a library call
+    ``analyze``, ``validate``, ``rollout`` and ``brute_force`` run in one (:func:`entry_point`) (a library call
     that met a diverging sample had left ``MUJOCO_LOG.TXT`` in the caller's folder)."""
     if not hasattr(mujoco, "MjLogConfig"):  # a MuJoCo without the log settings
         yield
@@ -1075,15 +1076,38 @@ def quiet_mujoco_log() -> Iterator[None]:
                 config.set()
 
 
-def with_quiet_mujoco_log(fn):
-    """``fn`` run inside :func:`quiet_mujoco_log` (the library's entry points)."""
+#: the warnings given during the outermost library call in progress (:func:`entry_point`)
+_CALL_WARNINGS: contextvars.ContextVar[set | None] = contextvars.ContextVar(
+    "critmoment_call_warnings", default=None)
+
+
+def entry_point(fn):
+    """``fn`` as a library entry point (``analyze``, ``validate``, ``rollout``,
+    ``brute_force``): inside :func:`quiet_mujoco_log`, and with :func:`warn_once` giving
+    each warning once over the call, the entry points it calls included (``analyze``'s own
+    rollout warned again of what ``analyze`` had)."""
 
     @functools.wraps(fn)
     def run(*args, **kwargs):
-        with quiet_mujoco_log():
-            return fn(*args, **kwargs)
+        token = _CALL_WARNINGS.set(set()) if _CALL_WARNINGS.get() is None else None
+        try:
+            with quiet_mujoco_log():
+                return fn(*args, **kwargs)
+        finally:
+            if token is not None:
+                _CALL_WARNINGS.reset(token)
 
     return run
+
+
+def warn_once(message: str, category: type[Warning], *, stacklevel: int = 2) -> None:
+    """``warnings.warn``, once per :func:`entry_point` call for the same message."""
+    seen = _CALL_WARNINGS.get()
+    if seen is not None:
+        if message in seen:
+            return
+        seen.add(message)
+    warnings.warn(message, category, stacklevel=stacklevel + 1)
 
 
 #: how far qpos0's object pose may lie from an object_pose given beside it before the

@@ -64,7 +64,7 @@ from critmoment.moments import Moment
 from critmoment.recording import Recording, at_scenario_rate, rollout
 from critmoment.scenario import Scenario
 from critmoment.trajectory import Trajectory, check_trajectory, input_identity
-from critmoment.twin import Twin, carried_flags, resolve_twin, with_quiet_mujoco_log
+from critmoment.twin import Twin, carried_flags, entry_point, resolve_twin
 from critmoment.verdict import failing_samples
 
 __all__ = [
@@ -572,7 +572,7 @@ def compare(brute: BruteForce, prediction: Prediction, *, trajectory: str = "",
         runs=prediction.runs)
 
 
-@with_quiet_mujoco_log
+@entry_point
 def validate(traj: Trajectory, scenario: Scenario | str | None = None, *,
              twin: Twin | None = None, n_samples: int = 64, seed: int | None = 0,
              samples: np.ndarray | None = None, horizon: int | None = None,

@@ -279,3 +279,25 @@ def test_a_demo_seed_and_an_mjcf_given_as_scenario_are_named(tmp_path):
     with pytest.raises(ScenarioError, match=r"not valid TOML: .*; this is an MJCF model: a "
                                             r"scenario is a scenario.toml naming it"):
         load_scenario(xml)
+
+
+def test_a_rate_the_physics_cannot_play_is_refused_without_a_warning_first(twin, demo_traj):
+    """`Trajectory(actions, fps=1000)` on a 500 Hz twin with a 30 Hz scenario: the rate was
+    warned of twice ("the recorded rate is used"), then refused; and a rate the physics
+    can play is warned of once per call, not once more by analyze's own rollout."""
+    import warnings as _w
+
+    from critmoment.analysis import AnalyzeOptions, analyze
+    from critmoment.twin import Twin
+
+    thirty = Twin(twin.scenario.replace(fps=30.0, fps_given=True))
+    fast = Trajectory(demo_traj.actions, fps=1000.0)
+    with _w.catch_warnings(record=True) as caught:
+        _w.simplefilter("always")
+        with pytest.raises(TrajectoryError, match="expected at most the physics rate"):
+            analyze(fast, twin=thirty, options=AnalyzeOptions(n_samples=8))
+    assert not [w for w in caught if "recorded rate" in str(w.message)]
+    with _w.catch_warnings(record=True) as caught:
+        _w.simplefilter("always")
+        analyze(demo_traj, twin=thirty, options=AnalyzeOptions(n_samples=8, max_moments=2))
+    assert len([w for w in caught if "records 50 Hz" in str(w.message)]) == 1
