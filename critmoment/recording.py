@@ -665,6 +665,14 @@ def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
             twin: Twin | None = None, range_policy: str | None = None) -> Recording:
     """Run the frequent rollout of a trajectory at nominal parameters.
 
+    The run is what was asked for: it is not checked against the scenario beyond what it
+    cannot run at all (the width, the rate, out-of-range targets under ``range_policy =
+    "error"``). ``critmoment rollout`` also warns of a run that does not fit its scenario
+    (an object never touched, a start inside the table, a joint that cannot follow):
+    :func:`critmoment.feasibility.check_fit` and
+    :func:`critmoment.feasibility.check_feasibility` on the recording do that in Python;
+    ``analyze`` refuses such runs.
+
     Args:
         traj: the trajectory.
         scenario: a Scenario, a path/name to load one, or None for the bundled scenario.
