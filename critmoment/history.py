@@ -37,7 +37,7 @@ import scipy.ndimage
 
 from critmoment import budget
 from critmoment.exceptions import ParameterError
-from critmoment.groundtruth import OutcomeCriteria, tracking_tolerances
+from critmoment.groundtruth import OutcomeCriteria, beyond_nominal, tracking_tolerances
 from critmoment.sparse import SparseEvaluator, _object_in_grippers
 from critmoment.task import TaskEvidence
 from critmoment.twin import STATE_SPEC
@@ -359,6 +359,8 @@ class _Watch:
         self.object_vel = np.zeros((n, length, 3), np.float32)
         self.found = np.zeros((n, g), bool)
         self.offset = np.zeros((n, g, 3))
+        #: the nominal object's position in each grip where the sample's hold began
+        self.grasp = np.zeros((n, g, 3))
         self.tolerance = float(criteria.slip_tolerance)
         self.slip_step = np.full(n, -1, np.int64)
         self.drop_step = np.full(n, -1, np.int64)
@@ -429,19 +431,26 @@ class _Watch:
         slip = np.zeros((c, s))
         if ev._anchors.size:
             rel = _object_in_grippers(xpos, xmat, ev.twin.object_body_id, ev._anchors)
-            diff = rel - ev._nominal_positions(k, s)[None]           # (c, s, G, 3)
+            nominal = ev._nominal_positions(k, s)                   # (s, G, 3)
+            diff = rel - nominal[None]                              # (c, s, G, 3)
             found = self.found[ids]
             first = np.argmax(both, axis=1)                         # (c, G)
             new = ~found & both.any(axis=1)
             rows, cols = np.nonzero(new)
-            offset = self.offset[ids]
+            offset, grasp = self.offset[ids], self.grasp[ids]
             offset[rows, cols] = diff[rows, first[rows, cols], cols]
+            grasp[rows, cols] = nominal[first[rows, cols], cols]
             started = found[:, None, :] | (new[:, None, :] & (
                 np.arange(s)[None, :, None] >= first[:, None, :]))
-            moved = np.einsum("gij,csgj->csgi", ev._projectors, diff - offset[:, None])
+            # the sample's and the nominal's displacements since the hold began; the slip
+            # is how far the sample's goes beyond the nominal's (grip_slip's rule)
+            nominal_moved = np.einsum("gij,csgj->csgi", ev._projectors,
+                                      nominal[None] - grasp[:, None])
+            moved = np.einsum("gij,csgj->csgi", ev._projectors,
+                              diff - offset[:, None]) + nominal_moved
             counted = both & started & ev._counted[k:k + s][None]
-            slip = np.where(counted, np.linalg.norm(moved, axis=-1), 0.0).max(axis=-1)
-            self.offset[ids] = offset
+            slip = np.where(counted, beyond_nominal(moved, nominal_moved), 0.0).max(axis=-1)
+            self.offset[ids], self.grasp[ids] = offset, grasp
             self.found[ids] = found | new
         self.max_slip[ids] = np.maximum(self.max_slip[ids], slip.max(axis=1))
         # lost: touched by no gripper where the nominal run carries it (fallen out of the

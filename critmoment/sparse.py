@@ -73,10 +73,11 @@ ratio still looks safe, and only its motion tells. The settings come from the sc
 
 Slip. The object's position in the frame of each gripper's base body (the deepest body
 above all its geoms), with the fingers' slide axes projected out (squeezing is not slip),
-minus the same in the nominal run at the same step, at the steps where the nominal run
-holds the object with that gripper alone; ``slip`` is the largest over the steps measured.
-Both runs start from the same restored state, so this is the displacement since the
-moment, as the ground truth's ``grip_slip`` measures it since the grasp.
+at the steps where the nominal run holds the object with that gripper alone: how far its
+displacement since the nominal's grasp goes beyond the nominal run's own at the same step
+(``groundtruth.beyond_nominal``); ``slip`` is the largest over the steps measured. Both runs
+start from the same restored state, so this is what the ground truth's ``grip_slip``
+measures since the grasp.
 
 On top of :func:`evaluate`: :func:`sweep` (Sobol or grid samples of the box),
 :func:`critical_values` (where the cost crosses the threshold along each
@@ -107,7 +108,7 @@ import numpy as np
 from critmoment import budget, safety
 from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
-from critmoment.groundtruth import OutcomeCriteria
+from critmoment.groundtruth import OutcomeCriteria, beyond_nominal
 from critmoment.params import UncertaintyBox
 from critmoment.scenario import CostParams
 from critmoment.twin import STATE_SPEC, Signals, Twin, carried_flags, state_slice
@@ -862,6 +863,7 @@ class SparseEvaluator:
         # run (a Panda opening to 0.3 for the carry, 4 false unsafes of 64 without it)
         self._counted = self._alone & ~twin.letting_go(recording.controls, sig.contact_gripper)
         self._nominal_rel = np.full((self._states.shape[0], len(self._anchors), 3), np.nan)
+        self._grasp_cache: tuple[np.ndarray, np.ndarray] | None = None
         self._sensordata = getattr(recording, "sensordata", None)
         self._completed = bool(getattr(recording, "completed", False))
         self._over: np.ndarray | None = None
@@ -1720,10 +1722,31 @@ class SparseEvaluator:
             at = np.asarray(k)[:, None] + np.arange(s)
             nominal, alone = self._nominal_at(at), self._alone[at]  # (c, s, G, 3), (c, s, G)
         else:
+            at = (k + np.arange(s))[None]
             nominal, alone = self._nominal_positions(k, s)[None], self._alone[k:k + s][None]
-        diff = np.einsum("gij,csgj->csgi", self._projectors, rel - nominal)
-        disp = np.linalg.norm(diff, axis=-1)
+        # the nominal's displacement in each grip since its hold began, and the sample's
+        # (restored from the nominal state, it shares the nominal's history up to then):
+        # the slip is how far the sample's goes beyond the nominal's (grip_slip's rule)
+        start, grasp = self._grasp()
+        since = (start >= 0) & (at[..., None] >= start)                      # (c|1, s, G)
+        nominal_moved = np.where(since[..., None], nominal - grasp, 0.0)
+        moved = np.einsum("gij,csgj->csgi", self._projectors, rel - nominal + nominal_moved)
+        nominal_moved = np.einsum("gij,csgj->csgi", self._projectors, nominal_moved)
+        disp = beyond_nominal(moved, nominal_moved)
         return np.where(alone, disp, 0.0).max(axis=-1)
+
+    def _grasp(self) -> tuple[np.ndarray, np.ndarray]:
+        """Per gripper, the first step the nominal run holds the object with it (−1 where it
+        never does), (G,), and the object's position in that grip then, (G, 3) (cached)."""
+        if self._grasp_cache is None:
+            held = self._held[:, :len(self._anchors)]
+            start = np.where(held.any(axis=0), np.argmax(held, axis=0), -1)
+            grasp = np.zeros((start.size, 3))
+            if (start >= 0).any():
+                at = np.maximum(start, 0)
+                grasp = self._nominal_at(at)[np.arange(start.size), np.arange(start.size)]
+            self._grasp_cache = (start, grasp)
+        return self._grasp_cache
 
     def _nominal_positions(self, k: int, s: int) -> np.ndarray:
         """The nominal run's object position in each gripper's frame (s, G, 3) [m] at the

@@ -182,6 +182,37 @@ def test_grip_slip_counts_motion_along_the_pads_from_the_grasp():
     assert not none.any()
 
 
+def test_grip_slip_counts_only_motion_beyond_a_creeping_nominal_grip():
+    """The nominal grip slides 18 mm down the pads. A sample sliding 10 mm the same way (it
+    holds better) had a slip of 8 mm by the norm of the difference, and one sliding 3 mm a
+    slip of 15 mm: SLIPPED (a UR5e's cylinder at μ 0.8 beside a nominal at μ 0.38). Only
+    what goes beyond the nominal's own displacement counts: further the same way, or
+    another way."""
+    from critmoment.groundtruth import beyond_nominal
+
+    t = 40
+    nominal = np.zeros((t, G, 3))
+    nominal[20:, 0, 2] = -0.018                 # the nominal object slides 18 mm down
+    held = np.zeros((4, t, G), bool)
+    held[:, 5:, 0] = True
+    pos = np.zeros((4, t, G, 3))
+    pos[0, 25:, 0, 2] = -0.010                  # less, later: no slip
+    pos[1, 25:, 0, 2] = -0.003
+    pos[2, 20:, 0, 2] = -0.030                  # 12 mm further
+    pos[3, 20:, 0, 0] = 0.012                   # 12 mm sideways instead
+    s = val.grip_slip(pos, nominal, held, held[0])
+    np.testing.assert_allclose(s[:2].max(axis=1), 0.0, atol=1e-15)
+    np.testing.assert_allclose(s[2].max(), 0.012)
+    np.testing.assert_allclose(s[3].max(), 0.012)
+    # the rule itself: the distance to the segment from 0 to the nominal's displacement
+    down = np.array([0.0, 0.0, -0.02])
+    np.testing.assert_allclose(beyond_nominal([0.0, 0.0, -0.01], down), 0.0)
+    np.testing.assert_allclose(beyond_nominal([0.0, 0.0, -0.03], down), 0.01)
+    np.testing.assert_allclose(beyond_nominal([0.0, 0.0, 0.01], down), 0.01)
+    np.testing.assert_allclose(beyond_nominal([0.004, 0.0, -0.01], down), 0.004)
+    np.testing.assert_allclose(beyond_nominal([0.003, 0.004, 0.0], np.zeros(3)), 0.005)
+
+
 # --------------------------------------------------------------------------
 # confusion arithmetic and the result document
 # --------------------------------------------------------------------------
