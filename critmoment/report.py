@@ -409,8 +409,10 @@ def summary_text(report) -> str:
     untrusted = set(getattr(report, "force_ratio_untrusted", ()))
     for i, mr in enumerate(report.moments, 1):
         m = mr.moment
-        crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
-                         if v is not None) or (
+        crit = (", ".join(f"{k} {mr.critical_side[k]} {v:.3g}" for k, v in mr.critical.items()
+                          if v is not None)
+                + (" (the others at nominal)" if len(mr.critical) > 1 else "")
+                if any(v is not None for v in mr.critical.values()) else "") or (
                              "none: the worst case does not fail" if mr.worst_fails is False
                              else "none of one parameter alone (the others at nominal)"
                              if mr.max_cost >= report.scenario.cost.threshold else "never crosses")

@@ -1551,7 +1551,10 @@ def _causes(reports: Sequence[MomentReport], threshold: float,
             where = (f" (a squeeze without a lift: sparse evaluation fails "
                      f"{'for ' + crit if crit else 'there'}; the samples' own rollouts decide)")
         elif crit:
-            where = f" (fails for {crit})"
+            # a critical value is where one parameter alone crosses, the others at nominal
+            # (elsewhere in the box it can lie elsewhere: the region says where it holds)
+            others = " with the others at nominal" if len(mr.critical) > 1 else ""
+            where = f" (fails for {crit}{others})"
         elif mr.fail_fraction > 0:
             where = f" ({mr.fail_fraction:.0%} of the box)"
         else:

@@ -805,4 +805,10 @@ def test_a_cause_speaks_of_the_boxs_own_parameters_with_their_units():
     mass = MassParameter(name="mass", target="box", low=0.05, high=1.0, nominal=0.05)
     both = UncertaintyBox((mass, shoulder))
     assert vd._box_words(both) == "box's mass and joint2's force limit"
+    # with two parameters, the critical value holds the other at its nominal value, and the
+    # cause says so (a friction "below 0.0904" beside failures up to 0.28 at heavier masses)
+    two = dataclasses.replace(mr, critical={"mass": None, "shoulder": 23.5},
+                              critical_side={"mass": None, "shoulder": "below"})
+    (cause,) = vd._causes([two], THRESHOLD, both)
+    assert "fails for shoulder below 23.5 N·m with the others at nominal" in cause
     assert vd._box_words(UncertaintyBox((mass,))) == "the object's mass"
