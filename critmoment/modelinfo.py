@@ -686,7 +686,7 @@ def _servo_lines(model: mujoco.MjModel, motors, key: int | None) -> list[str]:
     included, at the start pose), stiffer where that would be too slow or too soft: kp the
     largest of M ω², b ω (a joint damping b: kp/b is then the slow pole, at ω; dm_control's
     wrist, damping 0.5 against kp 0.118, took 4.2 s to follow) and the gravity load at the
-    start pose over :data:`SERVO_STATIC_LAG`; kv = 2 √(kp M) − b (critical with the joint's
+    start pose plus the joint's frictionloss over :data:`SERVO_STATIC_LAG`; kv = 2 √(kp M) − b (critical with the joint's
     own damping; 0 where that damping is already more)."""
     data = mujoco.MjData(model)
     if key is not None:
@@ -704,7 +704,7 @@ def _servo_lines(model: mujoco.MjModel, motors, key: int | None) -> list[str]:
     lines = ["", "# The torque motors are driven as joint-position servos, the joint controller of",
              "# the real robot: torque = kp (target - q) - kv q', within the motor's own limit.",
              f"# Guessed: a critically damped {SERVO_HZ:g} Hz joint on its inertia at {pose},",
-             "# stiffer against the joint's damping and the arm's weight there;",
+             "# stiffer against the joint's damping, its friction and the arm's weight there;",
              "# the inertia changes with the pose: put your controller's gains here."]
     for a in motors:
         joint = int(model.actuator_trnid[a.index, 0])
@@ -713,7 +713,12 @@ def _servo_lines(model: mujoco.MjModel, motors, key: int | None) -> list[str]:
         damping = float(model.dof_damping[dof])
         # at rest: the weight's torque alone, less what MuJoCo's gravity compensation holds
         gravity = abs(float(data.qfrc_bias[dof] - data.qfrc_gravcomp[dof]))
-        kp = max(inertia * omega ** 2, damping * omega, gravity / SERVO_STATIC_LAG)
+        # a joint's dry friction holds it until the servo's error reaches frictionloss / kp:
+        # with the weight, within SERVO_STATIC_LAG (sai-mujoco's xArm7 wrist, frictionloss 1
+        # against a guessed kp 1.01, stopped up to 0.99 rad short of its targets)
+        friction = float(model.dof_frictionloss[dof])
+        kp = max(inertia * omega ** 2, damping * omega,
+                 (gravity + friction) / SERVO_STATIC_LAG)
         kv = max(0.0, 2.0 * math.sqrt(kp * inertia) - damping)
         unit = "N·m/rad, N·m·s/rad" if a.joint_type == "hinge" else "N/m, N·s/m"
         lines += [f"[servos.{_toml_key(a.name)}]", f"kp = {kp:.4g}   # [{unit}]",

@@ -176,6 +176,20 @@ def test_init_drives_torque_motors_through_joint_servos(tmp_path):
     slow = np.abs(np.roots([full[0, 0], stiff.kv + 20.0, stiff.kp]).real).min()
     assert slow >= 0.9 * omega
     assert sc.limits["shoulder_act"] == 50.0 and sc.limit_sources["shoulder_act"] == "mjcf"
+    # a joint with dry friction: the servo's error where friction holds it, frictionloss / kp,
+    # stays within SERVO_STATIC_LAG (an xArm7 wrist with frictionloss 1 got kp 1.01: its
+    # targets were missed by up to 0.99 rad)
+    rough = tmp_path / "rough"
+    rough.mkdir()
+    (rough / "arm.xml").write_text(path.read_text().replace(
+        'axis="0 0 1" range="-3 3" damping="2"',
+        'axis="0 0 1" range="-3 3" damping="2" frictionloss="10"', 1))
+    init_scenario(rough / "arm.xml", object_body="cube", task="pick_hold",
+                  out=rough / "scenario.toml")
+    held = load_scenario(rough).servos.gains["shoulder_act"]
+    from critmoment.modelinfo import SERVO_STATIC_LAG
+
+    assert 10.0 / held.kp <= SERVO_STATIC_LAG + 1e-9 and held.kp > gains.kp
 
 
 def test_a_joint_channel_on_a_torque_motor_is_an_error(tmp_path):
