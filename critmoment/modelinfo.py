@@ -508,12 +508,64 @@ def _compile(path: Path, **kwargs) -> mujoco.MjModel:
     return compile_spec(prepare_spec(path, what="model", **kwargs), path)
 
 
+def keyframe_problems(model: mujoco.MjModel, key: int) -> list[str]:
+    """What keeps keyframe ``key`` from being a pose of the model, in words: limited joints
+    outside their ranges, active equality constraints it leaves apart. A keyframe written for
+    another version of the model (MuJoCo pads a short one with qpos0: vs050-mujoco's 15
+    values for 21 joints put the cube elsewhere, a coupler 1 rad outside its range and the
+    2F-85's linkage 4.4 cm apart) is no start pose."""
+    out = []
+    q = model.key_qpos[key]
+    for j in range(model.njnt):
+        if not model.jnt_limited[j] or int(model.jnt_type[j]) not in (
+                int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)):
+            continue
+        value, (lo, hi) = float(q[model.jnt_qposadr[j]]), model.jnt_range[j]
+        unit = "rad" if int(model.jnt_type[j]) == int(mujoco.mjtJoint.mjJNT_HINGE) else "m"
+        if not lo - KEYFRAME_TOLERANCE <= value <= hi + KEYFRAME_TOLERANCE:
+            out.append(f"joint {model.joint(j).name or j!r} at {value:.3g} {unit}, outside "
+                       f"its range [{lo:.3g}, {hi:.3g}] {unit}")
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, key)
+    mujoco.mj_forward(model, data)
+    rows = np.flatnonzero(np.asarray(data.efc_type)[:data.nefc]
+                          == mujoco.mjtConstraint.mjCNSTR_EQUALITY)
+    gaps: dict[int, float] = {}
+    for r in rows:
+        e = int(data.efc_id[r])
+        gaps[e] = max(gaps.get(e, 0.0), abs(float(data.efc_pos[r])))
+    for e, gap in sorted(gaps.items()):
+        if gap > KEYFRAME_TOLERANCE:
+            out.append(f"equality {model.eq(e).name or e!r} {gap:.3g} apart")
+    return out
+
+
+#: how far [rad or m] a keyframe's joint may lie past its range, or its equality constraints
+#: apart, and still be a pose of the model
+KEYFRAME_TOLERANCE = 0.01
+
+
+def _start_key(model: mujoco.MjModel, notes: list[str]) -> int | None:
+    """The keyframe a run starts from: the first, where it fits the model (else qpos0,
+    with a note)."""
+    if not model.nkey:
+        return None
+    problems = keyframe_problems(model, 0)
+    if not problems:
+        return 0
+    notes.append(f"keyframe {model.key(0).name or '0'!r} does not fit the model "
+                 f"({'; '.join(problems[:4])}{'; ...' if len(problems) > 4 else ''}): written "
+                 f"for another version of it? the poses here are the model's own (qpos0)")
+    return None
+
+
 def inspect_model(path: str | Path) -> ModelInfo:
     """What a scenario needs from the MJCF at ``path`` (see the module docstring)."""
     path = Path(path)
     model = _compile(path)
     data = mujoco.MjData(model)
-    key = 0 if model.nkey else None
+    notes: list[str] = []
+    key = _start_key(model, notes)
     if key is not None:
         mujoco.mj_resetDataKeyframe(model, data, key)
     mujoco.mj_forward(model, data)
@@ -526,7 +578,8 @@ def inspect_model(path: str | Path) -> ModelInfo:
                          "pos": [float(v) for v in data.xpos[b]],
                          "geoms": [model.geom(g).name for g in geoms]})
     infos = act_info.describe_all(model)
-    grippers, notes = _find_grippers(model, infos, key)
+    grippers, found = _find_grippers(model, infos, key)
+    notes += found
     unnamed_geoms = sum(1 for i in range(model.ngeom)
                         if model.geom(i).name.startswith(GENERATED))
     if unnamed_geoms:
@@ -792,8 +845,9 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     parts = act_info.parts_below(model, bid)
     if parts:
         raise ScenarioError(act_info.object_parts_message(model, bid, parts))
-    key = 0 if model.nkey else None
-    guesses, checks = [], []
+    unfit: list[str] = []
+    key = _start_key(model, unfit)
+    guesses, checks = [], list(unfit)
     # the volume of each geom's bounding box (geom_size's meaning depends on the type: a
     # cylinder's, capsule's or sphere's third entry is 0, so its product lost to any box)
     geom_sizes = [(float(np.prod(model.geom_aabb[model.geom(g).id][3:] + 1e-9)), g)
@@ -951,8 +1005,13 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     lines.append(f"mjcf = {_toml_str(rel)}")
     if info.keyframes:
         k0 = info.keyframes[0]
-        lines.append(f"keyframe = {_toml_str(k0) if not k0.isdigit() else k0}   # initial pose")
-        guesses.append(f"initial pose: keyframe {k0}")
+        if key is not None:
+            lines.append(f"keyframe = {_toml_str(k0) if not k0.isdigit() else k0}   # initial "
+                         f"pose")
+            guesses.append(f"initial pose: keyframe {k0}")
+        else:
+            lines.append(f"# keyframe = {_toml_str(k0) if not k0.isdigit() else k0}   # does "
+                         f"not fit the model (see the checks): the model's own pose is used")
     lines += ["", "[object]", f"body = {_toml_str(object_body)}",
               f"geom = {_toml_str(object_geom)}", ""]
     for g in grippers:

@@ -1202,3 +1202,36 @@ def test_init_writes_a_handover_scenario_with_its_task_keys(tmp_path):
     assert made.task.kind == "handover"
     assert {made.task.picker, made.task.receiver} == {g.name for g in made.grippers}
     assert "lift_height = 0.02" in out.read_text() and made.task.lift_height == 0.02
+
+
+def test_a_keyframe_that_does_not_fit_the_model_is_not_adopted(tmp_path):
+    """vs050-mujoco's keyframe was written for 15 of its 21 joints: MuJoCo padded it, the
+    cube sat elsewhere and a coupler 1 rad outside its range. `inspect` showed that pose as
+    the object's and `init` wrote `keyframe = "home"` without a word. A keyframe with a joint
+    outside its range, or an equality it leaves apart, is now named and not used."""
+    from critmoment.modelinfo import inspect_model, keyframe_problems
+
+    good = _write(tmp_path, name="good.xml")
+    assert keyframe_problems(mujoco.MjModel.from_xml_path(str(good)), 0) == []
+    text = good.read_text()
+    bad_text = text.replace('<key qpos="0 0 0 0 0.3 0 0.02 1 0 0 0"/>',
+                            '<key qpos="4 0 0 0 0.5 0.2 0.02 1 0 0 0"/>')
+    assert bad_text != text
+    bad = tmp_path / "bad.xml"
+    bad.write_text(bad_text)
+    problems = keyframe_problems(mujoco.MjModel.from_xml_path(str(bad)), 0)
+    assert problems == ["joint 'shoulder' at 4 rad, outside its range [-0.0524, 0.0524] rad"]
+    info = inspect_model(bad)
+    assert any("does not fit the model" in n for n in info.notes)
+    cube = next(b for b in info.free_bodies if b["name"] == "cube")
+    assert cube["pos"][:2] == pytest.approx([0.3, 0.0])  # the model's own, not the keyframe's
+    result = init_scenario(bad, object_body="cube", task="pick_hold", out=tmp_path / "s.toml")
+    assert "\nkeyframe =" not in result.text and "# keyframe =" in result.text
+    assert any("shoulder" in c and "outside its range" in c for c in result.checks)
+    # an equality constraint the keyframe leaves apart
+    welded = text.replace("</worldbody>", "</worldbody><equality><joint joint1=\"elbow\" "
+                                          "joint2=\"shoulder\"/></equality>")
+    (tmp_path / "eq.xml").write_text(welded.replace('<key qpos="0 0 0 0 0.3 0 0.02 1 0 0 0"/>',
+                                                    '<key qpos="0 0.05 0 0 0.3 0 0.02 1 0 0 0"/>'))
+    problems = keyframe_problems(mujoco.MjModel.from_xml_path(str(tmp_path / "eq.xml")), 0)
+    assert problems == ["equality 0 0.05 apart"]
