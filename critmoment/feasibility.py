@@ -956,6 +956,10 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
     # a chunk that starts mid-carry (the object in a grip from the first step) need never
     # touch its support: a hand-over ends in the receiver's grip
     held_at_start = bool(np.asarray(sig.contact_gripper, bool)[:1].any())
+    if not held_at_start:
+        moved = _pretouch_motion(twin, recording)
+        if moved is not None:
+            out.append(moved)
     if not np.asarray(sig.contact_support, bool).any() and not held_at_start:
         out.append(f"the object never touches its support ([support] geoms) in the nominal "
                    f"run: is the object pose right (--object-pose{default}), or the "
@@ -987,6 +991,46 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
     if strict and out:
         raise TrajectoryError(out[0])
     return out
+
+
+#: how far [m] and how much [deg] the object may move before a gripper first touches it: a
+#: settled object on its support moves micrometres
+PRETOUCH_MOVE = 0.002
+PRETOUCH_TURN = 5.0
+
+
+def _pretouch_motion(twin: Twin, recording: Recording) -> str | None:
+    """The object's motion before any gripper first touches it (over the whole run where
+    none does), in words, where it is more than :data:`PRETOUCH_MOVE` or
+    :data:`PRETOUCH_TURN`; else None. A mesh balanced on a vertex that the settling took
+    for at rest toppled 1.0-1.6 s in, 9.8 mm and 29°, and runs that differed by 1 nm in its
+    start toppled it differently (18 of 64 outcomes flipped); a cube on contacts too stiff
+    or too springy for the time step left the table on its own, and the messages spoke of
+    the grasp."""
+    sig = recording.signals
+    touch = np.asarray(sig.contact_gripper, bool).reshape(recording.n_steps, -1).any(axis=1)
+    end = int(np.argmax(touch)) if touch.any() else touch.size
+    if end < 2:
+        return None
+    pos = np.asarray(sig.object_pos, dtype=np.float64)[:end]
+    shift = np.linalg.norm(pos - pos[0], axis=1)
+    adr = twin.object_qposadr
+    quat = twin.qpos(recording.states[1:end + 1])[:, adr + 3:adr + 7]
+    quat = quat / np.linalg.norm(quat, axis=1, keepdims=True)
+    turn = np.degrees(2.0 * np.arccos(np.clip(np.abs(quat @ quat[0]), 0.0, 1.0)))
+    if not (shift.max() > PRETOUCH_MOVE or turn.max() > PRETOUCH_TURN):
+        return None
+    dt = float(recording.dt)
+    first = int(np.argmax((shift > PRETOUCH_MOVE) | (turn > PRETOUCH_TURN)))
+    when = (f"before any gripper touches it (at t = {end * dt:.2f} s)" if touch.any() else
+            "and no gripper ever touches it")
+    return (f"the object moves {shift.max() * 1e3:.3g} mm and turns {turn.max():.3g}° from "
+            f"t = {first * dt:.2f} s {when}: it is not at rest at its start (balanced on an "
+            f"edge or a vertex, contacts too stiff or springy for the time step) or something "
+            f"else pushes it. Where it topples or bounces on its own, runs that differ by "
+            f"rounding do so differently, and outcomes, the verdict and the safe region rest "
+            f"on that noise; start it resting on a face, or check the object's contact "
+            f"settings")
 
 
 #: physics steps between the nominal states scanned for contacts with the scene's other
