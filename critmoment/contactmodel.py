@@ -77,7 +77,7 @@ class ContactFinding:
 
     Attributes:
         code: short name (``pyramidal-cone``, ``low-impratio``, ``noslip``, ``soft-solref``,
-            ``soft-solimp``, ``creep``).
+            ``soft-solimp``, ``creep``, ``nominal-creep``).
         severity: INFO or WARNING.
         message: what was found, in words.
     """
@@ -110,6 +110,9 @@ class ContactModelReport:
             soft): a sample creeping fast enough to move the object ``DROP_TOLERANCE`` over
             the carry moves it ``slip_tolerance`` over the horizon.
         slip_tolerance: the sparse slip tolerance the horizon was sized for [m].
+        nominal_creep: how far the nominal run's own object moves in its grip over the
+            probed hold [m] (the fingers' closing axes projected out), NaN without a probe.
+            Slip is counted beyond it: a nominal grip that creeps this much passes.
     """
 
     cone: str
@@ -125,6 +128,7 @@ class ContactModelReport:
     soft: bool = False
     creep_horizon: int = 0
     slip_tolerance: float = math.nan
+    nominal_creep: float = math.nan
 
     @property
     def creep_over_carry(self) -> float:
@@ -139,6 +143,9 @@ class ContactModelReport:
                      f"object creeps {self.creep_rate * 1e3:.3g} mm/s in the grip, "
                      f"{self.creep_over_carry * 1e3:.3g} mm over the {self.carry_time:.2g} s "
                      f"carry")
+        if math.isfinite(self.nominal_creep) and self.nominal_creep > NOMINAL_CREEP:
+            text += (f"; the nominal run's own object moves {self.nominal_creep * 1e3:.3g} mm "
+                     f"in the grip (slip is counted beyond that)")
         if self.soft:
             text += ("; soft: the one-step force ratio is not trusted, each sample's slip is "
                      "measured on its own run over the whole hold (chained segments; without "
@@ -446,9 +453,50 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
     box = sc.box
     max_mass = box.high[box.names.index("mass")] if "mass" in box.names else math.inf
     friction = twin.object_friction()
-    return probe_contact_model(
+    probed = probe_contact_model(
         model, data, object_body=sc.object_body, object_geom=sc.object_geom,
         pad_geoms=sc.grippers[g].geoms, anchor_body=int(anchors[g]),
         carry_time=length * float(recording.dt), max_mass=max_mass, friction=friction,
         steps=steps, horizon=twin.scenario.horizon, slip_tolerance=settings.slip_tolerance,
         projector=projectors[g], warn=warn)
+    creep = _nominal_creep(model, recording.states[start + 1:start + length + 1],
+                           model.body(sc.object_body).id, int(anchors[g]), projectors[g])
+    out = dataclasses.replace(probed, nominal_creep=creep)
+    if creep > NOMINAL_CREEP:
+        finding = ContactFinding(
+            "nominal-creep", Severity.WARNING,
+            f"the nominal run's own object moves {creep * 1e3:.3g} mm in the grip over its "
+            f"{length * float(recording.dt):.2g} s hold: slip is counted beyond the nominal "
+            f"run's own motion, so every sample may move this much and pass; if that is too "
+            f"much for the task, the nominal grasp itself is not good enough (grip harder, "
+            f"or check the object's contact settings)")
+        out = dataclasses.replace(out, findings=out.findings + (finding,))
+        if warn:
+            warnings.warn(f"contact model: {finding.message}", ContactModelWarning,
+                          stacklevel=2)
+    return out
+
+
+#: the nominal run's own motion in its grip [m] that is warned of: the ground truth's slip
+#: tolerance (OutcomeCriteria.slip_tolerance); a soft object contact (solref 0.05) let the
+#: nominal cube move 13.6 mm, which passes since slip is counted beyond it
+NOMINAL_CREEP = 0.01
+
+
+def _nominal_creep(model: mujoco.MjModel, states: np.ndarray, body: int, anchor: int,
+                   projector: np.ndarray, probes: int = 200) -> float:
+    """The largest displacement [m] of ``body`` in ``anchor``'s frame, projected, from the
+    first of ``states`` over the rest (at most ``probes`` of them)."""
+    from critmoment.twin import STATE_SPEC
+
+    if len(states) < 2:
+        return 0.0
+    picks = np.unique(np.linspace(0, len(states) - 1, min(len(states), probes)).astype(int))
+    data = mujoco.MjData(model)
+    rel = np.empty((picks.size, 3))
+    for i, k in enumerate(picks):
+        mujoco.mj_setState(model, data, np.asarray(states[k], dtype=float), STATE_SPEC)
+        mujoco.mj_kinematics(model, data)
+        rel[i] = data.xmat[anchor].reshape(3, 3).T @ (data.xpos[body] - data.xpos[anchor])
+    moved = (rel - rel[0]) @ np.asarray(projector, dtype=float).T
+    return float(np.linalg.norm(moved, axis=1).max())

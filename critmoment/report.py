@@ -22,6 +22,7 @@ import html
 import io
 import itertools
 import json
+import math
 import os
 import re
 import shutil
@@ -221,6 +222,7 @@ def _contact_json(cm, untrusted=()) -> dict | None:
             "noslip_iterations": int(cm.noslip_iterations), "soft": bool(cm.soft),
             "probe_mass": _num(cm.probe_mass), "creep_rate": _num(cm.creep_rate),
             "carry_time": _num(cm.carry_time), "creep_horizon": int(cm.creep_horizon),
+            "nominal_creep": _num(getattr(cm, "nominal_creep", math.nan)),
             "findings": [str(getattr(f, "message", f)) for f in cm.findings]}
 
 

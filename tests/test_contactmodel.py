@@ -189,3 +189,29 @@ def test_a_grip_that_settles_is_not_called_soft():
             pad_geoms=["left_pad", "right_pad"], anchor_body="hand", carry_time=2.0,
             mass=0.3)
     assert not report.soft and report.creep_rate < 0.2 * first
+
+
+def test_a_nominal_grip_that_creeps_past_the_slip_tolerance_is_warned_of(tmp_path):
+    """With a soft cube contact (solref 0.05) the bundled Panda's nominal cube moves about
+    14 mm in its grip; slip counts beyond the nominal's own motion, so every sample could
+    too and pass, and the contact-model check had said nothing (its probe: 2 mm)."""
+    import shutil
+
+    import critmoment
+    from critmoment import panda_demo
+    from critmoment.scenario import bundled_scenario_path, load_scenario
+
+    folder = tmp_path / "soft"
+    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
+    scene = folder / "scene.xml"
+    text = scene.read_text()
+    assert text.count('solref="0.01 1"/>') == 1
+    scene.write_text(text.replace('solref="0.01 1"/>', 'solref="0.05 1"/>'))
+    twin = critmoment.Twin(load_scenario(folder))
+    rec = critmoment.rollout(panda_demo.make_pick_place(0, model=twin.model), twin=twin)
+    with pytest.warns(cm.ContactModelWarning, match=r"the nominal run's own object moves "
+                                                    r"1\d\.\d mm in the grip"):
+        report = cm.check_contact_model(twin, rec)
+    assert report.nominal_creep > 0.01
+    assert "nominal-creep" in {f.code for f in report.findings}
+    assert "slip is counted beyond that" in report.summary()
