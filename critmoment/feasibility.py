@@ -1018,8 +1018,9 @@ PRETOUCH_TURN = 5.0
 
 def _pretouch_motion(twin: Twin, recording: Recording) -> str | None:
     """The object's motion before any gripper first touches it (over the whole run where
-    none does), in words, where it is more than :data:`PRETOUCH_MOVE` or
-    :data:`PRETOUCH_TURN`; else None. A mesh balanced on a vertex that the settling took
+    none does), in words, where it moves sideways or up by more than :data:`PRETOUCH_MOVE`
+    or turns by more than :data:`PRETOUCH_TURN` (sinking into its support's contact margin
+    is settling); else None. A mesh balanced on a vertex that the settling took
     for at rest toppled 1.0-1.6 s in, 9.8 mm and 29°, and runs that differed by 1 nm in its
     start toppled it differently (18 of 64 outcomes flipped); a cube on contacts too stiff
     or too springy for the time step left the table on its own, and the messages spoke of
@@ -1030,7 +1031,20 @@ def _pretouch_motion(twin: Twin, recording: Recording) -> str | None:
     if end < 2:
         return None
     pos = np.asarray(sig.object_pos, dtype=np.float64)[:end]
-    shift = np.linalg.norm(pos - pos[0], axis=1)
+    # sideways or up: an object that only sinks into its support's contact margin (a
+    # margin of 4 mm: 3.97 mm straight down, no turn) settles, it does not topple
+    up = np.asarray(twin.scenario.task.up, dtype=np.float64)
+    up = up / (np.linalg.norm(up) or 1.0)
+    rel = pos - pos[0]
+    along = rel @ up
+    # a contact margin holds the object up to that far from its support: rising into it is
+    # settling too (a 4 mm margin lifted a settled cube 3.97 mm)
+    model = twin.model
+    near = list(np.flatnonzero(model.geom_bodyid == twin.object_body_id))
+    near += [model.geom(g).id for g in twin.scenario.support_geoms]
+    margin = float(model.geom_margin[near].max(initial=0.0)) if near else 0.0
+    rise = np.maximum(along - margin, 0.0)
+    shift = np.maximum(np.linalg.norm(rel - along[:, None] * up, axis=1), rise)
     adr = twin.object_qposadr
     quat = twin.qpos(recording.states[1:end + 1])[:, adr + 3:adr + 7]
     quat = quat / np.linalg.norm(quat, axis=1, keepdims=True)
@@ -1041,7 +1055,8 @@ def _pretouch_motion(twin: Twin, recording: Recording) -> str | None:
     first = int(np.argmax((shift > PRETOUCH_MOVE) | (turn > PRETOUCH_TURN)))
     when = (f"before any gripper touches it (at t = {end * dt:.2f} s)" if touch.any() else
             "and no gripper ever touches it")
-    return (f"the object moves {shift.max() * 1e3:.3g} mm and turns {turn.max():.3g}° from "
+    return (f"the object moves {shift.max() * 1e3:.3g} mm (sideways or up) and turns "
+            f"{turn.max():.3g}° from "
             f"t = {first * dt:.2f} s {when}: it is not at rest at its start (balanced on an "
             f"edge or a vertex, contacts too stiff or springy for the time step) or something "
             f"else pushes it. Where it topples or bounces on its own, runs that differ by "

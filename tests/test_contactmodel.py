@@ -215,3 +215,15 @@ def test_a_nominal_grip_that_creeps_past_the_slip_tolerance_is_warned_of(tmp_pat
     assert report.nominal_creep > 0.01
     assert "nominal-creep" in {f.code for f in report.findings}
     assert "slip is counted beyond that" in report.summary()
+
+
+def test_an_object_that_slides_out_of_the_grip_onto_a_table_stays_soft():
+    """The window-by-window probe kept the last rate: a Panda's mesh object slid out at 90.7
+    mm/s in the first window and then lay on the table, at 0 mm/s, and the model was called
+    rigid (the creep warning and the chains' slip watch gone). A rate measured while the
+    object leaves the pads stands."""
+    xml = _pinch_xml("pyramidal", 1).replace(
+        "<worldbody>", '<worldbody>\\n    <geom name="floor" type="plane" pos="0 0 0.2" '
+                       'size="1 1 0.1"/>')
+    report = _probe(xml, mass=2.0, warn=False)
+    assert report.soft and report.creep_rate * 2.0 > cm.DROP_TOLERANCE

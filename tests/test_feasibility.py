@@ -930,6 +930,16 @@ def test_an_object_that_moves_before_any_gripper_touches_it_is_warned_of(tmp_pat
     # the bundled scene's cube rests until the gripper closes on it
     calm = check_fit(demo_traj, _record(twin, demo_traj), twin)
     assert not any("not at rest" in m for m in calm)
+    # a 4 mm contact margin lifts the settled cube by almost that much: settling, not a
+    # topple (the first version of the check warned of it)
+    folder = tmp_path / "margin"
+    shutil.copytree(bundled_scenario_path().parent, folder)
+    scene = folder / "scene.xml"
+    scene.write_text(scene.read_text().replace(old, old.replace('solref="0.01 1"/>',
+                                                                'solref="0.01 1" margin="0.004"/>')))
+    margin = Twin(load_scenario(folder))
+    rec = _record(margin, demo_traj)
+    assert not any("not at rest" in m for m in check_fit(demo_traj, rec, margin))
 
 
 def test_a_joint_at_its_limit_that_tracks_under_an_explicit_integrator_names_it_first(

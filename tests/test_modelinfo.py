@@ -1235,3 +1235,10 @@ def test_a_keyframe_that_does_not_fit_the_model_is_not_adopted(tmp_path):
                                                     '<key qpos="0 0.05 0 0 0.3 0 0.02 1 0 0 0"/>'))
     problems = keyframe_problems(mujoco.MjModel.from_xml_path(str(tmp_path / "eq.xml")), 0)
     assert problems == ["equality 0 0.05 apart"]
+    # a weld to a mocap target the environment moves at reset (gym-aloha's end-effector
+    # scenes) is no part of the pose
+    mocap = text.replace("</worldbody>", '<body name="target" mocap="true" pos="1 1 1"/>'
+                                         '</worldbody><equality><weld body1="target" '
+                                         'body2="hand"/></equality>')
+    (tmp_path / "mocap.xml").write_text(mocap)
+    assert keyframe_problems(mujoco.MjModel.from_xml_path(str(tmp_path / "mocap.xml")), 0) == []
