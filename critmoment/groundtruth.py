@@ -353,7 +353,15 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
         motor_tracking = np.zeros(n, bool)
     # drop: not carried where the nominal run carries the object
     carried = carried_flags(contact_support, contact_gripper)
-    drop_step = _last_run(nominal_carried[None, :] & ~carried, c.steps(c.drop_time, dt))
+    # counted over the steps the nominal run carries it: a loss that goes on across the
+    # nominal's own gap (a short free fall into the receiver at a hand-over) is one drop,
+    # dated from its start (it had been dated after the gap, so that an empty wrist lagging
+    # in between was taken for the cause)
+    where = np.flatnonzero(np.asarray(nominal_carried, dtype=bool))
+    drop_step = np.full(n, -1)
+    if where.size:
+        at = _last_run(~carried[:, where], c.steps(c.drop_time, dt))
+        drop_step = np.where(at >= 0, where[np.maximum(at, 0)], -1)
     # slip: moved in the grip beyond the tolerance for longer than slip_time
     if slip is None:
         slip_step, max_slip = np.full(n, -1), np.zeros(n)

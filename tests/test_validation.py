@@ -118,6 +118,23 @@ def test_tracking_loss_is_motor_but_not_after_the_drop():
     assert c.first_failure_step.tolist() == [300, 250]
 
 
+def test_a_drop_across_the_nominal_runs_own_gap_is_dated_from_its_start():
+    """A hand-over whose nominal run lets the object fall a moment into the receiver (not
+    carried for 40 ms): a sample that lost it earlier and never caught it was dated from
+    after that gap, so its empty wrist lagging in between read as the cause (MOTOR, "lost
+    tracking") where the object had dropped."""
+    sig = _signals(1)
+    sig["nominal_carried"][280:300] = False           # the nominal's own short fall
+    sig["contact_gripper"][0, 250:] = False           # lost at 250, never caught
+    sig["contact_support"][0, 270:] = True
+    sig["stage"][0, 250:] = 0
+    excess = np.zeros((1, T, 3))
+    excess[0, 260:320, 2] = 0.2                       # the empty wrist lags from 260
+    c = _classify(sig, tracking_excess=excess)
+    assert c.drop_step.tolist() == [250]
+    assert c.outcome == (Outcome.DROPPED,) and c.first_failure_step.tolist() == [250]
+
+
 def test_slip_beyond_tolerance_is_slipped_and_can_be_counted_as_success():
     sig = _signals(2)
     slip = np.zeros((2, T))
