@@ -897,6 +897,10 @@ def _html(report, doc, images) -> str:
         f"{e(v['unit'])}</td><td>{v['nominal']:g}</td><td>{e(v['prior'])}</td></tr>"
         for k, v in doc["uncertainty"].items())
     causes = "".join(f"<li>{e(c)}</li>" for c in doc["failure_causes"]) or "<li>none</li>"
+    # what the run warned of (clipped actions, an assumed object pose, an object not at rest,
+    # a creeping nominal grip): in the page too, not only in report.json
+    warned = "".join(f"<li>{e(w)}</li>" for w in doc.get("warnings", []))
+    warned = f"<h2>Warnings</h2><ul>{warned}</ul>" if warned else ""
     figs = "".join(
         f"<h3>{e(name.replace('_', ' '))}</h3><img alt='{e(name)}' src='data:image/png;base64,{b64}'>"
         for name, b64 in images.items())
@@ -912,7 +916,7 @@ nominal max cost {doc['nominal_cost']:.3f} against threshold {doc['threshold']:g
 <p class=muted>Trajectory {e(str(man['trajectory']))} · scenario {e(str(man['scenario']))} ·
 model {e(str(man['model_sha256'])[:12])} · seed {man['seed']} · critmoment {e(man['critmoment'])},
 MuJoCo {e(man['mujoco'])} · sparse horizon {doc['horizon']} step(s){_verification_html(doc)}</p>
-<h2>Failure causes and suggestions</h2><ul>{causes}</ul>
+<h2>Failure causes and suggestions</h2><ul>{causes}</ul>{warned}
 <h2>Critical moments</h2>
 <table><tr><th>step</th><th>label</th><th>why chosen</th><th>worst case</th><th>max cost</th>
 <th>fails here</th><th>min FOS contact</th><th>min FOS motor</th><th>critical values</th><th>dominant</th><th>analytic</th></tr>

@@ -406,3 +406,13 @@ def test_a_read_only_earlier_output_leaves_nothing_behind(tmp_path):
     run = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr
     assert run.stdout.strip() == "['r'] new"
+
+
+def test_the_runs_warnings_are_in_the_page_too(audit, tmp_path):
+    """report.json keeps the run's warnings; the HTML page showed none of them."""
+    warned = dataclasses.replace(audit, warnings=("the object moves 9.8 mm <before> the grasp",))
+    write_report(warned, tmp_path / "w", figures=Figures.NONE)
+    html = (tmp_path / "w" / "report.html").read_text(encoding="utf-8")
+    assert "<h2>Warnings</h2>" in html and "9.8 mm &lt;before&gt; the grasp" in html
+    write_report(audit, tmp_path / "q", figures=Figures.NONE)
+    assert "<h2>Warnings</h2>" not in (tmp_path / "q" / "report.html").read_text(encoding="utf-8")
