@@ -281,7 +281,7 @@ def measure_creep(model: mujoco.MjModel, data: mujoco.MjData, *, object_body: st
     rel = np.empty((steps + 1, 3))
     mujoco.mj_kinematics(model, data)
     for i in range(steps + 1):
-        rel[i] = data.xmat[an].reshape(3, 3).T @ (data.xpos[ob] - data.xpos[an])
+        rel[i] = _in_frame(data, ob, an)
         if i < steps:
             mujoco.mj_step(model, data)
             if data.warning[mujoco.mjtWarning.mjWARN_BADQACC].number > 0:
@@ -358,18 +358,19 @@ def probe_contact_model(model: mujoco.MjModel, data: mujoco.MjData, *, object_bo
     mujoco.mj_setState(work, start, _state(model, data), mujoco.mjtState.mjSTATE_INTEGRATION)
     mujoco.mj_forward(work, start)
     pinched = _touches(work, start, ob, pads)
+
+    def out_of_grip() -> bool:
+        return pinched and not _touches(work, held, ob, pads)
+
     for _ in range(MAX_PROBE_WINDOWS - 1):
-        if not (math.isfinite(rate) and rate * carry_time > DROP_TOLERANCE):
-            break
-        if pinched and not _touches(work, held, ob, pads):
-            break  # out of the grip: the rate measured while it left stands
+        if not (math.isfinite(rate) and rate * carry_time > DROP_TOLERANCE) or out_of_grip():
+            break  # not soft-looking, or out of the grip: the rate measured stands
         later = measure_creep(work, held, object_body=ob, anchor_body=anchor_body,
                               steps=steps, settle=0.0, projector=projector)
-        if later < SETTLING * rate and not (pinched and not _touches(work, held, ob, pads)):
-            rate = later  # still settling in the grip: measure on
-            continue
-        rate = max(rate, later)  # sustained, faster, or out of the grip
-        break
+        if later >= SETTLING * rate or out_of_grip():
+            rate = max(rate, later)  # sustained, faster, or out of the grip
+            break
+        rate = later  # still settling in the grip: measure on
     soft = rate * carry_time > DROP_TOLERANCE
     findings = list(report.findings)
     horizon_steps = 0
@@ -388,6 +389,11 @@ def probe_contact_model(model: mujoco.MjModel, data: mujoco.MjData, *, object_bo
     if soft and warn:
         warnings.warn(f"contact model: {out.summary()}", ContactModelWarning, stacklevel=2)
     return out
+
+
+def _in_frame(data: mujoco.MjData, body: int, anchor: int) -> np.ndarray:
+    """The position of ``body`` in ``anchor``'s frame (3,) [m] (kinematics computed)."""
+    return data.xmat[anchor].reshape(3, 3).T @ (data.xpos[body] - data.xpos[anchor])
 
 
 def _touches(model: mujoco.MjModel, data: mujoco.MjData, body: int, geoms: set[int]) -> bool:
@@ -528,6 +534,6 @@ def _nominal_creep(model: mujoco.MjModel, states: np.ndarray, first: int, steps:
     for i, k in enumerate(picks):
         mujoco.mj_setState(model, data, np.asarray(states[k], dtype=float), STATE_SPEC)
         mujoco.mj_kinematics(model, data)
-        rel[i] = data.xmat[anchor].reshape(3, 3).T @ (data.xpos[body] - data.xpos[anchor])
+        rel[i] = _in_frame(data, body, anchor)
     moved = (rel - rel[0]) @ np.asarray(projector, dtype=float).T
     return float(np.linalg.norm(moved, axis=1).max())

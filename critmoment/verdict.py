@@ -633,14 +633,6 @@ def _region_of_cut(box: UncertaintyBox, cut: np.ndarray, sides: Sequence[str],
     return region
 
 
-def _cut_of_region(box: UncertaintyBox, region: Mapping[str, tuple[float, float]],
-                   sides: Sequence[str]) -> np.ndarray:
-    lo = np.array([region[n][0] for n in box.names])
-    hi = np.array([region[n][1] for n in box.names])
-    u_lo, u_hi = box.to_unit(lo[None])[0], box.to_unit(hi[None])[0]
-    return np.where(np.array(sides) == "above", u_hi, 1.0 - u_lo)
-
-
 def _blocked_grid(inside_bad: np.ndarray, cands: Sequence[np.ndarray],
                   margin: float) -> np.ndarray:
     """For the grid of two-parameter cuts ``cands[0] × cands[1]`` (row-major), whether a bad
