@@ -486,12 +486,15 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
         carry_time=length * float(recording.dt), max_mass=max_mass, friction=friction,
         steps=steps, horizon=twin.scenario.horizon, slip_tolerance=settings.slip_tolerance,
         projector=projectors[g], warn=warn)
-    # from where the ground truth starts counting (the gripper's first hold), over the
-    # steps it counts: the lift-off's sag included (measured from the longest hold's start
-    # it read 12 mm where the ground truth forgave 24)
-    held = np.asarray(sig.contact_gripper, bool)[:, g] & ~np.asarray(sig.contact_support, bool)
+    # from where the ground truth starts counting (the gripper's first hold, or after a
+    # regrasp the hold's own grasp), over the steps it counts: the lift-off's sag included
+    # (measured from the longest hold's start it read 12 mm where the ground truth forgave 24)
+    segment = twin.hold_segments(recording.controls, sig.contact_gripper)[:, g]
+    inside = segment == segment[start]
+    held = (np.asarray(sig.contact_gripper, bool)[:, g]
+            & ~np.asarray(sig.contact_support, bool) & inside)
     first = int(np.argmax(held)) if held.any() else start
-    counted = np.flatnonzero(alone[:, g])
+    counted = np.flatnonzero(alone[:, g] & inside)
     counted = counted[counted >= first]
     creep = _nominal_creep(model, recording.states, first, counted,
                            model.body(sc.object_body).id, int(anchors[g]), projectors[g])

@@ -329,8 +329,9 @@ class _Watch:
     """The ground truth's slip, drop and saturation rules, streamed over a chain's own
     states.
 
-    Slip (as :func:`critmoment.groundtruth.grip_slip`): per gripper, from the first step at
-    which both the sample and the nominal run hold the object with it, the object's
+    Slip (as :func:`critmoment.groundtruth.grip_slip`): per gripper and nominal hold
+    (``Twin.hold_segments``), from the first step of the hold at which both the sample and
+    the nominal run hold the object with it, the object's
     displacement in the gripper's frame relative to the nominal run's, the closing axes
     projected out, counted where the nominal run holds with that gripper alone; a slip is
     a run of more than ``slip_time`` above ``slip_tolerance``. Drop: the object touched
@@ -415,6 +416,20 @@ class _Watch:
         c, s = xpos.shape[:2]
         if c == 0 or s == 0:
             return
+        segments = ev._segments
+        if s > 1 and ev._anchors.size:
+            # a regrasp of the nominal run within the block: each hold from its own grasp
+            cuts = np.flatnonzero((np.diff(segments[k:k + s], axis=0) != 0).any(axis=1)) + 1
+            if cuts.size:
+                edges = [0, *cuts.tolist(), s]
+                for a, b in zip(edges[:-1], edges[1:], strict=False):
+                    self(k + a, ids, sensordata[:, a:b], xpos[:, a:b], xmat[:, a:b],
+                         qpos[:, a:b])
+                return
+        if k > self.start and ev._anchors.size:
+            fresh = np.flatnonzero(segments[k] != segments[k - 1])
+            if fresh.size:
+                self.found[np.ix_(ids, fresh)] = False
         # a simulation that went non-finite without MuJoCo raising has diverged
         bad = ~(np.isfinite(sensordata).all(axis=-1) & np.isfinite(qpos).all(axis=-1))
         gone = bad.any(axis=1) & (self.diverged_step[ids] < 0)

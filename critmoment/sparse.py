@@ -862,6 +862,9 @@ class SparseEvaluator:
         # there: a contact failure in a release whose measured slip settles is for its own
         # run (a Panda opening to 0.3 for the carry, 4 false unsafes of 64 without it)
         self._counted = self._alone & ~twin.letting_go(recording.controls, sig.contact_gripper)
+        #: which of each gripper's holds a step belongs to: slip is measured from the
+        #: hold's own grasp after a regrasp (Twin.hold_segments)
+        self._segments = twin.hold_segments(recording.controls, sig.contact_gripper)
         self._nominal_rel = np.full((self._states.shape[0], len(self._anchors), 3), np.nan)
         self._grasp_cache: tuple[np.ndarray, np.ndarray] | None = None
         self._sensordata = getattr(recording, "sensordata", None)
@@ -1728,7 +1731,8 @@ class SparseEvaluator:
         # (restored from the nominal state, it shares the nominal's history up to then):
         # the slip is how far the sample's goes beyond the nominal's (grip_slip's rule)
         start, grasp = self._grasp()
-        since = (start >= 0) & (at[..., None] >= start)                      # (c|1, s, G)
+        start, grasp = start[at], grasp[at]                        # (c|1, s, G), (c|1, s, G, 3)
+        since = (start >= 0) & (at[..., None] >= start)
         nominal_moved = np.where(since[..., None], nominal - grasp, 0.0)
         moved = np.einsum("gij,csgj->csgi", self._projectors, rel - nominal + nominal_moved)
         nominal_moved = np.einsum("gij,csgj->csgi", self._projectors, nominal_moved)
@@ -1736,15 +1740,24 @@ class SparseEvaluator:
         return np.where(alone, disp, 0.0).max(axis=-1)
 
     def _grasp(self) -> tuple[np.ndarray, np.ndarray]:
-        """Per gripper, the first step the nominal run holds the object with it (−1 where it
-        never does), (G,), and the object's position in that grip then, (G, 3) (cached)."""
+        """Per step and gripper, the first step the nominal run holds the object with it in
+        that step's hold (:attr:`_segments`; −1 where it does not), (T, G), and the object's
+        position in that grip then, (T, G, 3) (cached)."""
         if self._grasp_cache is None:
-            held = self._held[:, :len(self._anchors)]
-            start = np.where(held.any(axis=0), np.argmax(held, axis=0), -1)
-            grasp = np.zeros((start.size, 3))
+            g = len(self._anchors)
+            held = self._held[:, :g]
+            segments = self._segments[:, :g]
+            start = np.full(held.shape, -1, np.int64)
+            for j in np.unique(segments):
+                inside = segments == j
+                mine = held & inside
+                first = np.where(mine.any(axis=0), np.argmax(mine, axis=0), -1)  # (G,)
+                start = np.where(inside, first[None], start)
+            grasp = np.zeros(held.shape + (3,))
             if (start >= 0).any():
-                at = np.maximum(start, 0)
-                grasp = self._nominal_at(at)[np.arange(start.size), np.arange(start.size)]
+                rows, cols = np.nonzero(start >= 0)
+                grasp[rows, cols] = self._nominal_at(start[rows, cols])[np.arange(rows.size),
+                                                                        cols]
             self._grasp_cache = (start, grasp)
         return self._grasp_cache
 

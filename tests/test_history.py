@@ -7,6 +7,7 @@ import dataclasses
 import numpy as np
 import pytest
 
+import critmoment as cm
 from critmoment import history, sparse
 from critmoment.exceptions import ParameterError
 
@@ -503,6 +504,62 @@ def test_a_chain_from_the_start_is_the_samples_full_rollout(twin, demo_traj, dem
     both = (chain.motor_step >= 0) & (gt.motor_step >= 0)
     assert both.any()
     np.testing.assert_array_equal(np.abs(chain.motor_step - gt.motor_step)[both] <= 1, True)
+
+
+def _regrasp(traj):
+    """The bundled Panda's pick-and-place, then back down to the placed cube, a regrasp, a
+    lift, a second placing and release (785 actions)."""
+    a = np.asarray(traj.actions)
+
+    def arm(rows, grip):
+        out = np.array(rows, dtype=np.float64)
+        out[:, -1] = grip
+        return out
+
+    down, up, place = a[445:395:-1], a[395:445], np.repeat(a[395][None], 15, axis=0)
+    parts = [a, arm(down, 1.0), arm(place, np.linspace(1, 0, 15)), arm(place, 0.0),
+             arm(up, 0.0), arm(np.repeat(a[445][None], 30, axis=0), 0.0), arm(down, 0.0),
+             arm(np.repeat(a[395][None], 25, axis=0), np.linspace(0, 1, 25)), arm(up, 1.0)]
+    return dataclasses.replace(traj, actions=np.concatenate(parts))
+
+
+def test_a_regrasp_starts_slip_afresh_alike_in_chains_sparse_and_ground_truth():
+    """Each hold of a nominal run that regrasps is measured from its own grasp
+    (``Twin.hold_segments``): the chain keeps equal to the brute force to 1e-12 over a
+    release and a regrasp, sparse evaluation anchors a moment of the second hold at the
+    second grasp, and a contact that flickers without the command opening starts nothing."""
+    from critmoment import panda_demo
+    from critmoment.groundtruth import brute_force
+
+    twin = cm.Twin(cm.load_scenario("panda_pick_place"))
+    traj = _regrasp(panda_demo.make_pick_place(0))
+    rec = cm.rollout(traj, twin=twin)
+    assert rec.completed
+    sig = rec.signals
+    segments = twin.hold_segments(rec.controls, sig.contact_gripper)
+    held = sig.contact_gripper[:, 0] & ~sig.contact_support
+    assert segments[:, 0].max() == 2 and (np.diff(segments[:, 0]) >= 0).all()
+    firsts = [int(np.argmax(held & (segments[:, 0] == j))) for j in range(2)]
+    assert 0 < firsts[0] < firsts[1]
+    # the second hold's grasp is well after the first release ends; the last segment,
+    # after the second release, holds nothing
+    assert not held[firsts[1] - 100:firsts[1]].any()
+    assert not held[segments[:, 0] == 2].any()
+    # a 0.1 s flicker of the contact while the command stays closed is no new hold
+    flicker = sig.contact_gripper.copy()
+    mid = (firsts[0] + np.flatnonzero(segments[:, 0] == 1)[0]) // 2
+    flicker[mid:mid + int(0.1 / rec.dt), 0] = False
+    np.testing.assert_array_equal(twin.hold_segments(rec.controls, flicker), segments)
+
+    ev = sparse.SparseEvaluator(rec, twin)
+    start, _ = ev._grasp()
+    for j, first in enumerate([*firsts, -1]):
+        assert (start[segments[:, 0] == j, 0] == first).all()
+    samples = np.array([[0.05, 1.0], [0.9, 0.76], [1.7, 0.94], [0.8, 0.3]])
+    chain = history.chained_failures(ev, [rec.n_steps - 2 * ev.horizon], samples)
+    gt = brute_force(traj, twin=twin, samples=samples).classification
+    assert (gt.max_slip > 1e-4).sum() >= 3
+    np.testing.assert_allclose(chain.max_slip, gt.max_slip, rtol=0, atol=1e-12)
 
 
 def test_the_first_watched_failure_decides_whether_a_rollout_confirms_it():

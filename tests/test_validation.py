@@ -199,6 +199,32 @@ def test_grip_slip_counts_motion_along_the_pads_from_the_grasp():
     assert not none.any()
 
 
+def test_grip_slip_measures_each_hold_from_its_own_grasp():
+    """After a regrasp 10 mm lower the object sits 10 mm higher in the grip, in the sample
+    and in the nominal run alike. Measured from the first grasp, a sample whose second hold
+    then slid 8 mm back down had moved 2 mm, inside the nominal's 10 mm "displacement": no
+    slip (a Panda's second-hold slip of 10-20 mm read 10.4 mm). Each nominal hold
+    (``segments``) is measured from its own grasp."""
+    t = 40
+    nominal = np.zeros((t, G, 3))
+    nominal[22:, 0, 2] = 0.010                  # the regrasp's offset
+    held = np.zeros((2, t, G), bool)
+    held[:, 5:15, 0] = True                     # first hold
+    held[:, 22:, 0] = True                      # second hold, after the release
+    pos = np.repeat(nominal[None], 2, axis=0).copy()
+    pos[1, 30:, 0, 2] -= 0.008                  # the second sample slides 8 mm down
+    segments = np.zeros((t, G), np.int64)
+    segments[18:, 0] = 1                        # the first hold's release ends at 18
+    once = val.grip_slip(pos, nominal, held, held[0])
+    np.testing.assert_allclose(once.max(axis=1), [0.0, 0.0], atol=1e-15)
+    s = val.grip_slip(pos, nominal, held, held[0], segments=segments)
+    np.testing.assert_allclose(s[0], 0.0, atol=1e-15)
+    np.testing.assert_allclose(s[1, 30:], 0.008)
+    np.testing.assert_allclose(s[1, :30], 0.0, atol=1e-15)
+    with pytest.raises(ParameterError, match="segments"):
+        val.grip_slip(pos, nominal, held, held[0], segments=segments[1:])
+
+
 def test_grip_slip_counts_only_motion_beyond_a_creeping_nominal_grip():
     """The nominal grip slides 18 mm down the pads. A sample sliding 10 mm the same way (it
     holds better) had a slip of 8 mm by the norm of the difference, and one sliding 3 mm a
