@@ -751,7 +751,8 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
                 sweep: sp.SparseResult | None, options: vd.DecisionOptions, *,
                 roll: Callable[..., np.ndarray], nominal_completed: bool, nthread: int = 0,
                 stage: Callable | None = None,
-                alongside: Callable[[], Any] | None = None) -> tuple[vd.SampleRuns, Any]:
+                alongside: Callable[[], Any] | None = None,
+                chained_before: dict | None = None) -> tuple[vd.SampleRuns, Any]:
     """The samples' own runs that complete the sweep's evidence: the one path of
     :func:`analyze` and :func:`critmoment.validation.predict`.
 
@@ -774,6 +775,8 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
         nthread: threads (0: all CPUs; 1: everything in this thread, in turn).
         stage: a context-manager factory timing a named stage, or None.
         alongside: work for this thread meanwhile, or None.
+        chained_before: the chains' results by point, kept across calls with the same
+            evaluator, moments and options (:func:`chain_samples`), or None.
 
     Returns:
         The :class:`~critmoment.verdict.SampleRuns` and what ``alongside`` returned.
@@ -807,7 +810,8 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
             return np.zeros(n, bool), np.zeros(n, bool), np.zeros(n, bool), [None] * n
         with timer("chained segments"):
             return chain_samples(evaluator.fork(), steps, samples, sweep, rerun, options,
-                                 nominal_completed=nominal_completed)
+                                 nominal_completed=nominal_completed,
+                                 chained_before=chained_before)
 
     verifying = _Once(verify)
 
@@ -1030,7 +1034,8 @@ def decision_options(opt: AnalyzeOptions, threshold: float) -> vd.DecisionOption
 
 def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.ndarray,
                   sweep: sp.SparseResult | None, rerun: np.ndarray,
-                  options: vd.DecisionOptions, *, nominal_completed: bool = True
+                  options: vd.DecisionOptions, *, nominal_completed: bool = True,
+                  chained_before: dict | None = None
                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str | None]]:
     """The chained evidence of the decision: which samples were carried on their own state
     (:func:`critmoment.verdict.samples_to_chain`), whether they failed there, and which of
@@ -1049,7 +1054,12 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
     losses at steps 3856 and 4120 of 5000, after the release, in samples whose full-rollout
     outcome flips with a 1e-6–1e-4 change of the cube's mass (docs/real_models.md). Slips
     and drops during the hold, measured with the ground truth's own rules, stand: on ACT's
-    scene the chain fails 41 of 64 samples so, every one a real failure."""
+    scene the chain fails 41 of 64 samples so, every one a real failure.
+
+    ``chained_before`` (a dict, filled here) keeps each chained point's result by its
+    value, for calls with the same evaluator, moments and options: a chain is the sample's
+    own run, independent of the samples beside it, so a point the region check chained in
+    an earlier round (a face the shrink kept) is not stepped again."""
     n = samples.shape[0]
     chained = np.zeros(n, bool)
     chained_failed = np.zeros(n, bool)
@@ -1058,14 +1068,21 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
     if sweep is None or steps.size == 0:
         return chained, chained_failed, suspect, kinds
     chained = vd.samples_to_chain(sweep, rerun, options, nominal_completed=nominal_completed)
-    if chained.any():
-        result = history.chained_failures(evaluator, steps, samples[chained])
-        chained_failed[chained] = result.failed
-        suspect[chained] = result.to_confirm
-        if options.verify is not None:
-            suspect[chained] |= result.near(options.verify)
-        for i, kind in zip(np.flatnonzero(chained), result.kinds(), strict=True):
-            kinds[i] = kind
+    known = {} if chained_before is None else chained_before
+    rows = np.flatnonzero(chained)
+    keys = [np.asarray(samples[i], dtype=np.float64).tobytes() for i in rows]
+    todo = np.array([i for i, key in zip(rows, keys, strict=True) if key not in known],
+                    dtype=np.int64)
+    if todo.size:
+        result = history.chained_failures(evaluator, steps, samples[todo])
+        near = (result.near(options.verify) if options.verify is not None
+                else np.zeros(todo.size, bool))
+        for i, failed, confirm, close, kind in zip(todo, result.failed, result.to_confirm,
+                                                   near, result.kinds(), strict=True):
+            key = np.asarray(samples[i], dtype=np.float64).tobytes()
+            known[key] = (bool(failed), bool(confirm or close), kind)
+    for i, key in zip(rows, keys, strict=True):
+        chained_failed[i], suspect[i], kinds[i] = known[key]
     return chained, chained_failed, suspect, kinds
 
 
@@ -1133,6 +1150,9 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
     roll = _Rollouts(trajectory, twin, nthread, reference)
     nominal_failed = _nominal_failed(evaluator, steps) if steps.size else None
     n_sparse = n_rollouts = n_chained = 0
+    # a point on a face the shrink kept comes back the same to the bit: its chain and its
+    # rollout (roll keeps those) are not run again
+    chained_before: dict = {}
     current: dict | None = vd.round_inward(first, box)
     pts = np.zeros((0, box.ndim))
     fails = rolled = chained = np.zeros(0, bool)
@@ -1169,7 +1189,8 @@ def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Traje
 
             def decide_own(points: np.ndarray, res_own: sp.SparseResult):
                 runs, _ = sample_runs(evaluator, steps, points, res_own, options, roll=roll,
-                                      nominal_completed=nominal_completed, nthread=nthread)
+                                      nominal_completed=nominal_completed, nthread=nthread,
+                                      chained_before=chained_before)
                 failed = vd.failing_samples(
                     runs.evidence(res_own, nominal_completed=nominal_completed), options)
                 return runs, failed
@@ -1273,10 +1294,25 @@ class _Rollouts:
             return self.reference
 
     def __call__(self, points: np.ndarray, nthread: int | None = None) -> np.ndarray:
+        """(p,) bool: each point's real outcome is a failure. A point already rolled out
+        (the same values to the bit) is not run again: a run is its own, whatever runs
+        beside it."""
         nthread = self.nthread if nthread is None else nthread
+        points = sp.check_samples(self.twin.scenario.box, points)
+        keys = [np.asarray(p, float).tobytes() for p in points]
+        new, seen = [], set()
+        for i, key in enumerate(keys):
+            if key not in self.outcomes and key not in seen:
+                seen.add(key)
+                new.append(i)
+        if new:
+            self._run(points[new], nthread)
+        return np.array([self.outcomes[key][0] != Outcome.SUCCESS.value for key in keys],
+                        dtype=bool)
+
+    def _run(self, points: np.ndarray, nthread: int) -> None:
         # the audit's own runs: check_audit counted them before the audit started
-        bf = _brute_force(self.trajectory, twin=self.twin,
-                          samples=sp.check_samples(self.twin.scenario.box, points),
+        bf = _brute_force(self.trajectory, twin=self.twin, samples=points,
                           criteria=OutcomeCriteria(), chunk=self.chunk,
                           nthread=budget.check_nthread(nthread), reference=self.nominal(),
                           t_start=time.perf_counter())
@@ -1294,7 +1330,6 @@ class _Rollouts:
             self.outcomes[key] = (kind, float(step) * c.dt if step >= 0 else None, name)
             if outcome is Outcome.SUCCESS:
                 self.closeness[key] = float(level)
-        return bf.failed
 
     def near_rule(self, points: np.ndarray, fraction: float) -> np.ndarray:
         """(p,) bool: the rolled-out ``points`` whose run came within ``fraction`` of a

@@ -639,3 +639,25 @@ def test_the_manifest_tells_apart_what_was_audited(tmp_path, demo_traj):
     # built in code: no file hash, whatever lies in the working folder
     built = Trajectory(traj.actions, fps=traj.fps, source=str(tmp_path / "t.npz"))
     assert _manifest(sc, opt, built)["trajectory_sha256"] is None
+
+
+def test_own_rollouts_of_a_point_run_once(twin, demo_traj, demo_recording, monkeypatch):
+    """A point rolled out before (the same values to the bit: a face the region check's
+    shrink kept, in its next round) keeps its outcome; only new points are run, each once."""
+    from critmoment import analysis
+
+    roll = analysis._Rollouts(demo_traj, twin, 1, recording=demo_recording)
+    points = np.array([[0.05, 1.0], [3.0, 0.3]])
+    np.testing.assert_array_equal(roll(points), [False, True])
+    ran = []
+    real = analysis._brute_force
+
+    def counting(traj, *, samples, **kwargs):
+        ran.append(np.array(samples))
+        return real(traj, samples=samples, **kwargs)
+
+    monkeypatch.setattr(analysis, "_brute_force", counting)
+    again = np.array([[3.0, 0.3], [0.05, 1.0], [3.0, 0.3], [0.2, 1.2], [0.2, 1.2]])
+    np.testing.assert_array_equal(roll(again), [True, False, True, False, False])
+    assert len(ran) == 1
+    np.testing.assert_array_equal(ran[0], [[0.2, 1.2]])

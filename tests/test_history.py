@@ -429,7 +429,7 @@ def test_streamed_sustained_level_equals_the_direct_one(seed):
 
 
 def test_a_chained_pass_close_to_a_rule_goes_to_its_own_rollout(scenario, demo_traj,
-                                                                demo_recording):
+                                                                demo_recording, monkeypatch):
     """With the right elbow's limit 15 % over the nominal carry's peak, the nominal cube's
     chain passes but holds the arm's motors at about 70 % of their limits for longer than
     the ground truth's motor time: its closest level is the one computed from the recorded
@@ -480,6 +480,20 @@ def test_a_chained_pass_close_to_a_rule_goes_to_its_own_rollout(scenario, demo_t
         off = dataclasses.replace(dopt, verify=verify)
         assert not analysis.chain_samples(ev, np.array([start]), samples, sweep, none,
                                           off)[2][0]
+    # a point chained before (the region check's next round) keeps its result unstepped
+    before: dict = {}
+    first = analysis.chain_samples(ev, np.array([start]), samples, sweep, none, dopt,
+                                   chained_before=before)
+    assert len(before) == 2
+
+    def no_chain(*args, **kwargs):
+        raise AssertionError("chained again")
+
+    monkeypatch.setattr(history, "chained_failures", no_chain)
+    again = analysis.chain_samples(ev, np.array([start]), samples[::-1], sweep, none, dopt,
+                                   chained_before=before)
+    for a, b in zip(first, again, strict=True):
+        assert list(a) == list(b)[::-1]
 
 
 def test_a_chain_from_the_start_is_the_samples_full_rollout(twin, demo_traj, demo_recording):
