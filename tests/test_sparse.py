@@ -1122,3 +1122,25 @@ def test_a_motor_failure_that_never_saturates_is_a_margin_one():
     from critmoment.groundtruth import OutcomeCriteria
 
     assert sparse.MOTOR_MARGIN == pytest.approx(1.0 / OutcomeCriteria().saturation - 1.0)
+
+
+def test_saturated_marks_a_motor_held_at_its_limit_for_a_failures_duration(scenario, twin,
+                                                                          demo_traj,
+                                                                          demo_recording):
+    """``SparseResult.saturated``: a motor at the ground truth's saturation (0.999 of its
+    limit) for a motor failure's duration in a row. With the right elbow limited to half its
+    nominal carry's peak, it sits at the limit through the carry: its motor failures stand;
+    on the bundled twin no pair is saturated."""
+    sig = demo_recording.signals
+    carry = np.flatnonzero((sig.contact_gripper & ~sig.contact_support[:, None]).any(axis=1))
+    i = twin.actuator_names.index("right/elbow")
+    peak = np.abs(np.asarray(sig.actuator_force)[carry, i]).max()
+    weak = Twin(scenario.replace(limits={**scenario.limits, "right/elbow": float(0.5 * peak)}))
+    rec = rollout.rollout(demo_traj, twin=weak)
+    k = int(carry[len(carry) // 2])
+    nominal = scenario.box.nominal[None]
+    res = sparse.SparseEvaluator(rec, weak).evaluate([k], nominal)
+    assert res.failure[0, 0] == sparse.Failure.MOTOR and res.saturated[0, 0]
+    assert not res.margin_failure[0, 0]
+    ok = sparse.SparseEvaluator(demo_recording, twin).evaluate([k], nominal)
+    assert not ok.saturated.any() and not ok.failed.any()

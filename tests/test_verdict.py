@@ -643,6 +643,31 @@ def test_a_motor_failure_with_every_motor_under_its_limit_is_for_a_rollout():
     assert (counts["margin"], counts["margin_failed"]) == (2, 0)
 
 
+def test_a_motor_failure_that_touches_its_limit_only_briefly_is_for_a_rollout():
+    """A jump in the targets (an ACT-like chunk's boundary) puts a wrist at its force limit
+    for 11-19 steps, where the ground truth's saturation needs 25 in a row: the motor FOS
+    touches 1, yet the run completes (ALOHA, 50-step chunks: 1-3 false unsafes of 32 near
+    the nominal). A motor failure stands only where a motor sat at the limit for a motor
+    failure's duration (``saturated``); the others are margin failures, for the sample's
+    own run."""
+    from critmoment.sparse import Failure, _longest_run
+
+    flags = np.array([[0, 1, 1, 0, 1, 1, 1], [0] * 7, [1] * 7], dtype=bool)
+    assert _longest_run(flags).tolist() == [3, 0, 7]
+    assert _longest_run(np.zeros((2, 0), bool)).tolist() == [0, 0]
+    samples = np.array([[0.1, 1.0], [0.2, 1.0], [0.3, 1.0]])
+    base = dataclasses.replace(
+        _sweep(np.array([[1.2, 1.2, 0.1]]), samples),
+        failure=np.array([[Failure.MOTOR, Failure.MOTOR, Failure.PASS]], dtype=np.int8),
+        fos_motor=np.array([[1.0, 1.0, 3.0]]))
+    # without the flag (results built elsewhere) a touch of the limit stands, as before
+    assert base.margin_failure.tolist() == [[False, False, False]]
+    flagged = dataclasses.replace(base, saturated=np.array([[False, True, False]]))
+    assert flagged.margin_failure.tolist() == [[True, False, False]]
+    reruns = vd.samples_to_rerun(flagged, OPT, nominal_completed=True)
+    assert reruns.margin.tolist() == [True, False, False]
+
+
 def test_a_failure_only_by_a_slip_under_the_ground_truths_tolerance_is_for_a_rollout():
     """The sparse slip tolerance (5 mm over the horizon) is tighter than the ground truth's
     (1 cm for 50 ms): a sample that fails only by a slip between them is decided by its own
