@@ -649,6 +649,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             search=searches.get(s), reached=float((~np.isnan(res.cost[row])).mean()),
             squeeze=bool(squeeze), audited_step=None if s == int(m.step) else s,
             worst_fails=worst_fails, worst_note=worst_note))
+    # each stated critical value checked by the full run just past it (the others at nominal)
+    moment_reports = _check_critical(moment_reports, box, roll, rec.completed)
     # the failing worst cases that only a rollout can decide (squeezes)
     worst_failed: dict[int, bool] = {}
     rerun_steps = vd.worst_cases_to_rerun(moment_reports, worst_failed_sparse, worst_unlifted,
@@ -709,6 +711,88 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         contact_model=contact, load_bound=load_bound,
         force_ratio_untrusted=_untrusted(rec, evaluator, steps),
         unlimited_motors=twin.unlimited_motors)
+
+
+#: how far past a critical value its check runs, in the parameter's prior (unit) scale
+CRITICAL_STEP = 0.01
+
+
+def _check_critical(reports: Sequence[vd.MomentReport], box, roll: Callable[..., np.ndarray],
+                    nominal_completed: bool) -> list[vd.MomentReport]:
+    """The moments' critical values, each checked where it binds by the full run just past it
+    (``CRITICAL_STEP`` of the parameter's range on its failing side, the others at nominal).
+
+    A critical value is sparse evaluation's: restored from the nominal state at one moment,
+    the cost crosses the threshold there. The sample's own run can differ: a Panda carrying
+    its cube tilted 40° crossed at joint6 for mass above 0.383 kg, and cut the safe region
+    there, while full runs up to 1.2 kg complete. Per parameter and side the most binding
+    value (the lowest "above", the highest "below") is run; one that fails stands, and so
+    do the less binding ones of that side (they cut no more); one that completes is
+    refuted (``MomentReport.critical_refuted``: out of the causes' critical values, the
+    region's cuts and the sides' votes), and the next one is run, until one stands. One
+    whose failing side holds the nominal value is refuted by the nominal run where that
+    completes the task (an ACT-like chunked hand-over crossed for mass below 0.654 kg
+    beside the nominal 0.05 kg: with "above 0.315 kg" at another moment, the run just
+    past it failed for the other reason, mass read as failing both ways, and no safe
+    region was stated).
+    """
+    reports = list(reports)
+    refuted: dict[tuple[int, str], tuple[str, float]] = {}
+    settled: set[tuple[str, str]] = set()
+    nominal = dict(zip(box.names, map(float, box.nominal), strict=True))
+    for i, mr in enumerate(reports):
+        for name in box.names:
+            value, side = mr.critical.get(name), mr.critical_side.get(name)
+            if (nominal_completed and value is not None and not mr.squeeze
+                    and (side == "above" and value < nominal[name]
+                         or side == "below" and value > nominal[name])):
+                refuted[(i, name)] = (side, float(value))
+    while True:
+        todo: dict[tuple[str, str], tuple[int, float]] = {}
+        for i, mr in enumerate(reports):
+            if mr.squeeze:
+                continue
+            for name in box.names:
+                value, side = mr.critical.get(name), mr.critical_side.get(name)
+                key = (name, side)
+                if value is None or side is None or key in settled or (i, name) in refuted:
+                    continue
+                best = todo.get(key)
+                if best is None or (value < best[1] if side == "above" else value > best[1]):
+                    todo[key] = (i, float(value))
+        if not todo:
+            break
+        points = np.array([_past_critical(box, name, side, value)
+                           for (name, side), (_, value) in todo.items()])
+        for ((name, side), (i, value)), failed in zip(todo.items(), roll(points), strict=True):
+            if failed:
+                settled.add((name, side))
+            else:
+                refuted[(i, name)] = (side, value)
+    out = []
+    for i, mr in enumerate(reports):
+        gone = {name: value for (j, name), value in refuted.items() if j == i}
+        if gone:
+            mr = dataclasses.replace(
+                mr, critical={k: (None if k in gone else v) for k, v in mr.critical.items()},
+                critical_side={k: (None if k in gone else v)
+                               for k, v in mr.critical_side.items()},
+                critical_refuted=gone)
+        out.append(mr)
+    return out
+
+
+def _past_critical(box, name: str, side: str, value: float) -> np.ndarray:
+    """The nominal point with ``name`` moved ``CRITICAL_STEP`` of its prior's range past
+    ``value`` on the failing ``side`` (within the box)."""
+    j = box.index(name)
+    point = box.nominal.astype(np.float64).copy()
+    point[j] = value
+    u = box.to_unit(point[None])[0, j] + (CRITICAL_STEP if side == "above" else -CRITICAL_STEP)
+    unit = box.to_unit(box.nominal[None])
+    unit[0, j] = min(max(u, 0.0), 1.0)
+    point[j] = box.from_unit(unit)[0, j]
+    return point
 
 
 def _completion_rule(rec: Recording, twin: Twin) -> str:

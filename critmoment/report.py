@@ -165,6 +165,8 @@ def report_json(report, *, timings: bool = True) -> dict:
             "min_fos_motor": _num(mr.min_fos_motor),
             "critical": {k: _num(v) for k, v in mr.critical.items()},
             "critical_side": dict(mr.critical_side),
+            "critical_refuted": {k: {"side": side, "value": float(v)}
+                                 for k, (side, v) in mr.critical_refuted.items()},
             "dominant": mr.dominant,
             "limiting_actuator": mr.limiting_actuator,
             "fail_fraction": float(mr.fail_fraction),

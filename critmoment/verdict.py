@@ -217,6 +217,10 @@ class MomentReport:
             stays at or under the threshold. A cost over the threshold that does not fail
             (a contact excursion shorter than the persistence) is no failure.
         worst_note: why a worst case whose cost crosses the threshold does not fail, or "".
+        critical_refuted: per parameter, (side, value) of a critical value of sparse
+            evaluation that the full run just past it (the others at nominal) refutes: that
+            run completes the task. It is left out of ``critical`` and ``critical_side``
+            (it cuts no region and sides no parameter).
     """
 
     moment: Moment
@@ -237,6 +241,7 @@ class MomentReport:
     overturned: bool = False
     worst_fails: bool | None = None
     worst_note: str = ""
+    critical_refuted: Mapping[str, tuple[str, float]] = dataclasses.field(default_factory=dict)
 
     @property
     def step(self) -> int:
@@ -1552,6 +1557,10 @@ def _causes(reports: Sequence[MomentReport], threshold: float,
         else:
             where = " (at " + ", ".join(f"{k} = {v:.3g}{units.get(k, '')}"
                                         for k, v in mr.worst_case.items()) + ")"
+        if mr.critical_refuted:
+            where += ("; " + ", ".join(f"{k} {side} {v:.3g}{units.get(k, '')}"
+                                       for k, (side, v) in mr.critical_refuted.items())
+                      + " by sparse evaluation alone (its full run completes)")
         groups.setdefault(f"{mr.dominant}|{name}", []).append(
             f"{mr.moment.label.value} at t = {mr.moment.time:.2f} s{where}")
     return [f"{key.split('|', 1)[1]}: {'; '.join(where)}; suggestion: "

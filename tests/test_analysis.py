@@ -661,3 +661,53 @@ def test_own_rollouts_of_a_point_run_once(twin, demo_traj, demo_recording, monke
     np.testing.assert_array_equal(roll(again), [True, False, True, False, False])
     assert len(ran) == 1
     np.testing.assert_array_equal(ran[0], [[0.2, 1.2]])
+
+
+def test_critical_values_are_checked_by_the_full_run_just_past_them():
+    """A critical value is sparse evaluation's, from the nominal state at one moment. Per
+    parameter and side the most binding one is run just past it (the others at nominal):
+    one that completes is refuted (out of the causes' values, the region's cuts and the
+    sides' votes) and the next is run; one that fails stands with the less binding ones.
+    One whose failing side holds the nominal value is refuted by a nominal run that
+    completes, without a run (a chunked hand-over crossed for mass below 0.654 kg beside
+    the nominal 0.05 kg, and no safe region was stated)."""
+    from critmoment.moments import Moment, MomentLabel
+    from critmoment.params import FrictionParameter, MassParameter
+
+    box = UncertaintyBox((MassParameter("mass", "box", 0.05, 1.05, 0.05),
+                          FrictionParameter("friction", "box", 0.2, 1.6, 1.0)))
+
+    def moment(step, critical, side):
+        m = Moment(step=step, time=step * 0.002, label=MomentLabel.LIFT_OFF, reason="test")
+        return vd.MomentReport(moment=m, worst_case={}, max_cost=2.0, min_fos_contact=1.0,
+                               min_fos_motor=3.0, critical=critical, critical_side=side,
+                               dominant="contact", limiting_actuator="a", fail_fraction=0.5)
+
+    reports = [moment(100, {"mass": 0.3, "friction": None}, {"mass": "above", "friction": None}),
+               moment(200, {"mass": 0.5, "friction": 0.9}, {"mass": "above", "friction": "below"}),
+               moment(300, {"mass": 0.7, "friction": 1.2}, {"mass": "above", "friction": "below"}),
+               moment(400, {"mass": 0.6, "friction": None}, {"mass": "below", "friction": None})]
+    runs = []
+
+    def roll(points):  # the real runs fail for mass above 0.45 kg or friction below 0.95
+        runs.append(np.array(points))
+        return (points[:, 0] > 0.45) | (points[:, 1] < 0.95)
+
+    out = analysis._check_critical(reports, box, roll, True)
+    # mass: 0.3 refuted (0.31 completes), then 0.5 stands (0.51 fails) and so does 0.7 unrun;
+    # friction below 1.2 holds the nominal 1.0: refuted by the nominal run; 0.9 stands
+    assert out[0].critical["mass"] is None and out[0].critical_side["mass"] is None
+    assert out[0].critical_refuted == {"mass": ("above", 0.3)}
+    assert out[1].critical == {"mass": 0.5, "friction": 0.9} and not out[1].critical_refuted
+    assert out[2].critical == {"mass": 0.7, "friction": None}
+    assert out[2].critical_refuted == {"friction": ("below", 1.2)}
+    assert out[3].critical_refuted == {"mass": ("below", 0.6)}
+    tried = np.vstack(runs)
+    assert len(runs) == 2 and tried.shape == (3, 2)
+    np.testing.assert_allclose(tried, [[0.31, 1.0], [0.05, 0.886], [0.51, 1.0]])  # 1 % past
+    # a nominal run that fails refutes nothing by itself: those values are run
+    runs.clear()
+    analysis._check_critical(reports, box, roll, False)
+    tried = np.vstack(runs)
+    assert any(np.allclose(row, [0.05, 1.2 - 0.014]) for row in tried)
+    assert any(np.allclose(row, [0.6 - 0.01, 1.0]) for row in tried)
