@@ -935,9 +935,8 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         receiver = receiver or next(g.name for g in by_distance if g.name != picker)
         guesses.append(f"picker {picker!r} (nearest the object), receiver {receiver!r}")
         checks.append("the handover roles: picker lifts first, receiver holds at the end")
-        task_lines += [f"picker = {_toml_str(picker)}", f"receiver = {_toml_str(receiver)}",
-                       "lift_height = 0.02      # [m] least rise that counts as the picker's "
-                       "lift"]
+        # no lift_height: a hand-over's success needs none (the task warns of one set)
+        task_lines += [f"picker = {_toml_str(picker)}", f"receiver = {_toml_str(receiver)}"]
     else:
         holder = by_distance[0].name
         if len(grippers) > 1:

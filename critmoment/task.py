@@ -182,7 +182,9 @@ class Task:
             touch = ev.contact_gripper[..., self.grippers.index(gripper)]
             if not bool(self._final(touch, ev, "any")):
                 last = np.flatnonzero(touch)
-                when = (f" (it let go at t = {(last[-1] + 1) * ev.dt:.2f} s)" if last.size
+                # the last touch, not a release: a receiver that only ever touched the
+                # object with one finger had "let go" when the picker opened
+                when = (f" (it last touched it at t = {(last[-1] + 1) * ev.dt:.2f} s)" if last.size
                         else " (it never touched it)")
                 out.append(f"{gripper} does not {verb} the object at the end{when}")
         if not bool(self._final(~ev.contact_support, ev, "all")):

@@ -1190,18 +1190,22 @@ size=".01 .01 .03" pos="0 .02 0"/></body></body></worldbody><actuator>
 
 
 def test_init_writes_a_handover_scenario_with_its_task_keys(tmp_path):
-    """ALOHA's scene: init's hand-over names the picker (nearest the object), the receiver,
-    and, as for pick_place, the lift height it counts with (it listed only the roles)."""
+    """ALOHA's scene: init's hand-over names the picker (nearest the object) and the
+    receiver, and writes no lift height: a hand-over's success needs none, and a file that
+    sets one is warned of on every load (init wrote one, and every later command warned)."""
+    from critmoment.exceptions import CritmomentWarning
     from critmoment.scenario import bundled_scenario_path
 
     sc = load_scenario("aloha_transfer_cube")
     out = tmp_path / "scenario.toml"
-    init_scenario(bundled_scenario_path("aloha_transfer_cube").parent / sc.mjcf.name,
-                  object_body=sc.object_body, task="handover", out=out)
-    made = load_scenario(out)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", CritmomentWarning)
+        init_scenario(bundled_scenario_path("aloha_transfer_cube").parent / sc.mjcf.name,
+                      object_body=sc.object_body, task="handover", out=out)
+        made = load_scenario(out)
     assert made.task.kind == "handover"
     assert {made.task.picker, made.task.receiver} == {g.name for g in made.grippers}
-    assert "lift_height = 0.02" in out.read_text() and made.task.lift_height == 0.02
+    assert "lift_height" not in out.read_text()
 
 
 def test_a_keyframe_that_does_not_fit_the_model_is_not_adopted(tmp_path):

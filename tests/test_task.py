@@ -84,7 +84,7 @@ def test_the_shortfalls_of_a_run_name_each_part_of_the_rule_it_misses():
     touch[150:] = False
     support = np.concatenate([np.ones(100, bool), np.zeros(100, bool)])
     assert hold.shortfalls(_run(z, touch, support)) == [
-        "hand does not hold the object at the end (it let go at t = 0.30 s)"]
+        "hand does not hold the object at the end (it last touched it at t = 0.30 s)"]
     support[-30:] = True
     touch[:] = True
     assert hold.shortfalls(_run(z, touch, support)) == [
