@@ -491,8 +491,9 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
     # (measured from the longest hold's start it read 12 mm where the ground truth forgave 24)
     segment = twin.hold_segments(recording.controls, sig.contact_gripper)[:, g]
     inside = segment == segment[start]
+    formed = twin.grasp_formed(recording.controls, sig.contact_gripper)[:, g]
     held = (np.asarray(sig.contact_gripper, bool)[:, g]
-            & ~np.asarray(sig.contact_support, bool) & inside)
+            & ~np.asarray(sig.contact_support, bool) & inside & formed)
     first = int(np.argmax(held)) if held.any() else start
     counted = np.flatnonzero(alone[:, g] & inside)
     counted = counted[counted >= first]

@@ -427,7 +427,8 @@ def beyond_nominal(moved: np.ndarray, nominal_moved: np.ndarray) -> np.ndarray:
 def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarray,
               nominal_held: np.ndarray, *, counted: np.ndarray | None = None,
               projectors: np.ndarray | None = None,
-              segments: np.ndarray | None = None) -> np.ndarray:
+              segments: np.ndarray | None = None,
+              formed: np.ndarray | None = None) -> np.ndarray:
     """Displacement of the object in its holding grippers beyond the nominal run's.
 
     For gripper g, from the first step ``t0`` at which both the sample and the nominal run
@@ -438,7 +439,9 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
     from 0 to the nominal's; a sample that slides less than a creeping nominal grip has not
     slipped). It counts where both runs hold the object with g and ``counted`` allows it; the
     result is the largest over the grippers. Where the nominal run regrasps (``segments``),
-    each of its holds is measured from its own first step held by both.
+    each of its holds is measured from its own first step held by both; and only once its
+    grasp has formed (``formed``): the object pushed into place by closing fingers has not
+    slipped.
 
     Args:
         position: object position in each gripper's frame [m], (n, T, G, 3).
@@ -454,6 +457,9 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
             None for the identity.
         segments: which of the nominal gripper's holds each step belongs to
             (:meth:`Twin.hold_segments`), (T, G) int; default one hold.
+        formed: where each gripper's grasp has formed (:meth:`Twin.grasp_formed`), (T, G)
+            bool: a hold is measured from its first step held by both there; default
+            everywhere.
 
     Returns:
         (n, T) displacement [m], 0 where it does not count.
@@ -480,17 +486,25 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
     segments = np.asarray(segments)
     if segments.shape != (t, g):
         raise ParameterError(f"segments: expected shape {(t, g)}, got {segments.shape}")
+    formed = np.ones((t, g), bool) if formed is None else np.asarray(formed, dtype=bool)
+    if formed.shape != (t, g):
+        raise ParameterError(f"formed: expected shape {(t, g)}, got {formed.shape}")
     rows = np.arange(n)[:, None]
     cols = np.arange(g)[None, :]
     moved = np.zeros(position.shape)
     nominal_moved = np.zeros(position.shape)
+    anchored = np.zeros((n, t, g), bool)
     for j in np.unique(segments):
         inside = segments == j                                   # (T, G)
-        t0 = np.argmax(both & inside[None], axis=1)              # (n, G), first held by both
+        held = both & (inside & formed)[None]
+        t0 = np.argmax(held, axis=1)                             # (n, G), the hold's anchor
+        anchored |= (inside[None] & held.any(axis=1)[:, None, :]
+                     & (np.arange(t)[None, :, None] >= t0[:, None, :]))
         here = inside[None, :, :, None]
         moved = np.where(here, position - position[rows, t0, cols][:, None], moved)
         nominal_moved = np.where(
             here, nominal_position[None] - nominal_position[t0, cols][:, None], nominal_moved)
+    mask = mask & anchored
     if projectors is not None:
         proj = np.asarray(projectors, dtype=np.float64)
         moved = np.einsum("gij,ntgj->ntgi", proj, moved)
@@ -747,7 +761,7 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
     everything = samples if reference is not None else np.vstack([box.nominal[None, :],
                                                                   samples])
     frames_ref = None if reference is None else reference.frames
-    counted = segments = None
+    counted = segments = formed = None
     parts, diverged = [], []
     for first, out, _mu in batched_rollouts(twin, state0, controls, everything,
                                             model=probe.model, chunk=chunk, nthread=nthread):
@@ -760,9 +774,10 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
             counted = twin.slip_counted(frames_ref.contact_gripper, frames_ref.contact_support,
                                         controls)
             segments = twin.hold_segments(controls, frames_ref.contact_gripper)
+            formed = twin.grasp_formed(controls, frames_ref.contact_gripper)
         parts.append(_classify_frames(frames, frames_ref, controls, probe, dt, criteria,
                                       out["diverged"], out["diverged_step"], counted,
-                                      segments))
+                                      segments, formed))
         diverged.append(out["diverged"])
     result = Classification.concatenate(parts)
     keep = slice(skip, None)
@@ -837,7 +852,8 @@ def reference_from_recording(recording, twin: Twin,
     own = _classify_frames(frames, ref, controls, probe, dt, criteria, np.zeros(1, bool),
                            np.full(1, -1, np.int64),
                            twin.slip_counted(ref.contact_gripper, ref.contact_support, controls),
-                           twin.hold_segments(controls, ref.contact_gripper))
+                           twin.hold_segments(controls, ref.contact_gripper),
+                           twin.grasp_formed(controls, ref.contact_gripper))
     return NominalReference(frames=ref, completed=bool(own.completed[0]), n_steps=n,
                             nominal=box.nominal.copy(), outcome=own.outcome[0],
                             first_failure_step=int(own.first_failure_step[0]),
@@ -897,16 +913,18 @@ def tracking_tolerances(criteria: OutcomeCriteria, slide: np.ndarray,
 def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, probe: _Probe,
                      dt: float, criteria: OutcomeCriteria, diverged: np.ndarray,
                      diverged_step: np.ndarray, counted: np.ndarray,
-                     segments: np.ndarray) -> Classification:
+                     segments: np.ndarray, formed: np.ndarray) -> Classification:
     """Classify the runs ``frames`` against the nominal ``reference``; ``counted``: where a
     gripper's slip counts (:meth:`Twin.slip_counted` of the nominal run), (T, G);
-    ``segments``: the nominal gripper's holds (:meth:`Twin.hold_segments`), (T, G)."""
+    ``segments``: the nominal gripper's holds (:meth:`Twin.hold_segments`), (T, G);
+    ``formed``: where their grasps have formed (:meth:`Twin.grasp_formed`), (T, G)."""
     target = controls[:, probe.motors] * probe.target_scale + probe.target_offset
     excess = np.abs(frames.q - target[None]) - np.abs(reference.q - target)[None]
     # a slide axis's lag [m] against its own tolerance, in the criteria's one comparison
     excess = excess * tracking_tolerances(criteria, probe.slide, criteria.tracking_tolerance)
     slip = grip_slip(frames.position, reference.position, frames.held, reference.held,
-                     counted=counted, projectors=probe.projectors, segments=segments)
+                     counted=counted, projectors=probe.projectors, segments=segments,
+                     formed=formed)
     nominal_carried = carried_flags(reference.contact_support, reference.contact_gripper)
     # the task's own physical success rule decides completion (critmoment.task)
     return classify(dt=dt, stage=frames.stage, contact_gripper=frames.contact_gripper,

@@ -449,8 +449,10 @@ class _Watch:
             nominal = ev._nominal_positions(k, s)                   # (s, G, 3)
             diff = rel - nominal[None]                              # (c, s, G, 3)
             found = self.found[ids]
-            first = np.argmax(both, axis=1)                         # (c, G)
-            new = ~found & both.any(axis=1)
+            # the hold's anchor: its first step held by both once the grasp has formed
+            anchor = both & ev._formed[k:k + s][None]
+            first = np.argmax(anchor, axis=1)                       # (c, G)
+            new = ~found & anchor.any(axis=1)
             rows, cols = np.nonzero(new)
             offset, grasp = self.offset[ids], self.grasp[ids]
             offset[rows, cols] = diff[rows, first[rows, cols], cols]

@@ -888,6 +888,8 @@ class SparseEvaluator:
         #: which of each gripper's holds a step belongs to: slip is measured from the
         #: hold's own grasp after a regrasp (Twin.hold_segments)
         self._segments = twin.hold_segments(recording.controls, sig.contact_gripper)
+        #: where each gripper's grasp has formed: slip counts from there (Twin.grasp_formed)
+        self._formed = twin.grasp_formed(recording.controls, sig.contact_gripper)
         self._nominal_rel = np.full((self._states.shape[0], len(self._anchors), 3), np.nan)
         self._grasp_cache: tuple[np.ndarray, np.ndarray] | None = None
         self._sensordata = getattr(recording, "sensordata", None)
@@ -1768,12 +1770,13 @@ class SparseEvaluator:
         moved = np.einsum("gij,csgj->csgi", self._projectors, rel - nominal + nominal_moved)
         nominal_moved = np.einsum("gij,csgj->csgi", self._projectors, nominal_moved)
         disp = beyond_nominal(moved, nominal_moved)
-        return np.where(alone, disp, 0.0).max(axis=-1)
+        return np.where(alone & since, disp, 0.0).max(axis=-1)
 
     def _grasp(self) -> tuple[np.ndarray, np.ndarray]:
         """Per step and gripper, the first step the nominal run holds the object with it in
-        that step's hold (:attr:`_segments`; −1 where it does not), (T, G), and the object's
-        position in that grip then, (T, G, 3) (cached)."""
+        that step's hold (:attr:`_segments`) once its grasp has formed (:attr:`_formed`; −1
+        where it does not), (T, G), and the object's position in that grip then, (T, G, 3)
+        (cached)."""
         if self._grasp_cache is None:
             g = len(self._anchors)
             held = self._held[:, :g]
@@ -1781,7 +1784,7 @@ class SparseEvaluator:
             start = np.full(held.shape, -1, np.int64)
             for j in np.unique(segments):
                 inside = segments == j
-                mine = held & inside
+                mine = held & inside & self._formed[:, :g]
                 first = np.where(mine.any(axis=0), np.argmax(mine, axis=0), -1)  # (G,)
                 start = np.where(inside, first[None], start)
             grasp = np.zeros(held.shape + (3,))

@@ -875,3 +875,36 @@ def test_a_gripper_that_opens_during_a_hold_is_letting_go(twin):
     first = int(np.flatnonzero(out[:, 1])[0])
     assert 520 <= first <= 530 and u[first] > 0.5 >= u[first - 1]
     assert out[first:650, 1].all() and not out[:first, 1].any() and not out[650:, 1].any()
+
+
+def test_a_grasp_has_formed_once_the_gripper_command_has_closed(twin, demo_recording):
+    """``Twin.grasp_formed``: from the first step after a hold's first touch at which the
+    gripper's command is within GRASP_CLOSING of the tightest it reaches within
+    GRASP_FORMING; a command that jitters reaches its lows within a few steps."""
+    from critmoment.twin import GRASP_CLOSING
+
+    rec = demo_recording
+    touching = rec.signals.contact_gripper
+    formed = twin.grasp_formed(rec.controls, touching)
+    opening = twin.gripper_opening(rec.controls)
+    for g in range(touching.shape[1]):
+        touch = int(np.argmax(touching[:, g]))
+        start = int(np.argmax(formed[:, g]))
+        assert not formed[:touch + 1, g].any() or start <= touch
+        tight = opening[touch:touch + int(1.0 / rec.dt), g].min()
+        assert opening[start, g] <= tight + GRASP_CLOSING
+        if start > touch:
+            assert opening[start - 1, g] > tight + GRASP_CLOSING
+    # the receiver touches the cube while its command is still closing: 0.4 s later
+    receiver = twin.scenario.gripper_names.index(twin.task.receiver)
+    touch = int(np.argmax(touching[:, receiver]))
+    assert int(np.argmax(formed[:, receiver])) - touch > int(0.1 / rec.dt)
+    # a jittering command (±0.15 of its range, every step) reaches its lows soon after
+    plain = int(np.argmax(formed[:, receiver]))
+    jitter = np.array(rec.controls, dtype=np.float64)
+    acts = [a for c in twin._grip_channels[receiver] for a in twin._chan_act[c]]
+    rng = np.random.default_rng(0)
+    span = np.ptp(jitter[:, acts], axis=0)
+    jitter[:, acts] += rng.uniform(-0.15, 0.15, (jitter.shape[0], len(acts))) * span
+    noisy = twin.grasp_formed(jitter, touching)
+    assert abs(int(np.argmax(noisy[:, receiver])) - plain) < int(0.1 / rec.dt)

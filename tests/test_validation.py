@@ -225,6 +225,31 @@ def test_grip_slip_measures_each_hold_from_its_own_grasp():
         val.grip_slip(pos, nominal, held, held[0], segments=segments[1:])
 
 
+def test_grip_slip_counts_from_where_the_grasp_has_formed():
+    """Closing fingers push the object into place, differently for each mass and friction
+    (a multi-finger hand: 12 mm further along the fingers than the nominal's while it
+    closed, then 2.7 mm to the end): that is no slip. A hold is measured from its first
+    step held by both once its grasp has formed (``formed``)."""
+    t = 40
+    nominal = np.zeros((t, G, 3))
+    held = np.zeros((2, t, G), bool)
+    held[:, 5:, 0] = True                       # touched and off the support from step 5
+    pos = np.zeros((2, t, G, 3))
+    pos[1, 5:15, 0, 2] = np.linspace(0.0, 0.012, 10)   # pushed 12 mm while closing
+    pos[1, 15:, 0, 2] = 0.012
+    pos[1, 30:, 0, 2] += 0.003                  # then 3 mm
+    formed = np.zeros((t, G), bool)
+    formed[15:] = True                          # the closing ends at 15
+    early = val.grip_slip(pos, nominal, held, held[0])
+    np.testing.assert_allclose(early[1].max(), 0.015)
+    s = val.grip_slip(pos, nominal, held, held[0], formed=formed)
+    np.testing.assert_allclose(s[0], 0.0, atol=1e-15)
+    np.testing.assert_allclose(s[1, :30], 0.0, atol=1e-15)
+    np.testing.assert_allclose(s[1, 30:], 0.003)
+    with pytest.raises(ParameterError, match="formed"):
+        val.grip_slip(pos, nominal, held, held[0], formed=formed[1:])
+
+
 def test_grip_slip_counts_only_motion_beyond_a_creeping_nominal_grip():
     """The nominal grip slides 18 mm down the pads. A sample sliding 10 mm the same way (it
     holds better) had a slip of 8 mm by the norm of the difference, and one sliding 3 mm a
