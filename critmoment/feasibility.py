@@ -151,6 +151,9 @@ class JointFeasibility:
         blocked_by: the contact (geom pair) that holds the joint back during its lag or
             saturation stretch, or "": the robot pushes against something (itself, the
             object, the support), which is a fact of the motion, not of the twin.
+        jammed: that contact is between two of the robot's own bodies and touches already at
+            the start: its collision geometry overlaps there (a defect of the model, which
+            the twin cannot reproduce the motion through), not something the motion meets.
         damping_force: the joint's own viscous damping times its highest speed over the
             longest saturation [N·m or N, at the joint].
         saturation_speed: that speed [rad/s or m/s].
@@ -192,6 +195,7 @@ class JointFeasibility:
     target_span: float
     note: str = ""
     blocked_by: str = ""
+    jammed: bool = False
     target_speed: float = 0.0
     damping_force: float = 0.0
     saturation_speed: float = 0.0
@@ -400,10 +404,10 @@ class _JointSignals:
             saturation_speed=sat_speed, spring_force=spring_force)
         failing = _failing_stretch(entry, self.tol, abs(gear), self.options)
         if failing is not None:
-            blocked = _blocking_contact(m, self.states, *failing, joint=j,
-                                        toward=self.toward)
+            blocked, jammed = _blocking_contact(m, self.states, *failing, joint=j,
+                                                toward=self.toward)
             if blocked:
-                entry = dataclasses.replace(entry, blocked_by=blocked)
+                entry = dataclasses.replace(entry, blocked_by=blocked, jammed=jammed)
         return entry
 
 
@@ -541,7 +545,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
                 f"{float(twin.limits[a]):g} {_force_unit(unit)} in [limits]; it tracks its "
                 f"targets (largest lag {entry.max_lag:.3g} {unit})")
             continue
-        (held if entry.blocked_by else problems).extend(found)
+        (held if entry.blocked_by and not entry.jammed else problems).extend(found)
     report = FeasibilityReport(joints=tuple(joints), problems=tuple(problems),
                                notes=tuple(notes), options=options, duration=n * dt,
                                warnings=tuple(held))
@@ -596,8 +600,12 @@ def _subtree(model: mujoco.MjModel, body: int) -> np.ndarray:
 
 def _blocking_contact(model: mujoco.MjModel, states: np.ndarray, start: float,
                       duration: float, *, joint: int, probes: int = 40,
-                      toward: np.ndarray | None = None) -> str:
-    """The contact that holds ``joint`` back over a stretch of the run, or "".
+                      toward: np.ndarray | None = None) -> tuple[str, bool]:
+    """The contact that holds ``joint`` back over a stretch of the run, or "", and whether
+    it jams the robot against itself: both its bodies are the robot's (in kinematic trees
+    with joints other than free ones) and the pair touches already in the first state (a
+    Menagerie Kinova Gen3's base and shoulder collision meshes overlap by 12 mm and hold
+    its first joint; audited, every sample had failed as a motor overload).
 
     The stretch's states are replayed (positions and collisions only) at up to ``probes``
     steps. A contact between a body the joint carries and one it does not is an obstacle,
@@ -657,9 +665,28 @@ def _blocking_contact(model: mujoco.MjModel, states: np.ndarray, start: float,
             key = (int(min(a, b)), int(max(a, b)))
             pairs[key] = pairs.get(key, 0) + 1
     if not pairs or hits < 0.5 * steps.size or push > 0.0:
-        return ""
+        return "", False
     a, b = max(pairs, key=pairs.get)
-    return f"{_geom_name(model, a)}–{_geom_name(model, b)}"
+    return f"{_geom_name(model, a)}–{_geom_name(model, b)}", _jammed(model, data, states, a, b)
+
+
+def _jammed(model: mujoco.MjModel, data: mujoco.MjData, states: np.ndarray, a: int,
+            b: int) -> bool:
+    """Geoms ``a`` and ``b`` belong to the robot (trees with joints other than free ones)
+    and touch in the first recorded state."""
+    articulated = np.zeros(model.nbody, dtype=bool)
+    for j in range(model.njnt):
+        if model.jnt_type[j] != mujoco.mjtJoint.mjJNT_FREE:
+            articulated[model.body_rootid[model.jnt_bodyid[j]]] = True
+    roots = model.body_rootid[model.geom_bodyid[[a, b]]]
+    if not articulated[roots].all():
+        return False
+    mujoco.mj_setState(model, data, states[0], STATE_SPEC)
+    mujoco.mj_fwdPosition(model, data)
+    con = data.contact
+    g1, g2 = np.asarray(con.geom1)[:data.ncon], np.asarray(con.geom2)[:data.ncon]
+    active = np.asarray(con.dist)[:data.ncon] < np.asarray(con.includemargin)[:data.ncon]
+    return bool((active & (((g1 == a) & (g2 == b)) | ((g1 == b) & (g2 == a)))).any())
 
 
 def _geom_name(model: mujoco.MjModel, geom: int) -> str:
@@ -688,7 +715,9 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
     if not (opt.check_grippers or not e.gripper):
         return out
     if e.lag_duration > opt.lag_duration:
-        if e.blocked_by:
+        if e.jammed:
+            cause = _jam_cause(e)
+        elif e.blocked_by:
             cause = (f"the contact {e.blocked_by} holds it back: the motion pushes the robot "
                      f"against itself, the object or the support")
         elif e.saturation_total > 0 and e.force_flips >= FLIP_SHARE:
@@ -736,7 +765,8 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
             f"set how far)")
     elif e.saturation_duration > opt.saturation_duration:
         explicit = _explicit_hint(model)
-        cause = (f"the contact {e.blocked_by} holds it back" if e.blocked_by else
+        cause = (_jam_cause(e) if e.jammed else
+                 f"the contact {e.blocked_by} holds it back" if e.blocked_by else
                  _oscillation(e, fu) if e.force_flips >= FLIP_SHARE else
                  _damping_cause(e, fu, gear, model, joint) if _damped(e, gear) else
                  _spring_cause(e, fu, gear, model, joint) if _sprung(e, gear) else
@@ -756,10 +786,17 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
             f"{e.joint!r}) is at (or above) its force limit {e.force_limit:g} {fu} ({e.limit_source}) "
             f"for {e.saturation_duration:.3g} s from t = {e.saturation_start:.3f} s (largest "
             f"lag {e.max_lag:.3g} {e.unit}); likely cause: {cause}")
-    if e.blocked_by:
+    if e.blocked_by and not e.jammed:
         out = [msg.replace("the twin cannot reproduce the nominal motion: ",
                            "the nominal motion is held back by a contact: ") for msg in out]
     return out
+
+
+def _jam_cause(e: JointFeasibility) -> str:
+    return (f"the robot's own geoms {e.blocked_by} touch from the start and hold it back: "
+            f"their collision geometry overlaps (MuJoCo's parent filter does not exclude a "
+            f"pair whose parent is welded to the world); exclude the pair in the model "
+            f"(<contact><exclude body1=... body2=.../></contact>) or fix the geoms")
 
 
 def _damped(e: JointFeasibility, gear: float) -> bool:

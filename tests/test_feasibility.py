@@ -957,3 +957,35 @@ def test_a_joint_at_its_limit_that_tracks_under_an_explicit_integrator_names_it_
         msgs[integrator] = report.problems[0] if report.problems else ""
     assert "likely cause: the model's RK4 integrator, more likely than the load" in msgs["RK4"]
     assert "likely cause: too weak for the load" in msgs["implicitfast"]
+
+
+def test_a_robot_jammed_against_itself_from_the_start_is_refused(tmp_path):
+    """A base welded to the world whose collision geometry overlaps the first link (a
+    Menagerie Kinova Gen3's base and shoulder meshes, by 12 mm): MuJoCo's parent filter
+    does not exclude the pair, and its friction holds the joint. That is a defect of the
+    model, not something the motion meets: exit 2 naming the pair, where a contact the
+    motion runs into (a wall) is a warning. A base clear of the link is fine."""
+    def scene(folder, y):
+        path = _scene(folder, axis="0 0 1", limit=5.0, gravity="0 0 0", link_contact="",
+                      actuator='<position name="servo" joint="hinge" kp="50" kv="5" '
+                               'forcerange="-5 5"/>')
+        xml = path.parent / "arm.xml"
+        text = xml.read_text().replace(
+            '<body name="arm" pos="0 0 0.5">',
+            '<body name="base" pos="0 0 0.5"><geom name="base_block" type="box" '
+            f'size="0.03 0.03 0.03" pos="0.08 {y} 0"/><body name="arm">')
+        xml.write_text(text.replace("    </body>\n    <body name=\"box\"",
+                                    "    </body></body>\n    <body name=\"box\""))
+        return Twin(load_scenario(path))
+
+    jammed = scene(tmp_path / "jam", 0.045)
+    rec = _record(jammed, _ramp(1.0, seconds=3.0))
+    report = check_feasibility(rec, jammed, raise_on_failure=False)
+    entry = report.joint("hinge")
+    assert entry.jammed and "base_block" in entry.blocked_by and "link" in entry.blocked_by
+    assert not report.feasible
+    assert "touch from the start" in report.problems[0] and "exclude" in report.problems[0]
+    with pytest.raises(InfeasibleTwinError, match="the twin cannot reproduce"):
+        check_feasibility(rec, jammed)
+    clear = scene(tmp_path / "clear", -0.2)
+    assert check_feasibility(_record(clear, _ramp(1.0, seconds=3.0)), clear).feasible
