@@ -331,7 +331,8 @@ class _Watch:
 
     Slip (as :func:`critmoment.groundtruth.grip_slip`): per gripper and nominal hold
     (``Twin.hold_segments``), from the first step of the hold at which both the sample and
-    the nominal run hold the object with it, the object's
+    the nominal run hold the object with it once its grasp has formed
+    (``Twin.grasp_formed``), the object's
     displacement in the gripper's frame relative to the nominal run's, the closing axes
     projected out, counted where the nominal run holds with that gripper alone; a slip is
     a run of more than ``slip_time`` above ``slip_tolerance``. Drop: the object touched

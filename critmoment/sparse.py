@@ -108,7 +108,7 @@ import numpy as np
 from critmoment import budget, safety
 from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
-from critmoment.groundtruth import OutcomeCriteria, beyond_nominal
+from critmoment.groundtruth import OutcomeCriteria, _first_run, beyond_nominal
 from critmoment.params import UncertaintyBox
 from critmoment.scenario import CostParams
 from critmoment.twin import STATE_SPEC, Signals, Twin, carried_flags, state_slice
@@ -707,16 +707,6 @@ def _object_in_grippers(xpos: np.ndarray, xmat: np.ndarray, body: int,
     delta = xpos[:, :, None, body] - xpos[:, :, anchors]  # (c, s, G, 3)
     rot = xmat[:, :, anchors].reshape(delta.shape[:3] + (3, 3))
     return np.einsum("csgji,csgj->csgi", rot, delta)
-
-
-def _longest_run(flags: np.ndarray) -> np.ndarray:
-    """Longest run of True along the last axis, (...) int."""
-    flags = np.asarray(flags, dtype=bool)
-    if flags.shape[-1] == 0:
-        return np.zeros(flags.shape[:-1], np.int64)
-    j = np.arange(flags.shape[-1], dtype=np.int64)
-    last_off = np.maximum.accumulate(np.where(flags, -1, j), axis=-1)
-    return np.where(flags, j - last_off, 0).max(axis=-1)
 
 
 class _Decision(NamedTuple):
@@ -1694,7 +1684,7 @@ class SparseEvaluator:
         # is the cost's margin (SparseResult.margin_failure)
         with np.errstate(invalid="ignore"):
             at_limit = valid & (np.nan_to_num(sig.fos_motor, nan=np.inf) < 1.0 + MOTOR_MARGIN)
-        saturated = _longest_run(at_limit) >= self.motor_steps
+        saturated = _first_run(at_limit, self.motor_steps) >= 0
         return _Decision(failure=failure, stop=(stop_kind > 0) & ~sticking,
                          stop_step=stop_step,
                          excursion=excursion * self.twin.model.opt.timestep, follow=follow,

@@ -650,11 +650,8 @@ def test_a_motor_failure_that_touches_its_limit_only_briefly_is_for_a_rollout():
     the nominal). A motor failure stands only where a motor sat at the limit for a motor
     failure's duration (``saturated``); the others are margin failures, for the sample's
     own run."""
-    from critmoment.sparse import Failure, _longest_run
+    from critmoment.sparse import Failure
 
-    flags = np.array([[0, 1, 1, 0, 1, 1, 1], [0] * 7, [1] * 7], dtype=bool)
-    assert _longest_run(flags).tolist() == [3, 0, 7]
-    assert _longest_run(np.zeros((2, 0), bool)).tolist() == [0, 0]
     samples = np.array([[0.1, 1.0], [0.2, 1.0], [0.3, 1.0]])
     base = dataclasses.replace(
         _sweep(np.array([[1.2, 1.2, 0.1]]), samples),
