@@ -672,12 +672,29 @@ def _blocking_contact(model: mujoco.MjModel, states: np.ndarray, start: float,
 
 def _jammed(model: mujoco.MjModel, data: mujoco.MjData, states: np.ndarray, a: int,
             b: int) -> bool:
-    """Geoms ``a`` and ``b`` belong to the robot (trees with joints other than free ones)
-    and touch in the first recorded state."""
+    """Geoms ``a`` and ``b`` belong to the robot (kinematic trees the actuators drive) and
+    touch in the first recorded state. A tree with joints no actuator drives is a fixture
+    (a hinged flap touching the pads at the start is something the motion meets)."""
+    driven = np.zeros(model.nbody, dtype=bool)
+    trn = mujoco.mjtTrn
+    for act in range(model.nu):
+        kind, target = int(model.actuator_trntype[act]), int(model.actuator_trnid[act, 0])
+        if kind in (trn.mjTRN_JOINT, trn.mjTRN_JOINTINPARENT):
+            driven[model.jnt_bodyid[target]] = True
+        elif kind == trn.mjTRN_TENDON:
+            first, count = model.tendon_adr[target], model.tendon_num[target]
+            for w in range(first, first + count):
+                if model.wrap_type[w] == mujoco.mjtWrap.mjWRAP_JOINT:
+                    driven[model.jnt_bodyid[model.wrap_objid[w]]] = True
+                elif model.wrap_type[w] == mujoco.mjtWrap.mjWRAP_SITE:
+                    driven[model.site_bodyid[model.wrap_objid[w]]] = True
+        elif kind == trn.mjTRN_SITE:
+            driven[model.site_bodyid[target]] = True
+        elif kind == trn.mjTRN_BODY:
+            driven[target] = True
     articulated = np.zeros(model.nbody, dtype=bool)
-    for j in range(model.njnt):
-        if model.jnt_type[j] != mujoco.mjtJoint.mjJNT_FREE:
-            articulated[model.body_rootid[model.jnt_bodyid[j]]] = True
+    articulated[model.body_rootid[np.flatnonzero(driven)]] = True
+    articulated[0] = False
     roots = model.body_rootid[model.geom_bodyid[[a, b]]]
     if not articulated[roots].all():
         return False

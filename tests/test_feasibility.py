@@ -989,3 +989,19 @@ def test_a_robot_jammed_against_itself_from_the_start_is_refused(tmp_path):
         check_feasibility(rec, jammed)
     clear = scene(tmp_path / "clear", -0.2)
     assert check_feasibility(_record(clear, _ramp(1.0, seconds=3.0)), clear).feasible
+    # a hinged fixture no actuator drives (a lid, a drawer front) touching the link from
+    # the start is something the motion meets: said, not refused
+    path = _scene(tmp_path / "fixture", axis="0 0 1", limit=5.0, gravity="0 0 0",
+                  link_contact="",
+                  obstacle='<body name="flap" pos="0 0 0.5"><joint name="flap_hinge" '
+                           'type="hinge" axis="1 0 0" range="-0.01 0.01" damping="50"/>'
+                           '<geom name="flap_plate" type="box" size="0.03 0.03 0.03" '
+                           'pos="0.08 0.045 0"/></body>',
+                  actuator='<position name="servo" joint="hinge" kp="50" kv="5" '
+                           'forcerange="-5 5"/>')
+    fixture = Twin(load_scenario(path))
+    report = check_feasibility(_record(fixture, _ramp(1.0, seconds=3.0)), fixture,
+                               raise_on_failure=False)
+    entry = report.joint("hinge")
+    assert "flap_plate" in entry.blocked_by and not entry.jammed
+    assert report.feasible and any("held back by a contact" in w for w in report.warnings)
