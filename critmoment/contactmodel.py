@@ -452,6 +452,7 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
     Returns:
         The :class:`ContactModelReport`.
     """
+    from critmoment.groundtruth import hold_starts
     from critmoment.sparse import grip_frames, sparse_settings
     from critmoment.twin import STATE_SPEC
 
@@ -462,7 +463,8 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
         return report
     settings = sparse_settings(sc, slip_tolerance=slip_tolerance)
     sig = recording.signals
-    alone = twin.slip_counted(sig.contact_gripper, sig.contact_support, recording.controls)
+    masks = twin.slip_masks(recording.controls, sig.contact_gripper, sig.contact_support)
+    alone = masks.counted
     best = None  # (length, start, gripper)
     for g in range(alone.shape[1]):
         edges = np.flatnonzero(np.diff(np.concatenate([[0], alone[:, g].astype(np.int8), [0]])))
@@ -489,12 +491,11 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
     # from where the ground truth starts counting (the gripper's first hold, or after a
     # regrasp the hold's own grasp), over the steps it counts: the lift-off's sag included
     # (measured from the longest hold's start it read 12 mm where the ground truth forgave 24)
-    segment = twin.hold_segments(recording.controls, sig.contact_gripper)[:, g]
-    inside = segment == segment[start]
-    formed = twin.grasp_formed(recording.controls, sig.contact_gripper)[:, g]
-    held = (np.asarray(sig.contact_gripper, bool)[:, g]
-            & ~np.asarray(sig.contact_support, bool) & inside & formed)
-    first = int(np.argmax(held)) if held.any() else start
+    held = np.asarray(sig.contact_gripper, bool) & ~np.asarray(sig.contact_support,
+                                                               bool)[:, None]
+    first = int(hold_starts(held, masks.segments, masks.formed)[start, g])
+    first = first if first >= 0 else start
+    inside = masks.segments[:, g] == masks.segments[start, g]
     counted = np.flatnonzero(alone[:, g] & inside)
     counted = counted[counted >= first]
     creep = _nominal_creep(model, recording.states, first, counted,

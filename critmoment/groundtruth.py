@@ -69,7 +69,7 @@ from critmoment.recording import (
     prepare_controls,
 )
 from critmoment.trajectory import Trajectory
-from critmoment.twin import Twin, carried_flags, entry_point
+from critmoment.twin import SlipMasks, Twin, carried_flags, entry_point
 
 __all__ = [
     "Outcome",
@@ -79,6 +79,7 @@ __all__ = [
     "ends_completed",
     "grip_slip",
     "beyond_nominal",
+    "hold_starts",
     "BruteForce",
     "NominalReference",
     "brute_force",
@@ -424,6 +425,24 @@ def beyond_nominal(moved: np.ndarray, nominal_moved: np.ndarray) -> np.ndarray:
     return np.linalg.norm(moved - share[..., None] * nominal_moved, axis=-1)
 
 
+def hold_starts(held: np.ndarray, segments: np.ndarray, formed: np.ndarray) -> np.ndarray:
+    """Where each step's hold is measured from: per gripper, the first step of the step's
+    hold (``segments``, :meth:`Twin.hold_segments`) that is ``held`` once the grasp has
+    ``formed`` (:meth:`Twin.grasp_formed`), −1 where there is none; ``held`` (..., T, G)
+    bool, ``segments`` and ``formed`` (T, G); returns (..., T, G) int. The anchor of
+    :func:`grip_slip` (per sample), of the chains and of sparse evaluation (the nominal
+    run's)."""
+    held = np.asarray(held, dtype=bool) & np.asarray(formed, dtype=bool)
+    segments = np.asarray(segments)
+    out = np.full(held.shape, -1, np.int64)
+    for j in np.unique(segments):
+        inside = segments == j                                          # (T, G)
+        mine = held & inside
+        first = np.where(mine.any(axis=-2), np.argmax(mine, axis=-2), -1)  # (..., G)
+        out = np.where(inside, first[..., None, :], out)
+    return out
+
+
 def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarray,
               nominal_held: np.ndarray, *, counted: np.ndarray | None = None,
               projectors: np.ndarray | None = None,
@@ -489,22 +508,13 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
     formed = np.ones((t, g), bool) if formed is None else np.asarray(formed, dtype=bool)
     if formed.shape != (t, g):
         raise ParameterError(f"formed: expected shape {(t, g)}, got {formed.shape}")
-    rows = np.arange(n)[:, None]
-    cols = np.arange(g)[None, :]
-    moved = np.zeros(position.shape)
-    nominal_moved = np.zeros(position.shape)
-    anchored = np.zeros((n, t, g), bool)
-    for j in np.unique(segments):
-        inside = segments == j                                   # (T, G)
-        held = both & (inside & formed)[None]
-        t0 = np.argmax(held, axis=1)                             # (n, G), the hold's anchor
-        anchored |= (inside[None] & held.any(axis=1)[:, None, :]
-                     & (np.arange(t)[None, :, None] >= t0[:, None, :]))
-        here = inside[None, :, :, None]
-        moved = np.where(here, position - position[rows, t0, cols][:, None], moved)
-        nominal_moved = np.where(
-            here, nominal_position[None] - nominal_position[t0, cols][:, None], nominal_moved)
-    mask = mask & anchored
+    start = hold_starts(both, segments, formed)                     # (n, T, G)
+    mask = mask & (start >= 0) & (np.arange(t)[None, :, None] >= start)
+    t0 = np.maximum(start, 0)
+    rows = np.arange(n)[:, None, None]
+    cols = np.arange(g)[None, None, :]
+    moved = position - position[rows, t0, cols]
+    nominal_moved = nominal_position[None] - nominal_position[t0, cols]
     if projectors is not None:
         proj = np.asarray(projectors, dtype=np.float64)
         moved = np.einsum("gij,ntgj->ntgi", proj, moved)
@@ -761,7 +771,7 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
     everything = samples if reference is not None else np.vstack([box.nominal[None, :],
                                                                   samples])
     frames_ref = None if reference is None else reference.frames
-    counted = segments = formed = None
+    masks = None
     parts, diverged = [], []
     for first, out, _mu in batched_rollouts(twin, state0, controls, everything,
                                             model=probe.model, chunk=chunk, nthread=nthread):
@@ -770,14 +780,11 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
         frames = _Frames.read(twin, probe, out["sensordata"], twin.sample_limits(rows))
         if frames_ref is None:
             frames_ref = frames.row(0)
-        if counted is None:
-            counted = twin.slip_counted(frames_ref.contact_gripper, frames_ref.contact_support,
-                                        controls)
-            segments = twin.hold_segments(controls, frames_ref.contact_gripper)
-            formed = twin.grasp_formed(controls, frames_ref.contact_gripper)
+        if masks is None:
+            masks = twin.slip_masks(controls, frames_ref.contact_gripper,
+                                    frames_ref.contact_support)
         parts.append(_classify_frames(frames, frames_ref, controls, probe, dt, criteria,
-                                      out["diverged"], out["diverged_step"], counted,
-                                      segments, formed))
+                                      out["diverged"], out["diverged_step"], masks))
         diverged.append(out["diverged"])
     result = Classification.concatenate(parts)
     keep = slice(skip, None)
@@ -851,9 +858,7 @@ def reference_from_recording(recording, twin: Twin,
     ref = frames.row(0)
     own = _classify_frames(frames, ref, controls, probe, dt, criteria, np.zeros(1, bool),
                            np.full(1, -1, np.int64),
-                           twin.slip_counted(ref.contact_gripper, ref.contact_support, controls),
-                           twin.hold_segments(controls, ref.contact_gripper),
-                           twin.grasp_formed(controls, ref.contact_gripper))
+                           twin.slip_masks(controls, ref.contact_gripper, ref.contact_support))
     return NominalReference(frames=ref, completed=bool(own.completed[0]), n_steps=n,
                             nominal=box.nominal.copy(), outcome=own.outcome[0],
                             first_failure_step=int(own.first_failure_step[0]),
@@ -912,19 +917,16 @@ def tracking_tolerances(criteria: OutcomeCriteria, slide: np.ndarray,
 
 def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, probe: _Probe,
                      dt: float, criteria: OutcomeCriteria, diverged: np.ndarray,
-                     diverged_step: np.ndarray, counted: np.ndarray,
-                     segments: np.ndarray, formed: np.ndarray) -> Classification:
-    """Classify the runs ``frames`` against the nominal ``reference``; ``counted``: where a
-    gripper's slip counts (:meth:`Twin.slip_counted` of the nominal run), (T, G);
-    ``segments``: the nominal gripper's holds (:meth:`Twin.hold_segments`), (T, G);
-    ``formed``: where their grasps have formed (:meth:`Twin.grasp_formed`), (T, G)."""
+                     diverged_step: np.ndarray, masks: SlipMasks) -> Classification:
+    """Classify the runs ``frames`` against the nominal ``reference``; ``masks``: where and
+    from where a gripper's slip counts in the nominal run (:meth:`Twin.slip_masks`)."""
     target = controls[:, probe.motors] * probe.target_scale + probe.target_offset
     excess = np.abs(frames.q - target[None]) - np.abs(reference.q - target)[None]
     # a slide axis's lag [m] against its own tolerance, in the criteria's one comparison
     excess = excess * tracking_tolerances(criteria, probe.slide, criteria.tracking_tolerance)
     slip = grip_slip(frames.position, reference.position, frames.held, reference.held,
-                     counted=counted, projectors=probe.projectors, segments=segments,
-                     formed=formed)
+                     counted=masks.counted, projectors=probe.projectors,
+                     segments=masks.segments, formed=masks.formed)
     nominal_carried = carried_flags(reference.contact_support, reference.contact_gripper)
     # the task's own physical success rule decides completion (critmoment.task)
     return classify(dt=dt, stage=frames.stage, contact_gripper=frames.contact_gripper,

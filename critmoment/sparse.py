@@ -108,7 +108,7 @@ import numpy as np
 from critmoment import budget, safety
 from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
-from critmoment.groundtruth import OutcomeCriteria, _first_run, beyond_nominal
+from critmoment.groundtruth import OutcomeCriteria, _first_run, beyond_nominal, hold_starts
 from critmoment.params import UncertaintyBox
 from critmoment.scenario import CostParams
 from critmoment.twin import STATE_SPEC, Signals, Twin, carried_flags, state_slice
@@ -874,12 +874,11 @@ class SparseEvaluator:
         # opens the hold's release (Twin.slip_counted). Sparse evaluation keeps measuring
         # there: a contact failure in a release whose measured slip settles is for its own
         # run (a Panda opening to 0.3 for the carry, 4 false unsafes of 64 without it)
-        self._counted = self._alone & ~twin.letting_go(recording.controls, sig.contact_gripper)
-        #: which of each gripper's holds a step belongs to: slip is measured from the
-        #: hold's own grasp after a regrasp (Twin.hold_segments)
-        self._segments = twin.hold_segments(recording.controls, sig.contact_gripper)
-        #: where each gripper's grasp has formed: slip counts from there (Twin.grasp_formed)
-        self._formed = twin.grasp_formed(recording.controls, sig.contact_gripper)
+        # Which of each gripper's holds a step belongs to (slip is measured from the hold's
+        # own grasp after a regrasp) and where its grasp has formed (slip counts from
+        # there): Twin.slip_masks
+        masks = twin.slip_masks(recording.controls, sig.contact_gripper, sig.contact_support)
+        self._counted, self._segments, self._formed = masks
         self._nominal_rel = np.full((self._states.shape[0], len(self._anchors), 3), np.nan)
         self._grasp_cache: tuple[np.ndarray, np.ndarray] | None = None
         self._sensordata = getattr(recording, "sensordata", None)
@@ -1770,13 +1769,7 @@ class SparseEvaluator:
         if self._grasp_cache is None:
             g = len(self._anchors)
             held = self._held[:, :g]
-            segments = self._segments[:, :g]
-            start = np.full(held.shape, -1, np.int64)
-            for j in np.unique(segments):
-                inside = segments == j
-                mine = held & inside & self._formed[:, :g]
-                first = np.where(mine.any(axis=0), np.argmax(mine, axis=0), -1)  # (G,)
-                start = np.where(inside, first[None], start)
+            start = hold_starts(held, self._segments[:, :g], self._formed[:, :g])
             grasp = np.zeros(held.shape + (3,))
             if (start >= 0).any():
                 rows, cols = np.nonzero(start >= 0)

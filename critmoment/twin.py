@@ -29,6 +29,7 @@ import threading
 import types
 import warnings
 from collections.abc import Iterator, Mapping
+from typing import NamedTuple
 
 import mujoco
 import numpy as np
@@ -45,8 +46,8 @@ from critmoment.params import ForceLimitParameter, FrictionParameter
 from critmoment.scenario import Scenario, channel_gripper
 from critmoment.task import TaskEvidence
 
-__all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "Twin", "carried_flags", "lifted_flags",
-           "LIFT_RISE"]
+__all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "SlipMasks", "Twin", "carried_flags",
+           "lifted_flags", "LIFT_RISE"]
 
 #: how far [m] the object must rise in a carried run for the run to count as a lift
 LIFT_RISE = 0.002
@@ -219,6 +220,15 @@ def _release_start(u: np.ndarray) -> int | None:
     half = base + 0.5 * (float(u[first:].max()) - base)
     under = np.flatnonzero(u[first:] <= half)
     return first + (int(under[-1]) + 1 if under.size else 0)
+
+
+class SlipMasks(NamedTuple):
+    """Where and from where the nominal run's slip is measured (:meth:`Twin.slip_masks`),
+    each (T, G)."""
+
+    counted: np.ndarray  # bool: the gripper holds alone, not in its release (slip_counted)
+    segments: np.ndarray  # int: which of the gripper's holds (hold_segments)
+    formed: np.ndarray  # bool: its grasp has formed (grasp_formed)
 
 
 class Twin:
@@ -938,8 +948,23 @@ class Twin:
         """Where the ground truth counts a gripper's slip in the nominal run, (T, G) bool:
         it holds the object alone (:meth:`held_alone`) and is not in the release that ends
         its hold (:meth:`letting_go`)."""
-        return (self.held_alone(contact_gripper, contact_support)
-                & ~self.letting_go(controls, contact_gripper))
+        return self.slip_masks(controls, contact_gripper, contact_support).counted
+
+    def slip_masks(self, controls: np.ndarray, contact_gripper: np.ndarray,
+                   contact_support: np.ndarray) -> SlipMasks:
+        """The nominal run's :meth:`slip_counted`, :meth:`hold_segments` and
+        :meth:`grasp_formed` at once (the commands read and the holds found once): what the
+        ground truth, the chains and sparse evaluation measure slip with."""
+        touching = np.asarray(contact_gripper, bool)
+        opening = self.gripper_opening(controls)
+        releases = list(self._releases(opening, touching))
+        letting = np.zeros(touching.shape, bool)
+        for g, a, b, start in releases:
+            letting[a + start:b, g] = True
+        segments = self._segments(releases, touching.shape)
+        return SlipMasks(counted=self.held_alone(touching, contact_support) & ~letting,
+                         segments=segments,
+                         formed=self._formed(opening, touching, segments))
 
     def letting_go(self, controls: np.ndarray, touching: np.ndarray) -> np.ndarray:
         """Where each gripper lets its object go, (T, G) bool: the release that ends a hold
@@ -959,7 +984,7 @@ class Twin:
         """
         touching = np.asarray(touching, bool)
         out = np.zeros(touching.shape, bool)
-        for g, a, b, start in self._releases(controls, touching):
+        for g, a, b, start in self._releases(self.gripper_opening(controls), touching):
             out[a + start:b, g] = True
         return out
 
@@ -972,8 +997,14 @@ class Twin:
         hold's slip. Only the gripper's command ends a segment; a contact that flickers, or
         an object that slides out of a grip still closed, does not."""
         touching = np.asarray(touching, bool)
-        out = np.zeros(touching.shape, np.int64)
-        for g, _, b, _ in self._releases(controls, touching):
+        return self._segments(self._releases(self.gripper_opening(controls), touching),
+                              touching.shape)
+
+    @staticmethod
+    def _segments(releases, shape: tuple[int, int]) -> np.ndarray:
+        """:meth:`hold_segments` from the holds that end in a release (:meth:`_releases`)."""
+        out = np.zeros(shape, np.int64)
+        for g, _, b, _ in releases:
             out[b:, g] += 1
         return out
 
@@ -995,11 +1026,16 @@ class Twin:
         17 of 32 samples were "slipped" during the closing, and held the object to the end).
         """
         touching = np.asarray(touching, bool)
-        out = np.ones(touching.shape, bool)
         opening = self.gripper_opening(controls)
+        return self._formed(opening, touching, self._segments(
+            self._releases(opening, touching), touching.shape))
+
+    def _formed(self, opening: np.ndarray, touching: np.ndarray,
+                segments: np.ndarray) -> np.ndarray:
+        """:meth:`grasp_formed` from the commanded opening and the holds' segments."""
+        out = np.ones(touching.shape, bool)
         if touching.shape[0] == 0:
             return out
-        segments = self.hold_segments(controls, touching)
         dt = float(self.model.opt.timestep)
         cap = max(1, int(round(GRASP_FORMING / dt)))
         w = max(1, int(round(GRASP_SETTLE / dt)))
@@ -1007,6 +1043,7 @@ class Twin:
         for g in range(touching.shape[1]):
             if np.isnan(opening[:, g]).all():
                 continue
+            u = np.nan_to_num(opening[:, g], nan=1.0)
             for j in np.unique(segments[:, g]):
                 inside = np.flatnonzero(segments[:, g] == j)
                 a, b = int(inside[0]), int(inside[-1]) + 1
@@ -1014,7 +1051,6 @@ class Twin:
                 if not touched.size:
                     continue
                 t1 = a + int(touched[0])
-                u = np.nan_to_num(opening[:, g], nan=1.0)
                 low = np.minimum.accumulate(u[t1:min(b, t1 + cap)])
                 span = max(float(u[a:t1 + 1].max()) - float(low[-1]), 0.0)
                 closed = low <= low[-1] + GRASP_CLOSING * span
@@ -1025,11 +1061,11 @@ class Twin:
                 out[a:b, g] = steps[a:b] >= start
         return out
 
-    def _releases(self, controls: np.ndarray, touching: np.ndarray):
+    def _releases(self, opening: np.ndarray, touching: np.ndarray):
         """Each hold that ends in a release: (gripper, the hold's first step, its end
-        (exclusive), where its release starts within it), in time order per gripper. A hold
-        is a stretch of ``touching`` with gaps up to ``HOLD_GAP`` bridged."""
-        opening = self.gripper_opening(controls)
+        (exclusive), where its release starts within it), in time order per gripper, from
+        the commanded ``opening`` (:meth:`gripper_opening`). A hold is a stretch of
+        ``touching`` with gaps up to ``HOLD_GAP`` bridged."""
         gap = int(round(HOLD_GAP / float(self.model.opt.timestep)))
         for g in range(touching.shape[1]):
             if np.isnan(opening[:, g]).all():
