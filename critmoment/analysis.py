@@ -1154,18 +1154,16 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
     chained = vd.samples_to_chain(sweep, rerun, options, nominal_completed=nominal_completed)
     known = {} if chained_before is None else chained_before
     rows = np.flatnonzero(chained)
-    keys = [np.asarray(samples[i], dtype=np.float64).tobytes() for i in rows]
-    todo = np.array([i for i, key in zip(rows, keys, strict=True) if key not in known],
-                    dtype=np.int64)
+    keys = {int(i): _point_key(samples[i]) for i in rows}
+    todo = np.array([i for i, key in keys.items() if key not in known], dtype=np.int64)
     if todo.size:
         result = history.chained_failures(evaluator, steps, samples[todo])
         near = (result.near(options.verify) if options.verify is not None
                 else np.zeros(todo.size, bool))
         for i, failed, confirm, close, kind in zip(todo, result.failed, result.to_confirm,
                                                    near, result.kinds(), strict=True):
-            key = np.asarray(samples[i], dtype=np.float64).tobytes()
-            known[key] = (bool(failed), bool(confirm or close), kind)
-    for i, key in zip(rows, keys, strict=True):
+            known[keys[int(i)]] = (bool(failed), bool(confirm or close), kind)
+    for i, key in keys.items():
         chained_failed[i], suspect[i], kinds[i] = known[key]
     return chained, chained_failed, suspect, kinds
 
@@ -1350,6 +1348,11 @@ def _sparse_fails(res: sp.SparseResult,
     return np.asarray(res.failed_any, dtype=bool) & ~undecided(res).any
 
 
+def _point_key(point: np.ndarray) -> bytes:
+    """A parameter point's values to the bit, as a dictionary key (a run is its own)."""
+    return np.asarray(point, dtype=np.float64).tobytes()
+
+
 class _Rollouts:
     """Full rollouts of parameter points (their real outcome: failed), sharing one nominal
     reference over the calls: read from ``recording`` (the frequent rollout, the brute
@@ -1383,7 +1386,7 @@ class _Rollouts:
         beside it."""
         nthread = self.nthread if nthread is None else nthread
         points = sp.check_samples(self.twin.scenario.box, points)
-        keys = [np.asarray(p, float).tobytes() for p in points]
+        keys = [_point_key(p) for p in points]
         new, seen = [], set()
         for i, key in enumerate(keys):
             if key not in self.outcomes and key not in seen:
@@ -1407,7 +1410,7 @@ class _Rollouts:
         for point, outcome, step, column, tracking, level in zip(
                 bf.samples, c.outcome, c.first_failure_step, c.motor_column, c.motor_tracking,
                 close, strict=True):
-            key = np.asarray(point, float).tobytes()
+            key = _point_key(point)
             name = _motor_name(self.twin, column) if outcome is Outcome.MOTOR else None
             # a motor failure by a joint lagging its target is named so, not an overload
             kind = "tracking" if outcome is Outcome.MOTOR and tracking else outcome.value
@@ -1419,7 +1422,7 @@ class _Rollouts:
         """(p,) bool: the rolled-out ``points`` whose run came within ``fraction`` of a
         ground-truth rule's limit without failing: a slip of ``fraction`` × the slip
         tolerance or more, or a saturation held ``fraction`` × its time or more."""
-        return np.array([self.closeness.get(np.asarray(p, float).tobytes(), 0.0) >= fraction
+        return np.array([self.closeness.get(_point_key(p), 0.0) >= fraction
                          for p in np.asarray(points, float)], dtype=bool)
 
     def failures(self, points: np.ndarray) -> dict[str, tuple[int, float | None,
@@ -1428,7 +1431,7 @@ class _Rollouts:
         earliest failure time [s], the actuators of the motor failures)."""
         out: dict[str, list] = {}
         for point in np.asarray(points, float):
-            got = self.outcomes.get(point.tobytes())
+            got = self.outcomes.get(_point_key(point))
             if got is None or got[0] == Outcome.SUCCESS.value:
                 continue
             entry = out.setdefault(got[0], [0, None, []])
