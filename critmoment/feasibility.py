@@ -603,7 +603,7 @@ def _blocking_contact(model: mujoco.MjModel, states: np.ndarray, start: float,
                       toward: np.ndarray | None = None) -> tuple[str, bool]:
     """The contact that holds ``joint`` back over a stretch of the run, or "", and whether
     it jams the robot against itself: both its bodies are the robot's (in kinematic trees
-    with joints other than free ones) and the pair touches already in the first state (a
+    the actuators drive) and the pair touches already in the first state (a
     Menagerie Kinova Gen3's base and shoulder collision meshes overlap by 12 mm and hold
     its first joint; audited, every sample had failed as a motor overload).
 
@@ -641,14 +641,8 @@ def _blocking_contact(model: mujoco.MjModel, states: np.ndarray, start: float,
         else:
             mujoco.mj_forward(model, data)
             push += float(data.qfrc_constraint[dof]) * float(toward[min(k, toward.size - 1)])
-        con = data.contact
-        g1, g2 = np.asarray(con.geom1)[:data.ncon], np.asarray(con.geom2)[:data.ncon]
-        # active contacts: within the geoms' margin less their gap (MuJoCo applies force
-        # there), not only penetrating ones (Baxter's arm geoms have margin 1 mm)
-        touching = (np.asarray(con.dist)[:data.ncon]
-                    < np.asarray(con.includemargin)[:data.ncon])
+        g1, g2 = _active_contacts(data)
         b1, b2 = model.geom_bodyid[g1], model.geom_bodyid[g2]
-        g1, g2, b1, b2 = g1[touching], g2[touching], b1[touching], b2[touching]
         across = carried[b1] != carried[b2]
         outside = np.where(carried[b1], b2, b1)
         for i in np.flatnonzero(across):
@@ -700,10 +694,17 @@ def _jammed(model: mujoco.MjModel, data: mujoco.MjData, states: np.ndarray, a: i
         return False
     mujoco.mj_setState(model, data, states[0], STATE_SPEC)
     mujoco.mj_fwdPosition(model, data)
-    con = data.contact
-    g1, g2 = np.asarray(con.geom1)[:data.ncon], np.asarray(con.geom2)[:data.ncon]
-    active = np.asarray(con.dist)[:data.ncon] < np.asarray(con.includemargin)[:data.ncon]
-    return bool((active & (((g1 == a) & (g2 == b)) | ((g1 == b) & (g2 == a)))).any())
+    g1, g2 = _active_contacts(data)
+    return bool((((g1 == a) & (g2 == b)) | ((g1 == b) & (g2 == a))).any())
+
+
+def _active_contacts(data: mujoco.MjData) -> tuple[np.ndarray, np.ndarray]:
+    """The geom pairs of ``data``'s active contacts (as last computed): within the geoms'
+    margin less their gap, where MuJoCo applies force, not only penetrating ones (Baxter's
+    arm geoms have margin 1 mm)."""
+    con, n = data.contact, data.ncon
+    active = np.asarray(con.dist)[:n] < np.asarray(con.includemargin)[:n]
+    return np.asarray(con.geom1)[:n][active], np.asarray(con.geom2)[:n][active]
 
 
 def _geom_name(model: mujoco.MjModel, geom: int) -> str:
