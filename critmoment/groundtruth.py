@@ -432,8 +432,13 @@ def hold_starts(held: np.ndarray, segments: np.ndarray, formed: np.ndarray) -> n
     bool, ``segments`` and ``formed`` (T, G); returns (..., T, G) int. The anchor of
     :func:`grip_slip` (per sample), of the chains and of sparse evaluation (the nominal
     run's)."""
-    held = np.asarray(held, dtype=bool) & np.asarray(formed, dtype=bool)
+    held, formed = np.asarray(held, dtype=bool), np.asarray(formed, dtype=bool)
     segments = np.asarray(segments)
+    if held.ndim < 2 or segments.shape != held.shape[-2:] or formed.shape != segments.shape:
+        raise ParameterError(
+            f"hold_starts: expected held (..., T, G) and segments, formed (T, G), got "
+            f"{held.shape}, {segments.shape} and {formed.shape}")
+    held = held & formed
     out = np.full(held.shape, -1, np.int64)
     for j in np.unique(segments):
         inside = segments == j                                          # (T, G)

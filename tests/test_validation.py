@@ -248,6 +248,12 @@ def test_grip_slip_counts_from_where_the_grasp_has_formed():
     np.testing.assert_allclose(s[1, 30:], 0.003)
     with pytest.raises(ParameterError, match="formed"):
         val.grip_slip(pos, nominal, held, held[0], formed=formed[1:])
+    from critmoment.groundtruth import hold_starts
+
+    start = hold_starts(held, np.zeros((t, G), np.int64), formed)
+    assert start.shape == (2, t, G) and (start[:, :, 0] == 15).all() and (start[:, :, 1] == -1).all()
+    with pytest.raises(ParameterError, match="hold_starts"):
+        hold_starts(held, np.zeros((t, G), np.int64), formed[1:])
 
 
 def test_grip_slip_counts_only_motion_beyond_a_creeping_nominal_grip():
