@@ -311,9 +311,11 @@ def _every_sample_fails(options: DecisionOptions, nominal_completed: bool) -> bo
 
 def inherited_failures(sweep: SparseResult, nominal_failed: np.ndarray | None, *,
                        nominal_completed: bool, trust_run: bool = True) -> np.ndarray:
-    """(n,) bool: the samples that fail only at moments where the nominal parameters fail
-    too: while the nominal run does not complete its task, or (with ``trust_run``) while it
-    completes it, so that its own run overrules the nominal parameters' sparse failure.
+    """(n,) bool: the samples whose sparse failures the nominal run's own trouble may explain:
+    every failing sample while the nominal run does not complete its task, and (with
+    ``trust_run``) while it completes it, those failing only at moments where the nominal
+    parameters fail too, so that its own run overrules the nominal parameters' sparse
+    failure.
 
     Each sparse evaluation starts from the nominal run's state. Where that run has gone
     wrong by a moment (a gripper that drags the object at the release, a wrist driven into
@@ -326,6 +328,14 @@ def inherited_failures(sweep: SparseResult, nominal_failed: np.ndarray | None, *
     (genesis' franka_sim Panda: a shoulder at 99.3 % of its limit through the lift, whatever
     the cube, at cost 0.99 against 0.9; every sample of the box was called failing while
     60 of 64 really succeed). Only their own run can say.
+
+    A nominal run that does not complete its task may have gone wrong long before its
+    parameters fail a moment, so there every failing sample inherits from it: an ALOHA
+    wrist turned while carrying shifted the light nominal cube 4.4 mm between the fingers,
+    the receiver closed on it with one finger and it fell at the release; two heavier
+    samples, restored in that state at the hand-over, failed there while their own runs
+    hand the cube over (agreement 0.938 on 32 samples, 1.000 with their own runs). It
+    costs a rollout per failing sample, where the verdict is UNSAFE whatever they do.
     """
     n = sweep.n_samples
     if (nominal_failed is None or sweep.n_moments == 0
@@ -335,6 +345,8 @@ def inherited_failures(sweep: SparseResult, nominal_failed: np.ndarray | None, *
     if nominal_failed.shape != (sweep.n_moments,):
         raise ParameterError(f"nominal_failed: expected ({sweep.n_moments},) bool, got "
                              f"shape {nominal_failed.shape}")
+    if not nominal_completed:
+        return np.array(sweep.failed_any, dtype=bool)
     elsewhere = (sweep.failed & ~nominal_failed[:, None]).any(axis=0)
     return sweep.failed_any & ~elsewhere
 

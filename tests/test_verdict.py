@@ -115,41 +115,46 @@ def test_the_causes_count_the_samples_that_fail_only_on_their_own_path():
 
 
 def test_failures_only_where_the_nominal_run_fails_too_are_decided_by_rollouts():
-    """A nominal run that does not complete its task: a sample restored from its state at a
-    moment where the nominal parameters fail too inherits that state (robosuite's UR5e +
-    Robotiq 2F-85, elliptic cone, impratio 1: the wrist saturates at the release in the
-    nominal run; four samples failed there by it and really placed the cube). Such a
-    sample is decided by its own rollout; one that also fails where the nominal run does
-    not stays a failure."""
+    """A sample restored from the nominal run's state at a moment where the nominal
+    parameters fail too inherits that state, and is decided by its own rollout; while the
+    nominal run completes its task (which overrules its parameters' sparse failure: genesis'
+    franka_sim Panda, a shoulder at 99.3 % of its limit through the lift), a sample that
+    also fails where the nominal parameters do not stays a failure. While the nominal run
+    does not complete its task, every failing sample is decided by its own rollout: that
+    run may have gone wrong before any moment fails (an ALOHA wrist turn that shifted the
+    nominal cube in the grip; two heavier samples failed at the hand-over restored from
+    that state and really hand it over)."""
     chain = vd.DecisionOptions(threshold=THRESHOLD, chain=True)
     samples = np.array([[0.1, 1.0], [0.5, 1.0], [0.3, 1.0], [0.2, 1.0]])
     # moment 0: the nominal fails there; moment 1: it does not
     sweep = _sweep([[1.5, 0.1, 1.5, 0.1], [0.1, 1.5, 1.5, 0.1]], samples)
     nominal_failed = np.array([True, False])
     assert vd.inherited_failures(sweep, nominal_failed,
-                                 nominal_completed=False).tolist() == [True, False, False,
-                                                                       False]
-    # a completed nominal run overrules its parameters' sparse failure there: the same
-    # (genesis' franka_sim Panda: a shoulder at 99.3 % of its limit at every sample), unless
-    # the options do not take the nominal run's word
-    assert vd.inherited_failures(sweep, nominal_failed,
                                  nominal_completed=True).tolist() == [True, False, False,
                                                                       False]
     assert not vd.inherited_failures(sweep, nominal_failed, nominal_completed=True,
                                      trust_run=False).any()
+    assert vd.inherited_failures(sweep, nominal_failed,
+                                 nominal_completed=False).tolist() == [True, True, True,
+                                                                       False]
     assert not vd.inherited_failures(sweep, None, nominal_completed=False).any()
-    reruns = vd.samples_to_rerun(sweep, chain, nominal_completed=False,
-                                 nominal_failed=nominal_failed)
-    assert reruns.inherited.tolist() == [True, False, False, False]
-    assert reruns.any.tolist() == [True, False, False, False]
-    to_chain = vd.samples_to_chain(sweep, reruns.any, chain, nominal_completed=False)
-    base = dict(sweep=sweep, nominal_completed=False, chained=to_chain,
-                chained_failed=np.zeros(4, bool), nominal_failed=nominal_failed)
-    with pytest.raises(ParameterError, match="own rollout's outcome"):
-        vd.failing_samples(vd.SampleEvidence(**base), chain)
-    ev = vd.SampleEvidence(**base, rerun=reruns.any, rerun_failed=np.zeros(4, bool))
-    # sample 0 placed its cube on its own run; 1 and 2 fail where the nominal did not
-    assert vd.failing_samples(ev, chain).tolist() == [False, True, True, False]
+    for completed, inherited in ((True, [True, False, False, False]),
+                                 (False, [True, True, True, False])):
+        reruns = vd.samples_to_rerun(sweep, chain, nominal_completed=completed,
+                                     nominal_failed=nominal_failed)
+        assert reruns.inherited.tolist() == inherited
+        assert reruns.any.tolist() == inherited
+        to_chain = vd.samples_to_chain(sweep, reruns.any, chain, nominal_completed=completed)
+        base = dict(sweep=sweep, nominal_completed=completed, chained=to_chain,
+                    chained_failed=np.zeros(4, bool), nominal_failed=nominal_failed)
+        with pytest.raises(ParameterError, match="own rollout's outcome"):
+            vd.failing_samples(vd.SampleEvidence(**base), chain)
+        real = np.array([False, False, True, False])  # sample 1 hands over on its own run
+        ev = vd.SampleEvidence(**base, rerun=reruns.any, rerun_failed=real)
+        # sample 0 placed its cube on its own run; with the nominal run completing, 1 and
+        # 2 fail where the nominal parameters did not, and stay failures
+        expect = [False, True, True, False] if completed else [False, False, True, False]
+        assert vd.failing_samples(ev, chain).tolist() == expect
     with pytest.raises(ParameterError, match="nominal_failed"):
         vd.inherited_failures(sweep, np.array([True]), nominal_completed=False)
 
