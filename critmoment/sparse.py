@@ -244,6 +244,10 @@ MOTOR_MARGIN = 1.0 / OutcomeCriteria.saturation - 1.0
 #: really hold moved 0.8–7.4 µm over their windows, grasps that really slip 98 µm and
 #: more; every contact failure of the demo's sweeps of seeds 0 and 3 moved 20 µm or more)
 STILL_SLIP = 1e-5
+#: least grasp force ratio margin (FOS) at the restore of a sample whose object then leaves
+#: every gripper within the evaluation for that to count as the restore's doing, not the
+#: load's (:meth:`SparseEvaluator._decide`)
+EJECT_FOS = 2.0
 #: how long [s] a contact failure whose measured slip is still under ``slip_tolerance`` is
 #: followed past its decision, to see whether the object keeps sliding or has settled
 SETTLE_TIME = 0.15
@@ -394,7 +398,10 @@ class SparseResult:
             or, on any cone, a contact failure whose object, measured so, slid less than
             ``slip_tolerance`` and then settled (followed up to ``SETTLE_TIME`` further, it
             stopped: a grip that shifts into a new equilibrium when restored with other
-            parameters); (m, n) bool. Such a failure does not stop a sample, and a sample
+            parameters); or a contact failure whose grasp held the sample's load
+            ``EJECT_FOS`` times inside the cone at the restore and then lost every
+            gripper's touch within the evaluation while the nominal run's grip touches the
+            object all along (pushed out of a restored wedge grasp); (m, n) bool. Such a failure does not stop a sample, and a sample
             that fails only so (``failed_sticking_only``) is decided by its own full
             rollout.
         saturated: a motor of the pair sat at the ground truth's saturation (0.999 of its
@@ -867,6 +874,8 @@ class SparseEvaluator:
         self._anchors, self._projectors = grip_frames(model, twin.scenario)
         held = sig.contact_gripper & ~sig.contact_support[:, None]
         self._held = held
+        #: a gripper touches the object in the nominal run, (T,)
+        self._touched = sig.contact_gripper.any(axis=-1)
         # slip counts where the nominal run holds the object with one gripper alone: an
         # object moves in a gripper that lets go (the release), which is not slip
         self._alone = twin.held_alone(sig.contact_gripper, sig.contact_support)
@@ -1676,7 +1685,23 @@ class SparseEvaluator:
         # cost 0.94-0.98 failed there and really hold, slipping 5-7 mm; ALOHA's at impratio
         # 50: 2 of 64)
         shared = ((self._held[at].sum(axis=-1) >= 2) & valid).any(axis=1)
-        sticking = ((inside | still | shared) & (failure == Failure.CONTACT)
+        # a grip the restore itself breaks: a gripper touches the object in the nominal run
+        # at the restore and all along, and the sample, restored in that state with its own
+        # parameters, holds it at the restore with its grasp's force ratio EJECT_FOS times
+        # inside the cone (carried: not a lift-off, where a heavy object drops at once) and
+        # yet loses every gripper's touch within the window. The restored state is the
+        # nominal's, and where the nominal grasp is a wedge (the low-cost robot arm's one-jaw
+        # gripper, its pads 1-3 mm into the cube), another mass or friction pops the object
+        # out of it within 10-20 ms, from a force ratio 9-120 times inside the cone, where
+        # the sample's own run forms a grasp of its own and holds (pyramidal cone: 8 false
+        # unsafes of 32, every one passing its own run; 0 with this rule): for its own run
+        # to decide. A load the grip cannot hold is outside the cone from the restore on.
+        nominal_holds = self._touched[at]
+        with np.errstate(invalid="ignore"):
+            held_then = np.isfinite(sig.fos_grasp[:, 0]) & (sig.fos_grasp[:, 0] >= EJECT_FOS)
+        ejected = ((nominal_holds | ~valid).all(axis=1) & nominal_holds[:, 0] & held_then
+                   & (valid & ~sig.contact_gripper.any(axis=-1)).any(axis=1))
+        sticking = ((inside | still | shared | ejected) & (failure == Failure.CONTACT)
                     & (stop_kind == Failure.CONTACT))
         # a motor at the ground truth's saturation (0.999 of its limit) for as long as a
         # motor failure must last, over the steps decided: short of that, a motor failure

@@ -1144,3 +1144,39 @@ def test_saturated_marks_a_motor_held_at_its_limit_for_a_failures_duration(scena
     assert not res.margin_failure[0, 0]
     ok = sparse.SparseEvaluator(demo_recording, twin).evaluate([k], nominal)
     assert not ok.saturated.any() and not ok.failed.any()
+
+
+def test_a_grip_the_restore_breaks_is_for_its_own_run(twin, demo_recording, monkeypatch):
+    """Restored in the nominal state with its own mass and friction, a sample whose grasp
+    holds its load with a wide margin at the restore and yet loses every gripper's touch
+    within the window was pushed out of the restored grip (the low-cost robot arm's wedged
+    one-jaw grasp: 8 false unsafes of 32 on a pyramidal cone, every one holding on its own
+    run): a sticking failure, for its own run. A grasp outside the cone from the restore on
+    (a load the grip cannot hold) that loses its touch stays a failure that stops its
+    sample."""
+    import dataclasses
+
+    ev = SparseEvaluator(demo_recording, twin)
+    size = ev.horizon + ev.persistence_steps
+    one = ev._held.sum(axis=-1) == 1  # one gripper carries the cube, alone
+    k = next(k for k in range(demo_recording.n_steps - size)
+             if one[k:k + size].all() and ev._touched[k:k + size].all())
+    buf = np.repeat(np.asarray(demo_recording.sensordata[k:k + size])[None], 2, axis=0)
+    real = twin.signals
+
+    def pushed_out(sd, mu=None, **kw):  # both samples lose the grip after 5 steps
+        sig = real(sd, mu, **kw)
+        if np.ndim(sd) != 3:  # the nominal run's own readings
+            return sig
+        touch, fos = sig.contact_gripper.copy(), sig.fos_grasp.copy()
+        touch[:, 5:] = False
+        fos[:, 5:] = 0.0
+        fos[0, :5], fos[1, :5] = 10.0, 0.8  # held 10x inside the cone; outside it
+        return dataclasses.replace(sig, contact_gripper=touch, fos_grasp=fos)
+
+    monkeypatch.setattr(twin, "signals", pushed_out)
+    slip = np.tile(np.linspace(0.0, 2e-3, size), (2, 1))  # moving, under the tolerance
+    d = ev._decide(buf, slip, np.full(2, size), np.ones(2), k, final=True)
+    assert d.failure.tolist() == [sparse.Failure.CONTACT] * 2
+    assert d.sticking.tolist() == [True, False]
+    assert d.stop.tolist() == [False, True]
