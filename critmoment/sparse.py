@@ -1550,8 +1550,12 @@ class SparseEvaluator:
         block before in more than ``SETTLE_SPEEDUPS`` blocks, is sliding, not settling, and
         is not followed further. One whose follow the recording's end cuts short, still
         under the tolerance and not sliding faster, is undecided here: the run ends before
-        it settles or slides on, so it too is for its own run to say. Whether a settled
-        sample really fails is for its own run to say (a sticking failure)."""
+        it settles or slides on, so it too is for its own run to say. So is one whose
+        object leaves every gripper during the follow while the nominal grip touches it
+        all along, from a grasp that held its load ``EJECT_FOS`` times inside the cone at
+        the restore (pushed out of the restored grip, as :meth:`_decide` reads it within
+        the window). Whether a settled sample really fails is for its own run to say (a
+        sticking failure)."""
         nsim, width = slip.shape
         out = np.zeros(nsim, bool)
         first = np.asarray(k) if np.ndim(k) else np.full(nsim, int(k))
@@ -1568,6 +1572,9 @@ class SparseEvaluator:
         most = int(np.ceil(SETTLE_TIME / float(self.twin.model.opt.timestep)))
         floor = SLIP_FLOOR * tol
         raised = np.zeros(nsim, bool)
+        first_fos = decided.signals.fos_grasp[:, 0]
+        with np.errstate(invalid="ignore"):
+            held_then = np.isfinite(first_fos) & (first_fos >= EJECT_FOS)
         for begin in (int(b) for b in np.unique(start[cand])):
             group = cand[start[cand] == begin]
             # each one's slip so far, then what the follow adds: (c, width + most)
@@ -1587,14 +1594,21 @@ class SparseEvaluator:
                     break
                 ids = group[live]
                 batch.warning[...] = 0
-                _, more = self._roll(batch, begin + done, p, ids, raised)
+                sd, more = self._roll(batch, begin + done, p, ids, raised)
+                # pushed out of the restored grip (as in _decide): every gripper's touch lost
+                # while the nominal grip touches all along, from a grasp that held the
+                # load EJECT_FOS times inside the cone at the restore
+                nominal_touch = self._touched[begin + done:begin + done + p].all()
+                with np.errstate(over="ignore", invalid="ignore"):
+                    lost = ~self.twin.signals(sd).contact_gripper.any(axis=-1).all(axis=1)
+                ejected = nominal_touch & lost & held_then[ids]
                 track[live[:, None], last[live][:, None] + np.arange(p)] = more
                 last[live] += p
                 done += p
                 fine = ~raised[ids] & ~(batch.warning[ids, :, 1] > 0).any(axis=1)
                 moved = np.abs(track[live, last[live] - 1] - track[live, last[live] - 1 - p])
                 total = track[live].max(axis=1)
-                now = fine & (moved <= SETTLED_SHARE * total)
+                now = fine & ((moved <= SETTLED_SHARE * total) | ejected)
                 out[ids[now]] = True
                 faster[live] += moved >= before[live]
                 before[live] = moved

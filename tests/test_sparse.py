@@ -1180,3 +1180,42 @@ def test_a_grip_the_restore_breaks_is_for_its_own_run(twin, demo_recording, monk
     assert d.failure.tolist() == [sparse.Failure.CONTACT] * 2
     assert d.sticking.tolist() == [True, False]
     assert d.stop.tolist() == [False, True]
+
+
+def test_a_grip_lost_while_followed_after_a_comfortable_restore_is_for_its_own_run(
+        twin, demo_recording, monkeypatch):
+    """The same push out of the restored grip can come just after the window: a contact
+    failure followed (the settle follow-up) whose object leaves every gripper while the
+    nominal grip touches it, from a grasp that held the load twice inside the cone at the
+    restore, is for its own run (the low-cost robot arm, elliptic cone: the cube held at
+    force ratio 12 sags for 19 steps and drops out 5 steps after the window; 4 false
+    unsafes of 32 -> 0). Without a comfortable restore (a load outside the cone from the
+    start) it stays a failure that stops its sample."""
+    import dataclasses
+
+    from critmoment.analysis import audit_evaluator
+
+    ev, _ = audit_evaluator(demo_recording, twin)
+    lift, heavy = 1707, np.array([[3.0, 0.3]])  # keeps sliding: a failure
+    plain = ev.evaluate([lift], heavy)
+    assert plain.failure[0, 0] == sparse.Failure.CONTACT and not plain.sticking_failure[0, 0]
+    real, p = twin.signals, ev.persistence_steps
+
+    def forged(comfortable):
+        def signals(sd, mu=None, **kw):
+            sig = real(sd, mu, **kw)
+            if np.ndim(sd) != 3:
+                return sig
+            if sd.shape[1] == p:  # a follow-up block: every gripper lets go
+                return dataclasses.replace(
+                    sig, contact_gripper=np.zeros_like(sig.contact_gripper))
+            fos = sig.fos_grasp.copy()
+            fos[:, 0] = 10.0 if comfortable else 0.5
+            return dataclasses.replace(sig, fos_grasp=fos)
+        return signals
+
+    assert ev.horizon + ev._extension_steps() != p
+    for comfortable in (True, False):
+        monkeypatch.setattr(twin, "signals", forged(comfortable))
+        fresh, _ = audit_evaluator(demo_recording, twin)  # nothing kept from before
+        assert fresh.evaluate([lift], heavy).sticking_failure[0, 0] == comfortable
