@@ -1350,7 +1350,8 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
     text = region_text(region, box, verdict, check)
     if verdict is Verdict.CONDITIONAL and region is None and n and failed.all():
         text = f"no safe region: all {n} samples of the box fail"
-    causes = tuple(_causes(evidence.moments, options.threshold, box))
+    causes = tuple(_causes(evidence.moments, options.threshold, box,
+                           nominal_completed=evidence.samples.nominal_completed))
     if nominal_squeeze:
         where = ("only where the grip squeezes the object off its support without lifting it"
                  if evidence.nominal_unlifted else "at a moment")
@@ -1534,14 +1535,17 @@ def _and(names: Sequence[str]) -> str:
 
 
 def _causes(reports: Sequence[MomentReport], threshold: float,
-            box: UncertaintyBox | None = None) -> list[str]:
+            box: UncertaintyBox | None = None, *, nominal_completed: bool = True) -> list[str]:
     """One line per failure cause (grip slip, overload of one actuator, ...), the moments where
     it limits (with their critical values) and the suggestion.
 
     A moment counts where sweep samples fail there, where the cost crosses the threshold
     along a critical-value curve, or where the worst case found fails (with a first-failure
     sweep a later moment's failures are hidden behind earlier ones; its critical values and
-    worst case still say where it would fail).
+    worst case still say where it would fail). Where the nominal run does not complete its
+    task, no run just past a critical value can refute it (every run there starts on the
+    nominal's failing path), so the values are given as sparse evaluation's, unchecked (a
+    low-cost robot arm whose nominal drops the cube had "fails for mass above 2.57 kg").
     """
     units = {p.name: f" {p.unit}" if p.unit else "" for p in box.parameters} if box else {}
     groups: dict[str, list[str]] = {}
@@ -1559,6 +1563,10 @@ def _causes(reports: Sequence[MomentReport], threshold: float,
         if mr.squeeze:
             where = (f" (a squeeze without a lift: sparse evaluation fails "
                      f"{'for ' + crit if crit else 'there'}; the samples' own rollouts decide)")
+        elif crit and not nominal_completed:
+            others = " with the others at nominal" if len(mr.critical) > 1 else ""
+            where = (f" (sparse evaluation from the failing nominal run's states crosses for "
+                     f"{crit}{others}; not checked by own runs)")
         elif crit:
             # a critical value is where one parameter alone crosses, the others at nominal
             # (elsewhere in the box it can lie elsewhere: the region says where it holds)

@@ -698,13 +698,23 @@ def test_critical_values_are_checked_by_the_full_run_just_past_them():
     # friction below 1.2 holds the nominal 1.0: refuted by the nominal run; 0.9 stands
     assert out[0].critical["mass"] is None and out[0].critical_side["mass"] is None
     assert out[0].critical_refuted == {"mass": ("above", 0.3)}
-    assert out[1].critical == {"mass": 0.5, "friction": 0.9} and not out[1].critical_refuted
+    assert not out[1].critical_refuted
     assert out[2].critical == {"mass": 0.7, "friction": None}
     assert out[2].critical_refuted == {"friction": ("below", 1.2)}
     assert out[3].critical_refuted == {"mass": ("below", 0.6)}
-    tried = np.vstack(runs)
-    assert len(runs) == 2 and tried.shape == (3, 2)
+    tried = np.vstack(runs[:2])
     np.testing.assert_allclose(tried, [[0.31, 1.0], [0.05, 0.886], [0.51, 1.0]])  # 1 % past
+    # the runs just inside the standing values (0.49 kg; friction 0.914) fail too: each is
+    # moved to where the own runs begin to fail, bisected from the nominal value
+    np.testing.assert_allclose(runs[2], [[0.05, 0.914], [0.49, 1.0]])
+    assert len(runs) == 3 + 2 * analysis.CRITICAL_BISECTIONS
+    assert 0.45 - 0.44 / 32 <= out[1].critical["mass"] <= 0.45
+    assert 0.95 <= out[1].critical["friction"] <= 0.95 + 0.086 / 32
+    # where the runs just inside pass, the values stand as sparse evaluation put them
+    runs.clear()
+    out = analysis._check_critical(reports, box, lambda p: (roll(p) & (p[:, 0] > 0.495))
+                                   | (p[:, 1] < 0.905), True)
+    assert out[1].critical == {"mass": 0.5, "friction": 0.9}
     # a nominal run that fails refutes nothing by itself: those values are run
     runs.clear()
     analysis._check_critical(reports, box, roll, False)

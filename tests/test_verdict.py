@@ -839,3 +839,24 @@ def test_a_cause_speaks_of_the_boxs_own_parameters_with_their_units():
     (cause,) = vd._causes([two], THRESHOLD, both)
     assert "fails for shoulder below 23.5 N·m with the others at nominal" in cause
     assert vd._box_words(UncertaintyBox((mass,))) == "the object's mass"
+
+
+def test_critical_values_of_a_failing_nominal_run_are_stated_as_unchecked():
+    """Where the nominal run does not complete its task, no run just past a critical value
+    can refute it: the causes give the values as sparse evaluation's from the failing
+    nominal's states, not as where the motion fails (a low-cost robot arm whose nominal
+    drops its cube had "fails for mass above 2.57 kg")."""
+    chain = vd.DecisionOptions(threshold=THRESHOLD, chain=True)
+    box = _box()
+    samples = np.array([[0.1, 1.0], [0.5, 1.0]])
+    sweep = _sweep([[0.1, 1.5]], samples)
+    crit = _moment(100, {"mass": 0.4, "friction": None}, {"mass": "above", "friction": None})
+    for completed, text in ((True, "(fails for mass above 0.4 kg"),
+                            (False, "crosses for mass above 0.4 kg")):
+        se = vd.SampleEvidence(sweep=sweep, nominal_completed=completed,
+                               rerun=np.ones(2, bool), rerun_failed=np.array([False, True]),
+                               chained=np.zeros(2, bool), chained_failed=np.zeros(2, bool))
+        causes = vd.decide(vd.Evidence(box=box, samples=se, nominal_cost=0.1,
+                                       moments=(crit,)), chain).causes
+        assert any(text in c for c in causes), causes
+        assert completed or not any("(fails for" in c for c in causes)
