@@ -183,6 +183,29 @@ def cancel_scope() -> Iterator[threading.Event]:
         _CANCEL.reset(token)
 
 
+#: set by the command line's stop-signal handler (SIGTERM, SIGHUP, ...), which also raises
+#: KeyboardInterrupt: a library that catches that interrupt (CasADi's IPOPT call, outside
+#: the main thread's protected solve) cannot make the run finish and replace its output
+_STOP = threading.Event()
+
+
+def request_stop() -> None:
+    """Marks the process as stopping (the CLI's stop-signal handler)."""
+    _STOP.set()
+
+
+def clear_stop() -> None:
+    """Forgets a stop request (a new command starts)."""
+    _STOP.clear()
+
+
+def check_stop() -> None:
+    """Raises KeyboardInterrupt where a stop was requested (:func:`request_stop`): checked
+    before an output replaces the previous one, and after a command's work."""
+    if _STOP.is_set():
+        raise KeyboardInterrupt
+
+
 def check_cancelled() -> None:
     """Raises :class:`Cancelled` where the enclosing :func:`cancel_scope` was cancelled."""
     event = _CANCEL.get()

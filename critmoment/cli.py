@@ -655,6 +655,7 @@ def _terminate_as_interrupt() -> Iterator[None]:
         return
 
     def stop(signum, frame):
+        budget.request_stop()  # stands where a library swallows the interrupt
         raise KeyboardInterrupt
 
     previous = {}
@@ -696,6 +697,7 @@ def _main(argv: list[str] | None) -> int:
     logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
                         handlers=[handler])
     _Stdout.closed = False
+    budget.clear_stop()
     command = args.command
     code = EXIT_ERROR
     with warnings.catch_warnings(record=True) as caught:
@@ -707,7 +709,9 @@ def _main(argv: list[str] | None) -> int:
                                max_batch_steps=getattr(args, "max_batch_steps", None),
                                max_input_bytes=getattr(args, "max_input_bytes", None)):
                 code = args.func(args)
-            sys.stdout.flush()
+                budget.check_stop()
+            if sys.stdout is not None:  # None where stdout was closed (``>&-``)
+                sys.stdout.flush()
         except BrokenPipeError:  # the reader went away: keep the verdict's code
             _Stdout.silence()
         except KeyboardInterrupt:

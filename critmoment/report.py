@@ -34,6 +34,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
+from critmoment import budget
 from critmoment.exceptions import CritmomentWarning, OutputError, ParameterError
 from critmoment.moments import Moment, plot_moments
 from critmoment.params import kind_of
@@ -755,6 +756,7 @@ class StagedOutput:
     def __exit__(self, exc_type, exc, tb) -> bool:
         try:
             if exc_type is None:
+                budget.check_stop()  # a stop signal a library swallowed: keep the old output
                 self._commit()
             elif isinstance(exc, OSError) and not isinstance(exc, OutputError) and (
                     str(self._tmpdir) in str(getattr(exc, "filename", "") or "")

@@ -70,7 +70,7 @@ def motor_fos(force: np.ndarray, limit: np.ndarray) -> tuple[np.ndarray, np.ndar
     """
     force = np.abs(np.asarray(force, dtype=np.float64))
     limit = np.asarray(limit, dtype=np.float64)
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", over="ignore"):  # a subnormal force: inf, as 0
         ratio = np.where(force > 0, limit / force, np.inf)
     idx = np.argmin(ratio, axis=-1)
     return np.take_along_axis(ratio, idx[..., None], axis=-1)[..., 0], idx

@@ -249,6 +249,56 @@ def test_sigterm_ends_a_run_as_ctrl_c_does(traj_file, tmp_path, capsys, monkeypa
     assert signal.getsignal(sig) is handler
 
 
+def test_a_stop_signal_a_library_swallows_still_stops_the_run(traj_file, tmp_path, capsys,
+                                                             monkeypatch):
+    """A SIGTERM from another process, landing in CasADi's IPOPT call, had its interrupt
+    swallowed there: the audit finished, replaced ``--out`` and exited 0 (3 of 18 timed
+    kills). The handler's stop request stands: exit 2, the previous output kept whole."""
+    import os
+    import signal
+
+    from critmoment import analysis
+
+    out = tmp_path / "report"
+    assert main(["rollout", str(traj_file), "--out", str(out)]) == 0
+    before = sorted(p.name for p in out.iterdir())
+    capsys.readouterr()
+    real = analysis.analyze
+
+    def swallowed(*args, **kwargs):
+        try:
+            os.kill(os.getpid(), signal.SIGTERM)
+        except KeyboardInterrupt:
+            pass  # as a library that catches it would
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(analysis, "analyze", swallowed)
+    assert main(["analyze", str(traj_file), "--samples", "8", "--figures", "none",
+                 "--out", str(out)]) == 2
+    assert "interrupted" in capsys.readouterr().err
+    assert sorted(p.name for p in out.iterdir()) == before
+    assert [p.name for p in tmp_path.iterdir()] == ["report"]
+    monkeypatch.setattr(analysis, "analyze", real)  # the next command is not stopped
+    assert main(["rollout", str(traj_file), "--out", str(out)]) == 0
+
+
+def test_a_closed_stdout_keeps_the_exit_code(traj_file, tmp_path):
+    """``critmoment ... >&-``: Python's stdout is None, and flushing it had turned a
+    finished command (its output written whole) into exit 2, "unexpected AttributeError"."""
+    import os
+    import subprocess
+    import sys
+
+    out = tmp_path / "rolled"
+    proc = subprocess.run(
+        [sys.executable, "-c", "from critmoment.cli import run; run()", "rollout",
+         str(traj_file), "--out", str(out)], stderr=subprocess.PIPE, text=True,
+        env={**os.environ, "MPLBACKEND": "Agg"}, preexec_fn=lambda: os.close(1),
+        timeout=300)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert "AttributeError" not in proc.stderr and out.is_dir()
+
+
 def test_a_console_that_cannot_encode_the_summary_keeps_the_exit_code(traj_file):
     """With PYTHONIOENCODING=ascii (or a console code page without "≤"), a SAFE or
     CONDITIONAL audit wrote its report whole and then exited 2 on a UnicodeEncodeError
