@@ -227,3 +227,27 @@ def test_an_object_that_slides_out_of_the_grip_onto_a_table_stays_soft():
                        'size="1 1 0.1"/>')
     report = _probe(xml, mass=2.0, warn=False)
     assert report.soft and report.creep_rate * 2.0 > cm.DROP_TOLERANCE
+
+
+def test_a_probe_at_the_solver_iteration_cap_is_no_creep_measure(tmp_path):
+    """With iterations="3" the bundled Panda's creep probe read 423 mm/s ("1.67e+03 mm over
+    the carry", soft) while the full run at that mass slips 9 mm: its solver stopped at the
+    cap on most steps. The check says so instead of calling the model soft."""
+    import shutil
+
+    import critmoment
+    from critmoment import panda_demo
+    from critmoment.scenario import bundled_scenario_path, load_scenario
+
+    folder = tmp_path / "it3"
+    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
+    scene = folder / "scene.xml"
+    text = scene.read_text()
+    assert text.count('impratio="10"/>') == 1
+    scene.write_text(text.replace('impratio="10"/>', 'impratio="10" iterations="3"/>'))
+    twin = critmoment.Twin(load_scenario(folder))
+    rec = critmoment.rollout(panda_demo.make_pick_place(3, model=twin.model), twin=twin)
+    with pytest.warns(cm.ContactModelWarning, match="3-iteration cap"):
+        report = cm.check_contact_model(twin, rec)
+    assert "solver-cap" in {f.code for f in report.findings}
+    assert not report.soft and "creeps" not in report.summary()
