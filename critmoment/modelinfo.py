@@ -642,7 +642,12 @@ def _toml_str(s: str) -> str:
 
 
 def _num(x: float) -> str:
-    return repr(float(x)) if math.isfinite(x) else "inf"
+    """A number for the scenario file and the guesses: 12 significant digits, so float noise
+    from the model's arithmetic (0.03200000000000003) reads as the value it is (0.032)."""
+    if not math.isfinite(x):
+        return "inf"
+    text = f"{float(x):.12g}"
+    return text if any(c in text for c in ".en") else f"{text}.0"  # a TOML float
 
 
 def _resting_supports(model: mujoco.MjModel, object_body: int, key: int | None) -> list[str]:
@@ -882,7 +887,10 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         raise ScenarioError(
             "found no gripper: expected actuators on slide joints, tendons, or joints/bodies "
             "named like grip/finger/jaw/claw/hand that open and close their geoms"
-            + (f" ({'; '.join(why)})" if why else "") + "; name the hand's body with "
+            + (f" ({'; '.join(why)})" if why else
+               ": no actuator looks like one; an arm without a hand (Menagerie's Gen3 alone) "
+               "needs one attached to its flange in the MJCF first")
+            + "; name the hand's body with "
             "--gripper BODY (its actuators that open or close the geoms below it), or write "
             "[grippers.*] by hand")
     data = mujoco.MjData(model)
@@ -896,8 +904,9 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         how = ("suction: closed = full pull, open = none" if set(g.actuators) <= suction
                else "measured")
         guesses.append(f"gripper {g.name!r}: body {g.body!r} ({len(g.geoms)} collision geoms), "
-                       f"actuators {', '.join(g.actuators)}, closed at {list(g.closed)}, open "
-                       f"at {list(g.open)} ({how}), {dist[g.name]:.3f} m from the object")
+                       f"actuators {', '.join(g.actuators)}, closed at "
+                       f"[{', '.join(map(_num, g.closed))}], open "
+                       f"at [{', '.join(map(_num, g.open))}] ({how}), {dist[g.name]:.3f} m from the object")
     guessed_supports = not supports
     if not supports:
         supports = _resting_supports(model, bid, key)

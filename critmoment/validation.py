@@ -502,7 +502,10 @@ class ValidationResult:
             + (f"; {self.runs['chained']} chained ({self.runs['chained_rolled_out']} "
                f"failures and {self.runs['chained_near']} near passes of them rolled out)"
                if self.runs.get("chained") else ""),
-            f"real outcomes: {counts}",
+            f"real outcomes: {counts}"
+            + ("" if self.nominal_completed else
+               "; the nominal run itself does not complete the task (UNSAFE at the nominal "
+               "parameters; `critmoment rollout` says what it lacks)"),
             f"confusion: true safe {c['true_safe']}, false safe {c['false_safe']}, true unsafe "
             f"{c['true_unsafe']}, false unsafe {c['false_unsafe']}",
             f"false-safe rate {'n/a (no real failure)' if fsr is None else f'{fsr:.3f}'}, "

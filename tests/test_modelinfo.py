@@ -1246,3 +1246,43 @@ def test_a_keyframe_that_does_not_fit_the_model_is_not_adopted(tmp_path):
                                          'body2="hand"/></equality>')
     (tmp_path / "mocap.xml").write_text(mocap)
     assert keyframe_problems(mujoco.MjModel.from_xml_path(str(tmp_path / "mocap.xml")), 0) == []
+
+
+def test_numbers_written_by_init_read_as_the_values_they_are():
+    """The low-cost robot arm's jaw closes at 0.032 rad, computed as 0.03200000000000003:
+    inspect and init had printed and written the float noise."""
+    from critmoment import modelinfo
+
+    assert modelinfo._num(0.03200000000000003) == "0.032"
+    assert modelinfo._num(2.0) == "2.0" and modelinfo._num(-1.6) == "-1.6"
+    assert float(modelinfo._num(1e-7)) == 1e-7 and modelinfo._num(float("inf")) == "inf"
+
+
+def test_an_arm_without_a_hand_is_told_to_attach_one(tmp_path):
+    """Menagerie's Gen3 alone: init said "name the hand's body with --gripper BODY", and the
+    last link named so has one geom. It says the arm has no hand to find."""
+    xml = tmp_path / "arm.xml"
+    xml.write_text("""<mujoco>
+      <worldbody>
+        <geom name="table" type="plane" size="1 1 0.1"/>
+        <body name="link1" pos="0 0 0.3">
+          <joint name="j1" type="hinge" axis="0 0 1"/>
+          <geom type="capsule" fromto="0 0 0 0.3 0 0" size="0.03"/>
+          <body name="link2" pos="0.3 0 0">
+            <joint name="j2" type="hinge" axis="0 1 0"/>
+            <geom type="capsule" fromto="0 0 0 0.2 0 0" size="0.025"/>
+          </body>
+        </body>
+        <body name="cube" pos="0.4 0 0.02">
+          <freejoint/>
+          <geom type="box" size="0.02 0.02 0.02" mass="0.05"/>
+        </body>
+      </worldbody>
+      <actuator>
+        <position name="a1" joint="j1" kp="50" ctrlrange="-3 3"/>
+        <position name="a2" joint="j2" kp="50" ctrlrange="-2 2"/>
+      </actuator>
+    </mujoco>""")
+    with pytest.raises(ScenarioError, match=r"found no gripper: .*no actuator looks like "
+                                            r"one; an arm without a hand"):
+        init_scenario(xml, object_body="cube", task="pick_hold", out=tmp_path / "s.toml")

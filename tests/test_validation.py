@@ -534,3 +534,14 @@ def test_a_run_cut_mid_carry_leaves_its_last_moments_to_the_own_runs():
         check = cm.validate(traj, twin=twin, n_samples=32, seed=0)
     assert check.confusion == {"true_safe": 19, "false_safe": 0, "true_unsafe": 13,
                                "false_unsafe": 0}
+
+
+def test_the_summary_says_when_the_nominal_run_fails_its_task():
+    """A validation whose nominal run drops its cube exited 0 with no line saying so (only
+    ``nominal_completed: false`` in the JSON)."""
+    import dataclasses
+
+    done = _result([False, True], [False, True])
+    assert done.nominal_completed and "does not complete" not in done.summary_text()
+    failing = dataclasses.replace(done, nominal_completed=False)
+    assert "the nominal run itself does not complete the task" in failing.summary_text()
