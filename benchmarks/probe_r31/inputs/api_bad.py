@@ -1,0 +1,65 @@
+"""Library API with bad inputs: every failure should be a CritmomentError subclass naming the problem."""
+import sys, warnings
+import numpy as np
+import critmoment as cm
+assert cm.__file__.startswith("/tmp/r31/src"), cm.__file__
+from critmoment.exceptions import CritmomentError
+from critmoment.analysis import AnalyzeOptions
+A = np.load("/tmp/r31/inputs/traj.npz")["actions"]
+def t(name, fn):
+    try:
+        with warnings.catch_warnings(record=True) as w:
+            warnings.simplefilter("always"); r = fn()
+        print(f"OK    {name}: {type(r).__name__} {[str(x.message)[:90] for x in w][:2]}")
+    except CritmomentError as e: print(f"CMERR {name}: {type(e).__name__}: {str(e)[:160]}")
+    except Exception as e: print(f"OTHER {name}: {type(e).__name__}: {str(e)[:160]}   <-- not a CritmomentError")
+T = cm.Trajectory
+t("actions list of lists ragged", lambda: T([[1, 2], [3]]))
+t("actions None", lambda: T(None))
+t("actions scalar", lambda: T(3.0))
+t("actions (2,0)", lambda: T(np.zeros((2, 0))))
+t("actions (0,14)", lambda: T(np.zeros((0, 14))))
+t("actions 3-D", lambda: T(np.zeros((2, 3, 4))))
+t("actions masked", lambda: T(np.ma.masked_array(A, mask=np.zeros_like(A, bool))))
+t("actions matrix", lambda: T(np.asmatrix(A)))
+t("fps str", lambda: T(A, fps="50"))
+t("fps complex", lambda: T(A, fps=50j))
+t("fps np.array([50])", lambda: T(A, fps=np.array([50.0])))
+t("fps 1e-320", lambda: T(A, fps=1e-320))
+t("start list wrong len", lambda: T(A, start=[0] * 3))
+t("object_pose 6", lambda: T(A, object_pose=np.zeros(6)))
+t("object_pose 2-D", lambda: T(A, object_pose=np.zeros((1, 7))))
+t("qpos0 2-D", lambda: T(A, qpos0=np.zeros((23, 1))))
+t("qpos0 scalar", lambda: T(A, qpos0=0.0))
+t("meta list", lambda: T(A, meta=[1]))
+t("meta set value", lambda: T(A, meta={"a": {1}}))
+t("meta int key", lambda: T(A, meta={1: 2}))
+t("source int", lambda: T(A, source=5))
+sc = cm.load_scenario()
+good = T(A, fps=50.0, start=A[0], object_pose=np.load("/tmp/r31/inputs/traj.npz")["object_pose"])
+t("analyze(path str)", lambda: cm.analyze("/tmp/r31/inputs/traj.npz", sc, options=AnalyzeOptions(n_samples=8, nthread=1)))
+t("analyze(ndarray)", lambda: cm.analyze(A, sc, options=AnalyzeOptions(n_samples=8, nthread=1)))
+t("analyze(scenario str)", lambda: cm.analyze(good, "aloha_transfer_cube", options=AnalyzeOptions(n_samples=8, nthread=1, max_moments=1)))
+t("analyze(scenario None)", lambda: cm.analyze(good, None, options=AnalyzeOptions(n_samples=8, nthread=1, max_moments=1)))
+t("AnalyzeOptions(n_samples=7)", lambda: AnalyzeOptions(n_samples=7))
+t("AnalyzeOptions(n_samples=8.0)", lambda: AnalyzeOptions(n_samples=8.0))
+t("AnalyzeOptions(n_samples=True)", lambda: AnalyzeOptions(n_samples=True))
+t("AnalyzeOptions(seed=-1)", lambda: AnalyzeOptions(seed=-1))
+t("AnalyzeOptions(seed=2**64)", lambda: AnalyzeOptions(seed=2**64))
+t("AnalyzeOptions(nthread=-1)", lambda: AnalyzeOptions(nthread=-1))
+t("AnalyzeOptions(nthread=10**6)", lambda: AnalyzeOptions(nthread=10**6))
+t("AnalyzeOptions(horizon=0)", lambda: AnalyzeOptions(horizon=0))
+t("AnalyzeOptions(min_success=nan)", lambda: AnalyzeOptions(min_success=float('nan')))
+t("AnalyzeOptions(bogus=1)", lambda: AnalyzeOptions(bogus=1))
+t("validate(n_samples=0)", lambda: cm.validate(good, sc, n_samples=0))
+t("validate(n_samples=-3)", lambda: cm.validate(good, sc, n_samples=-3))
+t("validate(seed=-1)", lambda: cm.validate(good, sc, n_samples=2, seed=-1))
+t("validate(seed=1.5)", lambda: cm.validate(good, sc, n_samples=2, seed=1.5))
+t("validate(horizon=0)", lambda: cm.validate(good, sc, n_samples=2, horizon=0))
+t("validate(nthread=-1)", lambda: cm.validate(good, sc, n_samples=2, nthread=-1))
+t("load_trajectory(fps=0)", lambda: cm.load_trajectory("/tmp/r31/inputs/traj.npz", fps=0))
+t("load_trajectory(fps=25) vs recorded 50", lambda: cm.load_trajectory("/tmp/r31/inputs/traj.npz", fps=25))
+t("load_trajectory(bytes path)", lambda: cm.load_trajectory(b"/tmp/r31/inputs/traj.npz"))
+t("load_trajectory(path with NUL)", lambda: cm.load_trajectory("/tmp/r31/inputs/tr\0aj.npz"))
+t("load_scenario(bogus)", lambda: cm.load_scenario("bogus"))
+t("load_scenario(5)", lambda: cm.load_scenario(5))
