@@ -85,7 +85,11 @@ def test_mass_narrowed_alone_stays_conditional_at_low_friction(twin, demo_traj, 
     box = scenario.box.with_range("mass", 0.05, 0.2)
     r = analyze(demo_traj, twin=Twin(scenario.replace(box=box)), options=FAST)
     assert r.verdict is Verdict.CONDITIONAL
-    assert r.safe_region["friction"][0] > scenario.box.low[1]
+    # the region leaves that corner out: cut at low friction, or (since a round shrinks only
+    # from the failures sparse evaluation decides alone) at the heavier masses, mass <=
+    # 0.125 kg at any friction, where a 49-point full-rollout grid passes
+    assert (r.safe_region["friction"][0] > box.low[1]
+            or r.safe_region["mass"][1] < box.high[0])
     # a gate of P ≥ 1 asks for no failure: a CONDITIONAL audit found one, whatever its
     # samples estimate (a failing sliver gave P = 1.000 and exit 0 with --min-success 1)
     assert not r.passes(1.0)
