@@ -191,24 +191,30 @@ def test_a_grip_that_settles_is_not_called_soft():
     assert not report.soft and report.creep_rate < 0.2 * first
 
 
-def test_a_nominal_grip_that_creeps_past_the_slip_tolerance_is_warned_of(tmp_path):
-    """With a soft cube contact (solref 0.05) the bundled Panda's nominal cube moves about
-    14 mm in its grip; slip counts beyond the nominal's own motion, so every sample could
-    too and pass, and the contact-model check had said nothing (its probe: 2 mm)."""
+def _panda_variant(folder, old: str, new: str, seed: int = 0):
+    """A copy of the bundled Panda scenario with ``old`` (once in its scene) replaced by
+    ``new``; its twin and the demo's nominal run of ``seed`` in it."""
     import shutil
 
     import critmoment
     from critmoment import panda_demo
     from critmoment.scenario import bundled_scenario_path, load_scenario
 
-    folder = tmp_path / "soft"
     shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
     scene = folder / "scene.xml"
     text = scene.read_text()
-    assert text.count('solref="0.01 1"/>') == 1
-    scene.write_text(text.replace('solref="0.01 1"/>', 'solref="0.05 1"/>'))
+    assert text.count(old) == 1
+    scene.write_text(text.replace(old, new))
     twin = critmoment.Twin(load_scenario(folder))
-    rec = critmoment.rollout(panda_demo.make_pick_place(0, model=twin.model), twin=twin)
+    return twin, critmoment.rollout(panda_demo.make_pick_place(seed, model=twin.model),
+                                    twin=twin)
+
+
+def test_a_nominal_grip_that_creeps_past_the_slip_tolerance_is_warned_of(tmp_path):
+    """With a soft cube contact (solref 0.05) the bundled Panda's nominal cube moves about
+    14 mm in its grip; slip counts beyond the nominal's own motion, so every sample could
+    too and pass, and the contact-model check had said nothing (its probe: 2 mm)."""
+    twin, rec = _panda_variant(tmp_path / "soft", 'solref="0.01 1"/>', 'solref="0.05 1"/>')
     with pytest.warns(cm.ContactModelWarning, match=r"the nominal run's own object moves "
                                                     r"1\d\.\d mm in the grip"):
         report = cm.check_contact_model(twin, rec)
@@ -233,20 +239,8 @@ def test_a_probe_at_the_solver_iteration_cap_is_no_creep_measure(tmp_path):
     """With iterations="3" the bundled Panda's creep probe read 423 mm/s ("1.67e+03 mm over
     the carry", soft) while the full run at that mass slips 9 mm: its solver stopped at the
     cap on most steps. The check says so instead of calling the model soft."""
-    import shutil
-
-    import critmoment
-    from critmoment import panda_demo
-    from critmoment.scenario import bundled_scenario_path, load_scenario
-
-    folder = tmp_path / "it3"
-    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
-    scene = folder / "scene.xml"
-    text = scene.read_text()
-    assert text.count('impratio="10"/>') == 1
-    scene.write_text(text.replace('impratio="10"/>', 'impratio="10" iterations="3"/>'))
-    twin = critmoment.Twin(load_scenario(folder))
-    rec = critmoment.rollout(panda_demo.make_pick_place(3, model=twin.model), twin=twin)
+    twin, rec = _panda_variant(tmp_path / "it3", 'impratio="10"/>',
+                               'impratio="10" iterations="3"/>', seed=3)
     with pytest.warns(cm.ContactModelWarning, match="3-iteration cap"):
         report = cm.check_contact_model(twin, rec)
     assert "solver-cap" in {f.code for f in report.findings}
