@@ -820,6 +820,10 @@ def _critical_from_inside(stood: Mapping[tuple[str, str], tuple[int, float]], bo
         j = box.index(name)
         lo = float(unit_nominal[j])  # passes: the nominal run completes the task
         hi = float(box.to_unit(point[None])[0, j])  # fails
+        value = float(box.to_unit(np.where(np.arange(box.ndim) == j,
+                                           stood[(name, side)][1], box.nominal)[None])[0, j])
+        if (hi - lo) * (value - lo) <= 0:  # the value lies within a step of the nominal
+            continue
         for _ in range(CRITICAL_BISECTIONS):
             unit = unit_nominal[None].copy()
             unit[0, j] = 0.5 * (lo + hi)

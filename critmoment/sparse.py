@@ -876,8 +876,6 @@ class SparseEvaluator:
         self._held = held
         #: a gripper touches the object in the nominal run, (T,)
         self._touched = sig.contact_gripper.any(axis=-1)
-        self._controls_all = recording.controls
-        self._contact_all = sig.contact_gripper
         # slip counts where the nominal run holds the object with one gripper alone: an
         # object moves in a gripper that lets go (the release), which is not slip
         self._alone = twin.held_alone(sig.contact_gripper, sig.contact_support)
@@ -985,7 +983,8 @@ class SparseEvaluator:
             # add up to chatter (two ordinary Panda releases, 6 steps each, or one slow
             # opening of 14, had made every moment distrust the force ratio, and a lift-off
             # where 40 % of the box drops was left without a cause)
-            letting = self.twin.letting_go(self._controls_all, self._contact_all).any(axis=-1)
+            letting = self.twin.letting_go(
+                self._controls, self.recording.signals.contact_gripper).any(axis=-1)
             over = self._nominal_over() & ~letting
             self._chatter = int(over.sum()) >= self.persistence_steps
         return self._chatter

@@ -737,6 +737,11 @@ def test_critical_values_are_checked_by_the_full_run_just_past_them():
     out = analysis._check_critical(reports, box, lambda p: (roll(p) & (p[:, 0] > 0.495))
                                    | (p[:, 1] < 0.905), True)
     assert out[1].critical == {"mass": 0.5, "friction": 0.9}
+    # a value within a step of the nominal: the point "inside" it lies past the nominal,
+    # and no bisection can put it on the nominal's far side
+    near_nominal = {("friction", "below"): (0, 0.995)}
+    assert analysis._critical_from_inside(
+        near_nominal, box, lambda p: ~np.isclose(p[:, 1], 1.0)) == {}
     # a nominal run that fails refutes nothing by itself: those values are run
     runs.clear()
     analysis._check_critical(reports, box, roll, False)
