@@ -541,6 +541,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     twin = resolve_twin(scenario, twin)
     trajectory = at_scenario_rate(trajectory, twin)
     sc = twin.scenario
+    if opt.search:
+        _load_solvers()
     check_task_window(twin, trajectory)  # a success rule no run of this length can meet
     budget.check_audit(trajectory, twin, opt)  # seed domain, rollout and sweep size
     box = sc.box
@@ -1581,6 +1583,17 @@ def _nearest(points: np.ndarray, sites: np.ndarray) -> np.ndarray:
     best = idx[:, 0].copy()
     best[tie] = np.minimum(idx[tie, 0], idx[tie, 1])
     return best.astype(np.int64)
+
+
+def _load_solvers() -> None:
+    """Pinocchio, CasADi and Optuna imported whole before the audit's work, with the
+    interrupt signals held back (:func:`critmoment.search.load_solvers`): a Ctrl-C or a
+    stop signal is then raised after them, not inside a half-done import."""
+    from critmoment._signals import signals_held
+
+    with signals_held():
+        from critmoment import dynamics, search  # noqa: F401
+    search.load_solvers()
 
 
 def _search_all(rec, twin, evaluator, steps, opt):

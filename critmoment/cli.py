@@ -612,33 +612,18 @@ def main(argv: list[str] | None = None) -> int:
             return _main(argv)
 
 
-@contextlib.contextmanager
-def _signals_held() -> Iterator[None]:
-    """SIGINT and SIGTERM held back inside the block and delivered at its end (POSIX, main
-    thread); elsewhere nothing is held."""
-    import signal
-    import threading
+def _signals_held():
+    """SIGINT and the stop signals held back inside the block (:mod:`critmoment._signals`)."""
+    from critmoment._signals import signals_held
 
-    held = {signal.SIGINT, *_stop_signals()}
-    if (not hasattr(signal, "pthread_sigmask")
-            or threading.current_thread() is not threading.main_thread()):
-        yield
-        return
-    previous = signal.pthread_sigmask(signal.SIG_BLOCK, held)
-    try:
-        yield
-    finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+    return signals_held()
 
 
 def _stop_signals() -> list:
-    """The signals that end a run as Ctrl-C does, where the platform has them: SIGTERM
-    (``kill``, a job scheduler's stop), SIGHUP (the terminal closed), SIGQUIT, SIGUSR1 and
-    SIGUSR2 (whose default would end the process and leave its staged output behind)."""
-    import signal
+    """The signals that end a run as Ctrl-C does (:func:`critmoment._signals.stop_signals`)."""
+    from critmoment._signals import stop_signals
 
-    names = ("SIGTERM", "SIGHUP", "SIGQUIT", "SIGUSR1", "SIGUSR2")
-    return [getattr(signal, n) for n in names if hasattr(signal, n)]
+    return stop_signals()
 
 
 @contextlib.contextmanager

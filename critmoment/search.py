@@ -1106,6 +1106,36 @@ def _cost_ceiling(twin: Twin) -> float:
     return float(cp.A * math.exp(cp.alpha) + (cp.B if bounded else cp.B * math.exp(cp.beta)))
 
 
+_SOLVERS_LOADED = False
+
+
+def load_solvers() -> None:
+    """Imports the solvers the search uses, whole, with SIGINT and the stop signals held
+    back (main thread): CasADi, and Optuna with the modules a study loads on its first
+    trials. An interrupt that landed in one of those lazy imports mid-audit left Optuna
+    half-imported, and every later audit in that process failed (``AttributeError: module
+    'optuna.pruners' has no attribute '_filter_study'``). Once per process."""
+    global _SOLVERS_LOADED
+    if _SOLVERS_LOADED:
+        return
+    from critmoment._signals import signals_held
+
+    with signals_held():
+        import casadi  # noqa: F401
+        import optuna
+        from optuna.distributions import FloatDistribution
+
+        with _quiet_optuna():
+            study = optuna.create_study(direction="maximize",
+                                        sampler=_sampler(optuna, SearchMethod.TPE, 0, 2))
+            dist = {"x": FloatDistribution(0.0, 1.0)}
+            for _ in range(7):  # pairs asked together, as the search does, past TPE's
+                trials = [study.ask(dist), study.ask(dist)]  # random start-up trials
+                for trial in trials:
+                    study.tell(trial, trial.params["x"])
+        _SOLVERS_LOADED = True
+
+
 @contextlib.contextmanager
 def _quiet_optuna():
     """Optuna at WARNING and its experimental warnings muted, restored afterwards."""

@@ -556,3 +556,28 @@ def test_an_interrupt_during_an_ipopt_solve_is_not_swallowed():
     sol, status = search._solve(small, x0=np.zeros(2))
     assert status == "Solve_Succeeded"
     np.testing.assert_allclose(np.asarray(sol["x"]).ravel(), [1.0, -2.0], atol=1e-6)
+
+
+def test_the_solvers_load_whole_before_an_interrupt(monkeypatch):
+    """A stop signal that landed in one of the search's lazy imports mid-audit left Optuna
+    half-imported, and every later audit in that process failed with an AttributeError.
+    The audit loads Pinocchio, CasADi and Optuna first, whole, with the signals held back:
+    an interrupt meanwhile is raised once the load has finished."""
+    import os
+    import signal
+
+    import optuna
+
+    from critmoment import search
+
+    monkeypatch.setattr(search, "_SOLVERS_LOADED", False)
+    real = optuna.create_study
+
+    def interrupted(*args, **kwargs):
+        os.kill(os.getpid(), signal.SIGINT)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(optuna, "create_study", interrupted)
+    with pytest.raises(KeyboardInterrupt):
+        search.load_solvers()
+    assert search._SOLVERS_LOADED
