@@ -411,6 +411,30 @@ def describe_all(model: mujoco.MjModel) -> tuple[ActuatorInfo, ...]:
     return tuple(describe(model, i) for i in range(model.nu))
 
 
+def moved_bodies(model: mujoco.MjModel, i: int, *, sites: bool = False) -> list[int]:
+    """Bodies actuator ``i`` moves: the body of the joint it drives, or of the joints its
+    tendon wraps; with ``sites``, also the body of its site (a site transmission), of the
+    sites its tendon wraps, and its body (a body transmission)."""
+    trn = mujoco.mjtTrn
+    kind, tid = int(model.actuator_trntype[i]), int(model.actuator_trnid[i, 0])
+    if kind in (trn.mjTRN_JOINT, trn.mjTRN_JOINTINPARENT):
+        return [int(model.jnt_bodyid[tid])]
+    if kind == trn.mjTRN_TENDON:
+        adr, num = model.tendon_adr[tid], model.tendon_num[tid]
+        bodies = []
+        for w in range(adr, adr + num):
+            if model.wrap_type[w] == mujoco.mjtWrap.mjWRAP_JOINT:
+                bodies.append(int(model.jnt_bodyid[model.wrap_objid[w]]))
+            elif sites and model.wrap_type[w] == mujoco.mjtWrap.mjWRAP_SITE:
+                bodies.append(int(model.site_bodyid[model.wrap_objid[w]]))
+        return bodies
+    if sites and kind == trn.mjTRN_SITE:
+        return [int(model.site_bodyid[tid])]
+    if sites and kind == trn.mjTRN_BODY:
+        return [tid]
+    return []
+
+
 def body_chain(model: mujoco.MjModel, body: int) -> list[int]:
     """``body`` and its ancestors up to the world (0), in that order."""
     chain = [int(body)]

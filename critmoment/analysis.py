@@ -815,41 +815,47 @@ def _critical_from_inside(stood: Mapping[tuple[str, str], tuple[int, float]], bo
     keys = list(stood)
     inside = np.array([_past_critical(box, name, "below" if side == "above" else "above",
                                       stood[(name, side)][1]) for name, side in keys])
-    unit_nominal = box.to_unit(box.nominal[None])[0]
     for (name, side), point, failed in zip(keys, inside, roll(inside), strict=True):
         if not failed:
             continue
         j = box.index(name)
-        lo = float(unit_nominal[j])  # passes: the nominal run completes the task
-        hi = float(box.to_unit(point[None])[0, j])  # fails
-        value = float(box.to_unit(np.where(np.arange(box.ndim) == j,
-                                           stood[(name, side)][1], box.nominal)[None])[0, j])
-        if (hi - lo) * (value - lo) <= 0:  # the value lies within a step of the nominal
-            continue
+        lo = _unit_of(box, j, box.nominal[j])  # passes: the nominal run completes the task
+        hi = _unit_of(box, j, point[j])  # fails
+        if (hi - lo) * (_unit_of(box, j, stood[(name, side)][1]) - lo) <= 0:
+            continue  # the value lies within a step of the nominal
         for _ in range(CRITICAL_BISECTIONS):
-            unit = unit_nominal[None].copy()
-            unit[0, j] = 0.5 * (lo + hi)
-            if roll(box.from_unit(unit))[0]:
-                hi = float(unit[0, j])
+            mid = 0.5 * (lo + hi)
+            if roll(_nominal_with(box, j, mid)[None])[0]:
+                hi = mid
             else:
-                lo = float(unit[0, j])
-        unit = unit_nominal[None].copy()
-        unit[0, j] = lo
-        out[(stood[(name, side)][0], name)] = float(box.from_unit(unit)[0, j])
+                lo = mid
+        out[(stood[(name, side)][0], name)] = float(_nominal_with(box, j, lo)[j])
     return out
+
+
+def _unit_of(box, j: int, value: float) -> float:
+    """Parameter ``j`` at ``value`` in its prior's unit scale."""
+    point = box.nominal.astype(np.float64).copy()
+    point[j] = value
+    return float(box.to_unit(point[None])[0, j])
+
+
+def _nominal_with(box, j: int, u: float) -> np.ndarray:
+    """The nominal point with parameter ``j`` at unit value ``u`` (within the box), the
+    others at their nominal values exactly."""
+    unit = box.to_unit(box.nominal[None])
+    unit[0, j] = min(max(u, 0.0), 1.0)
+    point = box.nominal.astype(np.float64).copy()
+    point[j] = box.from_unit(unit)[0, j]
+    return point
 
 
 def _past_critical(box, name: str, side: str, value: float) -> np.ndarray:
     """The nominal point with ``name`` moved ``CRITICAL_STEP`` of its prior's range past
     ``value`` on the failing ``side`` (within the box)."""
     j = box.index(name)
-    point = box.nominal.astype(np.float64).copy()
-    point[j] = value
-    u = box.to_unit(point[None])[0, j] + (CRITICAL_STEP if side == "above" else -CRITICAL_STEP)
-    unit = box.to_unit(box.nominal[None])
-    unit[0, j] = min(max(u, 0.0), 1.0)
-    point[j] = box.from_unit(unit)[0, j]
-    return point
+    return _nominal_with(box, j, _unit_of(box, j, value)
+                         + (CRITICAL_STEP if side == "above" else -CRITICAL_STEP))
 
 
 def _completion_rule(rec: Recording, twin: Twin) -> str:

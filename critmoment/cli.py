@@ -28,6 +28,7 @@ from pathlib import Path
 # only light modules here: NumPy, MuJoCo and the rest load inside main(), where an
 # interruption is handled
 from critmoment import budget
+from critmoment._signals import signals_held, stop_signals
 from critmoment.exceptions import CritmomentError, CritmomentWarning
 
 __all__ = ["main", "build_parser", "EXIT_OK", "EXIT_UNSAFE", "EXIT_ERROR"]
@@ -597,7 +598,7 @@ def main(argv: list[str] | None = None) -> int:
         try:
             # the libraries load here (about 1 s), whole: a Ctrl-C meanwhile is raised after
             # them (one cutting NumPy's initialisation short left an ImportError, exit 1)
-            with _signals_held():
+            with signals_held():
                 from critmoment.twin import quiet_mujoco_log
         except KeyboardInterrupt:
             print("critmoment: error: interrupted; no output was written", file=sys.stderr)
@@ -612,26 +613,12 @@ def main(argv: list[str] | None = None) -> int:
             return _main(argv)
 
 
-def _signals_held():
-    """SIGINT and the stop signals held back inside the block (:mod:`critmoment._signals`)."""
-    from critmoment._signals import signals_held
-
-    return signals_held()
-
-
-def _stop_signals() -> list:
-    """The signals that end a run as Ctrl-C does (:func:`critmoment._signals.stop_signals`)."""
-    from critmoment._signals import stop_signals
-
-    return stop_signals()
-
-
 @contextlib.contextmanager
 def _terminate_as_interrupt() -> Iterator[None]:
-    """The stop signals (:func:`_stop_signals`) end the run as Ctrl-C does: the output
-    being written is removed, the previous one kept, exit 2. Only in the main thread (where
-    Python runs signal handlers), and only for a signal not ignored (``nohup`` ignores
-    SIGHUP); the previous handlers come back after."""
+    """The stop signals (:func:`~critmoment._signals.stop_signals`) end the run as Ctrl-C
+    does: the output being written is removed, the previous one kept, exit 2. Only in the
+    main thread (where Python runs signal handlers), and only for a signal not ignored
+    (``nohup`` ignores SIGHUP); the previous handlers come back after."""
     import signal
     import threading
 
@@ -645,7 +632,7 @@ def _terminate_as_interrupt() -> Iterator[None]:
 
     previous = {}
     try:
-        for sig in _stop_signals():
+        for sig in stop_signals():
             if signal.getsignal(sig) is not signal.SIG_IGN:
                 previous[sig] = signal.signal(sig, stop)
     except (ValueError, OSError):  # no signals here (an embedded interpreter)
@@ -759,7 +746,7 @@ def run() -> None:
     except KeyboardInterrupt:
         print("critmoment: error: interrupted", file=sys.stderr)
     try:
-        for sig in (signal.SIGINT, *_stop_signals()):
+        for sig in (signal.SIGINT, *stop_signals()):
             signal.signal(sig, signal.SIG_IGN)
     except (ValueError, OSError):  # not the main thread, or no signals here
         pass

@@ -670,22 +670,8 @@ def _jammed(model: mujoco.MjModel, data: mujoco.MjData, states: np.ndarray, a: i
     touch in the first recorded state. A tree with joints no actuator drives is a fixture
     (a hinged flap touching the pads at the start is something the motion meets)."""
     driven = np.zeros(model.nbody, dtype=bool)
-    trn = mujoco.mjtTrn
     for act in range(model.nu):
-        kind, target = int(model.actuator_trntype[act]), int(model.actuator_trnid[act, 0])
-        if kind in (trn.mjTRN_JOINT, trn.mjTRN_JOINTINPARENT):
-            driven[model.jnt_bodyid[target]] = True
-        elif kind == trn.mjTRN_TENDON:
-            first, count = model.tendon_adr[target], model.tendon_num[target]
-            for w in range(first, first + count):
-                if model.wrap_type[w] == mujoco.mjtWrap.mjWRAP_JOINT:
-                    driven[model.jnt_bodyid[model.wrap_objid[w]]] = True
-                elif model.wrap_type[w] == mujoco.mjtWrap.mjWRAP_SITE:
-                    driven[model.site_bodyid[model.wrap_objid[w]]] = True
-        elif kind == trn.mjTRN_SITE:
-            driven[model.site_bodyid[target]] = True
-        elif kind == trn.mjTRN_BODY:
-            driven[target] = True
+        driven[act_info.moved_bodies(model, act, sites=True)] = True
     articulated = np.zeros(model.nbody, dtype=bool)
     articulated[model.body_rootid[np.flatnonzero(driven)]] = True
     articulated[0] = False

@@ -153,22 +153,6 @@ def _collision_geoms(model: mujoco.MjModel, bodies: np.ndarray) -> list[int]:
     return [g for g in range(model.ngeom) if bodies[model.geom_bodyid[g]] and colliding[g]]
 
 
-def _moved_bodies(model: mujoco.MjModel, i: int) -> list[int]:
-    """Bodies whose joints actuator ``i`` drives (through its joint or tendon)."""
-    trn = int(model.actuator_trntype[i])
-    tid = int(model.actuator_trnid[i, 0])
-    if trn in (int(mujoco.mjtTrn.mjTRN_JOINT), int(mujoco.mjtTrn.mjTRN_JOINTINPARENT)):
-        return [int(model.jnt_bodyid[tid])]
-    if trn == int(mujoco.mjtTrn.mjTRN_TENDON):
-        adr, num = model.tendon_adr[tid], model.tendon_num[tid]
-        bodies = []
-        for w in range(adr, adr + num):
-            if model.wrap_type[w] == mujoco.mjtWrap.mjWRAP_JOINT:
-                bodies.append(int(model.jnt_bodyid[model.wrap_objid[w]]))
-        return bodies
-    return []
-
-
 def _far_targets(model: mujoco.MjModel) -> list[str]:
     """Position servos whose control range pulls their limited hinge or slide joint far
     outside its range (by more than the range's width): a ctrlrange in degrees (MuJoCo
@@ -234,7 +218,7 @@ def _is_gripper_actuator(model: mujoco.MjModel, info: act_info.ActuatorInfo) -> 
     if info.joint_type == "slide":
         return True
     names = [info.name, info.target]
-    for b in _moved_bodies(model, info.index):
+    for b in act_info.moved_bodies(model, info.index):
         names.append(model.body(b).name)
     return any(_GRIPPER_WORDS.search(n or "") for n in names)
 
@@ -346,7 +330,7 @@ def _unnest(model: mujoco.MjModel, groups: dict[int, list[int]],
     arm = np.zeros(model.njnt, bool)
     for a in range(model.nu):
         if a not in candidates:
-            for b in _moved_bodies(model, a):
+            for b in act_info.moved_bodies(model, a):
                 start = int(model.body_jntadr[b])
                 arm[start:start + int(model.body_jntnum[b])] = True
 
@@ -379,7 +363,7 @@ def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
                    ) -> tuple[list[GripperGuess], list[str]]:
     notes: list[str] = []
     groups: dict[int, list[int]] = {}
-    candidates = {info.index: _moved_bodies(model, info.index) for info in infos
+    candidates = {info.index: act_info.moved_bodies(model, info.index) for info in infos
                   if _is_gripper_actuator(model, info)}
     for info in infos:
         moved = candidates.get(info.index)
@@ -439,7 +423,7 @@ def gripper_at(model: mujoco.MjModel, body: str, *, keyframe: int | None = None,
         raise ScenarioError(f"--gripper {body}: expected two or more collision geoms on it and "
                             f"the bodies below it, found {len(geoms)}")
     acts = [a for a in range(model.nu)
-            if (moved := _moved_bodies(model, a)) and all(below[m] and m != b for m in moved)]
+            if (moved := act_info.moved_bodies(model, a)) and all(below[m] and m != b for m in moved)]
     moving, closed, opened, still = [], [], [], []
     for a in acts:
         try:
@@ -453,7 +437,7 @@ def gripper_at(model: mujoco.MjModel, body: str, *, keyframe: int | None = None,
     if not moving:
         # an actuator on the body's own joint moves it whole (one jaw, or the wrist): the
         # gripper is the body above that holds both jaws
-        own = [model.actuator(a).name for a in range(model.nu) if b in _moved_bodies(model, a)]
+        own = [model.actuator(a).name for a in range(model.nu) if b in act_info.moved_bodies(model, a)]
         parent = model.body(int(model.body_parentid[b])).name
         hint = (f"; {', '.join(own)} moves {body!r} itself as a whole (one jaw, or the "
                 f"wrist): name the body that holds both jaws, such as its parent {parent!r}"

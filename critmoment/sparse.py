@@ -248,6 +248,14 @@ STILL_SLIP = 1e-5
 #: every gripper within the evaluation for that to count as the restore's doing, not the
 #: load's (:meth:`SparseEvaluator._decide`)
 EJECT_FOS = 2.0
+
+
+def _held_at_restore(sig: Signals) -> np.ndarray:
+    """(nsim,) bool: the grasp held each simulation's load ``EJECT_FOS`` times inside the
+    cone at its first step decided (finite: carried, not on its support)."""
+    first = sig.fos_grasp[:, 0]
+    with np.errstate(invalid="ignore"):
+        return np.isfinite(first) & (first >= EJECT_FOS)
 #: how long [s] a contact failure whose measured slip is still under ``slip_tolerance`` is
 #: followed past its decision, to see whether the object keeps sliding or has settled
 SETTLE_TIME = 0.15
@@ -887,7 +895,9 @@ class SparseEvaluator:
         # own grasp after a regrasp) and where its grasp has formed (slip counts from
         # there): Twin.slip_masks
         masks = twin.slip_masks(recording.controls, sig.contact_gripper, sig.contact_support)
-        self._counted, self._segments, self._formed = masks
+        self._counted, self._segments, self._formed = masks.counted, masks.segments, masks.formed
+        #: a gripper lets its object go in the nominal run, (T,)
+        self._letting = masks.letting.any(axis=-1)
         self._nominal_rel = np.full((self._states.shape[0], len(self._anchors), 3), np.nan)
         self._grasp_cache: tuple[np.ndarray, np.ndarray] | None = None
         self._sensordata = getattr(recording, "sensordata", None)
@@ -983,9 +993,7 @@ class SparseEvaluator:
             # add up to chatter (two ordinary Panda releases, 6 steps each, or one slow
             # opening of 14, had made every moment distrust the force ratio, and a lift-off
             # where 40 % of the box drops was left without a cause)
-            letting = self.twin.letting_go(
-                self._controls, self.recording.signals.contact_gripper).any(axis=-1)
-            over = self._nominal_over() & ~letting
+            over = self._nominal_over() & ~self._letting
             self._chatter = int(over.sum()) >= self.persistence_steps
         return self._chatter
 
@@ -1583,9 +1591,7 @@ class SparseEvaluator:
         most = int(np.ceil(SETTLE_TIME / float(self.twin.model.opt.timestep)))
         floor = SLIP_FLOOR * tol
         raised = np.zeros(nsim, bool)
-        first_fos = decided.signals.fos_grasp[:, 0]
-        with np.errstate(invalid="ignore"):
-            held_then = np.isfinite(first_fos) & (first_fos >= EJECT_FOS)
+        held_then = _held_at_restore(decided.signals)
         for begin in (int(b) for b in np.unique(start[cand])):
             group = cand[start[cand] == begin]
             # each one's slip so far, then what the follow adds: (c, width + most)
@@ -1609,10 +1615,11 @@ class SparseEvaluator:
                 # pushed out of the restored grip (as in _decide): every gripper's touch lost
                 # while the nominal grip touches all along, from a grasp that held the
                 # load EJECT_FOS times inside the cone at the restore
-                nominal_touch = self._touched[begin + done:begin + done + p].all()
-                with np.errstate(over="ignore", invalid="ignore"):
-                    lost = ~self.twin.signals(sd).contact_gripper.any(axis=-1).all(axis=1)
-                ejected = nominal_touch & lost & held_then[ids]
+                ejected = held_then[ids] & self._touched[begin + done:begin + done + p].all()
+                if ejected.any():  # the readings' signals only where they can decide
+                    with np.errstate(over="ignore", invalid="ignore"):
+                        touch = self.twin.signals(sd).contact_gripper.any(axis=-1)
+                    ejected &= ~touch.all(axis=1)
                 track[live[:, None], last[live][:, None] + np.arange(p)] = more
                 last[live] += p
                 done += p
@@ -1722,9 +1729,8 @@ class SparseEvaluator:
         # unsafes of 32, every one passing its own run; 0 with this rule): for its own run
         # to decide. A load the grip cannot hold is outside the cone from the restore on.
         nominal_holds = self._touched[at]
-        with np.errstate(invalid="ignore"):
-            held_then = np.isfinite(sig.fos_grasp[:, 0]) & (sig.fos_grasp[:, 0] >= EJECT_FOS)
-        ejected = ((nominal_holds | ~valid).all(axis=1) & nominal_holds[:, 0] & held_then
+        ejected = ((nominal_holds | ~valid).all(axis=1) & nominal_holds[:, 0]
+                   & _held_at_restore(sig)
                    & (valid & ~sig.contact_gripper.any(axis=-1)).any(axis=1))
         sticking = ((inside | still | shared | ejected) & (failure == Failure.CONTACT)
                     & (stop_kind == Failure.CONTACT))

@@ -229,6 +229,7 @@ class SlipMasks(NamedTuple):
     counted: np.ndarray  # bool: the gripper holds alone, not in its release (slip_counted)
     segments: np.ndarray  # int: which of the gripper's holds (hold_segments)
     formed: np.ndarray  # bool: its grasp has formed (grasp_formed)
+    letting: np.ndarray  # bool: the gripper lets its object go (letting_go)
 
 
 class Twin:
@@ -952,19 +953,17 @@ class Twin:
 
     def slip_masks(self, controls: np.ndarray, contact_gripper: np.ndarray,
                    contact_support: np.ndarray) -> SlipMasks:
-        """The nominal run's :meth:`slip_counted`, :meth:`hold_segments` and
-        :meth:`grasp_formed` at once (the commands read and the holds found once): what the
+        """The nominal run's :meth:`slip_counted`, :meth:`hold_segments`,
+        :meth:`grasp_formed` and :meth:`letting_go` at once (the commands read and the holds found once): what the
         ground truth, the chains and sparse evaluation measure slip with."""
         touching = np.asarray(contact_gripper, bool)
         opening = self.gripper_opening(controls)
         releases = list(self._releases(opening, touching))
-        letting = np.zeros(touching.shape, bool)
-        for g, a, b, start in releases:
-            letting[a + start:b, g] = True
+        letting = self._letting(releases, touching.shape)
         segments = self._segments(releases, touching.shape)
         return SlipMasks(counted=self.held_alone(touching, contact_support) & ~letting,
                          segments=segments,
-                         formed=self._formed(opening, touching, segments))
+                         formed=self._formed(opening, touching, segments), letting=letting)
 
     def letting_go(self, controls: np.ndarray, touching: np.ndarray) -> np.ndarray:
         """Where each gripper lets its object go, (T, G) bool: the release that ends a hold
@@ -983,8 +982,14 @@ class Twin:
             touching: the gripper touches the object, (T, G) bool.
         """
         touching = np.asarray(touching, bool)
-        out = np.zeros(touching.shape, bool)
-        for g, a, b, start in self._releases(self.gripper_opening(controls), touching):
+        return self._letting(self._releases(self.gripper_opening(controls), touching),
+                             touching.shape)
+
+    @staticmethod
+    def _letting(releases, shape: tuple[int, int]) -> np.ndarray:
+        """:meth:`letting_go` from the holds that end in a release (:meth:`_releases`)."""
+        out = np.zeros(shape, bool)
+        for g, a, b, start in releases:
             out[a + start:b, g] = True
         return out
 

@@ -1560,17 +1560,16 @@ def _causes(reports: Sequence[MomentReport], threshold: float,
             name = f"{name} at {mr.limiting_actuator}"
         crit = ", ".join(f"{k} {mr.critical_side[k]} {v:.3g}{units.get(k, '')}"
                          for k, v in mr.critical.items() if v is not None)
+        # a critical value is where one parameter alone crosses, the others at nominal
+        # (elsewhere in the box it can lie elsewhere: the region says where it holds)
+        others = " with the others at nominal" if len(mr.critical) > 1 else ""
         if mr.squeeze:
             where = (f" (a squeeze without a lift: sparse evaluation fails "
                      f"{'for ' + crit if crit else 'there'}; the samples' own rollouts decide)")
         elif crit and not nominal_completed:
-            others = " with the others at nominal" if len(mr.critical) > 1 else ""
             where = (f" (sparse evaluation from the failing nominal run's states crosses for "
                      f"{crit}{others}; not checked by own runs)")
         elif crit:
-            # a critical value is where one parameter alone crosses, the others at nominal
-            # (elsewhere in the box it can lie elsewhere: the region says where it holds)
-            others = " with the others at nominal" if len(mr.critical) > 1 else ""
             where = f" (fails for {crit}{others})"
         elif mr.fail_fraction > 0:
             where = f" ({mr.fail_fraction:.0%} of the box)"
