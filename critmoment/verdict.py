@@ -961,6 +961,11 @@ def hot_edges(edges: Sequence[np.ndarray], cost: np.ndarray, *, near: float) -> 
     return [i for i, e in enumerate(edges) if hot[e].any()]
 
 
+#: at most this many parameters failing at both ends get their faces chosen by a passing
+#: corner in :func:`shrink_region` (2**n orientations tried); more move any face greedily
+MAX_BOTH_FACES = 4
+
+
 def shrink_region(region: Mapping[str, tuple[float, float]], failing: np.ndarray,
                   box: UncertaintyBox, sides: Sequence[str], *, margin: float = 0.01,
                   passing: np.ndarray | None = None) -> dict[str, tuple[float, float]] | None:
@@ -977,37 +982,49 @@ def shrink_region(region: Mapping[str, tuple[float, float]], failing: np.ndarray
         region: {name: (low, high)}.
         failing: the failing check points, (q, k).
         box: the box.
-        sides: per parameter, the failing side ("above"/"below"; with a "both", any face
-            may move: :func:`_any_face_cut`).
+        sides: per parameter, the failing side ("above"/"below"/"both"). A "both"
+            parameter's worst corner is taken on the side of its nominal value where the
+            failing points lie (both sides tried where they lie on both, for at most
+            ``MAX_BOTH_FACES`` such parameters); where no passing corner keeps them out, any
+            face may move (:func:`_any_face_cut`).
         margin: distance kept from each failing point.
         passing: the check points that passed, (r, k), or None.
 
     Returns:
         The shrunk region, or None when no sub-box is left.
     """
-    orient = np.array(sides) == "below"
     lo = np.array([region[n][0] for n in box.names], dtype=np.float64)
     hi = np.array([region[n][1] for n in box.names], dtype=np.float64)
     if "both" in sides:
-        # a parameter failing on both sides of its nominal value: either of its faces may move
-        return _any_face_cut(lo, hi, failing, box, float(margin), passing)
-    u_lo, u_hi = box.to_unit(lo[None])[0], box.to_unit(hi[None])[0]
-    a = np.where(orient, 1.0 - u_hi, u_lo)
-    b = np.where(orient, 1.0 - u_lo, u_hi)
-    bad = _oriented(box, failing, sides)
-    cut = None
-    if passing is not None and np.size(passing):
-        # the new worst corner is a checked point that passed
-        corners = np.clip(_oriented(box, passing, sides), a, b)
-        corners = corners[(corners > a + 1e-12).all(axis=1)]
-        if corners.shape[0]:
-            inside = (bad[None, :, :] >= a - 1e-12) & (
-                bad[None, :, :] <= corners[:, None, :] + margin)
-            clean = ~inside.all(axis=2).any(axis=1)
-            if clean.any():
-                vol = np.where(clean, np.prod(corners - a, axis=1), -1.0)
-                cut = corners[int(np.argmax(vol))]
+        # a parameter failing on both sides of its nominal value: one of its faces moves,
+        # whichever gives a passing corner the most room (the failures of the round can all
+        # lie on one side: a dragged cube's friction fails at both ends of the box, but the
+        # shrunk region's failing corner at its high end only); else any face may move
+        both = [j for j, side in enumerate(sides) if side == "both"]
+        # each such parameter's worst corner lies on the side of its nominal value where the
+        # failing points are (a corner on the other side, the friction's low face when the
+        # failures lie at its high one, would leave the failing corner unchecked)
+        u_nom = box.to_unit(np.asarray(box.nominal, dtype=np.float64)[None])[0]
+        u_bad = box.to_unit(np.asarray(failing, dtype=np.float64).reshape(-1, box.ndim))
+        choices = [[face for face, on in (("above", u_bad[:, j] > u_nom[j]),
+                                          ("below", u_bad[:, j] <= u_nom[j])) if on.any()]
+                   for j in both]
+        best = None
+        for faces in itertools.product(*choices) if len(both) <= MAX_BOTH_FACES else ():
+            one_sided = list(sides)
+            for j, face in zip(both, faces, strict=True):
+                one_sided[j] = face
+            found = _passing_corner(lo, hi, failing, box, one_sided, margin, passing)
+            if found is not None and (best is None or found[1] > best[2]):
+                best = (one_sided, found[0], found[1])
+        if best is None:
+            return _any_face_cut(lo, hi, failing, box, float(margin), passing)
+        return _region_below_cut(lo, hi, best[1], box, best[0])
+    found = _passing_corner(lo, hi, failing, box, sides, margin, passing)
+    cut = None if found is None else found[0]
+    a, b = _oriented_faces(lo, hi, box, sides)
     if cut is None:
+        bad = _oriented(box, failing, sides)
         cut = _best_cut(bad, a, b, float(margin))
     if cut is None:
         # a failure on a face the failing sides keep (failures at both ends of a
@@ -1023,6 +1040,46 @@ def shrink_region(region: Mapping[str, tuple[float, float]], failing: np.ndarray
         moved = _any_face_cut(lo, hi, failing, box, float(margin), passing)
         if moved is not None:
             return moved
+    return _region_below_cut(lo, hi, cut, box, sides)
+
+
+def _oriented_faces(lo: np.ndarray, hi: np.ndarray, box: UncertaintyBox,
+                    sides: Sequence[str]) -> tuple[np.ndarray, np.ndarray]:
+    """The region [lo, hi] in oriented unit coordinates (failure at large values): (a, b)."""
+    orient = np.array(sides) == "below"
+    u_lo, u_hi = box.to_unit(lo[None])[0], box.to_unit(hi[None])[0]
+    return np.where(orient, 1.0 - u_hi, u_lo), np.where(orient, 1.0 - u_lo, u_hi)
+
+
+def _passing_corner(lo: np.ndarray, hi: np.ndarray, failing: np.ndarray, box: UncertaintyBox,
+                    sides: Sequence[str], margin: float, passing: np.ndarray | None
+                    ) -> tuple[np.ndarray, float] | None:
+    """The checked point that passed and, as the new worst corner of [lo, hi] (``sides``
+    one-sided), gives the largest region keeping ``margin`` from every failing point:
+    (its oriented unit coordinates, the region's volume there), or None."""
+    if passing is None or not np.size(passing):
+        return None
+    a, b = _oriented_faces(lo, hi, box, sides)
+    bad = _oriented(box, failing, sides)
+    corners = np.clip(_oriented(box, passing, sides), a, b)
+    corners = corners[(corners > a + 1e-12).all(axis=1)]
+    if not corners.shape[0]:
+        return None
+    inside = (bad[None, :, :] >= a - 1e-12) & (bad[None, :, :] <= corners[:, None, :] + margin)
+    clean = ~inside.all(axis=2).any(axis=1)
+    if not clean.any():
+        return None
+    vol = np.where(clean, np.prod(corners - a, axis=1), -1.0)
+    i = int(np.argmax(vol))
+    return corners[i], float(vol[i])
+
+
+def _region_below_cut(lo: np.ndarray, hi: np.ndarray, cut: np.ndarray, box: UncertaintyBox,
+                      sides: Sequence[str]) -> dict[str, tuple[float, float]]:
+    """[lo, hi] with its failing-side faces (``sides`` one-sided) moved to ``cut`` (oriented
+    unit coordinates); a face the cut does not move keeps its exact value."""
+    orient = np.array(sides) == "below"
+    _, b = _oriented_faces(lo, hi, box, sides)
     out = {}
     for j, p in enumerate(box.parameters):
         if np.isclose(cut[j], b[j], rtol=0, atol=1e-12):

@@ -375,6 +375,35 @@ def test_failures_at_both_ends_of_a_parameter_move_both_faces():
                             np.array([[0.05, 0.2]]), box, ["above", "above"]) is None
 
 
+def test_a_two_sided_parameter_failing_at_one_corner_converges_on_a_passing_corner():
+    """A dragged cube: friction fails at both ends of the box (slippery, and so grippy that
+    the table pulls a heavy cube out of the grip: mass × friction > 0.5), mass above. After
+    the first cut every failure lies at the high-friction face: the new region's worst
+    corner is a checked point that passed there, and the check holds in 2 rounds (the
+    greedy face cut moved the mass face in a little each round, each new corner on the
+    diagonal boundary failing again, and after 4 rounds there was no region)."""
+    box = _box()
+
+    def fails(x):
+        return (x[:, 1] < 0.35) | (x[:, 0] * x[:, 1] > 0.5)
+
+    region = {"mass": (0.05, 0.8), "friction": (0.3, 1.5)}
+    for rounds in range(1, 5):
+        pts, _ = vd.region_points(region, box, per_edge=3)
+        pts = np.vstack([pts, vd.interior_points(region, box)])
+        bad = fails(pts)
+        if not bad.any():
+            break
+        region = vd.round_inward(vd.shrink_region(region, pts[bad], box, ["above", "both"],
+                                                  passing=pts[~bad]), box)
+        assert region is not None
+    assert rounds <= 2
+    dense, _ = vd.region_points(region, box, per_edge=41)
+    assert not fails(dense).any()
+    assert not fails(vd.interior_points(region, box, scale=4)).any()
+    assert region["mass"][1] > 0.3
+
+
 def _com_box() -> UncertaintyBox:
     from critmoment.params import ComOffsetParameter
 
