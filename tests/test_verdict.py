@@ -388,7 +388,9 @@ def test_a_two_sided_parameter_failing_at_one_corner_converges_on_a_passing_corn
         return (x[:, 1] < 0.35) | (x[:, 0] * x[:, 1] > 0.5)
 
     region = {"mass": (0.05, 0.8), "friction": (0.3, 1.5)}
-    for rounds in range(1, 5):
+    rounds = 0
+    while rounds < 4:
+        rounds += 1
         pts, _ = vd.region_points(region, box, per_edge=3)
         pts = np.vstack([pts, vd.interior_points(region, box)])
         bad = fails(pts)
