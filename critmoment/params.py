@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import dataclasses
 import enum
+import math
 from collections.abc import Mapping
 from typing import Any, ClassVar, Protocol
 
@@ -84,7 +85,10 @@ class Parameter:
                                                                              np.number)):
                 raise ParameterError(
                     f"parameter {self.name!r} {field}: expected a number, got {value!r}")
-            object.__setattr__(self, field, float(value))
+            try:
+                object.__setattr__(self, field, float(value))
+            except OverflowError:  # an int past float's range: as refused as inf
+                object.__setattr__(self, field, math.inf if value > 0 else -math.inf)
         if not isinstance(self.prior, Prior):
             try:
                 object.__setattr__(self, "prior", Prior(self.prior))
@@ -359,6 +363,12 @@ class UncertaintyBox:
             raise ParameterError(
                 f"UncertaintyBox parameters: expected at least one critmoment Parameter "
                 f"(MassParameter, FrictionParameter, ...), got {bad or 'none'}")
+        abstract = [p.name for p in params if type(p).resolve is Parameter.resolve]
+        if abstract:
+            raise ParameterError(
+                f"UncertaintyBox parameters: expected parameters of a kind ("
+                f"{', '.join(c.__name__ for c, _ in PARAMETER_KINDS.values())}, or a subclass "
+                f"that implements resolve and write), got the base Parameter for {abstract}")
         object.__setattr__(self, "parameters", tuple(params))
         names = [p.name for p in self.parameters]
         if len(set(names)) != len(names):

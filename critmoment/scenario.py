@@ -660,6 +660,11 @@ class Scenario:
                             ("feasibility", FeasibilityOptions)):
             if not isinstance(getattr(self, field), kind):
                 raise bad(field, f"a {kind.__name__}", getattr(self, field))
+        self._bind_task()
+        key = self.keyframe
+        if not (key is None or (isinstance(key, (int, np.integer)) and not isinstance(
+                key, (bool, np.bool_))) or (isinstance(key, str) and key)):
+            raise bad("keyframe", "a keyframe name, an index of an unnamed one, or None", key)
         if not (_is_number(self.fps) and math.isfinite(self.fps) and self.fps > 0):
             raise bad("fps", "an action rate > 0 Hz", self.fps)
         if self.range_policy not in ("error", "clip", "warn"):
@@ -674,6 +679,22 @@ class Scenario:
                 raise ScenarioError(
                     f"Scenario limits: expected a force limit > 0 (N or N·m; inf for none) per "
                     f"actuator name, got {actuator!r}: {value!r}")
+
+    def _bind_task(self) -> None:
+        """Give the task the scenario's gripper order: a task reads the contact signals by
+        column, in :attr:`gripper_names` order, and names its roles (picker, receiver,
+        gripper) by name. A task built in code with its grippers in another order (or a
+        scenario whose grippers were reordered by :meth:`replace`) would read one gripper's
+        contacts for another's role; a task naming a gripper the scenario lacks is refused."""
+        names = self.gripper_names
+        if self.task.grippers == names:
+            return
+        unknown = [g for g in self.task.grippers if g not in names]
+        if unknown:
+            raise ScenarioError(
+                f"Scenario task: expected grippers of the scenario {list(names)}, got "
+                f"{list(self.task.grippers)} ({', '.join(map(repr, unknown))} not among them)")
+        object.__setattr__(self, "task", dataclasses.replace(self.task, grippers=names))
 
     @property
     def gripper_names(self) -> tuple[str, ...]:

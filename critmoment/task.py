@@ -128,10 +128,27 @@ class Task:
     keys: ClassVar[tuple[str, ...]] = ("lift_height", "settle_time")
 
     def __post_init__(self):
+        grippers = self.grippers
+        if (isinstance(grippers, str) or not isinstance(grippers, (tuple, list)) or not grippers
+                or not all(isinstance(g, str) and g for g in grippers)
+                or len(set(grippers)) != len(grippers)):
+            raise ScenarioError(f"[task] grippers: expected the names of the scenario's grippers "
+                                f"(distinct non-empty strings), got {grippers!r}")
+        object.__setattr__(self, "grippers", tuple(grippers))
         for key in ("lift_height", "settle_time"):
-            value = getattr(self, key)
-            if not (np.isfinite(value) and value >= 0):
-                raise ScenarioError(f"[task] {key}: expected a finite number >= 0, got {value!r}")
+            _set_real(self, key, lower=0.0, strict=False)
+        up = _vector(self.up, "up")
+        norm = float(np.linalg.norm(up))
+        if not norm > 0:
+            raise ScenarioError(f"[task] up: expected a non-zero direction (x, y, z), got {self.up!r}")
+        object.__setattr__(self, "up", tuple(float(v) / norm + 0.0 for v in up))
+
+    def _check_role(self, key: str) -> None:
+        """The field ``key`` names one of :attr:`grippers`."""
+        value = getattr(self, key)
+        if not isinstance(value, str) or value not in self.grippers:
+            raise ScenarioError(f"[task] {key}: expected one of the grippers "
+                                f"{list(self.grippers)}, got {value!r}")
 
     # -- per step ------------------------------------------------------------------
     def stage(self, contact_gripper: np.ndarray, contact_support: np.ndarray,
@@ -233,6 +250,40 @@ class Task:
         raise NotImplementedError
 
 
+def _is_real(value: Any) -> bool:
+    """A real number (Python or NumPy), not a bool."""
+    return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(
+        value, (bool, np.bool_))
+
+
+def _set_real(task: Task, key: str, *, lower: float, strict: bool) -> None:
+    """Check that the field ``key`` is a finite real number above ``lower`` (``>`` when
+    ``strict``, else ``>=``) and store it as a float."""
+    value = getattr(task, key)
+    try:
+        number = float(value) if _is_real(value) else float("nan")
+    except OverflowError:
+        number = float("nan")
+    if not (np.isfinite(number) and (number > lower if strict else number >= lower)):
+        raise ScenarioError(f"[task] {key}: expected a finite number {'>' if strict else '>='} "
+                            f"{lower:g}, got {value!r}")
+    object.__setattr__(task, key, number)
+
+
+def _vector(value: Any, key: str) -> np.ndarray:
+    """Three finite real numbers, (3,)."""
+    try:
+        ok = not isinstance(value, (str, bytes)) and len(value) == 3 and all(
+            _is_real(v) for v in value)
+        out = np.asarray([float(v) for v in value]) if ok else None
+    except (TypeError, OverflowError):
+        out = None
+    if out is None or not np.isfinite(out).all():
+        raise ScenarioError(f"[task] {key}: expected (x, y, z), three finite numbers in metres "
+                            f"(world frame), got {value!r}")
+    return out
+
+
 def _number(table: Mapping[str, Any], key: str, default: float) -> float:
     value = table.get(key, default)
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not np.isfinite(value):
@@ -274,9 +325,7 @@ class HandoverTask(Task):
     def __post_init__(self):
         super().__post_init__()
         for role in ("picker", "receiver"):
-            if getattr(self, role) not in self.grippers:
-                raise ScenarioError(f"[task] {role}: expected one of the grippers "
-                                    f"{list(self.grippers)}, got {getattr(self, role)!r}")
+            self._check_role(role)
         if self.picker == self.receiver:
             raise ScenarioError(
                 f"[task] handover: expected two different grippers for picker and receiver, "
@@ -343,13 +392,10 @@ class PickPlaceTask(Task):
 
     def __post_init__(self):
         super().__post_init__()
-        if self.gripper not in self.grippers:
-            raise ScenarioError(f"[task] gripper: expected one of {list(self.grippers)}, got "
-                                f"{self.gripper!r}")
+        self._check_role("gripper")
+        object.__setattr__(self, "goal", tuple(float(v) for v in _vector(self.goal, "goal")))
         for key in ("tolerance", "rest_speed"):
-            value = getattr(self, key)
-            if not (np.isfinite(value) and value > 0):
-                raise ScenarioError(f"[task] {key}: expected a finite number > 0, got {value!r}")
+            _set_real(self, key, lower=0.0, strict=True)
 
     def _at_goal(self, object_pos):
         return np.linalg.norm(np.asarray(object_pos) - np.asarray(self.goal), axis=-1) \
@@ -439,9 +485,7 @@ class PickHoldTask(Task):
 
     def __post_init__(self):
         super().__post_init__()
-        if self.gripper not in self.grippers:
-            raise ScenarioError(f"[task] gripper: expected one of {list(self.grippers)}, got "
-                                f"{self.gripper!r}")
+        self._check_role("gripper")
 
     def stage(self, contact_gripper, contact_support, object_pos):
         touch = np.asarray(contact_gripper, bool)[..., self.grippers.index(self.gripper)]

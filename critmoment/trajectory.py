@@ -108,6 +108,16 @@ def _describe_dtype(arr: np.ndarray) -> str:
 
 def _as_float_array(value: Any, *, what: str, error: type[Exception]) -> np.ndarray:
     """Converts ``value`` to a float64 array, rejecting non-numeric input."""
+    if isinstance(value, np.ma.MaskedArray):
+        # np.asarray drops the mask and keeps whatever the masked cells hold
+        masked = np.ma.getmaskarray(value)
+        if masked.any():
+            first = tuple(int(i) for i in np.argwhere(masked)[0])
+            raise error(
+                f"{what}: expected every value given, got a masked array with "
+                f"{int(masked.sum())} masked cell(s) (the first at index {first}); a masked "
+                f"cell has no value to audit: fill it (array.filled(...)) or cut those steps")
+        value = np.ma.getdata(value)
     try:
         arr = np.asarray(value)
     except (ValueError, TypeError) as exc:  # ragged nested lists, odd objects
@@ -154,6 +164,8 @@ def _as_rate(value: Any, *, what: str, error: type[Exception]) -> float:
         raise error(f"{what}: expected a finite number > 0 [Hz], got text {value!r}")
     try:
         rate = float(value)
+    except OverflowError:
+        rate = math.inf
     except (TypeError, ValueError):
         raise error(
             f"{what}: expected a finite number > 0 [Hz], got "

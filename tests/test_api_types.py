@@ -33,6 +33,7 @@ def test_a_prior_given_by_name_is_the_prior(scenario):
     ({"nominal": True}, r"parameter 'm' nominal: expected a number, got True"),
     ({"name": ""}, r"parameter name: expected a non-empty string, got ''"),
     ({"target": 3}, r"parameter target: expected a non-empty string, got 3"),
+    ({"high": 10**400}, r"parameter 'm': expected finite range and nominal"),
 ])
 def test_a_parameter_of_the_wrong_type_is_named(changes, match):
     fields = {"name": "m", "target": "box", "low": 0.1, "high": 1.0, "nominal": 0.5, **changes}
@@ -45,6 +46,12 @@ def test_a_box_holds_parameters():
         UncertaintyBox(())
     with pytest.raises(ParameterError, match=r"got \['dict'\]"):
         UncertaintyBox(({"name": "mass"},))
+    from critmoment.params import Parameter
+
+    # the base class has no resolve/write: refused here, not NotImplementedError in a Twin
+    with pytest.raises(ParameterError, match=r"expected parameters of a kind .*MassParameter"
+                       r".*got the base Parameter for \['m'\]"):
+        UncertaintyBox((Parameter("m", "box", 0.1, 1.0, 0.5),))
 
 
 @pytest.mark.parametrize(("changes", "match"), [
@@ -60,6 +67,8 @@ def test_a_box_holds_parameters():
     ({"range_policy": "bogus"}, r"Scenario range_policy: expected one of 'error', 'clip', "
                                 r"'warn', got str 'bogus'"),
     ({"object_body": ""}, r"Scenario object_body: expected a non-empty string"),
+    ({"keyframe": 0.0}, r"Scenario keyframe: expected a keyframe name, an index of an unnamed "
+                        r"one, or None, got float 0.0"),
 ])
 def test_a_scenario_changed_in_code_is_checked(scenario, changes, match):
     with pytest.raises(ScenarioError, match=match):
@@ -141,6 +150,11 @@ def test_an_empty_scenario_path_is_an_error_not_the_current_folder():
 def test_a_rate_typed_as_text_is_named(fps):
     with pytest.raises(TrajectoryError, match=r"fps: expected a finite number > 0 \[Hz\], got text"):
         Trajectory(np.zeros((10, 2)), fps=fps)
+
+
+def test_a_rate_past_floats_range_is_named():
+    with pytest.raises(TrajectoryError, match=r"fps: expected a finite number > 0 \[Hz\], got inf"):
+        Trajectory(np.zeros((10, 2)), fps=10**400)
 
 
 def test_a_recorded_rate_other_than_the_scenarios_is_warned_of(twin, demo_traj):
@@ -301,3 +315,13 @@ def test_a_rate_the_physics_cannot_play_is_refused_without_a_warning_first(twin,
         _w.simplefilter("always")
         analyze(demo_traj, twin=thirty, options=AnalyzeOptions(n_samples=8, max_moments=2))
     assert len([w for w in caught if "records 50 Hz" in str(w.message)]) == 1
+
+
+def test_a_masked_array_with_masked_cells_is_refused():
+    """np.asarray drops a mask: a probe's masked 1e6 was audited as an action of 1e6."""
+    actions = np.ma.masked_array(np.zeros((10, 2)), mask=np.zeros((10, 2), bool))
+    assert np.array_equal(Trajectory(actions, fps=50.0).actions, np.zeros((10, 2)))
+    actions[3, 1] = np.ma.masked
+    with pytest.raises(TrajectoryError, match=r"actions: expected every value given, got a "
+                       r"masked array with 1 masked cell\(s\) \(the first at index \(3, 1\)\)"):
+        Trajectory(actions, fps=50.0)

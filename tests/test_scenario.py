@@ -1007,3 +1007,38 @@ def test_a_name_that_is_not_utf8_names_the_file_and_the_name(tmp_path, where):
     with pytest.raises(ScenarioError, match=re.escape(
             f"could not read MJCF {path}: the name {bad!r} is not UTF-8 text")):
         inspect_model(path)
+
+
+def test_the_task_reads_the_scenarios_gripper_order(scenario, demo_recording):
+    """A task built in code with its grippers in another order reads the contact columns in
+    the scenario's order: before, HandoverTask(grippers=('left', 'right'), picker='right', ...)
+    on ALOHA read the right gripper's contacts as the left's, and an audit said SAFE, P = 1,
+    for a hand-over the trajectory does not perform."""
+    from critmoment.task import HandoverTask
+
+    names = scenario.gripper_names
+    task = scenario.task
+    reordered = HandoverTask(grippers=names[::-1], picker=task.picker, receiver=task.receiver,
+                             up=task.up)
+    bound = scenario.replace(task=reordered).task
+    assert bound == task
+    rec = demo_recording
+    want = task.stage(rec.contact_gripper, rec.signals.contact_support, rec.signals.object_pos)
+    assert (want[-1] == task.final_stage)
+    assert not np.array_equal(
+        reordered.stage(rec.contact_gripper, rec.signals.contact_support,
+                        rec.signals.object_pos), want)
+    # the scenario's grippers reordered, the task as loaded: the same roles, same stages
+    swapped = scenario.replace(grippers=scenario.grippers[::-1])
+    assert swapped.task.grippers == names[::-1]
+    got = swapped.task.stage(rec.contact_gripper[:, ::-1], rec.signals.contact_support,
+                             rec.signals.object_pos)
+    np.testing.assert_array_equal(got, want)
+
+
+def test_a_task_naming_a_gripper_the_scenario_lacks_is_refused(scenario):
+    from critmoment.task import PickHoldTask
+
+    with pytest.raises(ScenarioError, match=r"Scenario task: expected grippers of the scenario "
+                       r".*'claw' not among them"):
+        scenario.replace(task=PickHoldTask(grippers=("claw",), gripper="claw"))

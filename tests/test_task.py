@@ -235,3 +235,40 @@ def test_a_chunk_that_starts_mid_carry_starts_lifted():
     late = _run(z, np.r_[np.zeros(10, bool), np.ones(n - 10, bool), np.zeros(n, bool)][:, None],
                 support, x=x)
     assert not PLACE.carried_at_start(late) and not PLACE.lifted(late)
+
+
+@pytest.mark.parametrize("build, message", [
+    (lambda: PickPlaceTask(grippers=("hand",), gripper="hand", goal=(0.3, 0.0)),
+     r"\[task\] goal: expected \(x, y, z\)"),
+    (lambda: PickPlaceTask(grippers=("hand",), gripper="hand", goal="0.3 0 0"),
+     r"\[task\] goal: expected \(x, y, z\)"),
+    (lambda: PickPlaceTask(grippers=("hand",), gripper="hand", goal=(0.3, np.nan, 0.0)),
+     r"\[task\] goal: expected \(x, y, z\)"),
+    (lambda: PickPlaceTask(grippers=("hand",), gripper="hand", tolerance="0.03"),
+     r"\[task\] tolerance: expected a finite number > 0, got '0.03'"),
+    (lambda: PickHoldTask(grippers=("hand",), gripper="hand", settle_time=None),
+     r"\[task\] settle_time: expected a finite number >= 0, got None"),
+    (lambda: PickHoldTask(grippers=("hand",), gripper="hand", lift_height=10**400),
+     r"\[task\] lift_height: expected a finite number"),
+    (lambda: PickHoldTask(grippers=("hand",), gripper="hand", up="z"),
+     r"\[task\] up: expected \(x, y, z\)"),
+    (lambda: PickHoldTask(grippers=("hand",), gripper="hand", up=(0, 0, 0)),
+     r"\[task\] up: expected a non-zero direction"),
+    (lambda: PickHoldTask(grippers="hand", gripper="hand"), r"\[task\] grippers: expected"),
+    (lambda: HandoverTask(grippers=("l", "l"), picker="l", receiver="r"),
+     r"\[task\] grippers: expected"),
+    (lambda: HandoverTask(grippers=("l", "r"), picker=0, receiver="r"),
+     r"\[task\] picker: expected one of the grippers \['l', 'r'\], got 0"),
+])
+def test_tasks_built_in_code_refuse_bad_fields(build, message):
+    """A task built in code is checked as a [task] table is (these raised ValueError,
+    TypeError or OverflowError from inside a rollout, or passed: a NaN goal, up = 0)."""
+    with pytest.raises(ScenarioError, match=message):
+        build()
+
+
+def test_fields_built_in_code_are_stored_as_floats():
+    task = PickPlaceTask(grippers=["hand"], gripper="hand", goal=np.array([1, 2, 3]),
+                         tolerance=np.float32(0.5), up=(0, 0, 2))
+    assert task.grippers == ("hand",) and task.goal == (1.0, 2.0, 3.0)
+    assert type(task.tolerance) is float and task.up == (0.0, 0.0, 1.0)
