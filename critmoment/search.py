@@ -958,7 +958,8 @@ def analytic_worst_case(bounds: AnalyticBounds, *, smoothing: float = DEFAULT_SM
     objective = -ca.substitute(ca.substitute(ca.SX(cost), m, x[0]), mu, x[1])
     solver = ca.nlpsol("worst", "ipopt", {"x": u, "f": objective},
                        {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
-                        "ipopt.max_iter": max_iter, "ipopt.tol": 1e-10})
+                        "show_eval_warnings": False, "ipopt.max_iter": max_iter,
+                        "ipopt.tol": 1e-10})
     ub = np.where(hi > lo, 1.0, 0.0)
     nominal = (np.array([bounds.mass_nominal, bounds.friction_nominal]) - lo) / span
     # the corners, the nominal point and the centre are candidates, first, so that a flat
@@ -1444,7 +1445,7 @@ def surrogate_worst_case(evaluator, steps: Any, box: UncertaintyBox | None = Non
         x = ca.MX.sym("u", box.ndim)
         solver = ca.nlpsol("surrogate", "ipopt", {"x": x, "f": -spline(x)},
                            {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
-                            "ipopt.max_iter": max_iter})
+                            "show_eval_warnings": False, "ipopt.max_iter": max_iter})
         for i in order[:starts]:
             sol, state = _solve(solver, x0=unit[i], lbx=np.zeros(box.ndim),
                                 ubx=np.ones(box.ndim))

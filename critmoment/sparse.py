@@ -97,6 +97,7 @@ import logging
 import math
 import numbers
 import os
+import threading
 import warnings
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any, NamedTuple
@@ -829,6 +830,11 @@ class SparseEvaluator:
         self.nthread = budget.check_nthread(nthread)
         self.chunk = _check_int("chunk", chunk, 1)
         self.divergence = _check_enum("divergence", divergence, DivergencePolicy)
+        # sample-moments whose evaluation diverged, shared with the forks (a shallow copy
+        # keeps the same list): the first is logged as a warning, the rest at debug level
+        # (a box reaching far past what the physics holds had printed one warning per
+        # chunk and moment: 154 lines)
+        self._diverged = [0, threading.Lock()]
         if self.mode is SparseMode.SOLVE and self.horizon != 1:
             raise ParameterError(
                 f"mode SOLVE solves one step without integrating: expected horizon 1, got "
@@ -918,6 +924,12 @@ class SparseEvaluator:
         self._mu: dict[tuple[int, int], np.ndarray | float] = {}
         #: per batch, its samples' force limits (Twin.sample_limits), or None
         self._limits: dict[tuple[int, int], np.ndarray | None] = {}
+
+    @property
+    def diverged_count(self) -> int:
+        """Sample-moments whose evaluation diverged (marked failed) in this evaluator and
+        its forks so far."""
+        return self._diverged[0]
 
     def fork(self, nthread: int | None = None, *, prefill: bool = True) -> SparseEvaluator:
         """An evaluator of the same recording and settings with simulations and caches of
@@ -1939,7 +1951,14 @@ class SparseEvaluator:
             raise SimulationDivergedError(
                 message + "; expected stable physics: narrow the parameter range or use "
                 "divergence=DivergencePolicy.MARK", step=k)
-        _log.warning("%s; marked as failed (cost = inf)", message)
+        with self._diverged[1]:
+            first_time = self._diverged[0] == 0
+            self._diverged[0] += count
+        if first_time:
+            _log.warning("%s; marked as failed (cost = inf); later divergences of this audit are "
+                         "counted as failures and logged at debug level", message)
+        else:
+            _log.debug("%s; marked as failed (cost = inf)", message)
 
 
 def evaluate(recording, twin: Twin, steps: Any, samples: Any, *, horizon: int | None = None,

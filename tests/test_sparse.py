@@ -921,12 +921,20 @@ def test_first_failure_shared_out_between_threads_equals_one_thread(scenario, tw
     states = recording.states.copy()
     states[0, 1 + t.model.nq] = 1e12
     bad = dataclasses.replace(recording, states=states)
-    caplog.set_level(logging.WARNING, logger="critmoment")
-    res = SparseEvaluator(bad, t, nthread=2).evaluate(
-        [0], _mass_samples(t.scenario, np.linspace(0.05, 1.0, 40)), first_failure=True)
-    assert res.diverged.all()
+    caplog.set_level(logging.DEBUG, logger="critmoment")
+    ev = SparseEvaluator(bad, t, nthread=2)
+    res = ev.evaluate([0], _mass_samples(t.scenario, np.linspace(0.05, 1.0, 40)),
+                      first_failure=True)
+    assert res.diverged.all() and ev.diverged_count == 40
     said = " ".join(r.getMessage() for r in caplog.records)
     assert "sample 0 " in said and "sample 20 " in said
+    # one warning per evaluator, the rest at debug level (a probe's box reaching friction
+    # 1e300 printed 154 warnings); the warning says the later ones are counted as failures
+    warned = [r for r in caplog.records if r.levelno >= logging.WARNING]
+    assert len(warned) == 1 and "later divergences" in warned[0].getMessage()
+    ev.evaluate([0], _mass_samples(t.scenario, np.array([0.5])))
+    assert ev.diverged_count == 41
+    assert len([r for r in caplog.records if r.levelno >= logging.WARNING]) == 1
 
 
 def test_busy_batches_take_one_thread_and_bad_requests_are_refused(scenario, twin,
