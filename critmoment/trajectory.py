@@ -234,18 +234,20 @@ def _fps_from_times(times: Any, n_steps: int, *, what: str) -> float:
         )
     _check_finite_vector(t, what=what)
     dt = np.diff(t)
+    # the resolution of the times as stored: float32 epoch seconds (1.7e9) are 128 s apart,
+    # so every 20 ms frame rounds alike; float32 seconds from 1000 s resolve 61 µs, which
+    # biases one 20 ms step by up to 0.3 %
+    quantum, hint = 0.0, ""
+    if raw_dtype is not None and np.dtype(raw_dtype).kind == "f" \
+            and np.dtype(raw_dtype).itemsize < 8:
+        largest = float(np.abs(t).max())
+        quantum = float(np.spacing(np.asarray(largest, dtype=raw_dtype)))
+        hint = (f"; the times are {np.dtype(raw_dtype).name}, which at {largest:.3g} s "
+                f"resolves only {quantum:.3g} s: store them as float64, or relative to the "
+                f"first")
     nonpos = np.flatnonzero(dt <= 0.0)
     if nonpos.size:
         i = int(nonpos[0])
-        hint = ""
-        if raw_dtype is not None and np.dtype(raw_dtype).kind == "f" \
-                and np.dtype(raw_dtype).itemsize < 8:
-            # float32 epoch seconds (1.7e9) are 128 s apart: every 20 ms frame rounds alike
-            largest = float(np.abs(t).max())
-            step = float(np.spacing(np.asarray(largest, dtype=raw_dtype)))
-            hint = (f"; the times are {np.dtype(raw_dtype).name}, which at "
-                    f"{largest:.3g} s resolves only {step:.3g} s: store them "
-                    f"as float64, or relative to the first")
         raise TrajectoryError(
             f"{what}: expected strictly increasing times, got t[{i}] = {float(t[i])!r} "
             f"followed by t[{i + 1}] = {float(t[i + 1])!r} ({nonpos.size} non-increasing "
@@ -258,15 +260,30 @@ def _fps_from_times(times: Any, n_steps: int, *, what: str) -> float:
         raise TrajectoryError(
             f"{what}: times {median:g} apart, a control rate of {1.0 / median:.3g} Hz; "
             f"expected times in seconds (milliseconds, or sample indices?)")
-    off = np.flatnonzero(np.abs(dt - median) > _RATE_RTOL * median)
+    # a step may differ from the median by the rounding of its two ends, unless that
+    # rounding is too coarse to tell a uniform rate from another
+    coarse = 2.0 * quantum > 0.25 * median
+    off = np.flatnonzero(np.abs(dt - median) > _RATE_RTOL * median
+                         + (0.0 if coarse else 2.0 * quantum))
     if off.size:
         i = int(off[0])
+        advice = hint if coarse else "; resample the trajectory to a fixed rate first"
         raise TrajectoryError(
             f"{what}: expected uniform spacing (within {_RATE_RTOL:.0%} of the "
             f"median {median!r} s), got t[{i + 1}] - t[{i}] = {float(dt[i])!r} s "
-            f"({off.size} irregular step(s) in total); resample the trajectory "
-            f"to a fixed rate first"
+            f"({off.size} irregular step(s) in total){advice}"
         )
+    if quantum > 1e-6 * median:
+        # rounded times: the mean step over the whole span is off by at most 2 quanta over
+        # the span, where one step's (the median's) is off by 2 quanta over one step
+        span = float(t[-1] - t[0])
+        rate = (t.size - 1) / span
+        # a whole rate in Hz the rounding cannot tell from the measured one is the rate
+        # (float32 times of a 50 Hz episode from 0 s give 49.99999988 Hz)
+        whole = round(rate)
+        if whole > 0 and abs(rate - whole) <= rate * 2.0 * quantum / span:
+            return float(whole)
+        return rate
     return 1.0 / median
 
 

@@ -140,6 +140,21 @@ def test_npz_time_sets_fps_and_checks(tmp_path):
                                               r"which at 1\.7e\+09 s resolves only 128 s"):
         load_trajectory(path)
 
+    # float32 seconds are rounded: from 1000 s to 61 µs, which made one 20 ms step read
+    # 49.95 Hz; the rate is the mean over the span, a whole rate the rounding cannot tell
+    # from it is that rate, and times too coarse to check the spacing say why
+    for t0 in (0.0, 1000.0, 3.0e4):
+        np.savez(path, actions=np.zeros((400, 3)),
+                 time=(t0 + np.arange(400) / 50).astype(np.float32))
+        assert load_trajectory(path).fps == 50.0
+    np.savez(path, actions=np.zeros((400, 3)), time=(np.arange(400) / 29.97).astype(np.float32))
+    assert load_trajectory(path).fps == pytest.approx(29.97, rel=1e-6)
+    np.savez(path, actions=np.zeros((400, 3)),
+             time=(1.0e5 + np.arange(400) / 50).astype(np.float32))
+    with pytest.raises(TrajectoryError, match=r"expected uniform spacing.*the times are float32, "
+                                              r"which at 1e\+05 s resolves only 0\.00781 s"):
+        load_trajectory(path)
+
     t = np.arange(20) * 0.02
     t[10:] += 0.005
     np.savez(path, actions=a, time=t)
