@@ -2015,6 +2015,8 @@ def sweep_samples(box: UncertaintyBox, *, n: int = 256, method: SweepMethod = Sw
     """
     n = _check_int("n", n, 1)
     method = _check_enum("method", method, SweepMethod)
+    if seed is not None and not isinstance(seed, np.random.Generator):
+        seed = _check_int("seed", seed, 0)
     k = box.ndim
     if method is SweepMethod.SOBOL:
         from scipy.stats import qmc

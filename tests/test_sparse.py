@@ -438,6 +438,9 @@ def test_sobol_and_grid_samples(scenario):
     b = sparse.sweep_samples(box, n=128, seed=7)
     c = sparse.sweep_samples(box, n=128, seed=8)
     assert a.shape == (128, 2) and np.array_equal(a, b) and not np.array_equal(a, c)
+    for bad in (-1, 1.5, "7", True):
+        with pytest.raises(ParameterError, match=r"seed: expected an integer >= 0"):
+            sparse.sweep_samples(box, n=8, seed=bad)
     assert (a >= box.low).all() and (a <= box.high).all()
     # balanced: every eighth of each range holds exactly 1/8 of the points
     counts = [np.histogram(box.to_unit(a)[:, j], bins=8, range=(0, 1))[0] for j in range(2)]
