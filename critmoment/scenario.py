@@ -686,6 +686,13 @@ class Scenario:
         gripper) by name. A task built in code with its grippers in another order (or a
         scenario whose grippers were reordered by :meth:`replace`) would read one gripper's
         contacts for another's role; a task naming a gripper the scenario lacks is refused."""
+        missing = [m for m in ("stage", "success", "shortfalls", "describe")
+                   if getattr(type(self.task), m) is getattr(Task, m)]
+        if missing:
+            raise ScenarioError(
+                f"Scenario task: expected a task of a kind (HandoverTask, PickPlaceTask, "
+                f"PickHoldTask, or a Task subclass that implements stage, success, shortfalls "
+                f"and describe), got {type(self.task).__name__} without {', '.join(missing)}")
         names = self.gripper_names
         if self.task.grippers == names:
             return

@@ -1042,3 +1042,13 @@ def test_a_task_naming_a_gripper_the_scenario_lacks_is_refused(scenario):
     with pytest.raises(ScenarioError, match=r"Scenario task: expected grippers of the scenario "
                        r".*'claw' not among them"):
         scenario.replace(task=PickHoldTask(grippers=("claw",), gripper="claw"))
+
+
+def test_a_task_of_no_kind_is_refused(scenario):
+    """The base Task has no success rule: it was accepted and raised NotImplementedError
+    from inside a rollout."""
+    from critmoment.task import Task
+
+    with pytest.raises(ScenarioError, match=r"Scenario task: expected a task of a kind .*got "
+                       r"Task without stage, success, shortfalls, describe"):
+        scenario.replace(task=Task(grippers=scenario.gripper_names))
