@@ -69,6 +69,10 @@ FLIP_SHARE = 0.25
 #: the share of the lag tolerance a servo's dry-friction band (frictionloss / stiffness) must
 #: reach for the message to name the joint's friction as the likely cause
 FRICTION_BAND_SHARE = 0.5
+#: the window over which the target's acceleration is read [s]: its velocity change over
+#: about one action period, so that the kinks of linearly interpolated targets do not read
+#: as accelerations of one physics step
+ACCEL_WINDOW = 0.02
 #: penetration of the object into another geom at the start that gets a fit warning [m]
 START_PENETRATION = 0.002
 #: fall of the object after its last touch by a gripper that gets a fit warning [m]
@@ -174,6 +178,11 @@ class JointFeasibility:
         force_flips: of the consecutive steps both at the force limit, the fraction whose
             force changes sign (a numerical oscillation between +limit and −limit, not a
             load).
+        target_accel: the target's largest acceleration over the longest saturation, else
+            the lag stretch, its velocity change over :data:`ACCEL_WINDOW` [rad/s² or m/s²].
+        inertial_force: what following that acceleration takes on the joint's own inertia
+            (its diagonal of the mass matrix, armature included, where it peaks) [N·m or N,
+            at the joint]: a motion too fast for the actuator, not a load it holds.
     """
 
     actuator: str
@@ -204,6 +213,8 @@ class JointFeasibility:
     friction_band: float = 0.0
     load_lag: float = 0.0
     spring_force: float = 0.0
+    target_accel: float = 0.0
+    inertial_force: float = 0.0
 
     def to_json(self) -> dict:
         """JSON-able dict (kind as its value, non-finite numbers as None)."""
@@ -302,6 +313,50 @@ def _tracking_error(q: np.ndarray, target: np.ndarray, shift: int) -> np.ndarray
     return err
 
 
+def _tracked(m: mujoco.MjModel, a: int, kind: _Kind) -> bool:
+    """Actuator ``a`` is a position servo on a hinge or slide: its target is a position."""
+    return kind is _Kind.POSITION and int(m.jnt_type[m.actuator_trnid[a, 0]]) in (
+        int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
+
+
+def _servo_target(m: mujoco.MjModel, a: int, controls: np.ndarray
+                  ) -> tuple[np.ndarray, np.ndarray]:
+    """The joint position position servo ``a`` drives to at each step, (T,), within the
+    joint's range, and where its control asks past that range, (T,) bool."""
+    j = int(m.actuator_trnid[a, 0])
+    gear = float(m.actuator_gear[a, 0]) or 1.0
+    gain = m.actuator_gainprm[a, 0]
+    b0, b1 = m.actuator_biasprm[a, :2]
+    target = (gain * controls[:, a] + b0) / (-b1) / gear
+    # a target past the joint's range is a push against a load (ADROIT's lift slide
+    # commanded past its range to hold the 4.9 kg hand up), not a position to reach:
+    # those steps are no lag
+    past = np.zeros(target.shape[0], bool)
+    if m.jnt_limited[j]:
+        past = (target < m.jnt_range[j, 0]) | (target > m.jnt_range[j, 1])
+        target = np.clip(target, *m.jnt_range[j])
+    return target, past
+
+
+def _target_accelerations(m: mujoco.MjModel, controls: np.ndarray, dt: float) -> np.ndarray:
+    """The acceleration of every position servo's target at its joint's dof, (T, nv), 0
+    elsewhere: the velocity change over :data:`ACCEL_WINDOW` around each step."""
+    n = controls.shape[0]
+    out = np.zeros((n, m.nv))
+    w = max(1, int(round(ACCEL_WINDOW / dt)))
+    if n <= 2 * w:
+        return out
+    for a in range(m.nu):
+        if m.actuator_trntype[a] != mujoco.mjtTrn.mjTRN_JOINT or not _tracked(
+                m, a, _classify(m, a)[0]):
+            continue
+        target = _servo_target(m, a, controls)[0]
+        dof = int(m.jnt_dofadr[m.actuator_trnid[a, 0]])
+        out[w:n - w, dof] = (target[2 * w:] - 2.0 * target[w:n - w] + target[:n - 2 * w]) \
+            / (w * dt) ** 2
+    return out
+
+
 def _gripper_actuators(twin: Twin) -> set[int]:
     """The actuators of a gripper: those on a normalised channel, and those the twin keeps
     out of the motor checks as fingers (on a joint below a gripper's base: a hand's
@@ -357,6 +412,30 @@ class _JointSignals:
     target: np.ndarray | None
     bias: float
     toward: np.ndarray | None
+    target_accel: np.ndarray
+
+    def _inertial(self, start: int, length: int) -> tuple[float, float]:
+        """The target's largest acceleration over steps [start, start + length) and the
+        largest force the robot's inertia takes at this joint to follow every servo's
+        targets there, M[dof, :] · q̈_target (its own acceleration and the others' through
+        the mass matrix: a wrist whose neighbour is swung hard), read where the joint's own
+        or the whole target acceleration peaks (0, 0 without an accelerating target)."""
+        m, dof, acc = self.model, int(self.model.jnt_dofadr[self.joint]), self.target_accel
+        lo, hi = max(0, start), min(acc.shape[0], start + length)
+        if length <= 0 or hi <= lo or not acc[lo:hi].any():
+            return 0.0, 0.0
+        part = acc[lo:hi]
+        own = np.abs(part[:, dof])
+        data = mujoco.MjData(m)
+        dense = np.zeros((m.nv, m.nv))
+        best = 0.0
+        for k in {int(np.argmax(own)), int(np.argmax(np.abs(part).sum(axis=1)))}:
+            mujoco.mj_setState(m, data, self.states[min(lo + k + 1, len(self.states) - 1)],
+                               STATE_SPEC)
+            mujoco.mj_forward(m, data)
+            mujoco.mj_fullM(m, data, dense)
+            best = max(best, abs(float(dense[dof] @ part[k])))
+        return float(own.max()), best
 
     def entry(self, base: JointFeasibility, lag_run: tuple[int, int],
               sat_run: tuple[int, int]) -> JointFeasibility:
@@ -396,12 +475,17 @@ class _JointSignals:
             adr = int(m.jnt_qposadr[j])
             stretch = self.qpos[start:start + length + 1, adr] - m.qpos_spring[adr]
             spring_force = float(m.jnt_stiffness[j] * np.abs(stretch).max(initial=0.0))
+        # over the saturation and over the lag stretch (the saturation a lag follows from
+        # may be another stretch than the longest)
+        accel, inertial = max((self._inertial(*run) for run in (sat_run, lag_run)),
+                              key=lambda r: r[1])
         entry = dataclasses.replace(
             base, lag_duration=lag_len * dt, lag_start=lag_start * dt if lag_len else None,
             lag_in_run=lag_in_run, saturation_duration=sat_len * dt,
             saturation_start=sat_start * dt if sat_len else None, target_speed=speed,
             damping_lag=damping_lag, load_lag=load_lag, damping_force=damping_force,
-            saturation_speed=sat_speed, spring_force=spring_force)
+            saturation_speed=sat_speed, spring_force=spring_force, target_accel=accel,
+            inertial_force=inertial)
         failing = _failing_stretch(entry, self.tol, abs(gear), self.options)
         if failing is not None:
             blocked, jammed = _blocking_contact(m, self.states, *failing, joint=j,
@@ -453,6 +537,7 @@ def check_feasibility(recording: Recording, twin: Twin, *,
     qpos = twin.qpos(states)
     force = np.asarray(recording.signals.actuator_force)
     grippers = _gripper_actuators(twin)
+    target_accel = _target_accelerations(m, controls, dt)
     joints, problems, notes, held = [], [], [], []
     for a in range(m.nu):
         name = m.actuator(a).name or f"actuator #{a}"
@@ -475,18 +560,9 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         band = 0.0
         friction = float(m.dof_frictionloss[m.jnt_dofadr[j]])
         b1 = 0.0
-        if kind is _Kind.POSITION and int(m.jnt_type[j]) in (
-                int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE)):
-            gain = m.actuator_gainprm[a, 0]
-            b0, b1 = m.actuator_biasprm[a, :2]
-            target = (gain * controls[:, a] + b0) / (-b1) / gear
-            # a target past the joint's range is a push against a load (ADROIT's lift slide
-            # commanded past its range to hold the 4.9 kg hand up), not a position to reach:
-            # those steps are no lag
-            past = np.zeros(n, bool)
-            if m.jnt_limited[j]:
-                past = (target < m.jnt_range[j, 0]) | (target > m.jnt_range[j, 1])
-                target = np.clip(target, *m.jnt_range[j])
+        if _tracked(m, a, kind):
+            b1 = m.actuator_biasprm[a, 1]
+            target, past = _servo_target(m, a, controls)
             q = qpos[1:n + 1, int(m.jnt_qposadr[j])]
             toward = np.sign(target[:q.size] - q)
             lag = _tracking_error(q, target, int(round(options.delay / dt)))
@@ -505,8 +581,8 @@ def check_feasibility(recording: Recording, twin: Twin, *,
 
         sig = _JointSignals(model=m, states=states, qpos=qpos, force=force, dt=dt, actuator=a,
                             joint=j, gear=gear, tol=tol, options=options, lag=lag,
-                            target=target, bias=float(b1),
-                            toward=toward)
+                            target=target, bias=float(b1), toward=toward,
+                            target_accel=target_accel)
         base = JointFeasibility(
             actuator=name, joint=jname, kind=kind.value, unit=unit, gripper=is_gripper,
             max_lag=max_lag, max_lag_time=max_lag_time, lag_duration=0.0, lag_start=None,
@@ -730,6 +806,8 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
             cause = _damping_cause(e, fu, gear, model, joint)
         elif e.saturation_total > 0 and e.saturation_start is not None and _sprung(e, gear):
             cause = _spring_cause(e, fu, gear, model, joint)
+        elif e.saturation_total > 0 and e.saturation_start is not None and _hurried(e, gear):
+            cause = _speed_cause(e, fu, gear)
         elif e.saturation_total > 0 and e.saturation_start is not None:
             cause = (f"the actuator is at its force limit {e.force_limit:g} {fu} "
                      f"({e.limit_source}) for {e.saturation_total:.3g} s in all: too weak "
@@ -774,6 +852,7 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
                  _oscillation(e, fu) if e.force_flips >= FLIP_SHARE else
                  _damping_cause(e, fu, gear, model, joint) if _damped(e, gear) else
                  _spring_cause(e, fu, gear, model, joint) if _sprung(e, gear) else
+                 _speed_cause(e, fu, gear) if _hurried(e, gear) else
                  # at its limit while it holds its target (lag within tolerance) under an
                  # explicit integrator: that integrator first (the RK4 Panda's base joint,
                  # no gravity load, sat at 87 N·m with a 0.01 rad lag; implicitfast never
@@ -829,6 +908,20 @@ def _spring_cause(e: JointFeasibility, fu: str, gear: float, model: mujoco.MjMod
             f"with up to {e.spring_force:.3g} {fu} of the {e.force_limit * abs(gear):.3g} {fu} "
             f"the actuator can give; check the model's joint stiffness and springref (a "
             f"spring the robot does not have, or one its controller compensates)")
+
+
+def _hurried(e: JointFeasibility, gear: float) -> bool:
+    """Following the target's acceleration takes most of what the actuator can give on the
+    joint's inertia alone."""
+    return e.inertial_force >= DAMPING_SHARE * e.force_limit * abs(gear)
+
+
+def _speed_cause(e: JointFeasibility, fu: str, gear: float) -> str:
+    return (f"the motion is too fast for the actuator: following its targets' acceleration "
+            f"of up to {e.target_accel:.3g} {e.unit}/s² takes {e.inertial_force:.3g} {fu} on "
+            f"the joint's inertia alone (armature included), of the "
+            f"{e.force_limit * abs(gear):.3g} {fu} the actuator can give; slow the motion "
+            f"down (re-time the trajectory) or smooth its targets")
 
 
 _EXPLICIT = ("it treats a stiff servo's velocity damping explicitly, which can saturate it "

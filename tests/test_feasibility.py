@@ -662,6 +662,26 @@ def test_a_joint_held_by_its_own_spring_is_named(tmp_path):
         check_feasibility(rec, twin)
 
 
+def test_a_motion_too_fast_for_the_actuator_is_named_so(tmp_path):
+    """dm_control's Jaco (armature 4 at joint 3, 30.5 N·m) run at full speed saturated on
+    the commanded acceleration, and the message blamed the Euler integrator and the load
+    (gravity, the object), never the speed. A joint with no gravity load swung 1.5 rad in
+    0.2 s, and the same swing over 1 s, which the actuator follows."""
+    twin, _ = _turned_joint(tmp_path, 'damping="1" armature="0.5"')
+    fast = _record(twin, _ramp(1.5, seconds=0.4))
+    with pytest.raises(InfeasibleTwinError, match=r"joint 'hinge'.*likely cause: the motion is "
+                       r"too fast for the actuator: following its targets' acceleration of up "
+                       r"to [\d.]+ rad/s² takes [\d.]+ N·m on the joint's inertia alone "
+                       r"\(armature included\), of the 20 N·m the actuator can give; slow the "
+                       r"motion down"):
+        check_feasibility(fast, twin)
+    entry = check_feasibility(fast, twin, raise_on_failure=False).joint("hinge")
+    assert entry.inertial_force > 20.0 and entry.target_accel > 100.0
+    slow = check_feasibility(_record(twin, _ramp(1.5, seconds=2.0)), twin,
+                             raise_on_failure=False)
+    assert not slow.problems
+
+
 def test_a_hands_fingers_on_channels_of_their_own_are_grippers(tmp_path):
     """ADROIT: one channel per finger (the fingers under the ``[grippers]`` body), a finger
     closed on the ball lags its target by design, and the twin was refused as an arm joint
