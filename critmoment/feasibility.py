@@ -918,8 +918,8 @@ def _hurried(e: JointFeasibility, gear: float) -> bool:
 
 def _speed_cause(e: JointFeasibility, fu: str, gear: float) -> str:
     return (f"the motion is too fast for the actuator: following its targets' acceleration "
-            f"of up to {e.target_accel:.3g} {e.unit}/s² takes {e.inertial_force:.3g} {fu} on "
-            f"the joint's inertia alone (armature included), of the "
+            f"of up to {e.target_accel:.3g} {e.unit}/s² takes {e.inertial_force:.3g} {fu} at "
+            f"this joint on the robot's inertia alone (armature included), of the "
             f"{e.force_limit * abs(gear):.3g} {fu} the actuator can give; slow the motion "
             f"down (re-time the trajectory) or smooth its targets")
 

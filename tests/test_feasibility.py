@@ -671,7 +671,7 @@ def test_a_motion_too_fast_for_the_actuator_is_named_so(tmp_path):
     fast = _record(twin, _ramp(1.5, seconds=0.4))
     with pytest.raises(InfeasibleTwinError, match=r"joint 'hinge'.*likely cause: the motion is "
                        r"too fast for the actuator: following its targets' acceleration of up "
-                       r"to [\d.]+ rad/s² takes [\d.]+ N·m on the joint's inertia alone "
+                       r"to [\d.]+ rad/s² takes [\d.]+ N·m at this joint on the robot's inertia alone "
                        r"\(armature included\), of the 20 N·m the actuator can give; slow the "
                        r"motion down"):
         check_feasibility(fast, twin)
