@@ -173,8 +173,14 @@ def cmd_rollout(args) -> int:
         infeasible = check_feasibility(rec, twin, raise_on_failure=False).problems
         for msg in (*fit, *infeasible):
             warnings.warn(msg, FitWarning, stacklevel=1)
+        # the contact model's check, as analyze and validate run it (it warns of a soft
+        # model, and of a nominal grip whose own object shifts over 1 cm: a Jaco hand moved
+        # its cube 3 cm, which rollout alone had called "completed" without a word)
+        from critmoment.contactmodel import check_contact_model
+
+        contact = check_contact_model(twin, rec)
         summary = {**rec.summary(), **rec.sustained(twin.scenario), "fit_warnings": list(fit),
-                   "feasibility_problems": list(infeasible)}
+                   "feasibility_problems": list(infeasible), "contact_model": contact.summary()}
         if out is not None:
             rec.save(out / "recording.npz")
             fig = report.plot_recording(rec)

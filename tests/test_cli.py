@@ -646,3 +646,25 @@ def test_report_json_records_the_runs_warnings(traj_file, tmp_path, capsys):
     assert doc["warnings"] and any("my_extra_key" in w for w in doc["warnings"])
     for w in doc["warnings"]:
         assert f"critmoment analyze: warning: {w}" in err
+
+
+def test_rollout_runs_the_contact_models_check(tmp_path, capsys):
+    """rollout said "completed" of a nominal grip whose own cube moved 3 cm in a Jaco hand
+    (round 32); it now runs the contact model's check as analyze and validate do: a soft
+    cube contact on the bundled Panda (solref 0.05) moves the nominal cube about 14 mm."""
+    import shutil
+
+    from critmoment.scenario import bundled_scenario_path
+
+    folder = tmp_path / "soft"
+    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
+    scene = folder / "scene.xml"
+    scene.write_text(scene.read_text().replace('solref="0.01 1"/>', 'solref="0.05 1"/>'))
+    traj = tmp_path / "panda.npz"
+    assert main(["demo", "--scenario", "panda_pick_place", "--seed", "0", "--out",
+                 str(traj)]) == 0
+    capsys.readouterr()
+    assert main(["rollout", str(traj), "--scenario", str(folder), "--json"]) == 0
+    out, err = capsys.readouterr()
+    assert "the nominal run's own object moves 1" in err
+    assert "slip is counted beyond that" in json.loads(out)["contact_model"]
