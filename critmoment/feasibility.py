@@ -178,11 +178,15 @@ class JointFeasibility:
         force_flips: of the consecutive steps both at the force limit, the fraction whose
             force changes sign (a numerical oscillation between +limit and −limit, not a
             load).
-        target_accel: the target's largest acceleration over the longest saturation, else
-            the lag stretch, its velocity change over :data:`ACCEL_WINDOW` [rad/s² or m/s²].
-        inertial_force: what following that acceleration takes on the joint's own inertia
-            (its diagonal of the mass matrix, armature included, where it peaks) [N·m or N,
-            at the joint]: a motion too fast for the actuator, not a load it holds.
+        target_accel: the target's largest acceleration over the longest saturation or the
+            lag stretch, its velocity change over :data:`ACCEL_WINDOW` [rad/s² or m/s²].
+        inertial_force: the largest over that stretch of what following every servo's
+            targets' acceleration takes at this joint on the robot's inertia, |M[dof, :] ·
+            q̈_target| (armature included) [N·m or N, at the joint]: a motion too fast for
+            the actuator, not a load it holds, where it takes most of the limit and the
+            bias force does not.
+        bias_force: the median over that stretch of the bias force at this joint (gravity,
+            Coriolis, centrifugal; |qfrc_bias|) [N·m or N].
     """
 
     actuator: str
@@ -215,6 +219,7 @@ class JointFeasibility:
     spring_force: float = 0.0
     target_accel: float = 0.0
     inertial_force: float = 0.0
+    bias_force: float = 0.0
 
     def to_json(self) -> dict:
         """JSON-able dict (kind as its value, non-finite numbers as None)."""
@@ -414,28 +419,34 @@ class _JointSignals:
     toward: np.ndarray | None
     target_accel: np.ndarray
 
-    def _inertial(self, start: int, length: int) -> tuple[float, float]:
-        """The target's largest acceleration over steps [start, start + length) and the
+    def _inertial(self, start: int, length: int) -> tuple[float, float, float]:
+        """Over steps [start, start + length): the target's largest acceleration, the
         largest force the robot's inertia takes at this joint to follow every servo's
-        targets there, M[dof, :] · q̈_target (its own acceleration and the others' through
-        the mass matrix: a wrist whose neighbour is swung hard), read where the joint's own
-        or the whole target acceleration peaks (0, 0 without an accelerating target)."""
+        targets, |M[dof, :] · q̈_target| (its own acceleration and the others' through the
+        mass matrix), and the median bias force there, |qfrc_bias| (gravity, Coriolis and
+        centrifugal); (0, 0, 0) without an accelerating target. The bias is a median: a
+        shoulder at its limit for 2.5 s holding the arm up meets a brief peak of its
+        targets' acceleration too (at most 200 steps of the stretch are read, and the
+        acceleration's peaks)."""
         m, dof, acc = self.model, int(self.model.jnt_dofadr[self.joint]), self.target_accel
         lo, hi = max(0, start), min(acc.shape[0], start + length)
         if length <= 0 or hi <= lo or not acc[lo:hi].any():
-            return 0.0, 0.0
+            return 0.0, 0.0, 0.0
         part = acc[lo:hi]
-        own = np.abs(part[:, dof])
+        peaks = {lo + int(np.argmax(np.abs(part[:, dof]))),
+                 lo + int(np.argmax(np.abs(part).sum(axis=1)))}
+        steps = sorted(set(range(lo, hi, max(1, (hi - lo) // 200))) | peaks)
         data = mujoco.MjData(m)
         dense = np.zeros((m.nv, m.nv))
-        best = 0.0
-        for k in {int(np.argmax(own)), int(np.argmax(np.abs(part).sum(axis=1)))}:
-            mujoco.mj_setState(m, data, self.states[min(lo + k + 1, len(self.states) - 1)],
+        inertial, bias = np.zeros(len(steps)), np.zeros(len(steps))
+        for i, k in enumerate(steps):
+            mujoco.mj_setState(m, data, self.states[min(k + 1, len(self.states) - 1)],
                                STATE_SPEC)
             mujoco.mj_forward(m, data)
             mujoco.mj_fullM(m, data, dense)
-            best = max(best, abs(float(dense[dof] @ part[k])))
-        return float(own.max()), best
+            inertial[i] = abs(float(dense[dof] @ acc[k]))
+            bias[i] = abs(float(data.qfrc_bias[dof]))
+        return float(np.abs(part[:, dof]).max()), float(inertial.max()), float(np.median(bias))
 
     def entry(self, base: JointFeasibility, lag_run: tuple[int, int],
               sat_run: tuple[int, int]) -> JointFeasibility:
@@ -477,15 +488,15 @@ class _JointSignals:
             spring_force = float(m.jnt_stiffness[j] * np.abs(stretch).max(initial=0.0))
         # over the saturation and over the lag stretch (the saturation a lag follows from
         # may be another stretch than the longest)
-        accel, inertial = max((self._inertial(*run) for run in (sat_run, lag_run)),
-                              key=lambda r: r[1])
+        accel, inertial, bias_force = max((self._inertial(*run) for run in (sat_run, lag_run)),
+                                          key=lambda r: r[1])
         entry = dataclasses.replace(
             base, lag_duration=lag_len * dt, lag_start=lag_start * dt if lag_len else None,
             lag_in_run=lag_in_run, saturation_duration=sat_len * dt,
             saturation_start=sat_start * dt if sat_len else None, target_speed=speed,
             damping_lag=damping_lag, load_lag=load_lag, damping_force=damping_force,
             saturation_speed=sat_speed, spring_force=spring_force, target_accel=accel,
-            inertial_force=inertial)
+            inertial_force=inertial, bias_force=bias_force)
         failing = _failing_stretch(entry, self.tol, abs(gear), self.options)
         if failing is not None:
             blocked, jammed = _blocking_contact(m, self.states, *failing, joint=j,
@@ -911,15 +922,18 @@ def _spring_cause(e: JointFeasibility, fu: str, gear: float, model: mujoco.MjMod
 
 
 def _hurried(e: JointFeasibility, gear: float) -> bool:
-    """Following the target's acceleration takes most of what the actuator can give on the
-    joint's inertia alone."""
-    return e.inertial_force >= DAMPING_SHARE * e.force_limit * abs(gear)
+    """Following the targets' acceleration takes most of what the actuator can give on the
+    robot's inertia alone, where gravity and the other bias forces typically take less
+    than that share (else the load is what the actuator cannot hold)."""
+    reach = DAMPING_SHARE * e.force_limit * abs(gear)
+    return e.inertial_force >= reach and e.bias_force < reach
 
 
 def _speed_cause(e: JointFeasibility, fu: str, gear: float) -> str:
     return (f"the motion is too fast for the actuator: following its targets' acceleration "
-            f"of up to {e.target_accel:.3g} {e.unit}/s² takes {e.inertial_force:.3g} {fu} at "
-            f"this joint on the robot's inertia alone (armature included), of the "
+            f"(up to {e.target_accel:.3g} {e.unit}/s²) takes up to {e.inertial_force:.3g} {fu} "
+            f"at this joint on the robot's inertia alone (armature included; gravity and the "
+            f"other bias forces {e.bias_force:.3g} {fu} typically), of the "
             f"{e.force_limit * abs(gear):.3g} {fu} the actuator can give; slow the motion "
             f"down (re-time the trajectory) or smooth its targets")
 

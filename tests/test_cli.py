@@ -447,6 +447,10 @@ def test_rollout_warns_of_what_analyze_would_refuse(traj_file, tmp_path, capsys)
     assert main(["rollout", str(traj_file), "--scenario", str(folder), "--json"]) == 0
     out, err = capsys.readouterr()
     assert "cannot reproduce the nominal motion: actuator 'right/shoulder'" in err
+    # holding the arm up, not its speed: its targets' acceleration peaks briefly in the
+    # 3.4 s at the limit, and a cause read at that peak had called the motion too fast
+    assert "right/shoulder') is at (or above) its force limit 2 N·m ([limits]) for 3.44 s" in err
+    assert "too fast" not in err and "likely cause: too weak for the load" in err
     assert any("right/shoulder" in p for p in json.loads(out)["feasibility_problems"])
 
 
