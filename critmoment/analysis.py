@@ -1223,6 +1223,11 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
         result = history.chained_failures(evaluator, steps, samples[todo])
         near = (result.near(options.verify) if options.verify is not None
                 else np.zeros(todo.size, bool))
+        # a pass that lost its object where the nominal run carries it (a catch, or a
+        # fall picked up again): whether it fell onto a support, which fails a run that
+        # completes its task, is the ground truth's rule on the sample's own rollout
+        if result.drop_step is not None:
+            near = near | ((result.drop_step >= 0) & ~result.failed)
         for i, failed, confirm, close, kind in zip(todo, result.failed, result.to_confirm,
                                                    near, result.kinds(), strict=True):
             known[keys[int(i)]] = (bool(failed), bool(confirm or close), kind)

@@ -23,7 +23,11 @@ Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
   unless this happens only after the object was dropped (then it is a consequence).
 * ``DROPPED``: the task is not completed and, for longer than ``drop_time``, the object is not
   carried (touches the support, or no gripper) at steps where the nominal run carries it; the
-  drop is the last such loss (an earlier one, a late lift, was recovered from).
+  drop is the last such loss (an earlier one, a late lift, was recovered from). Also, task
+  completed or not, a fall: at a step where the nominal run carries it, the object lies on a
+  support touched by no gripper, having fallen more than ``fall_height`` since a gripper last
+  touched it (:func:`fall_steps`; a catch at a hand-over touches no support, an object set
+  down early is still touched).
 * ``SLIPPED``: the object moved in a holding gripper by more than ``slip_tolerance`` for
   longer than ``slip_time`` (see :func:`grip_slip`): its position in the frame of the
   gripper's base body, along the pads (the fingers' closing axes removed: squeezing is not
@@ -129,6 +133,10 @@ class OutcomeCriteria:
         tracking_time: how long a tracking loss must last to count [s].
         drop_time: longest ignored loss of the object where the nominal run carries it [s]
             (the debounce of the drop test).
+        fall_height: how far the object must fall, out of every gripper onto a support where
+            the nominal run carries it, for the fall to fail a run that completes its task
+            [m] (a cube dropped 12 cm mid-carry onto the table, picked up again and placed
+            had counted as a success).
     """
 
     slip_tolerance: float = 0.01
@@ -140,9 +148,11 @@ class OutcomeCriteria:
     tracking_time: float = 0.05
     drop_time: float = 0.02
     tracking_tolerance_slide: float = 0.01
+    fall_height: float = 0.03
 
     def __post_init__(self):
-        for name in ("slip_tolerance", "tracking_tolerance", "tracking_tolerance_slide"):
+        for name in ("slip_tolerance", "tracking_tolerance", "tracking_tolerance_slide",
+                     "fall_height"):
             _check_positive(name, getattr(self, name))
         for name in ("slip_time", "motor_time", "tracking_time", "drop_time"):
             value = getattr(self, name)
@@ -262,13 +272,51 @@ class Classification:
                               dt=parts[0].dt, criteria=parts[0].criteria, **arrays)
 
 
+def fall_steps(contact_gripper: np.ndarray, contact_support: np.ndarray,
+               nominal_carried: np.ndarray, height: np.ndarray, fall_height: float
+               ) -> np.ndarray:
+    """Where each run's object first lies fallen, (n,) int (−1: never): the first step of a
+    stretch where the nominal run carries the object and the run's object touches a support
+    and no gripper, having fallen more than ``fall_height`` [m] from its height at the last
+    step a gripper touched it (after a gripper first held it off its support); the step
+    returned is the first after that last touch (when it left the grip).
+
+    Args:
+        contact_gripper: (n, T, G) bool.
+        contact_support: (n, T) bool.
+        nominal_carried: (T,) bool.
+        height: the object's height along the world's up [m], (n, T).
+        fall_height: [m].
+    """
+    touched = np.asarray(contact_gripper, bool).any(axis=-1)
+    support = np.asarray(contact_support, bool)
+    height = np.asarray(height, dtype=np.float64)
+    n, t = support.shape
+    out = np.full(n, -1, np.int64)
+    lying = touched.__invert__() & support & np.asarray(nominal_carried, bool)[None, :t]
+    held = touched & ~support
+    for i in np.flatnonzero(lying.any(axis=1)):
+        first_held = np.flatnonzero(held[i])
+        if not first_held.size:
+            continue
+        starts = np.flatnonzero(np.diff(np.concatenate([[False], lying[i]])
+                                        .astype(np.int8)) == 1)
+        for s0 in starts[starts > first_held[0]]:
+            last = np.flatnonzero(touched[i, :s0])
+            if last.size and height[i, last[-1]] - height[i, s0] > fall_height:
+                out[i] = last[-1] + 1
+                break
+    return out
+
+
 def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
              contact_support: np.ndarray, nominal_carried: np.ndarray,
              actuator_norm: np.ndarray, tracking_excess: np.ndarray | None = None,
              slip: np.ndarray | None = None, diverged: np.ndarray | None = None,
              diverged_step: np.ndarray | None = None,
              completed: np.ndarray | None = None,
-             criteria: OutcomeCriteria = OutcomeCriteria()) -> Classification:
+             criteria: OutcomeCriteria = OutcomeCriteria(),
+             object_height: np.ndarray | None = None) -> Classification:
     """Classify n full rollouts from their signals.
 
     Args:
@@ -289,6 +337,8 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
             ``task.success``), or None for :func:`~critmoment.recording.ends_completed` of
             ``stage`` (the run ends in stage 4).
         criteria: the tolerances.
+        object_height: the object's height along the world's up [m], (n, T), for the fall
+            rule (:func:`fall_steps`); None: no fall is counted in a completed run.
 
     Returns:
         The :class:`Classification`.
@@ -375,7 +425,13 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
     last4 = t - 1 - np.argmax(at4[:, ::-1], axis=1)
     final_loss = np.where(ever4 & (last4 < t - 1), last4 + 1, -1)
 
-    drop_ok = (drop_step >= 0) & ~completed
+    fall_step = (np.full(n, -1, np.int64) if object_height is None else fall_steps(
+        contact_gripper, contact_support, nominal_carried, object_height, c.fall_height))
+    # a fall onto a support fails a run whatever its end; another loss only one that does
+    # not complete the task (a catch at the hand-over, an object set down early)
+    fell = (fall_step >= 0) & completed
+    drop_step = np.where(fell, fall_step, drop_step)
+    drop_ok = (drop_step >= 0) & (~completed | fell)
     # a motor event after the object is lost is a consequence (the arms move unloaded, may
     # touch each other), not the cause
     motor_ok = (motor_step >= 0) & ~(drop_ok & (motor_step > drop_step))
@@ -878,6 +934,7 @@ class _Frames:
     stage: np.ndarray
     contact_gripper: np.ndarray
     contact_support: np.ndarray
+    height: np.ndarray
     actuator_norm: np.ndarray
     position: np.ndarray
     q: np.ndarray
@@ -896,7 +953,7 @@ class _Frames:
         # each run's own force limits where the box varies one (c, nu), else the twin's
         limits = twin.limits if limits is None else np.asarray(limits)[:, None]
         return cls(stage=twin.task.stage(gripper, support, pos), contact_gripper=gripper,
-                   contact_support=support,
+                   contact_support=support, height=pos @ np.asarray(twin.task.up),
                    actuator_norm=sd[..., twin._force_ids[probe.motors]]
                    / limits[..., probe.motors],
                    position=sensordata[..., probe.pos].reshape(c, t, -1, 3),
@@ -938,7 +995,7 @@ def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, 
                     contact_support=frames.contact_support, nominal_carried=nominal_carried,
                     actuator_norm=frames.actuator_norm, tracking_excess=excess, slip=slip,
                     diverged=diverged, diverged_step=diverged_step, criteria=criteria,
-                    completed=frames.success)
+                    completed=frames.success, object_height=frames.height)
 
 
 def rerun_in_full(traj: Trajectory, *, twin: Twin, samples: np.ndarray, failed: np.ndarray,

@@ -71,6 +71,58 @@ def test_classify_takes_the_tasks_success_rule():
         gt.classify(**sig, completed=np.array([True]))
 
 
+def _fall_runs():
+    """Four runs of 400 steps; the nominal carries the object over steps 100-349. Each run
+    lifts it at step 100 (held from 50, at 0.02 m, then 0.15 m): 0 holds it to the end; 1
+    lets it fall at step 200 onto the table (0.02 m) and picks it up again at 260; 2 drops
+    it at 200 into another gripper's catch (no support) 0.10 m lower; 3 sets it down at 200
+    still in the grip."""
+    n, t = 4, 400
+    grip = np.zeros((n, t, 2), bool)
+    grip[:, 50:, 0] = True
+    support = np.zeros((n, t), bool)
+    support[:, :100] = True
+    height = np.full((n, t), 0.15)
+    height[:, :100] = 0.02
+    grip[1, 200:260, 0] = False
+    support[1, 215:260] = True
+    height[1, 200:260] = np.linspace(0.15, 0.02, 60).clip(0.02)
+    height[1, 215:260] = 0.02
+    grip[2, 200:215, 0] = False
+    grip[2, 215:, 1] = True
+    height[2, 200:] = 0.05
+    support[3, 200:] = True
+    height[3, 200:] = 0.02
+    carried = np.zeros(t, bool)
+    carried[100:350] = True
+    stage = np.full((n, t), 4, np.int8)
+    return dict(dt=0.002, stage=stage, contact_gripper=grip, contact_support=support,
+                nominal_carried=carried, actuator_norm=np.full((n, t, 1), 0.3)), height
+
+
+def test_a_fall_onto_a_support_fails_a_run_that_completes_its_task():
+    """A cube dropped 12 cm mid-carry onto the table, picked up again and placed at the
+    goal counted as a success (a drop counted only in a run that fails its task; round
+    32's gripper glitch, where an independent truth called it a slip). A fall onto a
+    support now fails the run; a catch at a hand-over (no support) and an object set down
+    early in the grip do not, nor does a fall under fall_height."""
+    sig, height = _fall_runs()
+    done = np.ones(4, bool)
+    steps = gt.fall_steps(sig["contact_gripper"], sig["contact_support"],
+                          sig["nominal_carried"], height, 0.03)
+    assert steps.tolist() == [-1, 200, -1, -1]
+    c = gt.classify(**sig, completed=done, object_height=height)
+    assert c.outcome == (gt.Outcome.SUCCESS, gt.Outcome.DROPPED, gt.Outcome.SUCCESS,
+                         gt.Outcome.SUCCESS)
+    assert c.drop_step[1] == 200 and c.first_failure_step[1] == 200
+    # without heights (a caller that has none) the rule is the old one
+    assert gt.classify(**sig, completed=done).outcome[1] is gt.Outcome.SUCCESS
+    # a fall of 13 cm under a 20 cm fall_height is none
+    low = gt.classify(**sig, completed=done, object_height=height,
+                      criteria=gt.OutcomeCriteria(fall_height=0.2))
+    assert low.outcome[1] is gt.Outcome.SUCCESS
+
+
 def test_classify_tells_a_tracking_loss_from_a_saturation():
     """Both are the MOTOR outcome; the report names which (ADROIT's lift slide lagged 25 mm
     at 4.9 N of its 300 N and was reported as an overload, with advice about limits)."""

@@ -438,3 +438,32 @@ def test_families(model):
     out = simulate(missed, model)
     assert not out["grip"].any()
     np.testing.assert_allclose(out["pos"][-1], missed.object_pose[:3], atol=1e-3)
+
+
+def test_a_cube_dropped_mid_carry_and_picked_up_again_fails_and_is_predicted_to():
+    """Round 32's gripper glitch: the hand opens for 120 ms mid-carry, a 0.5 kg cube at
+    friction 0.35 falls 12 cm onto the table, the closing hand picks it up again and places
+    it 1 cm from the goal. The ground truth called it a success (a drop counted only in a
+    run that fails its task); a fall onto a support now fails it, and the audit, whose
+    chain saw the object leave the grip, leaves it to the sample's own rollout."""
+    import dataclasses
+    import warnings
+
+    import critmoment as cm
+    from critmoment import groundtruth as gt
+    from critmoment.validation import validate
+
+    twin = cm.Twin(cm.load_scenario("panda_pick_place"))
+    traj = pd.make_pick_place(0, model=twin.model)
+    actions = np.array(traj.actions)
+    actions[280:286, 7] = 0.35
+    glitch = dataclasses.replace(traj, actions=actions)
+    samples = np.array([[0.4957503420300782, 0.3530191582627594], [0.05, 1.0]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        truth = gt.brute_force(glitch, twin=twin, samples=samples, nthread=1)
+        result = validate(glitch, twin=twin, samples=samples, nthread=1)
+    assert truth.outcome == (gt.Outcome.DROPPED, gt.Outcome.SUCCESS)
+    assert truth.classification.completed.tolist() == [True, True]
+    assert result.predicted_failed.tolist() == [True, False]
+    assert result.real_failed.tolist() == [True, False]
