@@ -28,6 +28,7 @@ import dataclasses
 import enum
 import logging
 import warnings
+from collections.abc import Mapping
 
 import mujoco
 import numpy as np
@@ -179,7 +180,8 @@ class JointFeasibility:
             force changes sign (a numerical oscillation between +limit and −limit, not a
             load).
         target_accel: the target's largest acceleration over the longest saturation or the
-            lag stretch, its velocity change over :data:`ACCEL_WINDOW` [rad/s² or m/s²].
+            lag stretch, its velocity change over :data:`ACCEL_WINDOW` [rad/s² or m/s²]
+            (read, with the two below, only for a joint with a failing stretch; 0 else).
         inertial_force: the largest over that stretch of what following every servo's
             targets' acceleration takes at this joint on the robot's inertia, |M[dof, :] ·
             q̈_target| (armature included) [N·m or N, at the joint]: a motion too fast for
@@ -343,19 +345,16 @@ def _servo_target(m: mujoco.MjModel, a: int, controls: np.ndarray
     return target, past
 
 
-def _target_accelerations(m: mujoco.MjModel, controls: np.ndarray, dt: float) -> np.ndarray:
-    """The acceleration of every position servo's target at its joint's dof, (T, nv), 0
-    elsewhere: the velocity change over :data:`ACCEL_WINDOW` around each step."""
-    n = controls.shape[0]
+def _target_accelerations(m: mujoco.MjModel, targets: Mapping[int, np.ndarray], n: int,
+                          dt: float) -> np.ndarray:
+    """The acceleration of each position servo's target (``targets``: by actuator, (T,))
+    at its joint's dof, (T, nv), 0 elsewhere: the velocity change over
+    :data:`ACCEL_WINDOW` around each step."""
     out = np.zeros((n, m.nv))
     w = max(1, int(round(ACCEL_WINDOW / dt)))
     if n <= 2 * w:
         return out
-    for a in range(m.nu):
-        if m.actuator_trntype[a] != mujoco.mjtTrn.mjTRN_JOINT or not _tracked(
-                m, a, _classify(m, a)[0]):
-            continue
-        target = _servo_target(m, a, controls)[0]
+    for a, target in targets.items():
         dof = int(m.jnt_dofadr[m.actuator_trnid[a, 0]])
         out[w:n - w, dof] = (target[2 * w:] - 2.0 * target[w:n - w] + target[:n - 2 * w]) \
             / (w * dt) ** 2
@@ -486,23 +485,25 @@ class _JointSignals:
             adr = int(m.jnt_qposadr[j])
             stretch = self.qpos[start:start + length + 1, adr] - m.qpos_spring[adr]
             spring_force = float(m.jnt_stiffness[j] * np.abs(stretch).max(initial=0.0))
-        # over the saturation and over the lag stretch (the saturation a lag follows from
-        # may be another stretch than the longest)
-        accel, inertial, bias_force = max((self._inertial(*run) for run in (sat_run, lag_run)),
-                                          key=lambda r: r[1])
         entry = dataclasses.replace(
             base, lag_duration=lag_len * dt, lag_start=lag_start * dt if lag_len else None,
             lag_in_run=lag_in_run, saturation_duration=sat_len * dt,
             saturation_start=sat_start * dt if sat_len else None, target_speed=speed,
             damping_lag=damping_lag, load_lag=load_lag, damping_force=damping_force,
-            saturation_speed=sat_speed, spring_force=spring_force, target_accel=accel,
-            inertial_force=inertial, bias_force=bias_force)
+            saturation_speed=sat_speed, spring_force=spring_force)
         failing = _failing_stretch(entry, self.tol, abs(gear), self.options)
         if failing is not None:
+            # what the causes read, for a joint that has one to name only (a mass matrix
+            # per step read: a gripper squeezing at its limit all through a hold has none)
             blocked, jammed = _blocking_contact(m, self.states, *failing, joint=j,
                                                 toward=self.toward)
-            if blocked:
-                entry = dataclasses.replace(entry, blocked_by=blocked, jammed=jammed)
+            # over the saturation and over the lag stretch (the saturation a lag follows
+            # from may be another stretch than the longest)
+            accel, inertial, bias_force = max(
+                (self._inertial(*run) for run in (sat_run, lag_run)), key=lambda r: r[1])
+            entry = dataclasses.replace(entry, blocked_by=blocked, jammed=jammed,
+                                        target_accel=accel, inertial_force=inertial,
+                                        bias_force=bias_force)
         return entry
 
 
@@ -548,7 +549,12 @@ def check_feasibility(recording: Recording, twin: Twin, *,
     qpos = twin.qpos(states)
     force = np.asarray(recording.signals.actuator_force)
     grippers = _gripper_actuators(twin)
-    target_accel = _target_accelerations(m, controls, dt)
+    # every position servo's target, (T,) by actuator, and its acceleration at the dofs
+    servo_targets = {a: _servo_target(m, a, controls) for a in range(m.nu)
+                     if m.actuator_trntype[a] == mujoco.mjtTrn.mjTRN_JOINT
+                     and _tracked(m, a, _classify(m, a)[0])}
+    target_accel = _target_accelerations(
+        m, {a: target for a, (target, _) in servo_targets.items()}, n, dt)
     joints, problems, notes, held = [], [], [], []
     for a in range(m.nu):
         name = m.actuator(a).name or f"actuator #{a}"
@@ -571,9 +577,9 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         band = 0.0
         friction = float(m.dof_frictionloss[m.jnt_dofadr[j]])
         b1 = 0.0
-        if _tracked(m, a, kind):
+        if a in servo_targets:
             b1 = m.actuator_biasprm[a, 1]
-            target, past = _servo_target(m, a, controls)
+            target, past = servo_targets[a]
             q = qpos[1:n + 1, int(m.jnt_qposadr[j])]
             toward = np.sign(target[:q.size] - q)
             lag = _tracking_error(q, target, int(round(options.delay / dt)))

@@ -293,8 +293,8 @@ def fall_steps(contact_gripper: np.ndarray, contact_support: np.ndarray,
     height = np.asarray(height, dtype=np.float64)
     n, t = support.shape
     out = np.full(n, -1, np.int64)
-    lying = touched.__invert__() & support & np.asarray(nominal_carried, bool)[None, :t]
-    held = touched & ~support
+    lying = ~touched & support & np.asarray(nominal_carried, bool)[None, :t]
+    held = carried_flags(support, contact_gripper)
     for i in np.flatnonzero(lying.any(axis=1)):
         first_held = np.flatnonzero(held[i])
         if not first_held.size:

@@ -60,6 +60,7 @@ from critmoment.params import (
     UncertaintyBox,
 )
 from critmoment.task import Task, task_from_table
+from critmoment.task import _is_real as _is_number
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -196,10 +197,6 @@ MAX_COST_EXPONENT = 50.0
 FOS_BAND = (0.5, 2.0)
 
 
-def _is_number(value: Any) -> bool:
-    """A real number, not a bool (``True`` is 1 to Python, never to a scenario)."""
-    return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(
-        value, (bool, np.bool_))
 
 
 @dataclasses.dataclass(frozen=True)

@@ -251,7 +251,8 @@ class Task:
 
 
 def _is_real(value: Any) -> bool:
-    """A real number (Python or NumPy), not a bool."""
+    """A real number (Python or NumPy), not a bool (``True`` is 1 to Python, never to a
+    scenario; the scenario's checks use this one too)."""
     return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(
         value, (bool, np.bool_))
 
