@@ -37,7 +37,7 @@ import scipy.ndimage
 
 from critmoment import budget
 from critmoment.exceptions import ParameterError
-from critmoment.groundtruth import OutcomeCriteria, beyond_nominal, tracking_tolerances
+from critmoment.groundtruth import OutcomeCriteria, beyond_nominal, fall_steps, tracking_tolerances
 from critmoment.sparse import SparseEvaluator, _object_in_grippers
 from critmoment.task import TaskEvidence
 from critmoment.twin import STATE_SPEC
@@ -187,7 +187,14 @@ class ChainedResult:
             been out of every gripper for longer than the ground truth's ``drop_time``, −1
             if none, (n,) int64. As in the ground truth a drop alone fails nothing: the
             sample steps on to the end (not decided at the later moments), where the task's
-            rule decides it (``incomplete``).
+            rule decides it (``incomplete``), and so does the fall rule (``fall_step``).
+        fall_step: for a sample that reached the end of the run, the ground truth's fall rule
+            (:func:`critmoment.groundtruth.fall_steps`: where the nominal run carries the
+            object, it lies on a support touched by no gripper, having fallen more than
+            ``fall_height`` since a gripper last touched it) over its whole run, the nominal
+            run's steps before the start and its own after: the first step of the fall, −1
+            if none, (n,) int64. A fall fails the sample even when it completes the task (a
+            cube dropped mid-carry and picked up again).
         max_slip: largest slip over the chain [m], (n,).
         motor_step: first step of a saturation of a rotational actuator (the ground truth's
             ``saturation`` of its force limit for longer than ``motor_time``) or of a lost
@@ -220,6 +227,7 @@ class ChainedResult:
     end: int = -1
     slip_step: np.ndarray | None = None
     drop_step: np.ndarray | None = None
+    fall_step: np.ndarray | None = None
     max_slip: np.ndarray | None = None
     motor_step: np.ndarray | None = None
     motor_tracking: np.ndarray | None = None
@@ -262,7 +270,10 @@ class ChainedResult:
         releases the object (``release``: from there the sample's path differs from the nominal one by
         where the object was set down, and a retreating finger's contact with it can turn on
         a micrometre), and a run that ends with the task incomplete without having dropped
-        its object during the hold (a placement off the goal). A slip or a motor failure
+        its object during the hold (a placement off the goal), and a fall onto a support
+        (``fall_step``: whether the object lay on the support where the nominal run carries
+        it turns on where the sample's own run set it down and picked it up again; without
+        verification such a failure stands). A slip or a motor failure
         during the hold, and an incomplete task after a drop during the hold, stand: the
         chain measures them with the ground truth's own rules (started before the grasp,
         the chain's slip is the full rollout's to a micrometre)."""
@@ -278,7 +289,8 @@ class ChainedResult:
         incomplete = np.zeros(n, bool) if self.incomplete is None else self.incomplete
         dropped = (np.zeros(n, bool) if self.drop_step is None
                    else (self.drop_step >= 0) & (self.drop_step < self.release))
-        return self.failed & (moment | late | (incomplete & ~dropped))
+        fell = np.zeros(n, bool) if self.fall_step is None else self.fall_step >= 0
+        return self.failed & (moment | late | (incomplete & ~dropped) | fell)
 
     def kinds(self) -> list[str | None]:
         """How each sample failed on its chain, the earliest event (None for a pass):
@@ -290,7 +302,8 @@ class ChainedResult:
         failed = self.failed
         big = np.iinfo(np.int64).max
         events = [("diverged", self.diverged_step), ("motor", self.motor_step),
-                  ("slipped", self.slip_step), ("dropped", self.drop_step)]
+                  ("slipped", self.slip_step), ("dropped", self.drop_step),
+                  ("dropped", self.fall_step)]
         steps = np.where(self.failure > 0, self.steps[:, None], big).min(axis=0) \
             if self.failure.size else np.full(n, big)
         out: list[str | None] = []
@@ -315,9 +328,10 @@ class ChainedResult:
     def watched_failed(self) -> np.ndarray:
         """(n,) bool: the watch (the ground truth's slip, saturation and tracking rules, and
         divergence) fails the sample somewhere along its chain, or it reaches the end of the
-        run without completing the task (a drop fails it so)."""
+        run without completing the task (a drop fails it so) or having let its object fall
+        onto a support (``fall_step``)."""
         out = np.zeros(self.samples.shape[0], bool)
-        for watched in (self.slip_step, self.motor_step, self.diverged_step):
+        for watched in (self.slip_step, self.motor_step, self.diverged_step, self.fall_step):
             if watched is not None:
                 out = out | (watched >= 0)
         if self.incomplete is not None:
@@ -364,6 +378,7 @@ class _Watch:
         #: the nominal object's position in each grip where the sample's hold began
         self.grasp = np.zeros((n, g, 3))
         self.tolerance = float(criteria.slip_tolerance)
+        self.fall_height = float(criteria.fall_height)
         self.slip_step = np.full(n, -1, np.int64)
         self.drop_step = np.full(n, -1, np.int64)
         self.motor_step = np.full(n, -1, np.int64)
@@ -509,16 +524,21 @@ class _Watch:
         """(n,) the highest sustained level over the rules (``ChainedResult.closest``)."""
         return np.max([level.best for level in self.levels.values()], axis=0)
 
-    def completed(self, rows: np.ndarray | None = None, *, block: int = 64) -> np.ndarray:
-        """(r,) bool: the task's success rule over each sample's whole run, the nominal
-        run's steps before the start and its own after, for ``rows`` (default: all;
-        meaningful for the samples that reached the end), ``block`` samples at a time."""
+    def ends(self, rows: np.ndarray | None = None, *, block: int = 64
+             ) -> tuple[np.ndarray, np.ndarray]:
+        """The ground truth's rules over each sample's whole run, the nominal run's steps
+        before the start and its own after, for ``rows`` (default: all; meaningful for the
+        samples that reached the end), ``block`` samples at a time: the task's success rule,
+        (r,) bool, and the fall rule (:func:`critmoment.groundtruth.fall_steps`), the first
+        step of a fall or −1, (r,) int64."""
         ev = self.ev
         sig = ev.recording.signals
         k = self.start
         rows = (np.arange(self.contact_support.shape[0]) if rows is None
                 else np.asarray(rows, dtype=np.int64))
-        out = np.zeros(rows.size, bool)
+        completed = np.zeros(rows.size, bool)
+        fall = np.full(rows.size, -1, np.int64)
+        up = np.asarray(ev.twin.task.up, dtype=np.float64)
         for lo in range(0, rows.size, block):
             ids = rows[lo:lo + block]
 
@@ -533,8 +553,11 @@ class _Watch:
                 object_pos=whole(sig.object_pos, self.object_pos),
                 object_vel=whole(sig.object_vel, self.object_vel),
                 dt=float(ev.twin.model.opt.timestep))
-            out[lo:lo + block] = np.asarray(ev.twin.task.success(evidence), dtype=bool)
-        return out
+            completed[lo:lo + block] = np.asarray(ev.twin.task.success(evidence), dtype=bool)
+            fall[lo:lo + block] = fall_steps(
+                evidence.contact_gripper, evidence.contact_support, ev._carried,
+                np.asarray(evidence.object_pos, dtype=np.float64) @ up, self.fall_height)
+        return completed, fall
 
 
 class SustainedLevel:
@@ -784,11 +807,14 @@ def chained_failures(evaluator: SparseEvaluator, steps: Any, samples: Any, *,
     # ground truth's NOT_COMPLETED: placed off the goal, not released, still moving)
     reached = ~(failure > 0).any(axis=0) & ~watch.failed()
     incomplete = np.zeros(n, bool)
-    incomplete[reached] = ~watch.completed(np.flatnonzero(reached))
+    fall_step = np.full(n, -1, np.int64)
+    completed, fall_step[reached] = watch.ends(np.flatnonzero(reached))
+    incomplete[reached] = ~completed
     return ChainedResult(steps=np.array(kept, dtype=np.int64), samples=samples,
                          failure=failure, start=first, stepped=stepped, end=end,
                          incomplete=incomplete, release=_release(ev),
                          slip_step=watch.slip_step, drop_step=watch.drop_step,
+                         fall_step=fall_step,
                          max_slip=watch.max_slip, motor_step=watch.motor_step,
                          motor_tracking=watch.motor_tracking,
                          closest=watch.closest(),

@@ -202,6 +202,14 @@ def test_a_chained_failure_is_a_moment_failure_or_a_watched_one():
     # with the release before the drop, the dropped run goes to its rollout too
     np.testing.assert_array_equal(dataclasses.replace(watched, release=150).to_confirm,
                                   [True, True, True, False, False])
+    # a fall onto a support fails the caught-again run 4 (its task complete), as the
+    # ground truth's fall rule does; its own rollout confirms it where there is one
+    fall = np.full(5, -1)
+    fall[4] = 170
+    fell = dataclasses.replace(watched, fall_step=fall)
+    np.testing.assert_array_equal(fell.failed, [True, True, True, False, True])
+    np.testing.assert_array_equal(fell.to_confirm, [False, True, True, False, True])
+    assert fell.kinds()[4] == "dropped"
 
 
 def test_the_chain_watches_tracking_as_the_ground_truth_does(scenario, twin):

@@ -467,3 +467,10 @@ def test_a_cube_dropped_mid_carry_and_picked_up_again_fails_and_is_predicted_to(
     assert truth.classification.completed.tolist() == [True, True]
     assert result.predicted_failed.tolist() == [True, False]
     assert result.real_failed.tolist() == [True, False]
+    # without verification (no rollouts: ``analyze --no-verify``) the chain applies the
+    # fall rule itself, on the sample's own states: it had passed the sample (a false safe)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        quick = validate(glitch, twin=twin, samples=samples, nthread=1, verify=None)
+    assert quick.predicted_failed.tolist() == [True, False]
+
