@@ -1135,6 +1135,14 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
         out.append(f"the object never touches its support ([support] geoms) in the nominal "
                    f"run: is the object pose right (--object-pose{default}), or the "
                    f"[support] geoms?")
+    dt = float(twin.model.opt.timestep)
+    for at, height, again in _mid_run_drops(twin, recording):
+        out.append(f"the nominal run drops the object {height * 100:.3g} cm onto its support "
+                   f"at t = {at * dt:.2f} s (it leaves every gripper there and falls), and a "
+                   f"gripper touches it again at t = {again * dt:.2f} s: a drop mid-task, "
+                   f"which the task's rule does not see when the run still ends in success; "
+                   f"the samples' falls are judged against this run, so is that the motion "
+                   f"meant?")
     fall = _release_height(twin, recording)
     if fall > RELEASE_HEIGHT and recording.completed:
         out.append(f"the nominal run lets go of the object {fall * 100:.3g} cm above where it "
@@ -1371,6 +1379,38 @@ def _release_height(twin: Twin, recording: Recording) -> float:
         return 0.0
     z = twin.object_height(recording.states[:touching.size])
     return float(z[touched[-1]] - z[-1])
+
+
+def _mid_run_drops(twin: Twin, recording: Recording) -> list[tuple[int, float, int]]:
+    """Where the nominal run lets its object fall onto a support and touches it again later
+    (a drop mid-task, not the final release :func:`_release_height` measures): for each
+    stretch out of every gripper that starts with the object held off its supports and
+    ends on a support, having fallen more than ``RELEASE_HEIGHT``, (the first step out of
+    the grippers, the fall [m], the step a gripper next touches it)."""
+    sig = recording.signals
+    touching = np.asarray(sig.contact_gripper, bool).any(axis=-1)
+    support = np.asarray(sig.contact_support, bool)[:touching.size]
+    n = touching.size
+    if n < 2 or not touching.any():
+        return []
+    z = twin.object_height(recording.states[:n])
+    out = []
+    # each stretch out of every gripper: from a step after a touch to the next touch
+    starts = np.flatnonzero(touching[:-1] & ~touching[1:]) + 1
+    for r in starts:
+        if support[r - 1]:
+            continue  # let go while resting on a support: a place
+        again = np.flatnonzero(touching[r:])
+        if not again.size:
+            continue  # the final release: _release_height's
+        back = r + int(again[0])
+        landed = np.flatnonzero(support[r:back])
+        if not landed.size:
+            continue  # caught before it landed (a hand-over's short free flight)
+        height = float(z[r - 1] - z[r + int(landed[0])])
+        if height > RELEASE_HEIGHT:
+            out.append((int(r), height, back))
+    return out
 
 
 def _needs_lift(twin: Twin) -> bool:

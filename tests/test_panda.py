@@ -8,6 +8,7 @@ trajectory's outcome (lift, placement, release, rest, no saturation) and grip-fa
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import mujoco
@@ -474,3 +475,28 @@ def test_a_cube_dropped_mid_carry_and_picked_up_again_fails_and_is_predicted_to(
         quick = validate(glitch, twin=twin, samples=samples, nthread=1, verify=None)
     assert quick.predicted_failed.tolist() == [True, False]
 
+
+
+def test_a_nominal_run_that_drops_its_cube_mid_task_is_told_so():
+    """The bundled Panda's hand opens wide for 120 ms mid-carry: the nominal cube falls
+    12 cm onto the table, and the closing hand comes down and touches it again there before
+    the run ends with the cube at the goal. ``rollout`` had said "completed" without a word
+    (the release check looked only at the last touch, made with the cube on the table)."""
+    import dataclasses
+
+    import critmoment as cm
+    from critmoment.feasibility import check_fit
+    from critmoment.recording import rollout
+
+    twin = cm.Twin(cm.load_scenario("panda_pick_place"))
+    traj = pd.make_pick_place(0, model=twin.model)
+    actions = np.array(traj.actions)
+    actions[280:286, 7] = 1.0
+    dropped = dataclasses.replace(traj, actions=actions)
+    rec = rollout(dropped, twin=twin)
+    hints = check_fit(dropped, rec, twin)
+    assert any(re.search(r"drops the object 1[12](\.\d+)? cm onto its support at t = 5\.\d+ s",
+                         h) for h in hints), hints
+    # the plain demo, placed and let go on the table, has no such hint
+    assert not any("drops the object" in h for h in check_fit(traj, rollout(traj, twin=twin),
+                                                               twin))
