@@ -1,6 +1,7 @@
 """The acceptance suite and the bundled Panda rows of the validity table, in one run.
 
-    PYTHONPATH=. python benchmarks/acceptance_check.py [--samples 64] [--out results.json]
+    PYTHONPATH=. python benchmarks/acceptance_check.py [--samples 64] [--no-verify]
+                                                       [--out results.json]
 
 Validates (``critmoment.validation.validate``: the audit's decision path against brute-force
 full rollouts of the same Sobol samples) the six trajectory families of
@@ -8,7 +9,8 @@ full rollouts of the same Sobol samples) the six trajectory families of
 Panda's scripted pick and place for seeds 0, 1 and 2 (Sobol seed = the trajectory's seed).
 Prints one line per case (confusion counts, false-safe rate, agreement, whether the
 validation is vacuous: no real success or no real failure) and ends with the worst case.
-About 1.5 minutes on 2 cores.
+About 1.5 minutes on 2 cores. ``--no-verify`` measures the audit without its own full
+rollouts (``analyze --no-verify``).
 """
 
 import argparse
@@ -24,6 +26,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--samples", type=int, default=64)
     parser.add_argument("--out", default=None, help="write the results as JSON here")
+    parser.add_argument("--no-verify", action="store_true",
+                        help="the audit without its own full rollouts (analyze --no-verify)")
     args = parser.parse_args()
     warnings.simplefilter("ignore")
     cases = []
@@ -37,7 +41,8 @@ def main() -> None:
     results = {}
     for name, twin, make, seed in cases:
         t0 = time.perf_counter()
-        r = validation.validate(make(), twin=twin, n_samples=args.samples, seed=seed)
+        extra = {"verify": None} if args.no_verify else {}
+        r = validation.validate(make(), twin=twin, n_samples=args.samples, seed=seed, **extra)
         results[name] = {"confusion": r.confusion, "false_safe_rate": r.false_safe_rate,
                          "agreement": r.agreement, "vacuous": r.vacuous,
                          "seconds": time.perf_counter() - t0}

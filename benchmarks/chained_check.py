@@ -2,6 +2,8 @@
 without chained segments (``AnalyzeOptions.chain``), against brute-force full rollouts.
 
     PYTHONPATH=. python benchmarks/chained_check.py --seeds 0,3,6,9,12,15,18 --chain 1
+
+``--no-verify``: the audit without its own full rollouts (``analyze --no-verify``).
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ def main() -> None:
     parser.add_argument("--chain", type=int, choices=(0, 1), default=1)
     parser.add_argument("--samples", type=int, default=32)
     parser.add_argument("--mass-high", type=float, default=1.5)
+    parser.add_argument("--no-verify", action="store_true")
     args = parser.parse_args()
     scenario = cm.load_scenario()
     scenario = scenario.replace(box=scenario.box.with_range("mass", 0.05, args.mass_high))
@@ -29,7 +32,8 @@ def main() -> None:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             result = cm.validate(demos.scripted_transfer(seed, twin=twin), twin=twin,
-                                 n_samples=args.samples, seed=0, chain=bool(args.chain))
+                                 n_samples=args.samples, seed=0, chain=bool(args.chain),
+                                 **({"verify": None} if args.no_verify else {}))
         c = result.confusion
         fs += c["false_safe"]
         fu += c["false_unsafe"]
