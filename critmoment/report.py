@@ -627,6 +627,16 @@ def check_output_path(path: str | os.PathLike, *, kind: str = "folder",
     return dest
 
 
+def _unmovable(folder: Path) -> bool:
+    """``folder`` exists and is a mount point, or on another device than its parent."""
+    try:
+        if not folder.is_dir():
+            return False
+        return os.path.ismount(folder) or folder.stat().st_dev != folder.parent.stat().st_dev
+    except OSError:
+        return False
+
+
 def _short(path, limit: int = 120) -> str:
     text = str(path)
     return text if len(text) <= limit else f"{text[:60]}...{text[-40:]}"
@@ -671,15 +681,24 @@ def _exchange(a: Path, b: Path) -> bool:
     raise OSError(err, os.strerror(err), str(b))
 
 
-def _previous_files(folder: Path) -> set[str]:
-    """The files of the critmoment output in ``folder`` (its marker's list, or known names)."""
+def _marked_files(folder: Path) -> set[str] | None:
+    """The files its marker lists as the critmoment output in ``folder``, or None (no
+    readable marker)."""
     try:
         listed = json.loads((folder / MARKER).read_text())["files"]
         return {str(n) for n in listed if "/" not in str(n) and str(n) not in ("", ".", "..")}
     except (OSError, ValueError, KeyError, TypeError, RecursionError):
-        # only the figure names critmoment writes: a folder of the user's own pictures is
-        # not an earlier output
-        return {e.name for e in os.scandir(folder) if e.is_file() and (
+        return None
+
+
+def _previous_files(folder: Path) -> set[str]:
+    """The files of the critmoment output in ``folder`` (its marker's list, or known names)."""
+    listed = _marked_files(folder)
+    if listed is not None:
+        return listed
+    # only the figure names critmoment writes: a folder of the user's own pictures is
+    # not an earlier output
+    return {e.name for e in os.scandir(folder) if e.is_file() and (
             e.name in _KNOWN_OUTPUTS or _FIGURE_FILE.fullmatch(e.name))}
 
 
@@ -733,12 +752,19 @@ class StagedOutput:
                                              shared=shared)
         self._raw = os.fspath(destination)
         self._tmpdir: Path | None = None
+        self._inside = False
         self.path: Path = self.destination
 
     def __enter__(self) -> StagedOutput:
         anchor = _nearest_existing(self.destination)
         if self.destination.parent.is_dir():
             anchor = self.destination.parent
+        # a folder that is a mount point (a container's volume given as --out) cannot be
+        # swapped or renamed (EBUSY), nor can files be renamed into it from beside it
+        # (EXDEV): the output is staged inside it and its files renamed in one by one
+        self._inside = self.kind == "folder" and _unmovable(self.destination)
+        if self._inside:
+            anchor = self.destination
         try:
             self._tmpdir = Path(tempfile.mkdtemp(
                 prefix=f".{self.destination.name[:80]}.critmoment-tmp-", dir=anchor))
@@ -768,10 +794,14 @@ class StagedOutput:
                 _remove_tree(self._tmpdir)
         return False
 
-    def _merge_into(self, dest: Path) -> None:
-        """Renames the staged files into a folder that also holds other files."""
+    def _merge_into(self, dest: Path, *, marked_only: bool = True) -> None:
+        """Renames the staged files into a folder that also holds other files, and removes
+        the earlier output's files the new one lacks: only those its marker lists
+        (``marked_only``; a file of the user's named like a figure, ``signals.png``, in a
+        folder without a marker is the user's), else also those named like critmoment's."""
         new = sorted(e.name for e in os.scandir(self.path) if e.name != MARKER)
-        old = _previous_files(dest) - set(new) - {MARKER}
+        earlier = _marked_files(dest) if marked_only else _previous_files(dest)
+        old = (earlier or set()) - set(new) - {MARKER}
         for name in new:
             os.replace(self.path / name, dest / name)
         for name in old:
@@ -790,6 +820,15 @@ class StagedOutput:
             with _locked(dest.parent):
                 if self.kind == "file":
                     os.replace(self.path, dest)
+                    return
+                if self._inside:
+                    foreign = [n for n in _foreign_entries(dest) if n != self._tmpdir.name]
+                    if foreign and not self.shared:
+                        raise OutputError(
+                            f"{self.option} {_short(self._raw)!r}: expected an empty folder "
+                            f"or one holding an earlier critmoment output, got a folder with "
+                            f"other files ({', '.join(foreign[:5])}); choose a new folder")
+                    self._merge_into(dest, marked_only=self.shared)
                     return
                 check_output_path(dest, kind="folder", option=self.option,
                                   shared=self.shared)

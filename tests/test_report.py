@@ -106,6 +106,49 @@ def test_swap_without_renameat2(tmp_path, monkeypatch):
     assert _files(tmp_path) == ["r"]
 
 
+def test_a_mount_point_is_written_in_place(tmp_path, monkeypatch):
+    """A folder that is a mount point (a container's results volume given as ``--out``)
+    can be neither swapped nor renamed (EBUSY): the whole audit ran and then failed with
+    "cannot move the output into place". It is now staged inside and filled file by file;
+    an earlier output's files the new one lacks go, other files make it refused."""
+    out = tmp_path / "volume"
+    out.mkdir()
+    monkeypatch.setattr(os.path, "ismount", lambda p: os.fspath(p) == os.fspath(out))
+
+    def busy(a, b):
+        raise OSError(errno.EBUSY, "Device or resource busy", str(b))
+
+    monkeypatch.setattr(report, "_exchange", busy)
+    for names in (("report.json", "signals.png"), ("report.json",)):
+        with StagedOutput(out, command="test") as stage:
+            for name in names:
+                (stage.path / name).write_text(name)
+        assert _files(out) == sorted([MARKER, *names])
+    assert _files(tmp_path) == ["volume"]
+    (out / "notes.txt").write_text("mine")
+    with pytest.raises(OutputError, match="other files"):
+        StagedOutput(out, command="test")
+
+
+def test_a_shared_folder_without_a_marker_keeps_the_users_pictures(tmp_path):
+    """``write_report`` into a folder of the user's (shared) removed their own
+    ``signals.png`` when the folder had no marker: files named like figures were taken for
+    an earlier output's. Only files a marker lists are an earlier output's there."""
+    out = tmp_path / "work"
+    out.mkdir()
+    for name in ("signals.png", "moment_12.png", "traj.npz"):
+        (out / name).write_text("user's")
+    with StagedOutput(out, command="test", shared=True) as stage:
+        (stage.path / "report.json").write_text("new")
+    assert _files(out) == sorted([MARKER, "moment_12.png", "report.json", "signals.png",
+                                  "traj.npz"])
+    assert (out / "signals.png").read_text() == "user's"
+    # a marked earlier output's files the new one lacks are removed
+    with StagedOutput(out, command="test", shared=True) as stage:
+        (stage.path / "other.json").write_text("newer")
+    assert "report.json" not in _files(out) and "signals.png" in _files(out)
+
+
 def test_concurrent_runs_do_not_interleave(tmp_path):
     out = tmp_path / "r"
     barrier = threading.Barrier(4)
