@@ -51,7 +51,7 @@ from critmoment.recording import (
     rollout,
 )
 from critmoment.scenario import Scenario
-from critmoment.trajectory import Trajectory, check_trajectory, input_identity
+from critmoment.trajectory import Trajectory, check_trajectory, input_identity, printable_name
 from critmoment.twin import Twin, entry_point, resolve_twin
 from critmoment.verdict import MomentReport, Verdict, safe_subbox
 
@@ -1649,7 +1649,7 @@ def input_manifest(sc: Scenario, traj: Trajectory, *, seed: int | None,
         "numpy": np.__version__,
         "python": sys.version.split()[0],
         "platform": platform.platform(terse=True),
-        "scenario": sc.name,
+        "scenario": printable_name(sc.name),
         # file names and hashes, not paths: identical inputs, identical manifests. The
         # files' hashes say what was read (None for what was built in code: not whatever
         # file of that name lies in the working folder); the content hashes say what was

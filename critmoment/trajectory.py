@@ -748,7 +748,19 @@ def input_identity(source: Any) -> dict:
         name = p.resolve().name if text and p.exists() else (p.name or text)
     except OSError:
         name = p.name or text
-    return {"name": name, "sha256": digest}
+    return {"name": printable_name(name), "sha256": digest}
+
+
+def printable_name(name: str) -> str:
+    """``name`` as text any UTF-8 writer takes: a file name that is not UTF-8 (its bytes
+    kept by Python as lone surrogates, ``caf\udce9.npz``) with those bytes written as
+    backslash escapes (``caf\\xe9.npz``); other text unchanged. A report's manifest
+    named such a trajectory as it came, and writing the report's HTML then failed."""
+    try:
+        raw = name.encode("utf-8", "surrogateescape")
+    except UnicodeEncodeError:  # a lone surrogate that is no escaped byte
+        return name.encode("utf-8", "backslashreplace").decode("utf-8")
+    return raw.decode("utf-8", "backslashreplace")
 
 
 def _scalar(value: np.ndarray, *, what: str) -> Any:

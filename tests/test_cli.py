@@ -93,6 +93,22 @@ def test_analyze_exit_codes(traj_file, capsys, tmp_path):
     assert json.loads(capsys.readouterr().out)["verdict"] == "CONDITIONAL"
 
 
+def test_a_file_name_that_is_not_utf8_is_written_escaped(traj_file, capsys, tmp_path):
+    """A trajectory named with a Latin-1 byte (``caf\xe9.npz``): the whole audit ran, then
+    writing the report's HTML failed ("unexpected UnicodeEncodeError ... a bug")."""
+    import os
+    import shutil
+
+    name = os.fsdecode(b"caf\xe9.npz")
+    shutil.copy(traj_file, tmp_path / name)
+    out = tmp_path / "out"
+    assert main(["analyze", str(tmp_path / name), "--samples", "8", "--no-verify",
+                 "--max-moments", "2", "--figures", "none", "--out", str(out)]) == 1
+    doc = json.loads((out / "report.json").read_text(encoding="utf-8"))
+    assert doc["manifest"]["trajectory"] == "caf\\xe9.npz"
+    assert "caf\\xe9.npz" in (out / "report.html").read_text(encoding="utf-8")
+
+
 def test_analyze_method_flags(traj_file, capsys):
     assert main(["analyze", str(traj_file), "--samples", "16", "--json", "--no-verify",
                  "--max-moments", "3", "--horizon", "5"]) == 1
