@@ -622,7 +622,17 @@ class InitResult:
 
 
 def _toml_str(s: str) -> str:
-    return '"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    """``s`` as a TOML basic string: a backslash, a quote and every control character
+    escaped (a body named with a newline in the MJCF made init write invalid TOML)."""
+    out = []
+    for c in s:
+        if c in '"\\':
+            out.append("\\" + c)
+        elif ord(c) < 0x20 or ord(c) == 0x7F:
+            out.append(f"\\u{ord(c):04X}")
+        else:
+            out.append(c)
+    return '"' + "".join(out) + '"'
 
 
 def _num(x: float) -> str:
@@ -1011,13 +1021,16 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     lines.append(f"mjcf = {_toml_str(rel)}")
     if info.keyframes:
         k0 = info.keyframes[0]
+        # an unnamed keyframe by its index; a named one by its name, quoted even when it is
+        # all digits (keyframe = 1 is the index 1: a first keyframe named "1" had become the
+        # second keyframe, another pose, without a word)
+        k0_toml = "0" if not model.key(0).name else _toml_str(k0)
         if key is not None:
-            lines.append(f"keyframe = {_toml_str(k0) if not k0.isdigit() else k0}   # initial "
-                         f"pose")
-            guesses.append(f"initial pose: keyframe {k0}")
+            lines.append(f"keyframe = {k0_toml}   # initial pose")
+            guesses.append(f"initial pose: keyframe {k0_toml}")
         else:
-            lines.append(f"# keyframe = {_toml_str(k0) if not k0.isdigit() else k0}   # does "
-                         f"not fit the model (see the checks): the model's own pose is used")
+            lines.append(f"# keyframe = {k0_toml}   # does not fit the model (see the "
+                         f"checks): the model's own pose is used")
     lines += ["", "[object]", f"body = {_toml_str(object_body)}",
               f"geom = {_toml_str(object_geom)}", ""]
     for g in grippers:

@@ -1248,6 +1248,36 @@ def test_a_keyframe_that_does_not_fit_the_model_is_not_adopted(tmp_path):
     assert keyframe_problems(mujoco.MjModel.from_xml_path(str(tmp_path / "mocap.xml")), 0) == []
 
 
+def test_init_writes_a_keyframe_named_with_digits_as_a_name(tmp_path):
+    """A first keyframe named "1": init wrote ``keyframe = 1``, which a scenario reads as
+    the index 1 (the second keyframe, another pose, without a word); a body named with a
+    newline made init write invalid TOML."""
+    from critmoment.scenario import load_scenario
+    from critmoment.twin import Twin
+
+    text = _write(tmp_path, name="good.xml").read_text()
+    key = '<key qpos="0 0 0 0 0.3 0 0.02 1 0 0 0"/>'
+    assert key in text
+    named = text.replace(key, key.replace("<key ", '<key name="1" ')
+                         + key.replace("<key ", '<key name="other" '))
+    (tmp_path / "k.xml").write_text(named)
+    result = init_scenario(tmp_path / "k.xml", object_body="cube", task="pick_hold",
+                           out=tmp_path / "k.toml")
+    assert '\nkeyframe = "1"' in result.text
+    made = load_scenario(tmp_path / "k.toml")
+    model = Twin(made).model
+    assert model.key(made.keyframe_id(model)).name == "1"
+    # an unnamed keyframe is written by its index
+    result = init_scenario(tmp_path / "good.xml", object_body="cube", task="pick_hold",
+                           out=tmp_path / "g.toml")
+    assert "\nkeyframe = 0" in result.text
+    import tomllib
+
+    from critmoment.modelinfo import _toml_str
+    for name in ('a"b', "c\\d", "line\nbreak", "\x01", "caf\u00e9", "\x7f"):
+        assert tomllib.loads(f"k = {_toml_str(name)}")["k"] == name
+
+
 def test_numbers_written_by_init_read_as_the_values_they_are():
     """The low-cost robot arm's jaw closes at 0.032 rad, computed as 0.03200000000000003:
     inspect and init had printed and written the float noise."""
