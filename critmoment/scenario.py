@@ -1795,7 +1795,18 @@ def load_scenario(path: str | Path | None = None) -> Scenario:
     if path is None:
         path = bundled_scenario_path()
     elif isinstance(path, str) and path in BUNDLED_SCENARIOS:
-        path = bundled_scenario_path(path)
+        bundled = bundled_scenario_path(path)
+        local = Path(path)
+        if local.exists() and local.resolve() != bundled.resolve() \
+                and local.resolve() != bundled.resolve().parent:
+            # a copy of a bundled scenario made to edit it, under the same name: the
+            # bundled one had been loaded and the edits silently not audited
+            warnings.warn(f"scenario {path!r}: names both a bundled scenario and "
+                          f"{str(local.resolve())!r} here; loading the latter (give "
+                          f"{str(bundled)!r} for the bundled one)", ScenarioWarning,
+                          stacklevel=2)
+        else:
+            path = bundled
     elif not isinstance(path, (str, os.PathLike)) or not os.fspath(path).strip():
         raise ScenarioError(f"scenario: expected a scenario.toml, its folder or a bundled "
                             f"scenario's name ({', '.join(BUNDLED_SCENARIOS)}), got "

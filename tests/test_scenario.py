@@ -1052,3 +1052,29 @@ def test_a_task_of_no_kind_is_refused(scenario):
     with pytest.raises(ScenarioError, match=r"Scenario task: expected a task of a kind .*got "
                        r"Task without stage, success, shortfalls, describe"):
         scenario.replace(task=Task(grippers=scenario.gripper_names))
+
+
+def test_a_local_copy_named_like_a_bundled_scenario_is_the_one_loaded(tmp_path, monkeypatch):
+    """A copy of the bundled folder made to edit it, passed by its name: the bundled
+    scenario had been loaded and the edits silently not audited."""
+    import shutil
+    import warnings
+
+    from critmoment.scenario import ScenarioWarning, bundled_scenario_path
+
+    bundled = bundled_scenario_path("aloha_transfer_cube").parent
+    copy = tmp_path / "aloha_transfer_cube"
+    shutil.copytree(bundled, copy)
+    toml = copy / "scenario.toml"
+    text = toml.read_text()
+    assert "\nname = " in text
+    toml.write_text("\n".join('name = "my_copy"' if line.startswith("name = ") else line
+                              for line in text.splitlines()) + "\n")
+    monkeypatch.chdir(tmp_path)
+    with pytest.warns(ScenarioWarning, match="names both a bundled scenario"):
+        assert load_scenario("aloha_transfer_cube").name == "my_copy"
+    # from the bundled models' own folder the name is the bundled scenario, without a word
+    monkeypatch.chdir(bundled.parent)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert load_scenario("aloha_transfer_cube").name != "my_copy"
