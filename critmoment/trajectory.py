@@ -95,6 +95,12 @@ _SNAP_TOL = 1e-9
 
 _NPZ_KEYS = frozenset({"actions", "fps", "time", "start", "qpos0", "qvel0", "object_pose",
                        "meta"})
+#: unknown npz keys (lower case) that can only be a time base: refused when no 'fps' or
+#: 'time' says the rate
+_TIME_BASE_KEYS = frozenset({"fps", "timestamp", "timestamps", "times", "t", "dt", "hz",
+                             "freq", "frequency", "rate", "frame_rate", "framerate",
+                             "control_freq", "control_frequency", "sample_rate", "period",
+                             "time_s", "seconds"})
 
 
 # ---------------------------------------------------------------------------
@@ -896,6 +902,15 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
             CritmomentWarning,
             stacklevel=3,
         )
+    # a time base under another name (LeRobot's 'timestamp', a 'dt', an 'FPS'), with none
+    # that critmoment reads and no rate given: the run had gone on at the scenario's rate
+    # with only the unknown-key warning, at twice the recorded speed for a 25 Hz file
+    timing = [k for k in unknown if k.lower().replace("-", "_") in _TIME_BASE_KEYS]
+    if timing and fps is None and not {"fps", "time"} & set(data):
+        raise TrajectoryError(
+            f"{str(path)!r}: key(s) {timing} look like the trajectory's time base, but "
+            f"critmoment reads it only from 'fps' (the rate [Hz]) or 'time' (each row's "
+            f"time [s]); expected one of those (rename the key), or give the rate (--fps)")
     if "actions" not in data:
         raise TrajectoryError(
             f"{str(path)!r}: expected key 'actions' with shape (T, na), found keys "

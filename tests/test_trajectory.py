@@ -174,6 +174,26 @@ def test_npz_unknown_key_warns_and_fps_conflict(tmp_path):
             load_trajectory(path, fps=50)
 
 
+def test_npz_time_base_under_another_name_is_refused(tmp_path):
+    """A 25 Hz file whose rate is stored as 'timestamp' (LeRobot's column), 'dt' or 'FPS':
+    the key was ignored with a warning and the run went on at the scenario's 50 Hz, twice
+    the recorded speed, exit 0."""
+    path = tmp_path / "r.npz"
+    for key, value in (("timestamp", np.arange(6) / 25), ("dt", 0.04), ("FPS", 25.0),
+                       ("control_freq", 25.0)):
+        np.savez(path, actions=np.zeros((6, 2)), **{key: value})
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            with pytest.raises(TrajectoryError, match=rf"\['{key}'\] look like the trajectory's "
+                                                      r"time base.*'fps'.*'time'"):
+                load_trajectory(path)
+            assert load_trajectory(path, fps=25).fps == 25  # the rate given: read as before
+    # beside a rate critmoment reads, such a key is only ignored, with the warning
+    np.savez(path, actions=np.zeros((6, 2)), fps=25.0, dt=0.04)
+    with pytest.warns(UserWarning, match=r"unknown key.*'dt'"):
+        assert load_trajectory(path).fps == 25
+
+
 def test_npz_missing_actions(tmp_path):
     path = tmp_path / "m.npz"
     np.savez(path, act=np.zeros((3, 2)))
