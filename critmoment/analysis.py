@@ -700,7 +700,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     cost_map = None
     if opt.map_resolution and box.ndim >= 2 and steps.size:
         cost_map = _cost_map(res, box, opt.map_resolution)
-    manifest = _manifest(sc, opt, trajectory)
+    manifest = _manifest(sc, opt, trajectory, twin)
     return AuditReport(
         verdict=decision.verdict, p_success=decision.p_success,
         p_success_interval=decision.p_success_interval,
@@ -1627,15 +1627,15 @@ def _search_all(rec, twin, evaluator, steps, opt):
     return analytics, searches
 
 
-def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory) -> dict:
+def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory, twin: Twin) -> dict:
     # not the threads: the report is the same on any number (the CLI's default, all CPUs,
     # and the library's gave byte-different documents for the same audit)
     options = {k: v for k, v in dataclasses.asdict(opt).items() if k != "nthread"}
-    return input_manifest(sc, traj, seed=opt.seed, options=options)
+    return input_manifest(sc, traj, seed=opt.seed, options=options, twin=twin)
 
 
 def input_manifest(sc: Scenario, traj: Trajectory, *, seed: int | None,
-                   options: Mapping) -> dict:
+                   options: Mapping, twin: Twin | None = None) -> dict:
     """What an audit or a validation ran on, for its document: the versions, the scenario,
     the model and the trajectory by name and hash (not paths), the seed and ``options``,
     the task and the force limits."""
@@ -1657,7 +1657,7 @@ def input_manifest(sc: Scenario, traj: Trajectory, *, seed: int | None,
         "scenario_file": input_identity(sc.path)["name"] if sc.path else None,
         "scenario_sha256": sc.sha256,
         "scenario_content_sha256": sc.content_sha256(),
-        "model_sha256": model_hash(sc),
+        "model_sha256": model_hash(sc if twin is None else twin),
         "trajectory": input_identity(traj.source)["name"],
         "trajectory_sha256": traj.source_sha256,
         "trajectory_content_sha256": traj.content_sha256(),

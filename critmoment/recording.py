@@ -56,13 +56,21 @@ __all__ = [
 _WARNING_NAMES = [mujoco.mjtWarning(i).name for i in range(mujoco.mjtWarning.mjNWARNING)]
 
 
-def model_hash(scenario: Scenario) -> str:
-    """SHA-256 of the scenario's MJCF files (scene and the files it refers to in its folder)."""
-    h = hashlib.sha256()
-    for path in sorted(Path(scenario.mjcf).parent.glob("*.xml")):
-        h.update(path.name.encode())
-        h.update(path.read_bytes())
-    return h.hexdigest()
+def model_hash(source: Twin | Scenario | mujoco.MjModel) -> str:
+    """SHA-256 of the model MuJoCo compiled (its binary MJB form: every number and name it
+    simulates with, whatever the files it came from, includes and meshes included, and
+    whatever lies beside them), for a :class:`Twin` (its model as it loaded, kept at
+    construction), an ``MjModel``, or a :class:`Scenario` (compiled here). It had hashed the
+    ``*.xml`` files beside the scene when the report was written: an unrelated XML there
+    changed it, an included file in a subfolder or a mesh did not, nor did a file edited
+    during the audit."""
+    if isinstance(source, Twin):
+        return source.model_sha256
+    if not isinstance(source, mujoco.MjModel):
+        return Twin(source).model_sha256
+    buffer = np.zeros(mujoco.mj_sizeModel(source), dtype=np.uint8)
+    mujoco.mj_saveModel(source, None, buffer)
+    return hashlib.sha256(buffer.tobytes()).hexdigest()
 
 
 def _range_policy(range_policy: Any, twin: Twin) -> trajectory_mod.RangePolicy:
@@ -743,4 +751,4 @@ def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
         signals=twin.signals(sd), nominal=twin.scenario.box.nominal,
         parameter_names=twin.scenario.box.names, gripper_names=twin.scenario.gripper_names,
         actuator_names=twin.actuator_names, scenario_name=twin.scenario.name,
-        model_sha256=model_hash(twin.scenario), source=traj.source, task=twin.task)
+        model_sha256=twin.model_sha256, source=traj.source, task=twin.task)

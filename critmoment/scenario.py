@@ -717,7 +717,7 @@ class Scenario:
     def content_sha256(self) -> str:
         """SHA-256 of what an audit reads from the scenario: every field but its file's
         path, its file hash and its description, with the MJCF by file name (the report's
-        ``model_sha256`` hashes the model files). A scenario changed in code
+        ``model_sha256`` hashes the compiled model). A scenario changed in code
         (:meth:`replace`) hashes differently from the file it was read from."""
         skip = {"path", "sha256", "description", "mjcf"}
         parts = [(f.name, getattr(self, f.name)) for f in dataclasses.fields(self)

@@ -265,6 +265,11 @@ class Twin:
         except ValueError as exc:
             raise ScenarioError(f"could not compile {scenario.mjcf} with sensors: {exc}") from exc
         self.model = model
+        from critmoment.recording import model_hash
+
+        #: SHA-256 of the model as compiled (:func:`critmoment.recording.model_hash`), taken
+        #: before any audit changes a parameter in it
+        self.model_sha256 = model_hash(model)
         #: object start positions already checked against the arms' reach
         self._starts_checked: set[tuple[float, ...]] = set()
         scenario.validate_names(model)

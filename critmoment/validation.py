@@ -649,4 +649,4 @@ def validate(traj: Trajectory, scenario: Scenario | str | None = None, *,
                                 "prior": p.prior.value} for p in box.parameters},
                "samples_given": used_seed is None}
     return dataclasses.replace(result, manifest=input_manifest(
-        twin.scenario, traj, seed=used_seed, options=options))
+        twin.scenario, traj, seed=used_seed, options=options, twin=twin))

@@ -459,3 +459,29 @@ def test_the_runs_warnings_are_in_the_page_too(audit, tmp_path):
     assert "<h2>Warnings</h2>" in html and "9.8 mm &lt;before&gt; the grasp" in html
     write_report(audit, tmp_path / "q", figures=Figures.NONE)
     assert "<h2>Warnings</h2>" not in (tmp_path / "q" / "report.html").read_text(encoding="utf-8")
+
+
+def test_the_model_hash_is_the_compiled_models(tmp_path):
+    """``model_sha256`` hashed the *.xml files beside the scene when the report was
+    written: an unrelated XML there changed it, tripled link masses in an included file
+    of a subfolder did not. It is the compiled model's now, taken when the twin loads."""
+    import shutil
+
+    import critmoment as cm
+    from critmoment.recording import model_hash
+    from critmoment.scenario import bundled_scenario_path
+
+    src = bundled_scenario_path("aloha_transfer_cube").parent
+    copy = tmp_path / "copy"
+    shutil.copytree(src, copy)
+    base = cm.Twin(cm.load_scenario(copy))
+    assert base.model_sha256 == cm.Twin(cm.load_scenario(src)).model_sha256  # path-free
+    (copy / "notes.xml").write_text("<notes/>")
+    assert model_hash(cm.load_scenario(copy)) == base.model_sha256
+    arm = copy / "vx300s.xml"
+    text = arm.read_text()
+    heavier = text.replace('mass="', 'mass="3', 1)
+    assert heavier != text
+    arm.write_text(heavier)
+    assert model_hash(cm.load_scenario(copy)) != base.model_sha256
+    assert model_hash(base) == base.model_sha256  # the twin's, as it loaded
