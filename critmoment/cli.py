@@ -598,8 +598,17 @@ def _warning_lines(caught, command: str) -> list[str]:
     return lines
 
 
+def _stderr_sink() -> None:
+    """With the standard error closed (``2>&-``) Python sets ``sys.stderr`` to None, and
+    ``print(..., file=None)`` writes to standard output: the error line, the warnings and
+    ``-v``'s progress had landed in ``--json``'s document. They go nowhere instead."""
+    if sys.stderr is None:
+        sys.stderr = open(os.devnull, "w")  # noqa: SIM115 - the process's own stream
+
+
 def main(argv: list[str] | None = None) -> int:
     """Runs the command line; returns the exit code (0 ok, 1 not safe, 2 error)."""
+    _stderr_sink()
     with _terminate_as_interrupt():
         try:
             # the libraries load here (about 1 s), whole: a Ctrl-C meanwhile is raised after
@@ -741,6 +750,7 @@ def run() -> None:
     (the verdict's exit code lost); one just before is exit 2, interrupted."""
     import signal
 
+    _stderr_sink()
     # a console that cannot encode "≤" or "—" (PYTHONIOENCODING=ascii, a Windows code page)
     # gets them escaped: an audit whose report was written whole had exited 2 on its summary
     for stream in (sys.stdout, sys.stderr):

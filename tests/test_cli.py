@@ -315,6 +315,35 @@ def test_a_closed_stdout_keeps_the_exit_code(traj_file, tmp_path):
     assert "AttributeError" not in proc.stderr and out.is_dir()
 
 
+def test_a_closed_stderr_keeps_json_on_stdout_clean(traj_file, tmp_path):
+    """``critmoment ... 2>&-``: Python's stderr is None and ``print(file=None)`` writes to
+    stdout, so the warnings and the error line had landed in ``--json``'s document."""
+    import os
+    import subprocess
+    import sys
+
+    import numpy as np
+
+    # a trajectory without its object pose: the run warns that the model's pose is used
+    data = dict(np.load(traj_file))
+    data.pop("object_pose", None)
+    data.pop("qpos0", None)
+    bare = tmp_path / "bare.npz"
+    np.savez(bare, **data)
+
+    def cli(*args):
+        return subprocess.run(
+            [sys.executable, "-c", "from critmoment.cli import run; run()", *args],
+            stdout=subprocess.PIPE, text=True, env={**os.environ, "MPLBACKEND": "Agg"},
+            preexec_fn=lambda: os.close(2), timeout=300)
+
+    proc = cli("rollout", str(bare), "--json")
+    assert proc.returncode == 0
+    assert "steps" in json.loads(proc.stdout)  # the document alone
+    proc = cli("rollout", str(tmp_path / "missing.npz"), "--json")
+    assert proc.returncode == 2 and proc.stdout == ""
+
+
 def test_a_console_that_cannot_encode_the_summary_keeps_the_exit_code(traj_file):
     """With PYTHONIOENCODING=ascii (or a console code page without "≤"), a SAFE or
     CONDITIONAL audit wrote its report whole and then exited 2 on a UnicodeEncodeError
