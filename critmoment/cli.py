@@ -17,6 +17,7 @@ import json
 import logging
 import math
 import os
+import re
 import sys
 import traceback
 import warnings
@@ -559,7 +560,14 @@ def build_parser() -> argparse.ArgumentParser:
     for command in parser.commands.values():  # `critmoment analyze traj.npz -v` too
         command.add_argument("-v", "--verbose", action="store_true", default=argparse.SUPPRESS,
                              help="as critmoment -v")
+        # argparse takes only -1 and -0.5 for negative numbers: a pose printed with %g
+        # (--object-pose ... 1 -3.4e-05 0 0) was "expected 7 arguments" for 7 numbers
+        command._negative_number_matcher = _NEGATIVE_NUMBER
     return parser
+
+
+_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$",
+                              re.IGNORECASE)
 
 
 # -- errors ------------------------------------------------------------------------

@@ -717,3 +717,16 @@ def test_rollout_runs_the_contact_models_check(tmp_path, capsys):
     out, err = capsys.readouterr()
     assert "the nominal run's own object moves 1" in err
     assert "slip is counted beyond that" in json.loads(out)["contact_model"]
+
+
+def test_negative_numbers_in_exponent_notation_are_values():
+    """argparse reads only -1 and -0.5 as negative numbers: a pose printed with %g
+    (``--object-pose ... 1 -3.4e-05 0 0``) was refused, "expected 7 arguments"."""
+    from critmoment.cli import build_parser
+
+    args = build_parser().parse_args(["rollout", "t.npz", "--object-pose", "0.1", "0.2",
+                                      "0.3", "1", "-3.4e-05", "-0.", "-1E3"])
+    assert args.object_pose == [0.1, 0.2, 0.3, 1.0, -3.4e-05, -0.0, -1000.0]
+    args = build_parser().parse_args(["init", "m.xml", "--object", "cube", "--task",
+                                      "pick_place", "--goal", "-1e-2", "-.5", "2e-1"])
+    assert args.goal == [-0.01, -0.5, 0.2]
