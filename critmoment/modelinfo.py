@@ -1135,7 +1135,9 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                       "sample's slip on its own run (chained segments)")
     text = "\n".join(lines)
     if out_path is not None:
-        tmp = out_path.with_name(f".{out_path.name}.tmp")
+        from critmoment.report import _head
+
+        tmp = out_path.with_name(f".{_head(out_path.name)}.tmp")
         try:
             try:
                 tmp.write_text(text, encoding="utf-8")

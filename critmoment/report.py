@@ -627,6 +627,14 @@ def check_output_path(path: str | os.PathLike, *, kind: str = "folder",
     return dest
 
 
+def _head(name: str, limit: int = 80) -> str:
+    """The start of a file name, at most ``limit`` bytes in the file system's encoding, for
+    a temporary name beside it (80 characters of a CJK name are 240 bytes: a valid output
+    name of 84 such characters had been refused as "File name too long")."""
+    raw = os.fsencode(name)[:limit]
+    return os.fsdecode(raw.decode("utf-8", "ignore").encode("utf-8"))
+
+
 def _unmovable(folder: Path) -> bool:
     """``folder`` exists and is a mount point, or on another device than its parent."""
     try:
@@ -767,7 +775,7 @@ class StagedOutput:
             anchor = self.destination
         try:
             self._tmpdir = Path(tempfile.mkdtemp(
-                prefix=f".{self.destination.name[:80]}.critmoment-tmp-", dir=anchor))
+                prefix=f".{_head(self.destination.name)}.critmoment-tmp-", dir=anchor))
         except OSError as exc:
             raise OutputError(f"{self.option} {_short(self._raw)!r}: cannot write in "
                               f"{_short(anchor)!r} ({exc.strerror or exc}); expected a "
@@ -837,7 +845,7 @@ class StagedOutput:
                 elif not dest.exists():
                     os.rename(self.path, dest)
                 elif not _exchange(self.path, dest):
-                    aside = Path(tempfile.mkdtemp(prefix=f".{dest.name[:80]}.critmoment-old-",
+                    aside = Path(tempfile.mkdtemp(prefix=f".{_head(dest.name)}.critmoment-old-",
                                                   dir=dest.parent))
                     os.rename(dest, aside / dest.name)
                     try:

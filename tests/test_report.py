@@ -485,3 +485,13 @@ def test_the_model_hash_is_the_compiled_models(tmp_path):
     arm.write_text(heavier)
     assert model_hash(cm.load_scenario(copy)) != base.model_sha256
     assert model_hash(base) == base.model_sha256  # the twin's, as it loaded
+
+
+def test_a_long_multibyte_output_name_is_staged_beside_it(tmp_path):
+    """An output folder named with 84 CJK characters (252 bytes, a valid name): its
+    staging name kept 80 characters (240 bytes) and was refused, "File name too long"."""
+    out = tmp_path / ("質" * 84)
+    with StagedOutput(out, command="test") as stage:
+        (stage.path / "report.json").write_text("{}")
+    assert (out / "report.json").read_text() == "{}"
+    assert report._head("質" * 84).encode() == ("質" * 26).encode()
