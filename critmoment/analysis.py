@@ -1627,7 +1627,8 @@ def _search_all(rec, twin, evaluator, steps, opt):
     return analytics, searches
 
 
-def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory, twin: Twin) -> dict:
+def _manifest(sc: Scenario, opt: AnalyzeOptions, traj: Trajectory,
+              twin: Twin | None = None) -> dict:
     # not the threads: the report is the same on any number (the CLI's default, all CPUs,
     # and the library's gave byte-different documents for the same audit)
     options = {k: v for k, v in dataclasses.asdict(opt).items() if k != "nthread"}
