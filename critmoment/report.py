@@ -28,6 +28,7 @@ import re
 import shutil
 import tempfile
 import warnings
+import zipfile
 from collections.abc import Iterator, Sequence
 from pathlib import Path
 
@@ -705,9 +706,36 @@ def _previous_files(folder: Path) -> set[str]:
     if listed is not None:
         return listed
     # only the figure names critmoment writes: a folder of the user's own pictures is
-    # not an earlier output
+    # not an earlier output; and the reports and recordings by their content (report.html
+    # is pytest-html's default name too: a CI folder of its reports had been replaced)
     return {e.name for e in os.scandir(folder) if e.is_file() and (
-            e.name in _KNOWN_OUTPUTS or _FIGURE_FILE.fullmatch(e.name))}
+        _FIGURE_FILE.fullmatch(e.name) or (e.name in _KNOWN_OUTPUTS and _written_by_us(e.path)))}
+
+
+#: per unmarked JSON output, a key critmoment's document of that name holds
+_JSON_KEYS = {"report.json": "verdict", "rollout.json": "stage_first_step",
+              "moments.json": "moments", "validation.json": "confusion"}
+
+
+def _written_by_us(path: str) -> bool:
+    """An unmarked file named like a critmoment output holds one: a recording's arrays, a
+    page that names critmoment near its start, or a JSON document with the key
+    critmoment's of that name has."""
+    name = os.path.basename(path)
+    try:
+        if name.endswith(".npz"):
+            with zipfile.ZipFile(path) as archive:
+                return {"states.npy", "sensordata.npy"} <= set(archive.namelist())
+        if name.endswith(".html"):
+            with open(path, "rb") as fh:
+                return b"critmoment" in fh.read(1 << 16)
+        if os.path.getsize(path) > 1 << 28:
+            return False
+        with open(path, "rb") as fh:
+            doc = json.loads(fh.read())
+        return isinstance(doc, dict) and _JSON_KEYS.get(name, "schema") in doc
+    except (OSError, zipfile.BadZipFile, ValueError, RecursionError):
+        return False
 
 
 def _remove_tree(path: Path) -> None:

@@ -208,8 +208,10 @@ def test_a_file_destination_and_a_folder_in_its_place(tmp_path):
 def test_legacy_output_without_marker_is_replaceable(tmp_path):
     out = tmp_path / "r"
     out.mkdir()
-    for name in ("report.json", "report.html", "signals.png", "moment_12.png"):
+    for name in ("signals.png", "moment_12.png"):
         (out / name).write_text("old")
+    (out / "report.json").write_text('{"schema": "critmoment.report/1", "verdict": "SAFE"}')
+    (out / "report.html").write_text("<html><title>critmoment report</title></html>")
     assert check_output_path(out) == out.resolve()
 
 
@@ -495,3 +497,20 @@ def test_a_long_multibyte_output_name_is_staged_beside_it(tmp_path):
         (stage.path / "report.json").write_text("{}")
     assert (out / "report.json").read_text() == "{}"
     assert report._head("質" * 84).encode() == ("質" * 26).encode()
+
+
+def test_another_tools_report_in_an_unmarked_folder_is_not_replaced(tmp_path):
+    """A CI folder holding only pytest-html's ``report.html``: taken for an earlier
+    critmoment output (its name) and replaced whole. Without a marker, a file named like
+    an output counts as one only by its content."""
+    out = tmp_path / "ci_reports"
+    out.mkdir()
+    (out / "report.html").write_text("<html><title>pytest-html</title></html>")
+    with pytest.raises(OutputError, match="other files"):
+        StagedOutput(out, command="test")
+    # an unmarked earlier critmoment report (before the marker) is still replaced
+    (out / "report.html").write_text("<html><title>critmoment report</title></html>")
+    (out / "report.json").write_text('{"schema": "critmoment.report/1", "verdict": "SAFE"}')
+    with StagedOutput(out, command="test") as stage:
+        (stage.path / "rollout.json").write_text("{}")
+    assert _files(out) == [MARKER, "rollout.json"]
