@@ -622,13 +622,21 @@ def main(argv: list[str] | None = None) -> int:
             # the libraries load here (about 1 s), whole: a Ctrl-C meanwhile is raised after
             # them (one cutting NumPy's initialisation short left an ImportError, exit 1)
             with signals_held():
+                # what the parser reads (the figure choices, the scenario families): a
+                # broken matplotlib or ruptures had raised from build_parser, a raw
+                # traceback and exit 1, the "not safe" code
+                import importlib
+
                 from critmoment.twin import quiet_mujoco_log
+
+                for module in ("critmoment.report", "critmoment.suite"):
+                    importlib.import_module(module)
         except KeyboardInterrupt:
             print("critmoment: error: interrupted; no output was written", file=sys.stderr)
             return EXIT_ERROR
-        except ImportError as exc:
-            print(f"critmoment: error: {_one_line(str(exc))} (a dependency is missing or "
-                  "broken: reinstall critmoment)", file=sys.stderr)
+        except Exception as exc:  # ImportError, or whatever a broken library raises
+            print(f"critmoment: error: {type(exc).__name__}: {_one_line(str(exc))} (a "
+                  "dependency is missing or broken: reinstall critmoment)", file=sys.stderr)
             return EXIT_ERROR
         # MuJoCo's own log appends each warning (an unstable simulation) to MUJOCO_LOG.TXT in
         # the user's folder and prints it, besides the one line critmoment prints

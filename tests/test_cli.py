@@ -730,3 +730,23 @@ def test_negative_numbers_in_exponent_notation_are_values():
     args = build_parser().parse_args(["init", "m.xml", "--object", "cube", "--task",
                                       "pick_place", "--goal", "-1e-2", "-.5", "2e-1"])
     assert args.goal == [-0.01, -0.5, 0.2]
+
+
+def test_a_broken_dependency_is_an_error_not_the_not_safe_code(tmp_path):
+    """A library that fails to load (a broken install, too little memory) raised from the
+    parser's construction: a raw traceback and exit 1, the "not safe" code, on every
+    command."""
+    import os
+    import subprocess
+    import sys
+
+    broken = tmp_path / "ruptures"
+    broken.mkdir()
+    (broken / "__init__.py").write_text("raise RuntimeError('broken install')\n")
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(tmp_path), *sys.path])}
+    proc = subprocess.run([sys.executable, "-c", "from critmoment.cli import run; run()",
+                           "--version"], capture_output=True, text=True, env=env, timeout=300)
+    assert proc.returncode == 2
+    assert proc.stderr.strip().splitlines() == [
+        "critmoment: error: RuntimeError: broken install (a dependency is missing or broken: "
+        "reinstall critmoment)"]
