@@ -1,0 +1,5 @@
+#!/bin/bash
+# the CLI as the installed console script runs it: python itself is the process that inherits the fds
+exec /usr/bin/env PYTHONPATH=/tmp/r33/src /work/venv/bin/python -c "import sys, critmoment
+assert critmoment.__file__.startswith('/tmp/r33/src'), critmoment.__file__
+from critmoment.cli import run; sys.argv[0] = 'critmoment'; sys.exit(run())" "$@"
