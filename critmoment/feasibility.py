@@ -1387,10 +1387,15 @@ def _mid_run_drops(twin: Twin, recording: Recording) -> list[tuple[int, float, i
     stretch out of every gripper that starts with the object held off its supports and
     ends on a support, having fallen more than ``RELEASE_HEIGHT``, (the first step out of
     the grippers, the fall [m], the step a gripper next touches it)."""
+    from critmoment.groundtruth import LYING_SPEED
+
     sig = recording.signals
     touching = np.asarray(sig.contact_gripper, bool).any(axis=-1)
     support = np.asarray(sig.contact_support, bool)[:touching.size]
     n = touching.size
+    # landed: on a support, or at rest on anything (a crate the scenario does not list)
+    resting = support | (np.linalg.norm(np.asarray(sig.object_vel, dtype=np.float64)[:n],
+                                        axis=-1) < LYING_SPEED)
     if n < 2 or not touching.any():
         return []
     z = twin.object_height(recording.states[:n])
@@ -1404,12 +1409,12 @@ def _mid_run_drops(twin: Twin, recording: Recording) -> list[tuple[int, float, i
         if not again.size:
             continue  # the final release: _release_height's
         back = r + int(again[0])
-        landed = np.flatnonzero(support[r:back])
-        if not landed.size:
-            continue  # caught before it landed (a hand-over's short free flight)
-        height = float(z[r - 1] - z[r + int(landed[0])])
-        if height > RELEASE_HEIGHT:
-            out.append((int(r), height, back))
+        # come to rest below where it left the grip (a hand paused as it opens leaves the
+        # object still for a moment, where it has not yet fallen)
+        fallen = z[r - 1] - z[r:back]
+        landed = np.flatnonzero(resting[r:back] & (fallen > RELEASE_HEIGHT))
+        if landed.size:  # else caught before it landed (a hand-over's short free flight)
+            out.append((int(r), float(fallen[int(landed[0])]), back))
     return out
 
 

@@ -272,14 +272,20 @@ class Classification:
                               dt=parts[0].dt, criteria=parts[0].criteria, **arrays)
 
 
+#: the object's speed [m/s] under which, touched by no gripper, it lies on something (a
+#: fixed geom the scenario does not list as a support: a crate, another object)
+LYING_SPEED = 0.05
+
+
 def fall_steps(contact_gripper: np.ndarray, contact_support: np.ndarray,
-               nominal_carried: np.ndarray, height: np.ndarray, fall_height: float
-               ) -> np.ndarray:
+               nominal_carried: np.ndarray, height: np.ndarray, fall_height: float,
+               speed: np.ndarray | None = None) -> np.ndarray:
     """Where each run's object first lies fallen, (n,) int (−1: never): the first step of a
     stretch where the nominal run carries the object and the run's object touches a support
-    and no gripper, having fallen more than ``fall_height`` [m] from its height at the last
-    step a gripper touched it (after a gripper first held it off its support); the step
-    returned is the first after that last touch (when it left the grip).
+    (or, with ``speed``, rests on anything, below ``LYING_SPEED``) and no gripper, having
+    fallen more than ``fall_height`` [m] from its height at the last step a gripper touched
+    it (after a gripper first held it off its support); the step returned is the first
+    after that last touch (when it left the grip).
 
     Args:
         contact_gripper: (n, T, G) bool.
@@ -287,12 +293,16 @@ def fall_steps(contact_gripper: np.ndarray, contact_support: np.ndarray,
         nominal_carried: (T,) bool.
         height: the object's height along the world's up [m], (n, T).
         fall_height: [m].
+        speed: the object's speed [m/s], (n, T), or None (only the supports count: a cube
+            fallen onto a crate the scenario does not list, at rest there, is one too).
     """
     touched = np.asarray(contact_gripper, bool).any(axis=-1)
     support = np.asarray(contact_support, bool)
     height = np.asarray(height, dtype=np.float64)
     n, t = support.shape
     out = np.full(n, -1, np.int64)
+    if speed is not None:
+        support = support | (np.asarray(speed, dtype=np.float64) < LYING_SPEED)
     lying = ~touched & support & np.asarray(nominal_carried, bool)[None, :t]
     held = carried_flags(support, contact_gripper)
     for i in np.flatnonzero(lying.any(axis=1)):
@@ -316,7 +326,8 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
              diverged_step: np.ndarray | None = None,
              completed: np.ndarray | None = None,
              criteria: OutcomeCriteria = OutcomeCriteria(),
-             object_height: np.ndarray | None = None) -> Classification:
+             object_height: np.ndarray | None = None,
+             object_speed: np.ndarray | None = None) -> Classification:
     """Classify n full rollouts from their signals.
 
     Args:
@@ -339,6 +350,8 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
         criteria: the tolerances.
         object_height: the object's height along the world's up [m], (n, T), for the fall
             rule (:func:`fall_steps`); None: no fall is counted in a completed run.
+        object_speed: the object's speed [m/s], (n, T), for the fall rule (an object at
+            rest on something the scenario does not list as a support), or None.
 
     Returns:
         The :class:`Classification`.
@@ -426,7 +439,8 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
     final_loss = np.where(ever4 & (last4 < t - 1), last4 + 1, -1)
 
     fall_step = (np.full(n, -1, np.int64) if object_height is None else fall_steps(
-        contact_gripper, contact_support, nominal_carried, object_height, c.fall_height))
+        contact_gripper, contact_support, nominal_carried, object_height, c.fall_height,
+        speed=object_speed))
     # a fall onto a support fails a run whatever its end; another loss only one that does
     # not complete the task (a catch at the hand-over, an object set down early)
     fell = (fall_step >= 0) & completed
@@ -935,6 +949,7 @@ class _Frames:
     contact_gripper: np.ndarray
     contact_support: np.ndarray
     height: np.ndarray
+    speed: np.ndarray
     actuator_norm: np.ndarray
     position: np.ndarray
     q: np.ndarray
@@ -954,6 +969,7 @@ class _Frames:
         limits = twin.limits if limits is None else np.asarray(limits)[:, None]
         return cls(stage=twin.task.stage(gripper, support, pos), contact_gripper=gripper,
                    contact_support=support, height=pos @ np.asarray(twin.task.up),
+                   speed=np.linalg.norm(vel, axis=-1),
                    actuator_norm=sd[..., twin._force_ids[probe.motors]]
                    / limits[..., probe.motors],
                    position=sensordata[..., probe.pos].reshape(c, t, -1, 3),
@@ -995,7 +1011,8 @@ def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, 
                     contact_support=frames.contact_support, nominal_carried=nominal_carried,
                     actuator_norm=frames.actuator_norm, tracking_excess=excess, slip=slip,
                     diverged=diverged, diverged_step=diverged_step, criteria=criteria,
-                    completed=frames.success, object_height=frames.height)
+                    completed=frames.success, object_height=frames.height,
+                    object_speed=frames.speed)
 
 
 def rerun_in_full(traj: Trajectory, *, twin: Twin, samples: np.ndarray, failed: np.ndarray,

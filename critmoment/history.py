@@ -556,7 +556,8 @@ class _Watch:
             completed[lo:lo + block] = np.asarray(ev.twin.task.success(evidence), dtype=bool)
             fall[lo:lo + block] = fall_steps(
                 evidence.contact_gripper, evidence.contact_support, ev._carried,
-                np.asarray(evidence.object_pos, dtype=np.float64) @ up, self.fall_height)
+                np.asarray(evidence.object_pos, dtype=np.float64) @ up, self.fall_height,
+                speed=np.linalg.norm(evidence.object_vel, axis=-1))
         return completed, fall
 
 

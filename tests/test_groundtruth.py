@@ -123,6 +123,28 @@ def test_a_fall_onto_a_support_fails_a_run_that_completes_its_task():
     assert low.outcome[1] is gt.Outcome.SUCCESS
 
 
+def test_a_fall_onto_something_not_listed_as_a_support_fails_too():
+    """Round 33's crate: a cube fallen 6 cm onto a fixed crate the scenario does not list as
+    a support, at rest there (touching no support), and within the goal's tolerance,
+    counted as a success. An object at rest touched by no gripper lies on something."""
+    sig, height = _fall_runs()
+    support = sig["contact_support"].copy()
+    support[1, 215:260] = False           # landed on the crate, not the table
+    height[1, 215:260] = 0.09
+    speed = np.where(np.diff(height, axis=1, prepend=height[:, :1]) != 0, 0.5, 0.0)
+    speed[2, 200:215] = 1.0               # the catch's free flight
+    sig = {**sig, "contact_support": support}
+    done = np.ones(4, bool)
+    assert gt.fall_steps(sig["contact_gripper"], support, sig["nominal_carried"], height,
+                         0.03).tolist() == [-1, -1, -1, -1]  # supports alone: unseen
+    steps = gt.fall_steps(sig["contact_gripper"], support, sig["nominal_carried"], height,
+                          0.03, speed=speed)
+    assert steps.tolist() == [-1, 200, -1, -1]
+    c = gt.classify(**sig, completed=done, object_height=height, object_speed=speed)
+    assert c.outcome == (gt.Outcome.SUCCESS, gt.Outcome.DROPPED, gt.Outcome.SUCCESS,
+                         gt.Outcome.SUCCESS)
+
+
 def test_classify_tells_a_tracking_loss_from_a_saturation():
     """Both are the MOTOR outcome; the report names which (ADROIT's lift slide lagged 25 mm
     at 4.9 N of its 300 N and was reported as an overload, with advice about limits)."""
