@@ -271,7 +271,11 @@ def cmd_analyze(args) -> int:
         result = dataclasses.replace(result, warnings=tuple(dict.fromkeys(
             _one_line(str(w.message)) for w in getattr(args, "caught", ()))))
         if out is not None:
-            report.write_report_files(result, out, figures=report.Figures.parse(args.figures))
+            report.write_report_files(result, out, figures=report.Figures.parse(args.figures),
+                                      record_warnings=True)
+            # the figures' warnings, recorded there, in the printed document too
+            result = dataclasses.replace(result, warnings=tuple(json.loads(
+                (out / "report.json").read_text())["warnings"]))
     code = EXIT_OK if result.passes(args.min_success) else EXIT_UNSAFE
     if args.json:
         _Stdout.emit(_dump(result.to_json()))

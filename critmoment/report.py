@@ -16,11 +16,11 @@ from __future__ import annotations
 
 import base64
 import contextlib
+import dataclasses
 import enum
 import errno
 import html
 import io
-import itertools
 import json
 import math
 import os
@@ -508,20 +508,32 @@ def write_report(report, out: str | Path, *, figures: Figures | str = Figures.SU
     return {k: stage.destination / v.name for k, v in names.items()}
 
 
-def write_report_files(report, folder: Path, *, figures: Figures = Figures.SUMMARY
-                       ) -> dict[str, Path]:
-    """Writes the report's files into an existing ``folder`` (no staging)."""
+def write_report_files(report, folder: Path, *, figures: Figures = Figures.SUMMARY,
+                       record_warnings: bool = False) -> dict[str, Path]:
+    """Writes the report's files into an existing ``folder`` (no staging). The figures are
+    drawn first; with ``record_warnings`` the warnings drawing them raised (a glyph the font
+    lacks for a parameter's name) join the report's ``warnings`` in the written documents,
+    as the CLI's other warnings do (they had been printed but not recorded); they are
+    issued again either way."""
     folder = Path(folder)
     paths: dict[str, Path] = {}
+    which = Figures.parse(figures)
+    with warnings.catch_warnings(record=True) as drawing:
+        warnings.simplefilter("always")
+        pngs = [(name, _png(_lighten(fig))) for name, fig in report_figures(
+            report, Figures.SUMMARY if which is Figures.ALL else which).items()]
+        if which is Figures.ALL:
+            pngs += list(_moment_pngs(report))
+    for w in drawing:
+        warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    if record_warnings and drawing:
+        said = (" ".join(str(w.message).split()) for w in drawing)
+        report = dataclasses.replace(report, warnings=tuple(dict.fromkeys(
+            [*getattr(report, "warnings", ()), *said])))
     doc = report.to_json()
     paths["json"] = folder / "report.json"
     paths["json"].write_text(json.dumps(jsonable(doc), indent=2, allow_nan=False))
     images = {}
-    which = Figures.parse(figures)
-    pngs = ((name, _png(_lighten(fig))) for name, fig in report_figures(
-        report, Figures.SUMMARY if which is Figures.ALL else which).items())
-    if which is Figures.ALL:
-        pngs = itertools.chain(pngs, _moment_pngs(report))
     for name, data in pngs:
         path = folder / f"{name}.png"
         path.write_bytes(data)

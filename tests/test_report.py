@@ -514,3 +514,23 @@ def test_another_tools_report_in_an_unmarked_folder_is_not_replaced(tmp_path):
     with StagedOutput(out, command="test") as stage:
         (stage.path / "rollout.json").write_text("{}")
     assert _files(out) == [MARKER, "rollout.json"]
+
+
+def test_warnings_raised_drawing_the_figures_are_recorded(audit, tmp_path, monkeypatch):
+    """A parameter named in a script the figures' font lacks: matplotlib's "Glyph ...
+    missing" was printed as the CLI's warning, but report.json said "warnings": []."""
+    import json
+    import warnings
+
+    drawn = report.report_figures
+
+    def lacking_a_glyph(*args, **kwargs):
+        warnings.warn("Glyph 36136 missing from font(s) DejaVu Sans.", UserWarning)
+        return drawn(*args, **kwargs)
+
+    monkeypatch.setattr(report, "report_figures", lacking_a_glyph)
+    with pytest.warns(UserWarning, match="Glyph 36136"):
+        report.write_report_files(audit, tmp_path, figures="summary", record_warnings=True)
+    doc = json.loads((tmp_path / "report.json").read_text())
+    assert doc["warnings"][-1] == "Glyph 36136 missing from font(s) DejaVu Sans."
+    assert "Glyph 36136" in (tmp_path / "report.html").read_text()
