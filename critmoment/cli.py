@@ -596,8 +596,23 @@ def _describe(exc: BaseException) -> str:
         return f"expected UTF-8 text, got bytes that are not: {exc}"
     if isinstance(exc, (zipfile.BadZipFile, zlib.error)):
         return f"corrupt compressed data: {exc}"
+    text = str(exc).lower()
+    if any(sign in text for sign in _EXHAUSTED):
+        # a memory or thread limit (ulimit -v, a container's): not a bug in critmoment
+        return (f"out of resources ({type(exc).__name__}: {_one_line(str(exc))}): too little "
+                f"memory or too few threads for the run (a limit such as ulimit -v or a "
+                f"container's?); lower --samples / --max-moments, or raise the limit")
+    if "plugin" in text and "not found" in text:
+        return (f"a solver plugin could not load ({_one_line(str(exc))}): a broken install "
+                f"(reinstall casadi) or too little memory to load it")
     return (f"unexpected {type(exc).__name__}: {exc} (a bug in critmoment; rerun with -v "
             f"for the traceback and report it)")
+
+
+#: words of an error that says the process ran out of memory or threads
+_EXHAUSTED = ("thread constructor failed", "can't start new thread", "cannot allocate memory",
+              "could not allocate", "failed to map segment", "out of memory",
+              "resource temporarily unavailable", "std::bad_alloc")
 
 
 def _warning_lines(caught, command: str) -> list[str]:

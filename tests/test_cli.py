@@ -750,3 +750,15 @@ def test_a_broken_dependency_is_an_error_not_the_not_safe_code(tmp_path):
     assert proc.stderr.strip().splitlines() == [
         "critmoment: error: RuntimeError: broken install (a dependency is missing or broken: "
         "reinstall critmoment)"]
+
+
+def test_running_out_of_memory_or_threads_is_not_called_a_bug():
+    """Under ``ulimit -v`` the run failed with "unexpected ValueError: thread constructor
+    failed ... (a bug in critmoment)", or a CasADi plugin that could not load."""
+    from critmoment.cli import _describe
+
+    said = _describe(ValueError("thread constructor failed: Resource temporarily unavailable"))
+    assert said.startswith("out of resources") and "bug" not in said
+    said = _describe(RuntimeError(".../casadi_nlpsol.cpp:41: Plugin 'ipopt' is not found."))
+    assert "solver plugin could not load" in said and "bug" not in said
+    assert "a bug in critmoment" in _describe(RuntimeError("something else"))
