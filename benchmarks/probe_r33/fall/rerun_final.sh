@@ -3,12 +3,13 @@
 # round's final code: a git archive at /tmp/r33/src2. Run from /tmp/r33/fall (its scenes).
 # usage: rerun_final.sh > /tmp/r33/rerun/table.txt
 P=/work/main/benchmarks/probe_r33/fall
+Q=${Q:-/tmp/r33/fall/scripts}   # the patched scripts, rebuilt there by make_scripts.sh (S=... of it)
 export PYTHONPATH=/tmp/r33/src2
 PY="taskset -c 0 /work/venv/bin/python"
 while read -r tag scen traj n; do
   for mode in v nv; do
     extra=""; [ $mode = nv ] && extra="--no-verify"
-    line=$($PY $P/run_validate.py $scen $traj /tmp/r33/rerun/${mode}_$tag.json --samples $n $extra 2>/dev/null | tail -1)
+    line=$($PY $Q/run_validate.py $scen $traj /tmp/r33/rerun/${mode}_$tag.json --samples $n $extra 2>/dev/null | tail -1)
     echo "$tag $mode ${line#* }"
   done
 done <<'CASES'
