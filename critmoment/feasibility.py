@@ -1167,6 +1167,8 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
                        f"it, or a wrong object pose (--object-pose{default})?")
     if not recording.completed:
         out += _clutter(twin, recording)
+    else:
+        out += _disturbed(twin, recording)
     if strict and out:
         raise TrajectoryError(out[0])
     return out
@@ -1242,6 +1244,78 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
     scene's part in the failure. Contacts with the robot itself are the feasibility
     check's (``blocked_by``)."""
     model = twin.model
+    touched, lifted = _scan_clutter(twin, recording)
+    out = []
+    if touched:
+        listed = ", ".join(f"{name} from t = {t:.2f} s" for name, t in
+                           sorted(touched.items(), key=lambda item: item[1])[:4])
+        out.append(f"the object touches {listed} in the nominal run, which does not complete "
+                   f"the task: something in the object's way or under it (clutter, an "
+                   f"obstacle, a geom missing from [support])? The failure causes speak of "
+                   f"the object's mass and friction; the scene may be the cause")
+    if lifted:
+        listed = ", ".join(f"{name} ({rise * 100:.3g} cm)" for name, rise in lifted.items())
+        out.append(f"the grippers lift {listed}, another free body than the object "
+                   f"{model.body(twin.object_body_id).name!r}, in the nominal run, which "
+                   f"does not complete the task: does the grasp close on the wrong object "
+                   f"(one stacked on it, a neighbour)?")
+    return out
+
+
+#: how far [m] and how much [deg] another free body may move, start to end, in a nominal
+#: run that completes its task before the run is said to disturb it
+DISTURB_SHIFT = 0.02
+DISTURB_TURN = 20.0
+
+
+def _disturbed(twin: Twin, recording: Recording) -> list[str]:
+    """What a nominal run that completes its task does to the scene's other free bodies:
+    one it moves or turns from start to end (a bottle knocked over on the way), one the
+    grippers lift with the object (a slab carried off beside the cube). The task's rule
+    sees neither, and the samples are judged against this run (their slip relative to its
+    grip): a probe's run that toppled a bottle in every sample had been "completed" without
+    a word, its safe region containing the nominal."""
+    model = twin.model
+    obj = twin.object_body_id
+    owner = _body_owners(model)
+    others = [b for b in range(1, model.nbody) if b != obj and owner[b] == ("free", b)]
+    if not others:
+        return []
+    _, lifted = _scan_clutter(twin, recording)
+    qpos = twin.qpos(recording.states[[0, -1]])
+    moved = []
+    for b in others:
+        if repr(model.body(b).name or f"body {b}") in lifted:
+            continue  # carried off: said below
+        a = int(model.jnt_qposadr[model.body_jntadr[b]])
+        shift = float(np.linalg.norm(qpos[1, a:a + 3] - qpos[0, a:a + 3]))
+        q0, q1 = qpos[0, a + 3:a + 7], qpos[1, a + 3:a + 7]
+        turn = float(np.degrees(2 * np.arccos(np.clip(
+            abs(q0 @ q1) / (np.linalg.norm(q0) * np.linalg.norm(q1)), 0.0, 1.0))))
+        if shift > DISTURB_SHIFT or turn > DISTURB_TURN:
+            moved.append(f"{model.body(b).name or f'body {b}'!r} {shift * 100:.3g} cm "
+                         f"and turns it {turn:.0f}°")
+    out = []
+    if moved:
+        out.append(f"the nominal run moves free body {'; '.join(moved)} (start to end): it "
+                   f"completes its task but knocks over or pushes something in the scene, "
+                   f"which the task's rule does not see, and the samples are judged against "
+                   f"this run; is that the motion meant?")
+    if lifted:
+        listed = ", ".join(f"{name} ({rise * 100:.3g} cm)" for name, rise in lifted.items())
+        out.append(f"the grippers lift {listed}, another free body than the object "
+                   f"{model.body(obj).name!r}, in the nominal run: the grasp closes on more "
+                   f"than the object; is that the motion meant?")
+    return out
+
+
+def _scan_clutter(twin: Twin, recording: Recording
+                  ) -> tuple[dict[str, float], dict[str, float]]:
+    """Over the nominal states every ``CLUTTER_STRIDE`` steps: what the object touches
+    besides its grippers, supports and the robot (name -> first time [s]), and the other
+    free bodies a gripper touches while they rise over ``CLUTTER_LIFT`` (name -> highest
+    rise [m])."""
+    model = twin.model
     sc = twin.scenario
     grip, support = _role_geoms(twin)
     obj = twin.object_body_id
@@ -1279,21 +1353,7 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
             if rise > CLUTTER_LIFT:
                 key = repr(model.body(b).name or f"body {b}")
                 lifted[key] = max(lifted.get(key, 0.0), rise)
-    out = []
-    if touched:
-        listed = ", ".join(f"{name} from t = {t:.2f} s" for name, t in
-                           sorted(touched.items(), key=lambda item: item[1])[:4])
-        out.append(f"the object touches {listed} in the nominal run, which does not complete "
-                   f"the task: something in the object's way or under it (clutter, an "
-                   f"obstacle, a geom missing from [support])? The failure causes speak of "
-                   f"the object's mass and friction; the scene may be the cause")
-    if lifted:
-        listed = ", ".join(f"{name} ({rise * 100:.3g} cm)" for name, rise in lifted.items())
-        out.append(f"the grippers lift {listed}, another free body than the object "
-                   f"{model.body(obj).name!r}, in the nominal run, which does not complete "
-                   f"the task: does the grasp close on the wrong object (one stacked on it, "
-                   f"a neighbour)?")
-    return out
+    return touched, lifted
 
 
 def _unlisted_supports(twin: Twin, data: mujoco.MjData) -> list[str]:

@@ -500,3 +500,38 @@ def test_a_nominal_run_that_drops_its_cube_mid_task_is_told_so():
     # the plain demo, placed and let go on the table, has no such hint
     assert not any("drops the object" in h for h in check_fit(traj, rollout(traj, twin=twin),
                                                                twin))
+
+
+def test_a_completed_nominal_run_that_disturbs_the_scene_is_told_so(tmp_path):
+    """A nominal run that completes its task while it knocks a bottle over (or carries a
+    neighbouring slab off with the cube) had been "completed" without a word: the scene
+    checks ran only where the run fails its task (round 33's clutter probe)."""
+    import shutil
+    import types
+
+    import critmoment as cm
+    from critmoment import feasibility
+    from critmoment.recording import rollout
+    from critmoment.scenario import bundled_scenario_path
+
+    folder = tmp_path / "scene"
+    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
+    scene = folder / "scene.xml"
+    text = scene.read_text()
+    bottle = ('<body name="bottle" pos="0.3 0.4 0.05"><freejoint/>'
+              '<geom type="cylinder" size="0.02 0.05" mass="0.2"/></body>\n  </worldbody>')
+    text = text.replace("</worldbody>", bottle, 1).replace(
+        "0.5 -0.15 0.02 1 0 0 0", "0.5 -0.15 0.02 1 0 0 0 0.3 0.4 0.05 1 0 0 0", 1)
+    scene.write_text(text)
+    twin = cm.Twin(cm.load_scenario(folder))
+    rec = rollout(pd.make_pick_place(0, model=twin.model), twin=twin)
+    assert rec.completed and feasibility._disturbed(twin, rec) == []  # left alone
+    states = np.array(rec.states)
+    from critmoment.twin import state_slice
+
+    adr = state_slice(twin.model, mujoco.mjtState.mjSTATE_QPOS).start + int(
+        twin.model.jnt_qposadr[twin.model.body_jntadr[twin.model.body("bottle").id]])
+    states[-1, adr:adr + 7] = [0.3, 0.45, 0.02, np.cos(np.pi / 4), np.sin(np.pi / 4), 0, 0]
+    toppled = types.SimpleNamespace(states=states, signals=rec.signals, completed=True)
+    said = feasibility._disturbed(twin, toppled)
+    assert len(said) == 1 and "moves free body 'bottle' 5.83 cm and turns it 90°" in said[0]
