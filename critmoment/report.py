@@ -720,8 +720,11 @@ def _previous_files(folder: Path) -> set[str]:
     # only the figure names critmoment writes: a folder of the user's own pictures is
     # not an earlier output; and the reports and recordings by their content (report.html
     # is pytest-html's default name too: a CI folder of its reports had been replaced)
+    # (a marker without its list still says the folder is critmoment's: names suffice)
+    marked = (folder / MARKER).is_file()
     return {e.name for e in os.scandir(folder) if e.is_file() and (
-        _FIGURE_FILE.fullmatch(e.name) or (e.name in _KNOWN_OUTPUTS and _written_by_us(e.path)))}
+        _FIGURE_FILE.fullmatch(e.name) or (e.name in _KNOWN_OUTPUTS
+                                           and (marked or _written_by_us(e.path))))}
 
 
 #: per unmarked JSON output, a key critmoment's document of that name holds

@@ -525,7 +525,8 @@ def test_warnings_raised_drawing_the_figures_are_recorded(audit, tmp_path, monke
     drawn = report.report_figures
 
     def lacking_a_glyph(*args, **kwargs):
-        warnings.warn("Glyph 36136 missing from font(s) DejaVu Sans.", UserWarning)
+        warnings.warn("Glyph 36136 missing from font(s) DejaVu Sans.", UserWarning,
+                      stacklevel=2)
         return drawn(*args, **kwargs)
 
     monkeypatch.setattr(report, "report_figures", lacking_a_glyph)
