@@ -190,10 +190,10 @@ class ChainedResult:
             rule decides it (``incomplete``), and so does the fall rule (``fall_step``).
         fall_step: for a sample that reached the end of the run, the ground truth's fall rule
             (:func:`critmoment.groundtruth.fall_steps`: where the nominal run carries the
-            object, it lies on a support touched by no gripper, having fallen more than
-            ``fall_height`` since a gripper last touched it) over its whole run, the nominal
-            run's steps before the start and its own after: the first step of the fall, −1
-            if none, (n,) int64. A fall fails the sample even when it completes the task (a
+            object, it lies on a support, or at rest on anything, touched by no gripper,
+            having fallen more than ``fall_height`` since a gripper last touched it) over its
+            whole run, the nominal run's steps before the start and its own after: the first
+            step of the fall, −1 if none, (n,) int64. A fall fails the sample even when it completes the task (a
             cube dropped mid-carry and picked up again).
         max_slip: largest slip over the chain [m], (n,).
         motor_step: first step of a saturation of a rotational actuator (the ground truth's
