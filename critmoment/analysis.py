@@ -1224,8 +1224,9 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
         near = (result.near(options.verify) if options.verify is not None
                 else np.zeros(todo.size, bool))
         # a pass that lost its object where the nominal run carries it (a catch, or a
-        # fall picked up again): whether it fell onto a support, which fails a run that
-        # completes its task, is the ground truth's rule on the sample's own rollout
+        # stumble picked up again): the chain's fall rule ran on its approximate run; with
+        # verification the sample's own rollout decides whether it fell (a chained fall
+        # goes there too, ChainedResult.to_confirm)
         if result.drop_step is not None:
             near = near | ((result.drop_step >= 0) & ~result.failed)
         for i, failed, confirm, close, kind in zip(todo, result.failed, result.to_confirm,

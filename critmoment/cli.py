@@ -268,14 +268,13 @@ def cmd_analyze(args) -> int:
         result = analyze(traj, twin.scenario, twin=twin, options=options,
                          progress=args.verbose or (not args.json and sys.stderr.isatty()))
         # the run's warnings so far (reading the inputs, the audit) go on the record too
-        result = dataclasses.replace(result, warnings=tuple(dict.fromkeys(
-            _one_line(str(w.message)) for w in getattr(args, "caught", ()))))
+        result = _with_caught(result, args)
         if out is not None:
             report.write_report_files(result, out, figures=report.Figures.parse(args.figures),
                                       record_warnings=True)
-            # the figures' warnings, recorded there, in the printed document too
-            result = dataclasses.replace(result, warnings=tuple(json.loads(
-                (out / "report.json").read_text())["warnings"]))
+            # the figures' warnings, which it recorded and issued again, in the printed
+            # document too
+            result = _with_caught(result, args)
     code = EXIT_OK if result.passes(args.min_success) else EXIT_UNSAFE
     if args.json:
         _Stdout.emit(_dump(result.to_json()))
@@ -285,6 +284,12 @@ def cmd_analyze(args) -> int:
             _Stdout.emit(f"report: {args.out_written / 'report.html'} and "
                          f"{args.out_written / 'report.json'}")
     return code
+
+
+def _with_caught(result, args):
+    """``result`` with the command's warnings caught so far as its ``warnings``."""
+    return dataclasses.replace(result, warnings=tuple(dict.fromkeys(
+        _one_line(str(w.message)) for w in getattr(args, "caught", ()))))
 
 
 def cmd_validate(args) -> int:

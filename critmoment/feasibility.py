@@ -1254,10 +1254,9 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
                    f"obstacle, a geom missing from [support])? The failure causes speak of "
                    f"the object's mass and friction; the scene may be the cause")
     if lifted:
-        listed = ", ".join(f"{name} ({rise * 100:.3g} cm)" for name, rise in lifted.items())
-        out.append(f"the grippers lift {listed}, another free body than the object "
-                   f"{model.body(twin.object_body_id).name!r}, in the nominal run, which "
-                   f"does not complete the task: does the grasp close on the wrong object "
+        out.append(f"the grippers lift {_risen(model, lifted)}, another free body than the "
+                   f"object {model.body(twin.object_body_id).name!r}, in the nominal run, "
+                   f"which does not complete the task: does the grasp close on the wrong object "
                    f"(one stacked on it, a neighbour)?")
     return out
 
@@ -1277,15 +1276,14 @@ def _disturbed(twin: Twin, recording: Recording) -> list[str]:
     a word, its safe region containing the nominal."""
     model = twin.model
     obj = twin.object_body_id
-    owner = _body_owners(model)
-    others = [b for b in range(1, model.nbody) if b != obj and owner[b] == ("free", b)]
+    others = _other_free_bodies(model, obj, _body_owners(model))
     if not others:
         return []
     _, lifted = _scan_clutter(twin, recording)
     qpos = twin.qpos(recording.states[[0, -1]])
     moved = []
     for b in others:
-        if repr(model.body(b).name or f"body {b}") in lifted:
+        if b in lifted:
             continue  # carried off: said below
         a = int(model.jnt_qposadr[model.body_jntadr[b]])
         shift = float(np.linalg.norm(qpos[1, a:a + 3] - qpos[0, a:a + 3]))
@@ -1293,8 +1291,8 @@ def _disturbed(twin: Twin, recording: Recording) -> list[str]:
         turn = float(np.degrees(2 * np.arccos(np.clip(
             abs(q0 @ q1) / (np.linalg.norm(q0) * np.linalg.norm(q1)), 0.0, 1.0))))
         if shift > DISTURB_SHIFT or turn > DISTURB_TURN:
-            moved.append(f"{model.body(b).name or f'body {b}'!r} {shift * 100:.3g} cm "
-                         f"and turns it {turn:.0f}°")
+            moved.append(f"{_body_label(model, b)} {shift * 100:.3g} cm and turns it "
+                         f"{turn:.0f}°")
     out = []
     if moved:
         out.append(f"the nominal run moves free body {'; '.join(moved)} (start to end): it "
@@ -1302,32 +1300,46 @@ def _disturbed(twin: Twin, recording: Recording) -> list[str]:
                    f"which the task's rule does not see, and the samples are judged against "
                    f"this run; is that the motion meant?")
     if lifted:
-        listed = ", ".join(f"{name} ({rise * 100:.3g} cm)" for name, rise in lifted.items())
-        out.append(f"the grippers lift {listed}, another free body than the object "
-                   f"{model.body(obj).name!r}, in the nominal run: the grasp closes on more "
-                   f"than the object; is that the motion meant?")
+        out.append(f"the grippers lift {_risen(model, lifted)}, another free body than the "
+                   f"object {model.body(obj).name!r}, in the nominal run: the grasp closes on "
+                   f"more than the object; is that the motion meant?")
     return out
 
 
+def _other_free_bodies(model: mujoco.MjModel, obj: int, owner) -> list[int]:
+    """The free bodies of the scene other than the object (``owner``: _body_owners')."""
+    return [b for b in range(1, model.nbody) if b != obj and owner[b] == ("free", b)]
+
+
+def _body_label(model: mujoco.MjModel, b: int) -> str:
+    return repr(model.body(b).name or f"body {b}")
+
+
+def _risen(model: mujoco.MjModel, lifted: Mapping[int, float]) -> str:
+    """Bodies and how high they rose, for a message."""
+    return ", ".join(f"{_body_label(model, b)} ({rise * 100:.3g} cm)"
+                     for b, rise in lifted.items())
+
+
 def _scan_clutter(twin: Twin, recording: Recording
-                  ) -> tuple[dict[str, float], dict[str, float]]:
+                  ) -> tuple[dict[str, float], dict[int, float]]:
     """Over the nominal states every ``CLUTTER_STRIDE`` steps: what the object touches
     besides its grippers, supports and the robot (name -> first time [s]), and the other
-    free bodies a gripper touches while they rise over ``CLUTTER_LIFT`` (name -> highest
+    free bodies a gripper touches while they rise over ``CLUTTER_LIFT`` (body id -> highest
     rise [m])."""
     model = twin.model
     sc = twin.scenario
     grip, support = _role_geoms(twin)
     obj = twin.object_body_id
     owner = _body_owners(model)
-    others = [b for b in range(1, model.nbody) if b != obj and owner[b] == ("free", b)]
+    others = _other_free_bodies(model, obj, owner)
     adr = {b: int(model.jnt_qposadr[model.body_jntadr[b]]) for b in others}
     up = np.asarray(sc.task.up, dtype=float)
     states = recording.states
     steps = np.arange(0, states.shape[0], CLUTTER_STRIDE)
     data = mujoco.MjData(model)
     touched: dict[str, float] = {}  # what the object touched -> first time [s]
-    lifted: dict[str, float] = {}   # other free body -> its highest rise while gripped
+    lifted: dict[int, float] = {}   # other free body -> its highest rise while gripped
     start = {b: float(twin.qpos(states[:1])[0, adr[b]:adr[b] + 3] @ up) for b in others}
     dt = float(model.opt.timestep)
     for k in steps:
@@ -1351,8 +1363,7 @@ def _scan_clutter(twin: Twin, recording: Recording
         for b in gripped & set(others):
             rise = float(data.qpos[adr[b]:adr[b] + 3] @ up) - start[b]
             if rise > CLUTTER_LIFT:
-                key = repr(model.body(b).name or f"body {b}")
-                lifted[key] = max(lifted.get(key, 0.0), rise)
+                lifted[b] = max(lifted.get(b, 0.0), rise)
     return touched, lifted
 
 
@@ -1447,15 +1458,14 @@ def _mid_run_drops(twin: Twin, recording: Recording) -> list[tuple[int, float, i
     stretch out of every gripper that starts with the object held off its supports and
     ends on a support, having fallen more than ``RELEASE_HEIGHT``, (the first step out of
     the grippers, the fall [m], the step a gripper next touches it)."""
-    from critmoment.groundtruth import LYING_SPEED
+    from critmoment.groundtruth import resting
 
     sig = recording.signals
     touching = np.asarray(sig.contact_gripper, bool).any(axis=-1)
     support = np.asarray(sig.contact_support, bool)[:touching.size]
     n = touching.size
     # landed: on a support, or at rest on anything (a crate the scenario does not list)
-    resting = support | (np.linalg.norm(np.asarray(sig.object_vel, dtype=np.float64)[:n],
-                                        axis=-1) < LYING_SPEED)
+    landing = resting(support, np.linalg.norm(np.asarray(sig.object_vel)[:n], axis=-1))
     if n < 2 or not touching.any():
         return []
     z = twin.object_height(recording.states[:n])
@@ -1472,7 +1482,7 @@ def _mid_run_drops(twin: Twin, recording: Recording) -> list[tuple[int, float, i
         # come to rest below where it left the grip (a hand paused as it opens leaves the
         # object still for a moment, where it has not yet fallen)
         fallen = z[r - 1] - z[r:back]
-        landed = np.flatnonzero(resting[r:back] & (fallen > RELEASE_HEIGHT))
+        landed = np.flatnonzero(landing[r:back] & (fallen > RELEASE_HEIGHT))
         if landed.size:  # else caught before it landed (a hand-over's short free flight)
             out.append((int(r), float(fallen[int(landed[0])]), back))
     return out

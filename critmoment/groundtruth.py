@@ -25,8 +25,8 @@ Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
   carried (touches the support, or no gripper) at steps where the nominal run carries it; the
   drop is the last such loss (an earlier one, a late lift, was recovered from). Also, task
   completed or not, a fall: at a step where the nominal run carries it, the object lies on a
-  support touched by no gripper, having fallen more than ``fall_height`` since a gripper last
-  touched it (:func:`fall_steps`; a catch at a hand-over touches no support, an object set
+  support, or at rest on anything (:func:`resting`), touched by no gripper, having fallen
+  more than ``fall_height`` since a gripper last touched it (:func:`fall_steps`; a catch at a hand-over touches no support, an object set
   down early is still touched).
 * ``SLIPPED``: the object moved in a holding gripper by more than ``slip_tolerance`` for
   longer than ``slip_time`` (see :func:`grip_slip`): its position in the frame of the
@@ -133,8 +133,8 @@ class OutcomeCriteria:
         tracking_time: how long a tracking loss must last to count [s].
         drop_time: longest ignored loss of the object where the nominal run carries it [s]
             (the debounce of the drop test).
-        fall_height: how far the object must fall, out of every gripper onto a support where
-            the nominal run carries it, for the fall to fail a run that completes its task
+        fall_height: how far the object must fall, out of every gripper onto a support (or
+            anything it comes to rest on) where the nominal run carries it, for the fall to fail a run that completes its task
             [m] (a cube dropped 12 cm mid-carry onto the table, picked up again and placed
             had counted as a success).
     """
@@ -277,6 +277,16 @@ class Classification:
 LYING_SPEED = 0.05
 
 
+def resting(contact_support: np.ndarray, speed: np.ndarray | None) -> np.ndarray:
+    """Where the object lies on something, (..., T) bool: it touches a support, or (with
+    ``speed`` [m/s], (..., T)) moves slower than ``LYING_SPEED``, at rest on whatever holds
+    it up (touched by no gripper, an object that slow is not in flight)."""
+    support = np.asarray(contact_support, bool)
+    if speed is None:
+        return support
+    return support | (np.asarray(speed, dtype=np.float64) < LYING_SPEED)
+
+
 def fall_steps(contact_gripper: np.ndarray, contact_support: np.ndarray,
                nominal_carried: np.ndarray, height: np.ndarray, fall_height: float,
                speed: np.ndarray | None = None) -> np.ndarray:
@@ -297,12 +307,10 @@ def fall_steps(contact_gripper: np.ndarray, contact_support: np.ndarray,
             fallen onto a crate the scenario does not list, at rest there, is one too).
     """
     touched = np.asarray(contact_gripper, bool).any(axis=-1)
-    support = np.asarray(contact_support, bool)
+    support = resting(contact_support, speed)
     height = np.asarray(height, dtype=np.float64)
     n, t = support.shape
     out = np.full(n, -1, np.int64)
-    if speed is not None:
-        support = support | (np.asarray(speed, dtype=np.float64) < LYING_SPEED)
     lying = ~touched & support & np.asarray(nominal_carried, bool)[None, :t]
     held = carried_flags(support, contact_gripper)
     for i in np.flatnonzero(lying.any(axis=1)):

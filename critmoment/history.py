@@ -193,8 +193,8 @@ class ChainedResult:
             object, it lies on a support, or at rest on anything, touched by no gripper,
             having fallen more than ``fall_height`` since a gripper last touched it) over its
             whole run, the nominal run's steps before the start and its own after: the first
-            step of the fall, −1 if none, (n,) int64. A fall fails the sample even when it completes the task (a
-            cube dropped mid-carry and picked up again).
+            step of the fall, −1 if none, (n,) int64. A fall fails the sample even when it
+            completes the task (a cube dropped mid-carry and picked up again).
         max_slip: largest slip over the chain [m], (n,).
         motor_step: first step of a saturation of a rotational actuator (the ground truth's
             ``saturation`` of its force limit for longer than ``motor_time``) or of a lost

@@ -38,6 +38,7 @@ from critmoment import actuators as act_info
 from critmoment.exceptions import CritmomentWarning, OutputError, ScenarioError
 from critmoment.scenario import GENERATED, compile_spec, load_scenario, prepare_spec
 from critmoment.task import TASK_KINDS
+from critmoment.trajectory import name_head
 from critmoment.twin import Twin
 
 __all__ = ["ModelInfo", "GripperGuess", "InitResult", "inspect_model", "init_scenario"]
@@ -1135,9 +1136,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                       "sample's slip on its own run (chained segments)")
     text = "\n".join(lines)
     if out_path is not None:
-        from critmoment.report import _head
-
-        tmp = out_path.with_name(f".{_head(out_path.name)}.tmp")
+        tmp = out_path.with_name(f".{name_head(out_path.name)}.tmp")
         try:
             try:
                 tmp.write_text(text, encoding="utf-8")

@@ -13,7 +13,6 @@ every step and the safety signals derived from it.
 from __future__ import annotations
 
 import dataclasses
-import hashlib
 import json
 import math
 import warnings
@@ -38,7 +37,15 @@ from critmoment.exceptions import (
 from critmoment.scenario import Scenario
 from critmoment.task import Task, TaskEvidence
 from critmoment.trajectory import Trajectory
-from critmoment.twin import STATE_SPEC, Signals, Twin, entry_point, resolve_twin, warn_once
+from critmoment.twin import (
+    STATE_SPEC,
+    Signals,
+    Twin,
+    entry_point,
+    model_digest,
+    resolve_twin,
+    warn_once,
+)
 
 __all__ = [
     "Recording",
@@ -68,9 +75,7 @@ def model_hash(source: Twin | Scenario | mujoco.MjModel) -> str:
         return source.model_sha256
     if not isinstance(source, mujoco.MjModel):
         return Twin(source).model_sha256
-    buffer = np.zeros(mujoco.mj_sizeModel(source), dtype=np.uint8)
-    mujoco.mj_saveModel(source, None, buffer)
-    return hashlib.sha256(buffer.tobytes()).hexdigest()
+    return model_digest(source)
 
 
 def _range_policy(range_policy: Any, twin: Twin) -> trajectory_mod.RangePolicy:

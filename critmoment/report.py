@@ -40,6 +40,7 @@ from critmoment.exceptions import CritmomentWarning, OutputError, ParameterError
 from critmoment.moments import Moment, plot_moments
 from critmoment.params import kind_of
 from critmoment.safety import format_fos
+from critmoment.trajectory import name_head as _head
 
 __all__ = ["plot_recording", "moment_json", "figure_png", "Figures", "write_report",
            "StagedOutput", "check_output_path", "MARKER"]
@@ -632,20 +633,17 @@ def check_output_path(path: str | os.PathLike, *, kind: str = "folder",
             raise OutputError(f"{option} {_short(raw)!r}: cannot list the folder: "
                               f"{exc.strerror or exc}") from None
         if foreign and not shared:
-            shown = ", ".join(foreign[:5]) + (" ..." if len(foreign) > 5 else "")
-            raise OutputError(
-                f"{option} {_short(raw)!r}: expected an empty folder or one holding an "
-                f"earlier critmoment output (it is replaced whole), got a folder with other "
-                f"files ({shown}); choose a new folder")
+            raise _foreign_error(option, raw, foreign)
     return dest
 
 
-def _head(name: str, limit: int = 80) -> str:
-    """The start of a file name, at most ``limit`` bytes in the file system's encoding, for
-    a temporary name beside it (80 characters of a CJK name are 240 bytes: a valid output
-    name of 84 such characters had been refused as "File name too long")."""
-    raw = os.fsencode(name)[:limit]
-    return os.fsdecode(raw.decode("utf-8", "ignore").encode("utf-8"))
+def _foreign_error(option: str, raw: str, foreign: Sequence[str]) -> OutputError:
+    """The refusal of an output folder holding files that are not critmoment's."""
+    shown = ", ".join(foreign[:5]) + (" ..." if len(foreign) > 5 else "")
+    return OutputError(
+        f"{option} {_short(raw)!r}: expected an empty folder or one holding an earlier "
+        f"critmoment output (it is replaced whole), got a folder with other files "
+        f"({shown}); choose a new folder")
 
 
 def _unmovable(folder: Path) -> bool:
@@ -875,10 +873,7 @@ class StagedOutput:
                 if self._inside:
                     foreign = [n for n in _foreign_entries(dest) if n != self._tmpdir.name]
                     if foreign and not self.shared:
-                        raise OutputError(
-                            f"{self.option} {_short(self._raw)!r}: expected an empty folder "
-                            f"or one holding an earlier critmoment output, got a folder with "
-                            f"other files ({', '.join(foreign[:5])}); choose a new folder")
+                        raise _foreign_error(self.option, self._raw, foreign)
                     self._merge_into(dest, marked_only=self.shared)
                     return
                 check_output_path(dest, kind="folder", option=self.option,

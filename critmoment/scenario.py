@@ -197,8 +197,6 @@ MAX_COST_EXPONENT = 50.0
 FOS_BAND = (0.5, 2.0)
 
 
-
-
 @dataclasses.dataclass(frozen=True)
 class CostParams:
     """Constants of the cost C = A·exp(−α(FOS_c − 1)) + B·exp(−β(FOS_m − 1)) (thesis eq. 15)."""

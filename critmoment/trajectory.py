@@ -769,6 +769,14 @@ def printable_name(name: str) -> str:
     return raw.decode("utf-8", "backslashreplace")
 
 
+def name_head(name: str, limit: int = 80) -> str:
+    """The start of a file name, at most ``limit`` bytes in the file system's encoding, for
+    a temporary name beside it (80 characters of a CJK name are 240 bytes: a valid output
+    name of 84 such characters had been refused as "File name too long")."""
+    raw = os.fsencode(name)[:limit]
+    return os.fsdecode(raw.decode("utf-8", "ignore").encode("utf-8"))
+
+
 def _scalar(value: np.ndarray, *, what: str) -> Any:
     if value.shape != ():
         raise TrajectoryError(f"{what}: expected a scalar, got shape {value.shape}")

@@ -23,6 +23,7 @@ import contextvars
 import copy
 import dataclasses
 import functools
+import hashlib
 import math
 import os
 import threading
@@ -158,6 +159,14 @@ def lifted_flags(carried: np.ndarray, height: np.ndarray, rise: float = LIFT_RIS
     return out
 
 
+def model_digest(model: mujoco.MjModel) -> str:
+    """SHA-256 of a compiled model's binary MJB form: every number and name it simulates
+    with, whatever files it came from (includes and meshes too, not what lies beside them)."""
+    buffer = np.zeros(mujoco.mj_sizeModel(model), dtype=np.uint8)
+    mujoco.mj_saveModel(model, None, buffer)
+    return hashlib.sha256(buffer.tobytes()).hexdigest()
+
+
 def state_slice(model: mujoco.MjModel, component: mujoco.mjtState | int) -> slice:
     """Where a state component (``mjSTATE_QPOS``, ``mjSTATE_QVEL``, ...) sits in a
     :data:`STATE_SPEC` row of ``model``.
@@ -265,11 +274,9 @@ class Twin:
         except ValueError as exc:
             raise ScenarioError(f"could not compile {scenario.mjcf} with sensors: {exc}") from exc
         self.model = model
-        from critmoment.recording import model_hash
-
-        #: SHA-256 of the model as compiled (:func:`critmoment.recording.model_hash`), taken
-        #: before any audit changes a parameter in it
-        self.model_sha256 = model_hash(model)
+        #: SHA-256 of the model as compiled (:func:`model_digest`), taken before any audit
+        #: changes a parameter in it
+        self.model_sha256 = model_digest(model)
         #: object start positions already checked against the arms' reach
         self._starts_checked: set[tuple[float, ...]] = set()
         scenario.validate_names(model)
