@@ -29,8 +29,9 @@ Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
   more than ``fall_height`` since a gripper last touched it (:func:`fall_steps`; a catch at a hand-over touches no support, an object set
   down early is still touched).
 * ``SLIPPED``: the object moved in a holding gripper by more than ``slip_tolerance`` for
-  longer than ``slip_time`` (see :func:`grip_slip`): its position in the frame of the
-  gripper's base body, along the pads (the fingers' closing axes removed: squeezing is not
+  longer than ``slip_time`` (see :func:`grip_slip`): the farthest of its points
+  (:attr:`~critmoment.twin.Twin.grip_points`: a turn in the grip moves its ends) in the frame
+  of the gripper's base body, along the pads (the fingers' closing axes removed: squeezing is not
   slip), counted from the step both the sample and the nominal run first hold it with that
   gripper, minus the nominal run's own displacement, at steps where the nominal run holds it
   with that gripper alone and not in the release that ends its hold (an object moves in a
@@ -52,6 +53,7 @@ from __future__ import annotations
 
 import dataclasses
 import enum
+import itertools
 import math
 import numbers
 import threading
@@ -546,8 +548,11 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
     slipped.
 
     Args:
-        position: object position in each gripper's frame [m], (n, T, G, 3).
-        nominal_position: the same in the nominal run [m], (T, G, 3).
+        position: object position in each gripper's frame [m], (n, T, G, 3); or the
+            positions of K points of the object (``Twin.grip_points``), (n, T, G, K, 3): then
+            each point's displacement counts, and the farthest point's is the slip (a turn in
+            the grip moves the object's ends while its centre stays).
+        nominal_position: the same in the nominal run [m], (T, G, 3) or (T, G, K, 3).
         held: the sample holds the object with gripper g (touch, off the support),
             (n, T, G) bool.
         nominal_held: the same in the nominal run, (T, G) bool.
@@ -568,12 +573,14 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
     """
     position = np.asarray(position, dtype=np.float64)
     nominal_position = np.asarray(nominal_position, dtype=np.float64)
-    if (position.ndim != 4 or position.shape[-1] != 3
+    if (position.ndim not in (4, 5) or position.shape[-1] != 3
             or position.shape[1:] != nominal_position.shape):
         raise ParameterError(
-            f"position: expected (n, T, G, 3) matching nominal_position (T, G, 3), got "
-            f"{position.shape} and {nominal_position.shape}")
-    n, t, g, _ = position.shape
+            f"position: expected (n, T, G, 3) or (n, T, G, K, 3) matching nominal_position "
+            f"(T, G, 3) or (T, G, K, 3), got {position.shape} and {nominal_position.shape}")
+    if position.ndim == 4:  # the object's position: one point
+        position, nominal_position = position[..., None, :], nominal_position[..., None, :]
+    n, t, g = position.shape[:3]
     both = np.asarray(held, dtype=bool) & np.asarray(nominal_held, dtype=bool)[None]
     if both.shape != (n, t, g):
         raise ParameterError(f"held: expected shape {(n, t, g)}, got {both.shape}")
@@ -600,9 +607,9 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
     nominal_moved = nominal_position[None] - nominal_position[t0, cols]
     if projectors is not None:
         proj = np.asarray(projectors, dtype=np.float64)
-        moved = np.einsum("gij,ntgj->ntgi", proj, moved)
-        nominal_moved = np.einsum("gij,ntgj->ntgi", proj, nominal_moved)
-    disp = np.where(mask, beyond_nominal(moved, nominal_moved), 0.0)
+        moved = np.einsum("gij,ntgkj->ntgki", proj, moved)
+        nominal_moved = np.einsum("gij,ntgkj->ntgki", proj, nominal_moved)
+    disp = np.where(mask, beyond_nominal(moved, nominal_moved).max(axis=-1), 0.0)
     return disp.max(axis=-1) if g else np.zeros((n, t))
 
 
@@ -639,10 +646,15 @@ class _Probe:
         self.anchors = [_gripper_anchor(base, g.geoms) for g in sc.grippers]
         spec = sc.load_spec()  # critmoment's own copy: generated names, object friction priority
         twin.add_sensors(spec)  # the twin's sensors first, at the same addresses
-        for g, anchor in zip(sc.grippers, self.anchors, strict=False):
+        # per gripper, the object's position and orientation in its frame: where the
+        # object's points (Twin.grip_points) are in the grip
+        for (g, anchor), (kind, tag) in itertools.product(
+                zip(sc.grippers, self.anchors, strict=False),
+                ((mujoco.mjtSensor.mjSENS_FRAMEPOS, "pos"),
+                 (mujoco.mjtSensor.mjSENS_FRAMEQUAT, "quat"))):
             s = spec.add_sensor()
-            s.name = f"{_SENSOR_PREFIX}pos:{g.name}"
-            s.type = mujoco.mjtSensor.mjSENS_FRAMEPOS
+            s.name = f"{_SENSOR_PREFIX}{tag}:{g.name}"
+            s.type = kind
             # the bodies' own frames (XBODY: xpos/xmat), not their inertial frames (BODY:
             # xipos/ximat), in which the closing projector below is built; a gripper link
             # whose inertial frame is rotated (ACT's ViperX: 103 degrees) would otherwise
@@ -671,10 +683,24 @@ class _Probe:
         twin.write_parameters(self.model, sc.box.nominal[None, :])
         nsd = twin.nsensordata
         ngrip = len(sc.grippers)
-        self.pos = slice(nsd, nsd + 3 * ngrip)
-        self.q = slice(self.pos.stop, self.pos.stop + self.motors.size)
+        #: per gripper, 3 position then 4 quaternion values
+        self.pose = slice(nsd, nsd + 7 * ngrip)
+        self.points = twin.grip_points
+        self.q = slice(self.pose.stop, self.pose.stop + self.motors.size)
         self.projectors = np.stack([_closing_projector(base, g.geoms, a)
                                     for g, a in zip(sc.grippers, self.anchors, strict=False)])
+
+    def grip_positions(self, sensordata: np.ndarray) -> np.ndarray:
+        """The object's points in each gripper's frame, (c, T, G, K, 3) [m], from readings
+        (c, T, nsensordata) of this probe's model."""
+        c, t = sensordata.shape[:2]
+        pose = sensordata[..., self.pose].reshape(c, t, -1, 7)
+        w, x, y, z = np.moveaxis(pose[..., 3:], -1, 0)
+        rot = np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
+                        2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+                        2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+                       axis=-1).reshape(pose.shape[:-1] + (3, 3))
+        return pose[..., None, :3] + np.einsum("ctgij,kj->ctgki", rot, self.points)
 
 
 def _gripper_anchor(model: mujoco.MjModel, geoms: Sequence[str]) -> int:
@@ -980,7 +1006,7 @@ class _Frames:
                    speed=np.linalg.norm(vel, axis=-1),
                    actuator_norm=sd[..., twin._force_ids[probe.motors]]
                    / limits[..., probe.motors],
-                   position=sensordata[..., probe.pos].reshape(c, t, -1, 3),
+                   position=probe.grip_positions(sensordata),
                    q=sensordata[..., probe.q] / probe.gear, success=twin.task.success(evidence))
 
     def row(self, i: int) -> _Frames:

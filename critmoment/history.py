@@ -145,7 +145,7 @@ def estimate_drift(evaluator: SparseEvaluator, steps: Any, samples: Any, *, hori
         s = tr["xpos"].shape[1]
         rel = _object_in_grippers(tr["xpos"], tr["xmat"], twin.object_body_id,
                                   ev._anchors[g:g + 1])[:, :, 0]  # (n, s, 3)
-        nominal = ev._nominal_positions(k, s)[:, g]  # (s, 3)
+        nominal = ev._nominal_positions(k, s)[:, g, 0]  # (s, 3): the object's origin
         disp = rel - nominal[None]
         half = max(1, s // 2)
         out["drift"][i] = np.linalg.norm(disp[:, -1], axis=-1)
@@ -346,9 +346,9 @@ class _Watch:
     Slip (as :func:`critmoment.groundtruth.grip_slip`): per gripper and nominal hold
     (``Twin.hold_segments``), from the first step of the hold at which both the sample and
     the nominal run hold the object with it once its grasp has formed
-    (``Twin.grasp_formed``), the object's
-    displacement in the gripper's frame relative to the nominal run's, the closing axes
-    projected out, counted where the nominal run holds with that gripper alone; a slip is
+    (``Twin.grasp_formed``), the displacement of the object's points (``Twin.grip_points``)
+    in the gripper's frame relative to the nominal run's, the closing axes projected out,
+    the farthest point's, counted where the nominal run holds with that gripper alone; a slip is
     a run of more than ``slip_time`` above ``slip_tolerance``. Drop: the object touched
     by no gripper where the nominal run carries it, for longer than ``drop_time``.
     Saturation: a motor-checked actuator (``Twin.motors``) at ``saturation`` of its force
@@ -374,9 +374,10 @@ class _Watch:
         self.object_pos = np.zeros((n, length, 3), np.float32)
         self.object_vel = np.zeros((n, length, 3), np.float32)
         self.found = np.zeros((n, g), bool)
-        self.offset = np.zeros((n, g, 3))
-        #: the nominal object's position in each grip where the sample's hold began
-        self.grasp = np.zeros((n, g, 3))
+        k = len(ev._points)
+        self.offset = np.zeros((n, g, k, 3))
+        #: the nominal object's points in each grip where the sample's hold began
+        self.grasp = np.zeros((n, g, k, 3))
         self.tolerance = float(criteria.slip_tolerance)
         self.fall_height = float(criteria.fall_height)
         self.slip_step = np.full(n, -1, np.int64)
@@ -461,9 +462,10 @@ class _Watch:
         both = held & nominal_held[None]
         slip = np.zeros((c, s))
         if ev._anchors.size:
-            rel = _object_in_grippers(xpos, xmat, ev.twin.object_body_id, ev._anchors)
-            nominal = ev._nominal_positions(k, s)                   # (s, G, 3)
-            diff = rel - nominal[None]                              # (c, s, G, 3)
+            rel = _object_in_grippers(xpos, xmat, ev.twin.object_body_id, ev._anchors,
+                                      ev._points)
+            nominal = ev._nominal_positions(k, s)                   # (s, G, K, 3)
+            diff = rel - nominal[None]                              # (c, s, G, K, 3)
             found = self.found[ids]
             # the hold's anchor: its first step held by both once the grasp has formed
             anchor = both & ev._formed[k:k + s][None]
@@ -477,12 +479,13 @@ class _Watch:
                 np.arange(s)[None, :, None] >= first[:, None, :]))
             # the sample's and the nominal's displacements since the hold began; the slip
             # is how far the sample's goes beyond the nominal's (grip_slip's rule)
-            nominal_moved = np.einsum("gij,csgj->csgi", ev._projectors,
+            nominal_moved = np.einsum("gij,csgkj->csgki", ev._projectors,
                                       nominal[None] - grasp[:, None])
-            moved = np.einsum("gij,csgj->csgi", ev._projectors,
+            moved = np.einsum("gij,csgkj->csgki", ev._projectors,
                               diff - offset[:, None]) + nominal_moved
             counted = both & started & ev._counted[k:k + s][None]
-            slip = np.where(counted, beyond_nominal(moved, nominal_moved), 0.0).max(axis=-1)
+            farthest = beyond_nominal(moved, nominal_moved).max(axis=-1)  # (c, s, G)
+            slip = np.where(counted, farthest, 0.0).max(axis=-1)
             self.offset[ids], self.grasp[ids] = offset, grasp
             self.found[ids] = found | new
         self.max_slip[ids] = np.maximum(self.max_slip[ids], slip.max(axis=1))

@@ -71,8 +71,9 @@ soft contact models (see :mod:`critmoment.contactmodel`) a grip creeps while its
 ratio still looks safe, and only its motion tells. The settings come from the scenario's
 ``[sparse]`` table (``scenario.sparse``), else 0.02 s, 5 mm and 0 (off).
 
-Slip. The object's position in the frame of each gripper's base body (the deepest body
-above all its geoms), with the fingers' slide axes projected out (squeezing is not slip),
+Slip. The object's points (``Twin.grip_points``: a turn in the grip moves its ends; the
+farthest point's displacement counts) in the frame of each gripper's base body (the deepest
+body above all its geoms), with the fingers' slide axes projected out (squeezing is not slip),
 at the steps where the nominal run holds the object with that gripper alone: how far its
 displacement since the nominal's grasp goes beyond the nominal run's own at the same step
 (``groundtruth.beyond_nominal``); ``slip`` is the largest over the steps measured. Both runs
@@ -717,12 +718,18 @@ def grip_frames(model: mujoco.MjModel, scenario) -> tuple[np.ndarray, np.ndarray
 
 
 def _object_in_grippers(xpos: np.ndarray, xmat: np.ndarray, body: int,
-                        anchors: np.ndarray) -> np.ndarray:
+                        anchors: np.ndarray, points: np.ndarray | None = None) -> np.ndarray:
     """The object's position in each anchor's frame (c, s, G, 3) [m] from body poses
-    (c, s, nbody, 3) and (c, s, nbody, 9)."""
+    (c, s, nbody, 3) and (c, s, nbody, 9); with ``points`` (K, 3) in the object's frame
+    (:func:`critmoment.twin.grip_points`), where those points are, (c, s, G, K, 3)."""
     delta = xpos[:, :, None, body] - xpos[:, :, anchors]  # (c, s, G, 3)
     rot = xmat[:, :, anchors].reshape(delta.shape[:3] + (3, 3))
-    return np.einsum("csgji,csgj->csgi", rot, delta)
+    rel = np.einsum("csgji,csgj->csgi", rot, delta)
+    if points is None:
+        return rel
+    # the object's orientation in each anchor's frame, R_a^T R_o, moves the points with it
+    turn = np.einsum("csgji,csjk->csgik", rot, xmat[:, :, body].reshape(delta.shape[:2] + (3, 3)))
+    return rel[..., None, :] + np.einsum("csgik,pk->csgpi", turn, np.asarray(points))
 
 
 class _Decision(NamedTuple):
@@ -904,7 +911,10 @@ class SparseEvaluator:
         self._counted, self._segments, self._formed = masks.counted, masks.segments, masks.formed
         #: a gripper lets its object go in the nominal run, (T,)
         self._letting = masks.letting.any(axis=-1)
-        self._nominal_rel = np.full((self._states.shape[0], len(self._anchors), 3), np.nan)
+        #: the object's points whose motion in a grip is its slip (Twin.grip_points)
+        self._points = twin.grip_points
+        self._nominal_rel = np.full((self._states.shape[0], len(self._anchors),
+                                     len(self._points), 3), np.nan)
         self._grasp_cache: tuple[np.ndarray, np.ndarray] | None = None
         self._sensordata = getattr(recording, "sensordata", None)
         self._completed = bool(getattr(recording, "completed", False))
@@ -1810,10 +1820,11 @@ class SparseEvaluator:
         c, s = xpos.shape[:2]
         if not self._anchors.size:
             return np.zeros((c, s))
-        rel = _object_in_grippers(xpos, xmat, self.twin.object_body_id, self._anchors)
+        rel = _object_in_grippers(xpos, xmat, self.twin.object_body_id, self._anchors,
+                                  self._points)                    # (c, s, G, K, 3)
         if np.ndim(k):  # a start step per simulation, (c,)
             at = np.asarray(k)[:, None] + np.arange(s)
-            nominal, alone = self._nominal_at(at), self._alone[at]  # (c, s, G, 3), (c, s, G)
+            nominal, alone = self._nominal_at(at), self._alone[at]  # (c, s, G, K, 3), (c, s, G)
         else:
             at = (k + np.arange(s))[None]
             nominal, alone = self._nominal_positions(k, s)[None], self._alone[k:k + s][None]
@@ -1821,24 +1832,24 @@ class SparseEvaluator:
         # (restored from the nominal state, it shares the nominal's history up to then):
         # the slip is how far the sample's goes beyond the nominal's (grip_slip's rule)
         start, grasp = self._grasp()
-        start, grasp = start[at], grasp[at]                        # (c|1, s, G), (c|1, s, G, 3)
+        start, grasp = start[at], grasp[at]                    # (c|1, s, G), (c|1, s, G, K, 3)
         since = (start >= 0) & (at[..., None] >= start)
-        nominal_moved = np.where(since[..., None], nominal - grasp, 0.0)
-        moved = np.einsum("gij,csgj->csgi", self._projectors, rel - nominal + nominal_moved)
-        nominal_moved = np.einsum("gij,csgj->csgi", self._projectors, nominal_moved)
-        disp = beyond_nominal(moved, nominal_moved)
+        nominal_moved = np.where(since[..., None, None], nominal - grasp, 0.0)
+        moved = np.einsum("gij,csgkj->csgki", self._projectors, rel - nominal + nominal_moved)
+        nominal_moved = np.einsum("gij,csgkj->csgki", self._projectors, nominal_moved)
+        disp = beyond_nominal(moved, nominal_moved).max(axis=-1)  # the farthest point's
         return np.where(alone & since, disp, 0.0).max(axis=-1)
 
     def _grasp(self) -> tuple[np.ndarray, np.ndarray]:
         """Per step and gripper, the first step the nominal run holds the object with it in
         that step's hold (:attr:`_segments`) once its grasp has formed (:attr:`_formed`; −1
-        where it does not), (T, G), and the object's position in that grip then, (T, G, 3)
+        where it does not), (T, G), and the object's points in that grip then, (T, G, K, 3)
         (cached)."""
         if self._grasp_cache is None:
             g = len(self._anchors)
             held = self._held[:, :g]
             start = hold_starts(held, self._segments[:, :g], self._formed[:, :g])
-            grasp = np.zeros(held.shape + (3,))
+            grasp = np.zeros(held.shape + self._points.shape)
             if (start >= 0).any():
                 rows, cols = np.nonzero(start >= 0)
                 grasp[rows, cols] = self._nominal_at(start[rows, cols])[np.arange(rows.size),
@@ -1847,14 +1858,15 @@ class SparseEvaluator:
         return self._grasp_cache
 
     def _nominal_positions(self, k: int, s: int) -> np.ndarray:
-        """The nominal run's object position in each gripper's frame (s, G, 3) [m] at the
+        """The nominal run's object points in each gripper's frame (s, G, K, 3) [m] at the
         start of steps k .. k+s−1 (kinematics of the recorded states, cached)."""
         return self._nominal_at(np.arange(k, k + s))
 
     def _nominal_at(self, at: np.ndarray) -> np.ndarray:
-        """:meth:`_nominal_positions` at the steps ``at`` (any shape), ``at.shape + (G, 3)``."""
+        """:meth:`_nominal_positions` at the steps ``at`` (any shape), ``at.shape + (G, K,
+        3)``."""
         rows = np.unique(at)
-        self._fill_nominal(rows[np.isnan(self._nominal_rel[rows, 0, 0])])
+        self._fill_nominal(rows[np.isnan(self._nominal_rel[rows, 0, 0, 0])])
         return self._nominal_rel[at]
 
     def _fill_nominal(self, missing: np.ndarray) -> None:
@@ -1874,7 +1886,7 @@ class SparseEvaluator:
                 xmat[r] = data.xmat[bodies]
             g = self._anchors.size
             self._nominal_rel[missing] = _object_in_grippers(xpos[None], xmat[None], g,
-                                                             np.arange(g))[0]
+                                                             np.arange(g), self._points)[0]
 
     def _score(self, sig: Signals, diverged: np.ndarray, out: dict[str, np.ndarray], i: int,
                sl: slice, *, at: np.ndarray) -> None:

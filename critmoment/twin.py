@@ -48,7 +48,7 @@ from critmoment.scenario import Scenario, channel_gripper
 from critmoment.task import TaskEvidence
 
 __all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "SlipMasks", "Twin", "carried_flags",
-           "lifted_flags", "LIFT_RISE"]
+           "grip_points", "lifted_flags", "LIFT_RISE"]
 
 #: how far [m] the object must rise in a carried run for the run to count as a lift
 LIFT_RISE = 0.002
@@ -165,6 +165,58 @@ def model_digest(model: mujoco.MjModel) -> str:
     buffer = np.zeros(mujoco.mj_sizeModel(model), dtype=np.uint8)
     mujoco.mj_saveModel(model, None, buffer)
     return hashlib.sha256(buffer.tobytes()).hexdigest()
+
+
+#: the most points :func:`grip_points` keeps before it falls back to their bounding box
+MAX_GRIP_POINTS = 32
+
+
+def grip_points(model: mujoco.MjModel, body: int) -> np.ndarray:
+    """Points of a body whose displacement in a grip is its slip, in the body's frame, (K, 3)
+    [m]: the origin first, then, per collision geom of the body, the points that fix the
+    geom's pose up to its own symmetry (a sphere's centre; a capsule's or cylinder's axis
+    ends; an ellipsoid's six axis ends; a box's, mesh's or other shape's bounding-box
+    corners).
+
+    The object's position alone misses a turn in the grip: a plank or a tool held off its
+    centre of mass pivots about the fingers' axis while the point between them stays put, and
+    is placed turned or dropped. Measured at these points, a pivot counts by how far it moves
+    the object's farthest part (30 degrees of a 12 cm plank: 3 cm), while a sphere's spin, or
+    a cylinder's about its own axis, moves none of them. More than :data:`MAX_GRIP_POINTS`
+    (a compound of many geoms) become the eight corners of their bounding box.
+    """
+    colliding = act_info.collision_geoms(model)
+    pts = [np.zeros(3)]
+    types = mujoco.mjtGeom
+    for g in np.flatnonzero((model.geom_bodyid == body) & colliding):
+        kind = int(model.geom_type[g])
+        size = model.geom_size[g]
+        if kind == types.mjGEOM_PLANE or kind == types.mjGEOM_HFIELD:
+            continue
+        if kind == types.mjGEOM_SPHERE:
+            local = np.zeros((1, 3))
+        elif kind in (types.mjGEOM_CAPSULE, types.mjGEOM_CYLINDER):
+            local = np.array([[0.0, 0.0, size[1]], [0.0, 0.0, -size[1]]])
+        elif kind == types.mjGEOM_ELLIPSOID:
+            local = np.concatenate([np.diag(size), -np.diag(size)])
+        else:
+            centre, half = model.geom_aabb[g, :3], model.geom_aabb[g, 3:]
+            if kind == types.mjGEOM_BOX:
+                centre, half = np.zeros(3), size[:3]
+            signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)],
+                             dtype=np.float64)
+            local = centre + signs * half
+        rot = np.empty(9)
+        mujoco.mju_quat2Mat(rot, model.geom_quat[g])
+        pts.extend(model.geom_pos[g] + local @ rot.reshape(3, 3).T)
+    out = np.unique(np.round(np.array(pts), 12), axis=0)
+    out = np.concatenate([np.zeros((1, 3)), out[np.any(out != 0.0, axis=1)]])
+    if len(out) > MAX_GRIP_POINTS + 1:
+        lo, hi = out.min(axis=0), out.max(axis=0)
+        corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
+                            for z in (lo[2], hi[2])])
+        out = np.concatenate([np.zeros((1, 3)), corners])
+    return out
 
 
 def state_slice(model: mujoco.MjModel, component: mujoco.mjtState | int) -> slice:
@@ -533,6 +585,8 @@ class Twin:
         for name in ("_support_adr", "_acc_adr", "_pos_adr", "_vel_adr", "_force_adr"):
             setattr(self, name, _as_slice(getattr(self, name)))
         self.object_body_id = model.body(sc.object_body).id
+        #: the object's points whose motion in a grip is measured as slip (:func:`grip_points`)
+        self.grip_points = grip_points(model, self.object_body_id)
         self.object_geom_id = model.geom(sc.object_geom).id
         self.object_qposadr = int(model.jnt_qposadr[model.body_jntadr[self.object_body_id]])
         missing = [model.actuator(i).name for i in range(model.nu)

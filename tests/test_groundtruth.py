@@ -241,10 +241,11 @@ def test_the_grip_frame_is_the_bodys_own_frame_not_its_inertial_one(scenario, tm
                                                       @ data.ximat[a].reshape(3, 3)) - 1) / 2,
                                             -1, 1))) for a in anchors]
     assert min(rotated) > 45  # the inertial frames really are turned
-    measured = data.sensordata[probe.pos].reshape(-1, 3)
+    measured = probe.grip_positions(data.sensordata[None, None])[0, 0]
     expected = _object_in_grippers(data.xpos[None, None], data.xmat[None, None],
-                                   twin.object_body_id, anchors)[0, 0]
-    np.testing.assert_allclose(measured, expected, atol=1e-12)
+                                   twin.object_body_id, anchors, twin.grip_points)[0, 0]
+    assert measured.shape == (len(anchors), len(twin.grip_points), 3)
+    np.testing.assert_allclose(measured, expected, atol=1e-9)
 
 
 def test_tracking_tolerances_give_a_slide_axis_its_own_unit():

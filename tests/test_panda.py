@@ -535,3 +535,53 @@ def test_a_completed_nominal_run_that_disturbs_the_scene_is_told_so(tmp_path):
     toppled = types.SimpleNamespace(states=states, signals=rec.signals, completed=True)
     said = feasibility._disturbed(twin, toppled)
     assert len(said) == 1 and "moves free body 'bottle' 5.83 cm and turns it 90°" in said[0]
+
+
+def _plank_twin(folder):
+    """The bundled Panda scene with its cube made a 12 × 2.5 × 4 cm plank, gripped at its
+    middle, whose centre of mass the box moves up to 5 cm along it."""
+    import shutil
+
+    import critmoment as cm
+    from critmoment.scenario import bundled_scenario_path
+
+    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
+    scene = folder / "scene.xml"
+    scene.write_text(scene.read_text().replace('size="0.02 0.02 0.02" mass="0.1"',
+                                               'size="0.06 0.0125 0.02" mass="0.1"', 1))
+    toml = folder / "scenario.toml"
+    text = toml.read_text()
+    text = text[:text.index("[uncertainty.mass]")] + (
+        '[uncertainty.mass]\nbody = "cube"\nrange = [0.05, 1.5]\nnominal = 0.1\n\n'
+        '[uncertainty.friction]\ngeom = "cube"\nrange = [0.3, 1.2]\nnominal = 1.0\n\n'
+        '[uncertainty.com_offset]\nbody = "cube"\nrange = [-0.05, 0.05]\nnominal = 0.0\n')
+    toml.write_text(text)
+    return cm.Twin(cm.load_scenario(folder))
+
+
+def test_a_plank_that_turns_in_the_grip_has_slipped(tmp_path):
+    """A plank gripped at its middle with its centre of mass 2.6-4.9 cm to one side pivots
+    26-34 degrees about the fingers' axis while it is carried, lands flat within the goal's
+    3 cm and was a success: the slip was measured at the object's origin, which sits between
+    the fingers and barely moves. The slip is now the farthest of the object's points
+    (``Twin.grip_points``: its box's corners), so the pivot is a slip, and the audit, which
+    measures the same points, predicts it; a plank that turns 1-3 degrees still succeeds."""
+    import warnings
+
+    from critmoment import groundtruth as gt
+    from critmoment.validation import validate
+
+    twin = _plank_twin(tmp_path / "plank")
+    assert twin.grip_points.shape == (9, 3)
+    traj = pd.make_pick_place(0, model=twin.model)
+    # (mass, friction, com_offset): two that pivot 26 and 34 degrees and two that hold
+    samples = np.array([[0.2724, 0.3491, -0.0256], [0.2873, 0.7926, 0.0490],
+                        [0.1288, 0.6652, 0.0390], [0.3511, 1.0205, 0.0092]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        truth = gt.brute_force(traj, twin=twin, samples=samples, nthread=1)
+        result = validate(traj, twin=twin, samples=samples, nthread=1)
+    assert truth.outcome == (gt.Outcome.SLIPPED, gt.Outcome.SLIPPED, gt.Outcome.SUCCESS,
+                             gt.Outcome.SUCCESS)
+    assert truth.classification.completed.all()  # each placed within the tolerance
+    assert result.predicted_failed.tolist() == [True, True, False, False]
