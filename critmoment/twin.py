@@ -175,8 +175,8 @@ def grip_points(model: mujoco.MjModel, body: int) -> np.ndarray:
     """Points of a body whose displacement in a grip is its slip, in the body's frame, (K, 3)
     [m]: the origin first, then, per collision geom of the body, the points that fix the
     geom's pose up to its own symmetry (a sphere's centre; a capsule's or cylinder's axis
-    ends; an ellipsoid's six axis ends; a box's, mesh's or other shape's bounding-box
-    corners).
+    ends; an ellipsoid's axis ends, but a spheroid's only on its own axis; a box's, mesh's or
+    other shape's bounding-box corners).
 
     The object's position alone misses a turn in the grip: a plank or a tool held off its
     centre of mass pivots about the fingers' axis while the point between them stays put, and
@@ -198,7 +198,11 @@ def grip_points(model: mujoco.MjModel, body: int) -> np.ndarray:
         elif kind in (types.mjGEOM_CAPSULE, types.mjGEOM_CYLINDER):
             local = np.array([[0.0, 0.0, size[1]], [0.0, 0.0, -size[1]]])
         elif kind == types.mjGEOM_ELLIPSOID:
-            local = np.concatenate([np.diag(size), -np.diag(size)])
+            # the ends of the axes that a turn about another can move: none of a sphere's,
+            # the odd one out of a spheroid's (a spin about it changes nothing)
+            same = np.isclose(size[:, None], size[None, :], rtol=1e-9, atol=0.0).sum(axis=1)
+            axes = np.diag(size)[same == 1] if (same < 3).any() else np.zeros((0, 3))
+            local = np.concatenate([np.zeros((1, 3)), axes, -axes])
         else:
             centre, half = model.geom_aabb[g, :3], model.geom_aabb[g, 3:]
             if kind == types.mjGEOM_BOX:

@@ -918,3 +918,36 @@ def test_a_grasp_has_formed_once_the_gripper_command_has_closed(twin, demo_recor
     assert (twin.gripper_opening(dip)[plain + int(0.5 / rec.dt), receiver]
             < twin.gripper_opening(rec.controls)[plain, receiver])
     assert int(np.argmax(twin.grasp_formed(dip, touching)[:, receiver])) == plain
+
+
+def test_grip_points_fix_the_object_up_to_its_own_symmetry():
+    """The points whose motion in a grip is slip: a box's corners (a turn moves them), a
+    capsule's axis ends, a spheroid's own axis ends, a sphere's centre only (its spin is not
+    slip), in the body's frame with each geom's own pose; a body of many geoms falls back to
+    the corners of their bounding box."""
+    import mujoco
+
+    from critmoment.twin import MAX_GRIP_POINTS, grip_points
+
+    def points(geoms):
+        xml = (f'<mujoco><worldbody><geom type="plane" size="1 1 .1"/><body pos="0 0 .2">'
+               f'<freejoint/>{geoms}</body></worldbody></mujoco>')
+        return grip_points(mujoco.MjModel.from_xml_string(xml), 1)
+
+    box = points('<geom type="box" size="0.06 0.01 0.02"/>')
+    assert box.shape == (9, 3) and np.array_equal(box[0], np.zeros(3))
+    assert np.allclose(np.abs(box[1:]), [0.06, 0.01, 0.02])
+    assert points('<geom type="sphere" size="0.03"/>').tolist() == [[0.0, 0.0, 0.0]]
+    np.testing.assert_allclose(points('<geom type="sphere" size="0.01" pos="0 0 0.05"/>'),
+                               [[0, 0, 0], [0, 0, 0.05]])
+    capsule = points('<geom type="capsule" size="0.01 0.04" euler="90 0 0"/>')
+    np.testing.assert_allclose(sorted(capsule[:, 1]), [-0.04, 0.0, 0.04], atol=1e-12)
+    np.testing.assert_allclose(capsule[:, [0, 2]], 0.0, atol=1e-12)
+    spheroid = points('<geom type="ellipsoid" size="0.02 0.02 0.05"/>')
+    np.testing.assert_allclose(sorted(spheroid[:, 2]), [-0.05, 0.0, 0.05])
+    many = points("".join(f'<geom type="box" size="0.01 0.01 0.01" pos="{0.03 * i} 0 0"/>'
+                          for i in range(6)))
+    assert len(many) == 9 < 6 * 8  # the origin and the 8 corners of all the boxes
+    assert MAX_GRIP_POINTS < 6 * 8
+    np.testing.assert_allclose(many[1:].min(axis=0), [-0.01, -0.01, -0.01])
+    np.testing.assert_allclose(many[1:].max(axis=0), [0.16, 0.01, 0.01])
