@@ -531,17 +531,23 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
     inside = masks.segments[:, g] == masks.segments[start, g]
     counted = np.flatnonzero(alone[:, g] & inside)
     counted = counted[counted >= first]
-    creep = _nominal_creep(model, recording.states, first, counted,
-                           model.body(sc.object_body).id, int(anchors[g]), projectors[g])
+    creep, touched = _nominal_creep(model, recording.states, first, counted,
+                                    model.body(sc.object_body).id, int(anchors[g]),
+                                    projectors[g], twin.grip_points,
+                                    known=set(pads) | set(sc.support_geoms))
     out = dataclasses.replace(probed, nominal_creep=creep)
     if creep > NOMINAL_CREEP:
+        # what else the object touched on the way: a collision moves it in the grip as a
+        # soft contact does, and widens every sample's allowance the same way
+        hit = (f", where it touches {', '.join(touched)} (neither a gripper "
+               f"nor a support: a collision in the nominal run)" if touched else "")
         finding = ContactFinding(
             "nominal-creep", Severity.WARNING,
             f"the nominal run's own object moves {creep * 1e3:.3g} mm in the grip over its "
-            f"{length * float(recording.dt):.2g} s hold: slip is counted beyond the nominal "
-            f"run's own motion, so every sample may move this much and pass; if that is too "
-            f"much for the task, the nominal grasp itself is not good enough (grip harder, "
-            f"or check the object's contact settings)")
+            f"{length * float(recording.dt):.2g} s hold{hit}: slip is counted beyond the "
+            f"nominal run's own motion, so every sample may move this much and pass; if that "
+            f"is too much for the task, the nominal grasp itself is not good enough (grip "
+            f"harder, or check the object's contact settings{' and its path' if hit else ''})")
         out = dataclasses.replace(out, findings=out.findings + (finding,))
         if warn:
             warnings.warn(f"contact model: {finding.message}", ContactModelWarning,
@@ -556,22 +562,53 @@ NOMINAL_CREEP = 0.01
 
 
 def _nominal_creep(model: mujoco.MjModel, states: np.ndarray, first: int, steps: np.ndarray,
-                   body: int, anchor: int, projector: np.ndarray, probes: int = 200) -> float:
-    """The largest displacement [m] of ``body`` in ``anchor``'s frame, projected, at the
-    physics ``steps`` (at most ``probes`` of them, evenly) from physics step ``first``
-    (``states[k + 1]`` is the state after step k)."""
+                   body: int, anchor: int, projector: np.ndarray, points: np.ndarray,
+                   known: set[str] = frozenset(), probes: int = 200
+                   ) -> tuple[float, tuple[str, ...]]:
+    """The largest displacement [m] of ``body``'s ``points`` (``Twin.grip_points``) in
+    ``anchor``'s frame, projected, at the physics ``steps`` (at most ``probes`` of them,
+    evenly) from physics step ``first`` (``states[k + 1]`` is the state after step k); and
+    the names of the geoms (bodies for unnamed ones) other than ``known`` that the body
+    touches at those steps up to the largest displacement."""
     from critmoment.twin import STATE_SPEC
 
     if steps.size == 0:
-        return 0.0
+        return 0.0, ()
     picks = np.concatenate([[first], steps[np.unique(
         np.linspace(0, steps.size - 1, min(steps.size, probes)).astype(int))]]) + 1
     picks = np.minimum(picks, len(states) - 1)
     data = mujoco.MjData(model)
-    rel = np.empty((picks.size, 3))
+    points = np.asarray(points, dtype=float)
+    rel = np.empty((picks.size, len(points), 3))
+    touched: list[set[str]] = []
     for i, k in enumerate(picks):
         mujoco.mj_setState(model, data, np.asarray(states[k], dtype=float), STATE_SPEC)
-        mujoco.mj_kinematics(model, data)
-        rel[i] = _in_frame(data, body, anchor)
-    moved = (rel - rel[0]) @ np.asarray(projector, dtype=float).T
-    return float(np.linalg.norm(moved, axis=1).max())
+        mujoco.mj_fwdPosition(model, data)
+        rot = data.xmat[body].reshape(3, 3)
+        frame = data.xmat[anchor].reshape(3, 3)
+        rel[i] = (data.xpos[body] - data.xpos[anchor] + points @ rot.T) @ frame
+        touched.append(_other_contacts(model, data, body, known))
+    moved = np.linalg.norm((rel - rel[0]) @ np.asarray(projector, dtype=float).T, axis=-1)
+    worst = int(np.argmax(moved.max(axis=1)))
+    names = sorted(set().union(*touched[:worst + 1]))
+    return float(moved.max()), tuple(names)
+
+
+def _other_contacts(model: mujoco.MjModel, data: mujoco.MjData, body: int,
+                    known: set[str]) -> set[str]:
+    """The geoms touching ``body`` in ``data``'s contacts, named for a message (``'post'``,
+    or ``a geom of body 'bottle'`` for an unnamed one), but for the geoms named in
+    ``known``."""
+    out = set()
+    for c in data.contact[:data.ncon]:
+        g1, g2 = int(c.geom1), int(c.geom2)
+        b1, b2 = int(model.geom_bodyid[g1]), int(model.geom_bodyid[g2])
+        if (b1 == body) == (b2 == body):
+            continue
+        other = g2 if b1 == body else g1
+        name = model.geom(other).name
+        if name in known:
+            continue
+        body_name = model.body(int(model.geom_bodyid[other])).name
+        out.add(repr(name) if name else f"a geom of body {body_name!r}")
+    return out

@@ -191,9 +191,10 @@ def test_a_grip_that_settles_is_not_called_soft():
     assert not report.soft and report.creep_rate < 0.2 * first
 
 
-def _panda_variant(folder, old: str, new: str, seed: int = 0):
+def _panda_variant(folder, old: str, new: str, seed: int = 0, extra_qpos: str = ""):
     """A copy of the bundled Panda scenario with ``old`` (once in its scene) replaced by
-    ``new``; its twin and the demo's nominal run of ``seed`` in it."""
+    ``new`` (and ``extra_qpos`` appended to its keyframe, for an added free body); its twin
+    and the demo's nominal run of ``seed`` in it."""
     import shutil
 
     import critmoment
@@ -204,7 +205,12 @@ def _panda_variant(folder, old: str, new: str, seed: int = 0):
     scene = folder / "scene.xml"
     text = scene.read_text()
     assert text.count(old) == 1
-    scene.write_text(text.replace(old, new))
+    text = text.replace(old, new)
+    if extra_qpos:
+        key = "0.5 -0.15 0.02 1 0 0 0"
+        assert text.count(key) == 1
+        text = text.replace(key, key + extra_qpos)
+    scene.write_text(text)
     twin = critmoment.Twin(load_scenario(folder))
     return twin, critmoment.rollout(panda_demo.make_pick_place(seed, model=twin.model),
                                     twin=twin)
@@ -245,3 +251,20 @@ def test_a_probe_at_the_solver_iteration_cap_is_no_creep_measure(tmp_path):
         report = cm.check_contact_model(twin, rec)
     assert "solver-cap" in {f.code for f in report.findings}
     assert not report.soft and "creeps" not in report.summary()
+
+
+def test_a_nominal_collision_that_moves_the_object_in_the_grip_is_named(tmp_path):
+    """A free 50 g bottle stands under the bundled Panda's carry path with its top 1.7 mm
+    above the carried cube's bottom: the nominal cube knocks it over and moves 15 mm in its
+    grip. The warning said only that the nominal grasp is not good enough (a soft contact's
+    words), not that a collision did it; it now names what the object touched."""
+    twin, rec = _panda_variant(
+        tmp_path / "bottle", "  </worldbody>",
+        '<body name="bottle" pos="0.507 0.0 0.06075"><freejoint/><geom name="bottle" '
+        'type="box" size="0.02 0.02 0.06075" mass="0.05" condim="4" '
+        'friction="1 0.005 0.0001"/></body>\n  </worldbody>',
+        extra_qpos=" 0.507 0.0 0.06075 1 0 0 0")
+    with pytest.warns(cm.ContactModelWarning, match=r"moves 1\d\.\d mm in the grip over its "
+                                                    r"\S+ s hold, where it touches 'bottle'"):
+        report = cm.check_contact_model(twin, rec)
+    assert report.nominal_creep > 0.01
