@@ -226,7 +226,9 @@ def test_the_chain_watches_tracking_as_the_ground_truth_does(scenario, twin):
     samples = np.array([[0.19594991677440704, 0.7830319359898568], scenario.box.nominal])
     chain = history.chained_failures(sparse.SparseEvaluator(rec, twin), [start], samples)
     truth = groundtruth.brute_force(traj, twin=twin, samples=samples).classification
-    assert truth.outcome[0].value == "motor" and truth.slip_step[0] == -1
+    # the lag comes first (the cube also turns in the shifted grip 0.2 s later: a slip)
+    assert truth.outcome[0].value == "motor"
+    assert truth.slip_step[0] == -1 or truth.slip_step[0] > truth.motor_step[0]
     np.testing.assert_array_equal(chain.failed, [True, False])
     assert abs(chain.motor_step[0] - truth.motor_step[0]) <= 2
     # a joint lagging its target, which both name so (not a saturation)
