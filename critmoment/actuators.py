@@ -26,6 +26,7 @@ import numpy as np
 __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
            "gripper_gap", "into_ranges", "control_span", "closing_ends", "moves_geoms",
            "position_target", "joint_force_limit", "body_chain", "common_ancestor",
+           "robot_bases", "supporting_joints",
            "collision_geoms", "geom_pairs",
            "filtered_actuators", "ContactParameters", "contact_parameters",
            "dynamic_partners", "grip_friction_sources", "grip_condims", "source_friction"]
@@ -433,6 +434,53 @@ def moved_bodies(model: mujoco.MjModel, i: int, *, sites: bool = False) -> list[
     if sites and kind == trn.mjTRN_BODY:
         return [tid]
     return []
+
+
+def robot_bases(model: mujoco.MjModel) -> list[int]:
+    """The free bodies that carry the robot: a body with a free joint below which an
+    actuator moves something (a mobile or legged robot's base, a humanoid's pelvis), in body
+    order. Such a body is not an object, and what it does (tip, slide) is the robot's own
+    balance."""
+    free = [int(model.jnt_bodyid[j]) for j in range(model.njnt)
+            if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE]
+    if not free:
+        return []
+    moved = {b for i in range(model.nu) for b in moved_bodies(model, i, sites=True)}
+    out = []
+    for base in free:
+        if any(base in body_chain(model, b) for b in moved):
+            out.append(base)
+    return out
+
+
+def supporting_joints(model: mujoco.MjModel, data: mujoco.MjData, bases: Sequence[int],
+                      exclude: Sequence[int] = ()) -> set[int]:
+    """The joints that carry a free robot base on its contacts in ``data`` (collision done):
+    for each contact between a body below a base in ``bases`` and a body that is not (the
+    floor, a table; bodies in ``exclude``, the object, left out), the joints on the chain
+    from that body up to the base (a leg's hip and knee: their load includes the robot's
+    weight, which inverse dynamics of a floating chain leaves out)."""
+    if not bases:
+        return set()
+    owner = {}
+    for b in range(model.nbody):
+        chain = body_chain(model, b)
+        owner[b] = next((base for base in bases if base in chain), -1)
+    skip = set(int(b) for b in exclude)
+    out: set[int] = set()
+    for c in data.contact[:data.ncon]:
+        b1, b2 = (int(model.geom_bodyid[c.geom1]), int(model.geom_bodyid[c.geom2]))
+        for mine, other in ((b1, b2), (b2, b1)):
+            base = owner[mine]
+            if base < 0 or owner[other] == base or other in skip or mine in skip:
+                continue
+            b = mine
+            while b != base:
+                first, num = int(model.body_jntadr[b]), int(model.body_jntnum[b])
+                out.update(j for j in range(first, first + num)
+                           if model.jnt_type[j] != mujoco.mjtJoint.mjJNT_FREE)
+                b = int(model.body_parentid[b])
+    return out
 
 
 def body_chain(model: mujoco.MjModel, body: int) -> list[int]:

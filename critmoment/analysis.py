@@ -1143,7 +1143,8 @@ def _load_bound(rec: Recording, twin: Twin) -> dict | None:
                          "min_fos": float(np.min(bound.fos[i]))})
     finite = bound.critical_mass[np.isfinite(bound.critical_mass)]
     return {"masses": per_mass,
-            "min_critical_payload": float(finite.min()) if finite.size else None}
+            "min_critical_payload": float(finite.min()) if finite.size else None,
+            "unbounded": list(bound.unbounded)}
 
 
 def audit_evaluator(recording: Recording, twin: Twin, *, horizon: int | None = None,

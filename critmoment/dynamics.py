@@ -1101,6 +1101,8 @@ class LoadBound:
         dt: physics step [s].
         saturation: fraction of a limit at which an actuator counts as saturated.
         min_duration: how long a saturation must last to count [s].
+        unbounded: the actuators that stand a free-floating robot on its contacts at some
+            step (:func:`standing_actuators`): their bound leaves the robot's weight out.
     """
 
     masses: np.ndarray
@@ -1112,6 +1114,7 @@ class LoadBound:
     dt: float
     saturation: float
     min_duration: float
+    unbounded: tuple[str, ...] = ()
 
     @property
     def overloaded(self) -> np.ndarray:
@@ -1183,6 +1186,23 @@ def passive_forces(model: mujoco.MjModel, states: np.ndarray) -> np.ndarray:
         mujoco.mj_fwdVelocity(model, data)
         out[t] = unactuated_force(model, data)
     return out
+
+
+def standing_actuators(model: mujoco.MjModel, data: mujoco.MjData, twin) -> set[int]:
+    """The actuators on joints that stand a free-floating robot base on its contacts in
+    ``data`` (collision done; :func:`critmoment.actuators.supporting_joints`, the object's
+    contacts left out): their load includes the robot's weight, which inverse dynamics of
+    the floating chain does not give them."""
+    from critmoment import actuators as act_info
+
+    bases = act_info.robot_bases(model)
+    if not bases:
+        return set()
+    joints = act_info.supporting_joints(model, data, bases, exclude=[twin.object_body_id])
+    trn = mujoco.mjtTrn
+    return {a for a in range(model.nu)
+            if int(model.actuator_trntype[a]) in (trn.mjTRN_JOINT, trn.mjTRN_JOINTINPARENT)
+            and int(model.actuator_trnid[a, 0]) in joints}
 
 
 def trajectory_load_bound(recording, twin, *, masses: Sequence[float] | np.ndarray | None = None,
@@ -1281,7 +1301,16 @@ def trajectory_load_bound(recording, twin, *, masses: Sequence[float] | np.ndarr
     fos = per_holder[k_idx, worst_g, t_idx]
     limiting = rot[np.argmin(ratio[k_idx, worst_g, t_idx], axis=-1)]
     crit = critical_mass(tau0[None], y, saturation * limits[None, None]).min(axis=(0, 2))
+    standing: set[int] = set()
+    from critmoment import actuators as act_info
+
+    if act_info.robot_bases(model):
+        for k in range(0, n_steps, max(1, int(round(0.05 / dt)))):  # every 50 ms
+            mujoco.mj_setState(model, data, states[k], STATE_SPEC)
+            mujoco.mj_fwdPosition(model, data)
+            standing |= standing_actuators(model, data, twin)
     return LoadBound(masses=masses, fos=fos, limiting=limiting.astype(np.int64),
                      carried=carried, critical_mass=crit,
                      actuator_names=tuple(twin.actuator_names), dt=dt,
-                     saturation=float(saturation), min_duration=float(min_duration))
+                     saturation=float(saturation), min_duration=float(min_duration),
+                     unbounded=tuple(twin.actuator_names[a] for a in rot if a in standing))

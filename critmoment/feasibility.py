@@ -1169,6 +1169,7 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
         out += _clutter(twin, recording)
     else:
         out += _disturbed(twin, recording)
+    out += _floating_base(twin, recording)
     if strict and out:
         raise TrajectoryError(out[0])
     return out
@@ -1199,6 +1200,15 @@ def _pretouch_motion(twin: Twin, recording: Recording) -> str | None:
     # margin of 4 mm: 3.97 mm straight down, no turn) settles, it does not topple
     up = np.asarray(twin.scenario.task.up, dtype=np.float64)
     up = up / (np.linalg.norm(up) or 1.0)
+    adr = twin.object_qposadr
+    quat = twin.qpos(recording.states[1:end + 1])[:, adr + 3:adr + 7]
+    carrier = _moving_support(twin, recording.states[0])
+    carried_by = ""
+    if carrier is not None:
+        # on a support that moves (a tray on a mobile base): its motion with the support is
+        # not the object's own; measured in the support body's frame
+        pos, quat, up = _in_body_frame(twin, recording.states[:end], carrier, up)
+        carried_by = f" relative to its moving support {_body_label(twin.model, carrier)}"
     rel = pos - pos[0]
     along = rel @ up
     # a contact margin holds the object up to that far from its support: rising into it is
@@ -1209,8 +1219,6 @@ def _pretouch_motion(twin: Twin, recording: Recording) -> str | None:
     margin = float(model.geom_margin[near].max(initial=0.0)) if near else 0.0
     rise = np.maximum(along - margin, 0.0)
     shift = np.maximum(np.linalg.norm(rel - along[:, None] * up, axis=1), rise)
-    adr = twin.object_qposadr
-    quat = twin.qpos(recording.states[1:end + 1])[:, adr + 3:adr + 7]
     quat = quat / np.linalg.norm(quat, axis=1, keepdims=True)
     turn = np.degrees(2.0 * np.arccos(np.clip(np.abs(quat @ quat[0]), 0.0, 1.0)))
     if not (shift.max() > PRETOUCH_MOVE or turn.max() > PRETOUCH_TURN):
@@ -1220,13 +1228,50 @@ def _pretouch_motion(twin: Twin, recording: Recording) -> str | None:
     when = (f"before any gripper touches it (at t = {end * dt:.2f} s)" if touch.any() else
             "and no gripper ever touches it")
     return (f"the object moves {shift.max() * 1e3:.3g} mm (sideways or up) and turns "
-            f"{turn.max():.3g}° from "
+            f"{turn.max():.3g}°{carried_by} from "
             f"t = {first * dt:.2f} s {when}: it is not at rest at its start (balanced on an "
             f"edge or a vertex, contacts too stiff or springy for the time step) or something "
             f"else pushes it. Where it topples or bounces on its own, runs that differ by "
             f"rounding do so differently, and outcomes, the verdict and the safe region rest "
             f"on that noise; start it resting on a face, or check the object's contact "
             f"settings")
+
+
+def _moving_support(twin: Twin, state: np.ndarray) -> int | None:
+    """The body of a support geom the object rests on in ``state`` that a joint moves (a
+    tray on a mobile base, a conveyor), or None when it rests on fixed ones."""
+    model = twin.model
+    data = _data_at(twin, state)
+    supports = {model.geom(g).id for g in twin.scenario.support_geoms}
+    for c in data.contact[:data.ncon]:
+        g1, g2 = int(c.geom1), int(c.geom2)
+        for mine, other in ((g1, g2), (g2, g1)):
+            if int(model.geom_bodyid[mine]) == twin.object_body_id and other in supports:
+                body = int(model.geom_bodyid[other])
+                if any(model.body_jntnum[b] for b in act_info.body_chain(model, body)):
+                    return body
+    return None
+
+
+def _in_body_frame(twin: Twin, states: np.ndarray, body: int, up: np.ndarray
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The object's position (T, 3) and orientation (T, 4) in ``body``'s frame at
+    ``states`` (T, nstate), and ``up`` in that frame at the first."""
+    model = twin.model
+    data = mujoco.MjData(model)
+    obj = twin.object_body_id
+    n = states.shape[0]
+    pos, quat, inv = np.empty((n, 3)), np.empty((n, 4)), np.empty(4)
+    first = np.eye(3)
+    for k in range(n):
+        mujoco.mj_setState(model, data, np.asarray(states[k], dtype=float), STATE_SPEC)
+        mujoco.mj_kinematics(model, data)
+        frame = data.xmat[body].reshape(3, 3)
+        first = frame if k == 0 else first
+        pos[k] = frame.T @ (data.xpos[obj] - data.xpos[body])
+        mujoco.mju_negQuat(inv, data.xquat[body])
+        mujoco.mju_mulQuat(quat[k], inv, data.xquat[obj])
+    return pos, quat, first.T @ up
 
 
 #: physics steps between the nominal states scanned for contacts with the scene's other
@@ -1307,8 +1352,63 @@ def _disturbed(twin: Twin, recording: Recording) -> list[str]:
 
 
 def _other_free_bodies(model: mujoco.MjModel, obj: int, owner) -> list[int]:
-    """The free bodies of the scene other than the object (``owner``: _body_owners')."""
-    return [b for b in range(1, model.nbody) if b != obj and owner[b] == ("free", b)]
+    """The free bodies of the scene other than the object and the robot's own free base
+    (``owner``: _body_owners')."""
+    bases = set(act_info.robot_bases(model))
+    return [b for b in range(1, model.nbody)
+            if b != obj and owner[b] == ("free", b) and b not in bases]
+
+
+#: a free robot base that tilts more than this [deg] in the nominal run, or falls more than
+#: :data:`BASE_FALL` [m] at its start, is told of
+BASE_TILT = 2.0
+BASE_FALL = 0.01
+
+
+def _floating_base(twin: Twin, recording: Recording) -> list[str]:
+    """A free-floating robot base (``act_info.robot_bases``): what the nominal run does to
+    it, and that its balance is outside the audit's rules. A probe's 5 kg cart tipped 10-15°
+    under heavy cubes and still placed them (a success by the task's rule), and its base, 5 cm
+    above the floor without a start pose, fell onto its feet and was called scene clutter."""
+    model = twin.model
+    bases = act_info.robot_bases(model)
+    if not bases:
+        return []
+    states = recording.states
+    data = mujoco.MjData(model)
+    up = np.asarray(twin.scenario.task.up, dtype=float)
+    up = up / (np.linalg.norm(up) or 1.0)
+    steps = np.unique(np.r_[np.arange(0, states.shape[0], CLUTTER_STRIDE), states.shape[0] - 1])
+    axes = np.empty((steps.size, len(bases), 3))
+    heights = np.empty((steps.size, len(bases)))
+    for i, k in enumerate(steps):
+        mujoco.mj_setState(model, data, np.asarray(states[k], dtype=float), STATE_SPEC)
+        mujoco.mj_kinematics(model, data)
+        for j, b in enumerate(bases):
+            frame = data.xmat[b].reshape(3, 3)
+            axes[i, j] = frame.T @ up if i == 0 else frame @ axes[0, j]
+            heights[i, j] = data.xpos[b] @ up
+    dt = float(recording.dt)
+    early = steps * dt <= 0.5
+    out = []
+    for j, b in enumerate(bases):
+        tilt = np.degrees(np.arccos(np.clip(axes[:, j] @ up, -1.0, 1.0)))
+        fall = float(heights[0, j] - heights[early, j].min())
+        said = (f"the robot's base {_body_label(model, b)} is free-floating (a free joint that "
+                f"carries the arm): critmoment judges the object, the grip and the motors, "
+                f"not the robot's balance, so a sample that tips or slides the robot and still "
+                f"completes its task passes")
+        if fall > BASE_FALL:
+            out.append(f"{said}; in the nominal run it falls {fall * 100:.3g} cm in its first "
+                       f"0.5 s: its start pose is not on its contacts (give the robot's pose "
+                       f"in the trajectory's qpos0 or a keyframe)")
+        elif tilt.max() > BASE_TILT:
+            at = int(steps[int(np.argmax(tilt))])
+            out.append(f"{said}; in the nominal run it tilts {tilt.max():.3g}° (at t = "
+                       f"{at * dt:.2f} s)")
+        else:
+            out.append(f"{said}; in the nominal run it tilts at most {tilt.max():.2g}°")
+    return out
 
 
 def _body_label(model: mujoco.MjModel, b: int) -> str:

@@ -569,9 +569,20 @@ def inspect_model(path: str | Path) -> ModelInfo:
         mujoco.mj_resetDataKeyframe(model, data, key)
     mujoco.mj_forward(model, data)
     free = []
+    bases = act_info.robot_bases(model)
+    if bases:
+        names = ", ".join(repr(model.body(b).name or f"body {b}") for b in bases)
+        notes.append(f"the robot's base {names} is free-floating (a free joint that carries "
+                     f"actuated joints): not an object candidate. critmoment judges the "
+                     f"object, the grip and the motors, not the robot's balance: a run that "
+                     f"tips or slides the robot and still completes its task passes (the "
+                     f"nominal run's tilt is reported), and the analytic load bound leaves out "
+                     f"the weight on joints that stand the robot on its contacts (legs)")
     for j in range(model.njnt):
         if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE:
             b = int(model.jnt_bodyid[j])
+            if b in bases:
+                continue
             geoms = _collision_geoms(model, _subtree(model, b))
             free.append({"name": model.body(b).name, "mass": float(model.body_subtreemass[b]),
                          "pos": [float(v) for v in data.xpos[b]],
@@ -847,6 +858,11 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         raise ScenarioError(f"--task: expected one of {', '.join(TASK_KINDS)}, got {task!r}")
     info = inspect_model(model_path)
     free = {b["name"]: b for b in info.free_bodies}
+    probe = _compile(model_path)
+    if object_body in [probe.body(b).name for b in act_info.robot_bases(probe)]:
+        raise ScenarioError(f"--object: {object_body!r} is the robot's free-floating base (a "
+                            f"free joint that carries actuated joints), not an object; free "
+                            f"bodies: {', '.join(free) or '(none)'}")
     if object_body not in free:
         raise ScenarioError(f"--object: expected a free body of the model, got {object_body!r}"
                             f"{_joints_instead(model_path, object_body)}; free bodies: "

@@ -439,6 +439,10 @@ def summary_text(report) -> str:
         parts = [f"{e['mass']:.3g} kg: {e['actuator']} saturates from t = "
                  f"{e['first_failing_time']:.2f} s" if e["first_failing_time"] is not None
                  else f"{e['mass']:.3g} kg: no motor saturates" for e in lb["masses"]]
+        unbounded = lb.get("unbounded") or []
+        if unbounded:
+            parts.append(f"not bounded: {', '.join(unbounded)} (they stand the robot's "
+                         f"free-floating base on its contacts; its weight is left out)")
         lines.append("  analytic motor bound over the whole motion: " + "; ".join(parts))
     if untrusted:
         lines.append(f"  contact force ratio not trusted at steps "

@@ -682,8 +682,17 @@ def analytic_bounds(recording, twin: Twin, step: Any, *,
     others = [p.name for j, p in enumerate(box.parameters) if j not in (mass_col, friction_col)]
     if others:
         notes.append(f"the analytic model holds {', '.join(others)} at nominal")
+    # a free-floating robot standing on its contacts: inverse dynamics of the floating chain
+    # puts its weight (and the payload's) into the unactuated free joint, not into the legs
+    standing = dyn.standing_actuators(model, data, twin)
+    standing = [twin.actuator_names[a] for a in rot if a in standing]
+    if standing:
+        notes.append(f"the robot's free-floating base stands on its contacts through "
+                     f"{', '.join(standing)}: their load includes its weight, which the "
+                     f"bound leaves out (not bounded)")
     assumptions_hold = (bool(holding) and not on_support and len(holding) == 1
-                        and all(math.isfinite(g.normal_force) for g in grasps))
+                        and all(math.isfinite(g.normal_force) for g in grasps)
+                        and not standing)
 
     # per joint: critical mass (worst over grippers), worst |τ| over the mass range
     y_rows = y if y.shape[0] else np.zeros((1, rot.size))

@@ -167,3 +167,81 @@ SWING_MJCF = """
   </actuator>
 </mujoco>
 """
+
+
+#: a 15 kg cart on four one-hinge legs (position servos h0-h3, 5 N·m) with a free joint,
+#: carrying a 6-joint arm with two slide fingers, over a table with a 4 cm cube (probe_r34's
+#: floating-base robot): the robot's own base is a free body
+LEGGED_MJCF = """<mujoco model="probe_r34_legged">
+  <compiler angle="radian" autolimits="true"/>
+  <option timestep="0.002" integrator="implicitfast" cone="elliptic" impratio="10"/>
+  <worldbody>
+    <light pos="0 0 3"/>
+    <geom name="floor" type="plane" size="3 3 0.1" rgba=".8 .8 .8 1"/>
+    <body name="table" pos="0.65 0.3 0.15">
+      <geom name="table_top" type="box" size="0.25 0.6 0.15" rgba=".6 .4 .2 1"/>
+    </body>
+    <body name="base" pos="0 0 0.17">
+      <freejoint name="base_free"/>
+      <geom name="chassis" type="box" size="0.25 0.2 0.06" mass="15.0" rgba=".2 .4 .7 1"/>
+      <body name="leg0" pos="0.2 0.15 -0.06"><joint name="hip0" axis="0 1 0" range="-0.8 0.8" armature="0.01" damping="0.5"/><geom type="capsule" fromto="0 0 0 0.05 0 -0.08" size="0.015" mass="0.2" rgba=".1 .1 .1 1"/><geom name="foot0" type="sphere" size="0.03" pos="0.05 0 -0.08" mass="0.1" friction="1 0.005 0.0001" rgba=".1 .1 .1 1"/></body><body name="leg1" pos="0.2 -0.15 -0.06"><joint name="hip1" axis="0 1 0" range="-0.8 0.8" armature="0.01" damping="0.5"/><geom type="capsule" fromto="0 0 0 0.05 0 -0.08" size="0.015" mass="0.2" rgba=".1 .1 .1 1"/><geom name="foot1" type="sphere" size="0.03" pos="0.05 0 -0.08" mass="0.1" friction="1 0.005 0.0001" rgba=".1 .1 .1 1"/></body><body name="leg2" pos="-0.2 0.15 -0.06"><joint name="hip2" axis="0 1 0" range="-0.8 0.8" armature="0.01" damping="0.5"/><geom type="capsule" fromto="0 0 0 0.05 0 -0.08" size="0.015" mass="0.2" rgba=".1 .1 .1 1"/><geom name="foot2" type="sphere" size="0.03" pos="0.05 0 -0.08" mass="0.1" friction="1 0.005 0.0001" rgba=".1 .1 .1 1"/></body><body name="leg3" pos="-0.2 -0.15 -0.06"><joint name="hip3" axis="0 1 0" range="-0.8 0.8" armature="0.01" damping="0.5"/><geom type="capsule" fromto="0 0 0 0.05 0 -0.08" size="0.015" mass="0.2" rgba=".1 .1 .1 1"/><geom name="foot3" type="sphere" size="0.03" pos="0.05 0 -0.08" mass="0.1" friction="1 0.005 0.0001" rgba=".1 .1 .1 1"/></body>
+      
+
+      <body name="shoulder" pos="0.10 0 0.1">
+        <joint name="j1" axis="0 0 1" range="-2.8 2.8" armature="0.1" damping="1"/>
+        <geom type="cylinder" size="0.05 0.04" mass="1.0" rgba=".3 .3 .3 1"/>
+        <body name="upper" pos="0 0 0.06">
+          <joint name="j2" axis="0 1 0" range="-2 2" armature="0.1" damping="1"/>
+          <geom type="capsule" fromto="0 0 0 0 0 0.30" size="0.035" mass="2.0" rgba=".5 .5 .7 1"/>
+          <body name="fore" pos="0 0 0.30">
+            <joint name="j3" axis="0 1 0" range="-2.6 2.6" armature="0.05" damping="0.5"/>
+            <geom type="capsule" fromto="0 0 0 0.28 0 0" size="0.03" mass="1.2" rgba=".5 .5 .7 1"/>
+            <body name="wrist1" pos="0.28 0 0">
+              <joint name="j4" axis="1 0 0" range="-3 3" armature="0.02" damping="0.2"/>
+              <geom type="cylinder" fromto="0 0 0 0.05 0 0" size="0.03" mass="0.4" rgba=".3 .3 .3 1"/>
+              <body name="wrist2" pos="0.05 0 0">
+                <joint name="j5" axis="0 1 0" range="-2.2 2.2" armature="0.02" damping="0.2"/>
+                <geom type="sphere" size="0.03" mass="0.3" rgba=".3 .3 .3 1"/>
+                <body name="hand" pos="0.05 0 0">
+                  <joint name="j6" axis="1 0 0" range="-3 3" armature="0.01" damping="0.1"/>
+                  <geom name="palm" type="box" size="0.02 0.05 0.025" pos="0.01 0 0" mass="0.4" rgba=".2 .2 .2 1"/>
+                  <body name="finger_l" pos="0.06 0 0">
+                    <joint name="fl" type="slide" axis="0 1 0" range="0 0.04" armature="0.01" damping="2"/>
+                    <geom name="pad_l" type="box" size="0.03 0.005 0.012" pos="0 0.005 0" mass="0.05" friction="1 0.005 0.0001" rgba=".8 .2 .2 1"/>
+                  </body>
+                  <body name="finger_r" pos="0.06 0 0">
+                    <joint name="fr" type="slide" axis="0 -1 0" range="0 0.04" armature="0.01" damping="2"/>
+                    <geom name="pad_r" type="box" size="0.03 0.005 0.012" pos="0 -0.005 0" mass="0.05" friction="1 0.005 0.0001" rgba=".8 .2 .2 1"/>
+                  </body>
+                </body>
+              </body>
+            </body>
+          </body>
+        </body>
+      </body>
+    </body>
+    <body name="cube" pos="0.55 0 0.32">
+      <freejoint name="cube_joint"/>
+      <geom name="cube_geom" type="box" size="0.02 0.02 0.02" mass="0.2" friction="0.8 0.005 0.0001" rgba=".9 .1 .1 1"/>
+    </body>
+    <site name="goal" pos="0.55 0.35 0.32" size="0.01" rgba="0 1 0 1"/>
+  </worldbody>
+  
+  <contact><exclude body1="shoulder" body2="fore"/><exclude body1="upper" body2="wrist1"/><exclude body1="upper" body2="wrist2"/><exclude body1="fore" body2="wrist2"/><exclude body1="fore" body2="hand"/><exclude body1="wrist1" body2="hand"/><exclude body1="wrist1" body2="finger_l"/><exclude body1="wrist1" body2="finger_r"/><exclude body1="wrist2" body2="finger_l"/><exclude body1="wrist2" body2="finger_r"/><exclude body1="fore" body2="finger_l"/><exclude body1="fore" body2="finger_r"/><exclude body1="finger_l" body2="finger_r"/></contact>
+  <actuator>
+    <position name="a1" joint="j1" kp="3000" kv="150" forcerange="-150 150" ctrlrange="-2.8 2.8"/>
+    <position name="a2" joint="j2" kp="3000" kv="150" forcerange="-150 150" ctrlrange="-2 2"/>
+    <position name="a3" joint="j3" kp="2000" kv="100" forcerange="-80 80" ctrlrange="-2.6 2.6"/>
+    <position name="a4" joint="j4" kp="300" kv="15" forcerange="-20 20" ctrlrange="-3 3"/>
+    <position name="a5" joint="j5" kp="300" kv="15" forcerange="-20 20" ctrlrange="-2.2 2.2"/>
+    <position name="a6" joint="j6" kp="100" kv="5" forcerange="-10 10" ctrlrange="-3 3"/>
+    <position name="grip_l" joint="fl" kp="1500.0" kv="10" forcerange="-60.0 60.0" ctrlrange="0 0.04"/>
+    <position name="grip_r" joint="fr" kp="1500.0" kv="10" forcerange="-60.0 60.0" ctrlrange="0 0.04"/>
+    <position name="h0" joint="hip0" kp="300" kv="10" forcerange="-5.0 5.0" ctrlrange="-0.8 0.8"/>
+    <position name="h1" joint="hip1" kp="300" kv="10" forcerange="-5.0 5.0" ctrlrange="-0.8 0.8"/>
+    <position name="h2" joint="hip2" kp="300" kv="10" forcerange="-5.0 5.0" ctrlrange="-0.8 0.8"/>
+    <position name="h3" joint="hip3" kp="300" kv="10" forcerange="-5.0 5.0" ctrlrange="-0.8 0.8"/>
+  </actuator>
+  <keyframe><key name="home" qpos="-0.000934898534 -1.20124599e-16 0.169123509 0.999999999 1.96697678e-16 3.16884349e-05 9.34359866e-17 -0.00864461206 -0.00864461206 -0.00859151061 -0.00859151061 0 0 0.3 0 1.2 0 0.04 0.04 0.55 5.26664484e-11 0.319892245 1 2.04484583e-11 -1.63778206e-12 3.15017675e-22" ctrl="0 0 0.3 0 1.2 0 0.04 0.04 0 0 0 0"/></keyframe>
+</mujoco>
+"""

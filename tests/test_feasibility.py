@@ -17,6 +17,7 @@ import re
 import warnings
 from pathlib import Path
 
+import mujoco
 import numpy as np
 import pytest
 from scenarios import one_actuator_toml
@@ -1026,3 +1027,86 @@ def test_a_robot_jammed_against_itself_from_the_start_is_refused(tmp_path):
     entry = report.joint("hinge")
     assert "flap_plate" in entry.blocked_by and not entry.jammed
     assert report.feasible and any("held back by a contact" in w for w in report.warnings)
+
+
+def _legged(tmp_path, *, lift: float = 0.0):
+    """probe_r34's legged robot (free base on four servo legs) as a scenario written by
+    ``init``; ``lift`` raises the base's start pose [m]."""
+    from inline_models import LEGGED_MJCF
+
+    import critmoment as cm
+    from critmoment.modelinfo import init_scenario
+
+    xml = LEGGED_MJCF
+    if lift:
+        old = "qpos=\"-0.000934898534 -1.20124599e-16 0.169123509"
+        assert old in xml
+        xml = xml.replace(old, f"qpos=\"-0.000934898534 -1.20124599e-16 {0.169123509 + lift}")
+    tmp_path.mkdir(parents=True, exist_ok=True)
+    (tmp_path / "legged.xml").write_text(xml)
+    init_scenario(tmp_path / "legged.xml", object_body="cube", task="pick_hold",
+                  out=tmp_path / "scenario.toml")
+    return cm.Twin(cm.load_scenario(tmp_path))
+
+
+def test_a_free_floating_robot_base_is_the_robot_not_clutter(tmp_path):
+    """probe_r34: a robot whose base has a free joint (a cart on legs). Its base was listed
+    as a candidate object and, started 5 cm above the floor, its fall onto its feet was
+    "the nominal run moves free body 'base' ... knocks over or pushes something in the
+    scene". The base is now the robot's: the fit check says what the nominal run does to it
+    and that its balance is outside the audit's rules."""
+    import critmoment as cm
+    from critmoment.feasibility import _floating_base, _other_free_bodies, _body_owners
+    from critmoment.trajectory import Trajectory
+
+    def hold(twin):
+        key = twin.model.key("home")
+        start = np.r_[key.ctrl[:6], 1.0, key.ctrl[8:]]
+        return Trajectory(actions=np.tile(start, (50, 1)), fps=50.0, start=start)
+
+    twin = _legged(tmp_path / "settled")
+    model = twin.model
+    assert _other_free_bodies(model, twin.object_body_id, _body_owners(model)) == []
+    rec = cm.rollout(hold(twin), twin=twin)
+    said = _floating_base(twin, rec)
+    assert len(said) == 1 and "the robot's base 'base' is free-floating" in said[0]
+    assert "tilts at most" in said[0] and "moves free body" not in " ".join(said)
+    high = _legged(tmp_path / "high", lift=0.05)
+    rec = cm.rollout(hold(high), twin=high)
+    said = _floating_base(high, rec)
+    assert re.search(r"it falls [45](\.\d+)? cm in its first 0\.5 s", said[0]), said
+
+
+def test_a_legged_robots_leg_servos_are_not_bounded_analytically(tmp_path):
+    """probe_r34: inverse dynamics of a floating chain puts the robot's weight into its free
+    joint, not into the legs that stand it on the floor: the bound said 0.1 N·m on a hip
+    servo that the simulation holds at 3.75 N·m, with ``assumptions_hold`` true. The legs
+    are now named as not bounded."""
+    from critmoment import actuators as act_info
+    from critmoment import dynamics
+
+    twin = _legged(tmp_path)
+    model = twin.model
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, model.key("home").id)
+    mujoco.mj_forward(model, data)
+    assert act_info.robot_bases(model) == [model.body("base").id]
+    hips = {model.joint(f"hip{i}").id for i in range(4)}
+    assert act_info.supporting_joints(model, data, act_info.robot_bases(model),
+                                      exclude=[twin.object_body_id]) == hips
+    assert {model.actuator(a).name for a in dynamics.standing_actuators(model, data, twin)
+            } == {"h0", "h1", "h2", "h3"}
+
+
+def test_inspect_does_not_offer_the_robot_base_as_an_object(tmp_path):
+    from inline_models import LEGGED_MJCF
+
+    from critmoment.exceptions import ScenarioError
+    from critmoment.modelinfo import init_scenario, inspect_model
+
+    (tmp_path / "legged.xml").write_text(LEGGED_MJCF)
+    info = inspect_model(tmp_path / "legged.xml")
+    assert [b["name"] for b in info.free_bodies] == ["cube"]
+    assert any("'base' is free-floating" in n for n in info.notes)
+    with pytest.raises(ScenarioError, match="'base' is the robot's free-floating base"):
+        init_scenario(tmp_path / "legged.xml", object_body="base", task="pick_hold")
