@@ -185,7 +185,7 @@ LEGGED_MJCF = """<mujoco model="probe_r34_legged">
       <freejoint name="base_free"/>
       <geom name="chassis" type="box" size="0.25 0.2 0.06" mass="15.0" rgba=".2 .4 .7 1"/>
       <body name="leg0" pos="0.2 0.15 -0.06"><joint name="hip0" axis="0 1 0" range="-0.8 0.8" armature="0.01" damping="0.5"/><geom type="capsule" fromto="0 0 0 0.05 0 -0.08" size="0.015" mass="0.2" rgba=".1 .1 .1 1"/><geom name="foot0" type="sphere" size="0.03" pos="0.05 0 -0.08" mass="0.1" friction="1 0.005 0.0001" rgba=".1 .1 .1 1"/></body><body name="leg1" pos="0.2 -0.15 -0.06"><joint name="hip1" axis="0 1 0" range="-0.8 0.8" armature="0.01" damping="0.5"/><geom type="capsule" fromto="0 0 0 0.05 0 -0.08" size="0.015" mass="0.2" rgba=".1 .1 .1 1"/><geom name="foot1" type="sphere" size="0.03" pos="0.05 0 -0.08" mass="0.1" friction="1 0.005 0.0001" rgba=".1 .1 .1 1"/></body><body name="leg2" pos="-0.2 0.15 -0.06"><joint name="hip2" axis="0 1 0" range="-0.8 0.8" armature="0.01" damping="0.5"/><geom type="capsule" fromto="0 0 0 0.05 0 -0.08" size="0.015" mass="0.2" rgba=".1 .1 .1 1"/><geom name="foot2" type="sphere" size="0.03" pos="0.05 0 -0.08" mass="0.1" friction="1 0.005 0.0001" rgba=".1 .1 .1 1"/></body><body name="leg3" pos="-0.2 -0.15 -0.06"><joint name="hip3" axis="0 1 0" range="-0.8 0.8" armature="0.01" damping="0.5"/><geom type="capsule" fromto="0 0 0 0.05 0 -0.08" size="0.015" mass="0.2" rgba=".1 .1 .1 1"/><geom name="foot3" type="sphere" size="0.03" pos="0.05 0 -0.08" mass="0.1" friction="1 0.005 0.0001" rgba=".1 .1 .1 1"/></body>
-      
+
 
       <body name="shoulder" pos="0.10 0 0.1">
         <joint name="j1" axis="0 0 1" range="-2.8 2.8" armature="0.1" damping="1"/>
