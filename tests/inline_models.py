@@ -226,7 +226,7 @@ LEGGED_MJCF = """<mujoco model="probe_r34_legged">
     </body>
     <site name="goal" pos="0.55 0.35 0.32" size="0.01" rgba="0 1 0 1"/>
   </worldbody>
-  
+
   <contact><exclude body1="shoulder" body2="fore"/><exclude body1="upper" body2="wrist1"/><exclude body1="upper" body2="wrist2"/><exclude body1="fore" body2="wrist2"/><exclude body1="fore" body2="hand"/><exclude body1="wrist1" body2="hand"/><exclude body1="wrist1" body2="finger_l"/><exclude body1="wrist1" body2="finger_r"/><exclude body1="wrist2" body2="finger_l"/><exclude body1="wrist2" body2="finger_r"/><exclude body1="fore" body2="finger_l"/><exclude body1="fore" body2="finger_r"/><exclude body1="finger_l" body2="finger_r"/></contact>
   <actuator>
     <position name="a1" joint="j1" kp="3000" kv="150" forcerange="-150 150" ctrlrange="-2.8 2.8"/>
