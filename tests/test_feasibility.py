@@ -1056,7 +1056,7 @@ def test_a_free_floating_robot_base_is_the_robot_not_clutter(tmp_path):
     scene". The base is now the robot's: the fit check says what the nominal run does to it
     and that its balance is outside the audit's rules."""
     import critmoment as cm
-    from critmoment.feasibility import _floating_base, _other_free_bodies, _body_owners
+    from critmoment.feasibility import _body_owners, _floating_base, _other_free_bodies
     from critmoment.trajectory import Trajectory
 
     def hold(twin):
