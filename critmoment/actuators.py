@@ -26,7 +26,7 @@ import numpy as np
 __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
            "gripper_gap", "into_ranges", "control_span", "closing_ends", "moves_geoms",
            "position_target", "joint_force_limit", "body_chain", "common_ancestor",
-           "robot_bases", "supporting_joints",
+           "robot_bases", "supporting_joints", "closing_projector", "AXIS_TOLERANCE",
            "collision_geoms", "geom_pairs",
            "filtered_actuators", "ContactParameters", "contact_parameters",
            "dynamic_partners", "grip_friction_sources", "grip_condims", "source_friction"]
@@ -434,6 +434,25 @@ def moved_bodies(model: mujoco.MjModel, i: int, *, sites: bool = False) -> list[
     if sites and kind == trn.mjTRN_BODY:
         return [tid]
     return []
+
+
+#: finger slide axes closer than this [rad] to the span of the others are the same closing
+#: direction: a model's quaternions rounded to six digits (Menagerie's PiPER) leave its two
+#: fingers' axes 4e-6 rad apart, which had counted as a second closing axis and projected
+#: out the slip along the fingers
+AXIS_TOLERANCE = 1e-3
+
+
+def closing_projector(axes: Sequence[np.ndarray]) -> np.ndarray:
+    """The projector (3, 3) onto the plane normal to the span of a gripper's finger slide
+    ``axes`` (each (3,), in its base's frame; the identity for none): squeezing along them is
+    not slip. Directions the axes span by less than :data:`AXIS_TOLERANCE` (relative
+    singular value) do not count."""
+    if not len(axes):
+        return np.eye(3)
+    u, sv, _ = np.linalg.svd(np.asarray(axes, dtype=np.float64).T, full_matrices=False)
+    basis = u[:, sv > AXIS_TOLERANCE * sv.max()]
+    return np.eye(3) - basis @ basis.T
 
 
 def robot_bases(model: mujoco.MjModel) -> list[int]:

@@ -65,6 +65,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
+from critmoment import actuators as act_info
 from critmoment import budget
 from critmoment.actuators import common_ancestor
 from critmoment.exceptions import ParameterError
@@ -722,11 +723,7 @@ def _closing_projector(model: mujoco.MjModel, geoms: Sequence[str], anchor: int)
                 if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE:
                     axes.append(frame.T @ data.xaxis[j])
             body = int(model.body_parentid[body])
-    if not axes:
-        return np.eye(3)
-    u, s, _ = np.linalg.svd(np.array(axes).T, full_matrices=False)
-    basis = u[:, s > 1e-9 * s.max()]
-    return np.eye(3) - basis @ basis.T
+    return act_info.closing_projector(axes)
 
 
 @dataclasses.dataclass(frozen=True, eq=False)

@@ -107,6 +107,7 @@ import mujoco
 import mujoco.batch
 import numpy as np
 
+from critmoment import actuators as act_info
 from critmoment import budget, safety
 from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
@@ -707,13 +708,8 @@ def grip_frames(model: mujoco.MjModel, scenario) -> tuple[np.ndarray, np.ndarray
                 for j in range(first, first + int(model.body_jntnum[body])):
                     if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE:
                         axes.append(frame.T @ data.xaxis[j])
-        projector = np.eye(3)
-        if axes:
-            u, sv, _ = np.linalg.svd(np.array(axes).T, full_matrices=False)
-            basis = u[:, sv > 1e-9 * sv.max()]
-            projector = projector - basis @ basis.T
         anchors.append(anchor)
-        projectors.append(projector)
+        projectors.append(act_info.closing_projector(axes))
     return np.array(anchors, dtype=np.int64), np.array(projectors).reshape(-1, 3, 3)
 
 

@@ -59,6 +59,15 @@ __all__ = [
 ]
 
 
+#: a gripper whose last touch of the object came more than this before the end [s] ...
+END_GAP = 0.01
+#: ... while the object moves down faster than this [m/s] has let it fall: it does not hold
+#: it at the end (a PiPER's cube that left its fingers 14 ms before the end, falling, was
+#: "held" by a touch anywhere in the final window; a hold whose contact flickers at rest
+#: still holds)
+END_FALL_SPEED = 0.05
+
+
 @dataclasses.dataclass(frozen=True)
 class TaskEvidence:
     """What a run shows of the object, step by step, with leading shape (..., T).
@@ -192,17 +201,37 @@ class Task:
         return [f"the object rose {float(self._rise(ev)) * 1e3:.0f} mm at most (a lift is "
                 f"{self.lift_height * 1e3:.0f} mm)"]
 
+    def _held_at_end(self, touch: np.ndarray, ev: TaskEvidence) -> np.ndarray:
+        """The gripper whose contacts are ``touch`` (..., T) holds the object at the end,
+        (...) bool: it touches it within the final ``settle_time``, and either at most
+        :data:`END_GAP` before the end or with the object not falling (moving down slower
+        than :data:`END_FALL_SPEED` at the last step)."""
+        touch = np.asarray(touch, dtype=bool)
+        recent = self._final(touch, ev, "any")
+        if ev.n_steps == 0:
+            return recent
+        gap = np.argmax(touch[..., ::-1], axis=-1) * ev.dt  # since the last touch [s]
+        up = np.asarray(self.up, dtype=np.float64)
+        down = -(np.asarray(ev.object_vel)[..., -1, :] @ (up / (np.linalg.norm(up) or 1.0)))
+        return recent & ((gap <= END_GAP + 1e-12) | (down < END_FALL_SPEED))
+
     def _end_shortfalls(self, ev: TaskEvidence, gripper: str | None, verb: str) -> list[str]:
-        """``gripper`` must touch the object, and no support, over the final window."""
+        """``gripper`` must hold the object (:meth:`_held_at_end`), and no support touch it,
+        over the final window."""
         out = []
         if gripper is not None:
             touch = ev.contact_gripper[..., self.grippers.index(gripper)]
-            if not bool(self._final(touch, ev, "any")):
+            if not bool(self._held_at_end(touch, ev)):
                 last = np.flatnonzero(touch)
                 # the last touch, not a release: a receiver that only ever touched the
                 # object with one finger had "let go" when the picker opened
                 when = (f" (it last touched it at t = {(last[-1] + 1) * ev.dt:.2f} s)" if last.size
                         else " (it never touched it)")
+                if last.size and bool(self._final(touch, ev, "any")):
+                    up = np.asarray(self.up, dtype=np.float64)
+                    fall = -float(ev.object_vel[-1] @ (up / (np.linalg.norm(up) or 1.0)))
+                    when = (f" (it last touched it at t = {(last[-1] + 1) * ev.dt:.3f} s, and "
+                            f"the object falls at {fall:.2g} m/s at the end)")
                 out.append(f"{gripper} does not {verb} the object at the end{when}")
         if not bool(self._final(~ev.contact_support, ev, "all")):
             out.append("the object rests on its support at the end")
@@ -347,7 +376,7 @@ class HandoverTask(Task):
 
     def success(self, ev):
         recv = ev.contact_gripper[..., self.grippers.index(self.receiver)]
-        return self._final(recv, ev, "any") & self._final(~ev.contact_support, ev, "all")
+        return self._held_at_end(recv, ev) & self._final(~ev.contact_support, ev, "all")
 
     def shortfalls(self, ev):
         return self._end_shortfalls(ev, self.receiver, "hold")
@@ -498,7 +527,7 @@ class PickHoldTask(Task):
 
     def success(self, ev):
         touch = ev.contact_gripper[..., self.grippers.index(self.gripper)]
-        return (self.lifted(ev) & self._final(touch, ev, "any")
+        return (self.lifted(ev) & self._held_at_end(touch, ev)
                 & self._final(~ev.contact_support, ev, "all"))
 
     def shortfalls(self, ev):

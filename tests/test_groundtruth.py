@@ -340,3 +340,40 @@ def test_a_chain_watches_a_geared_servo_in_joint_units(tmp_path):
         steps[gear] = chained.motor_step
     assert (steps[1.0] < 0).all()
     np.testing.assert_array_equal(steps[1.0], steps[50.0])
+
+
+def test_fingers_rounded_off_parallel_close_along_one_axis(tmp_path):
+    """Menagerie's PiPER gives its fingers' quaternions to six digits, which leaves their
+    slide axes 4e-6 rad apart: the projector took them for two closing axes and projected
+    out the slip along the fingers too (its cube slid 37 mm down the pads, measured 8 mm).
+    Here the bundled Panda's right finger is turned 4e-6 rad the same way: both projectors
+    (the ground truth's and sparse evaluation's) stay those of one closing axis."""
+    import shutil
+
+    from critmoment import actuators as act_info
+    from critmoment.groundtruth import _closing_projector, _gripper_anchor
+    from critmoment.scenario import bundled_scenario_path, load_scenario
+    from critmoment.sparse import grip_frames
+    from critmoment.twin import Twin
+
+    a = np.array([0.0, 1.0, 0.0])
+    b = np.array([0.0, -1.0, 4e-6])
+    np.testing.assert_allclose(act_info.closing_projector([a, b]), np.diag([1.0, 0.0, 1.0]),
+                               atol=1e-5)
+    np.testing.assert_allclose(act_info.closing_projector([a, np.array([0, 0, 1.0])]),
+                               np.diag([1.0, 0.0, 0.0]), atol=1e-12)  # two real axes
+    folder = tmp_path / "panda"
+    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
+    xml = (folder / "panda.xml").read_text()
+    old = '<body name="right_finger" pos="0 0 0.0584" quat="0 0 0 1">'
+    assert old in xml
+    (folder / "panda.xml").write_text(xml.replace(
+        old, '<body name="right_finger" pos="0 0 0.0584" quat="2e-06 0 0 1">'))
+    twin = Twin(load_scenario(folder))
+    model = twin.model
+    geoms = twin.scenario.grippers[0].geoms
+    truth = _closing_projector(model, geoms, _gripper_anchor(model, geoms))
+    _, sparse = grip_frames(model, twin.scenario)
+    for p in (truth, sparse[0]):
+        assert np.linalg.matrix_rank(p, tol=1e-3) == 2
+        np.testing.assert_allclose(p, sparse[0], atol=1e-9)

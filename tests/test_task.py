@@ -132,6 +132,27 @@ def test_contact_chatter_at_the_end_does_not_fail_a_hold():
     assert not task.success(_run(z, touch, support))
 
 
+def test_an_object_falling_out_of_the_grip_at_the_end_is_not_held():
+    """Menagerie's PiPER (probe r34): the cube slid down the pads and left them 14 ms before
+    the end, falling at 0.14 m/s; a touch anywhere in the final 50 ms had made it "held".
+    A touch that ends more than 10 ms before the end now holds only an object that is not
+    falling (a contact that flickers at rest, or a last step's flag off, still holds)."""
+    n = 200
+    z = np.concatenate([np.full(n, 0.02), np.full(n, 0.1)])
+    support = np.concatenate([np.ones(n, bool), np.zeros(n, bool)])
+    for task, touch in ((PickHoldTask(grippers=("hand",), gripper="hand"),
+                         np.ones((2 * n, 1), bool)),
+                        (HandoverTask(grippers=("hand", "other"), picker="other",
+                                      receiver="hand"), np.ones((2 * n, 2), bool))):
+        touch[-7:, 0] = False  # 14 ms without the holder's contact
+        assert not task.success(_run(z, touch, support, v_end=-0.137))
+        assert task.success(_run(z, touch, support, v_end=-0.01))  # at rest: a flicker
+        assert "falls at 0.14 m/s at the end" in " ".join(
+            task.shortfalls(_run(z, touch, support, v_end=-0.137)))
+        touch[-7:-4, 0] = True  # 8 ms: within END_GAP, falling or not
+        assert task.success(_run(z, touch, support, v_end=-0.137))
+
+
 def test_handover_success_is_the_receiver_holding_it_off_the_support():
     task = HandoverTask(grippers=("left", "right"), picker="right", receiver="left")
     n = 100
