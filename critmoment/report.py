@@ -426,7 +426,7 @@ def summary_text(report) -> str:
         passing = f" (not a failure: {mr.worst_note})" if mr.worst_fails is False else ""
         worst = ", ".join(f"{k}={v:.3g}" for k, v in mr.worst_case.items())
         # a force ratio the cost does not use (contact chatter) is not shown bare beside it
-        trust = " (not trusted)" if int(m.step) in untrusted else ""
+        trust = " (not trusted here, not in the cost: contact chatter)" if int(m.step) in untrusted else ""
         lines.append(f"  {i}. {m.label.value:12s} step {m.step:5d} (t = {m.time:.2f} s): max cost "
                      f"{mr.max_cost:.3f} at {worst}{passing}; min FOS contact {format_fos(mr.min_fos_contact)}"
                      f"{trust}, motor {format_fos(mr.min_fos_motor)}; fails {mr.fail_fraction:.0%} "
