@@ -1366,10 +1366,10 @@ BASE_FALL = 0.01
 
 
 def _floating_base(twin: Twin, recording: Recording) -> list[str]:
-    """A free-floating robot base (``act_info.robot_bases``): what the nominal run does to
-    it, and that its balance is outside the audit's rules. A probe's 5 kg cart tipped 10-15°
-    under heavy cubes and still placed them (a success by the task's rule), and its base, 5 cm
-    above the floor without a start pose, fell onto its feet and was called scene clutter."""
+    """A free-floating robot base (``act_info.robot_bases``) that the nominal run tilts over
+    :data:`BASE_TILT` or drops more than :data:`BASE_FALL` at its start, in words (a run
+    that tilts it past ``[task] max_base_tilt`` fails its task). A probe's base, 5 cm above
+    the floor without a start pose, fell onto its feet and was called scene clutter."""
     model = twin.model
     bases = act_info.robot_bases(model)
     if not bases:
@@ -1391,13 +1391,13 @@ def _floating_base(twin: Twin, recording: Recording) -> list[str]:
     dt = float(recording.dt)
     early = steps * dt <= 0.5
     out = []
+    allowed = float(twin.task.max_base_tilt)
     for j, b in enumerate(bases):
         tilt = np.degrees(np.arccos(np.clip(axes[:, j] @ up, -1.0, 1.0)))
         fall = float(heights[0, j] - heights[early, j].min())
         said = (f"the robot's base {_body_label(model, b)} is free-floating (a free joint that "
-                f"carries the arm): critmoment judges the object, the grip and the motors, "
-                f"not the robot's balance, so a sample that tips or slides the robot and still "
-                f"completes its task passes")
+                f"carries the arm): a run that tilts it more than {allowed:g}° ([task] "
+                f"max_base_tilt) fails its task")
         if fall > BASE_FALL:
             out.append(f"{said}; in the nominal run it falls {fall * 100:.3g} cm in its first "
                        f"0.5 s: its start pose is not on its contacts (give the robot's pose "
@@ -1405,9 +1405,7 @@ def _floating_base(twin: Twin, recording: Recording) -> list[str]:
         elif tilt.max() > BASE_TILT:
             at = int(steps[int(np.argmax(tilt))])
             out.append(f"{said}; in the nominal run it tilts {tilt.max():.3g}° (at t = "
-                       f"{at * dt:.2f} s)")
-        else:
-            out.append(f"{said}; in the nominal run it tilts at most {tilt.max():.2g}°")
+                       f"{at * dt:.2f} s), and the samples' tilts are judged from their start")
     return out
 
 

@@ -995,7 +995,7 @@ class _Frames:
         gripper, support = twin.contact_flags(sd)
         pos, vel = sd[..., twin._pos_adr], sd[..., twin._vel_adr]
         c, t = sensordata.shape[:2]
-        evidence = twin.task_evidence(gripper, support, pos, vel)
+        evidence = twin.task_evidence(gripper, support, pos, vel, base_axis=twin.base_axis(sd))
         # each run's own force limits where the box varies one (c, nu), else the twin's
         limits = twin.limits if limits is None else np.asarray(limits)[:, None]
         return cls(stage=twin.task.stage(gripper, support, pos), contact_gripper=gripper,

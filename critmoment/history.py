@@ -373,6 +373,9 @@ class _Watch:
         # single precision: 0.1 µm on a metre, far below any task tolerance; half the memory
         self.object_pos = np.zeros((n, length, 3), np.float32)
         self.object_vel = np.zeros((n, length, 3), np.float32)
+        # the robot's free-floating bases' up axes (Task.max_base_tilt), where it has any
+        bases = len(ev.twin.robot_bases)
+        self.base_axis = np.zeros((n, length, bases, 3), np.float32) if bases else None
         self.found = np.zeros((n, g), bool)
         k = len(ev._points)
         self.offset = np.zeros((n, g, k, 3))
@@ -457,6 +460,8 @@ class _Watch:
         self.contact_support[ids, rows] = support
         self.object_pos[ids, rows] = sensordata[..., ev.twin._pos_adr]
         self.object_vel[ids, rows] = sensordata[..., ev.twin._vel_adr]
+        if self.base_axis is not None:
+            self.base_axis[ids, rows] = ev.twin.base_axis(sensordata)
         held = touch & ~support[..., None]
         nominal_held = ev._held[k:k + s]                            # (s, G)
         both = held & nominal_held[None]
@@ -555,7 +560,9 @@ class _Watch:
                 contact_support=whole(sig.contact_support, self.contact_support),
                 object_pos=whole(sig.object_pos, self.object_pos),
                 object_vel=whole(sig.object_vel, self.object_vel),
-                dt=float(ev.twin.model.opt.timestep))
+                dt=float(ev.twin.model.opt.timestep),
+                base_axis=None if self.base_axis is None else whole(
+                    ev.twin.base_axis(ev.recording.sensordata), self.base_axis))
             completed[lo:lo + block] = np.asarray(ev.twin.task.success(evidence), dtype=bool)
             fall[lo:lo + block] = fall_steps(
                 evidence.contact_gripper, evidence.contact_support, ev._carried,

@@ -573,11 +573,10 @@ def inspect_model(path: str | Path) -> ModelInfo:
     if bases:
         names = ", ".join(repr(model.body(b).name or f"body {b}") for b in bases)
         notes.append(f"the robot's base {names} is free-floating (a free joint that carries "
-                     f"actuated joints): not an object candidate. critmoment judges the "
-                     f"object, the grip and the motors, not the robot's balance: a run that "
-                     f"tips or slides the robot and still completes its task passes (the "
-                     f"nominal run's tilt is reported), and the analytic load bound leaves out "
-                     f"the weight on joints that stand the robot on its contacts (legs)")
+                     f"actuated joints): not an object candidate. A run that tilts it more "
+                     f"than [task] max_base_tilt (5° by default) fails its task; the analytic "
+                     f"load bound leaves out the weight on joints that stand the robot on its "
+                     f"contacts (legs)")
     for j in range(model.njnt):
         if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE:
             b = int(model.jnt_bodyid[j])

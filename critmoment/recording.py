@@ -516,6 +516,8 @@ class Recording:
         model_sha256: hash of the MJCF files.
         source: the trajectory's source.
         task: the scenario's task (decides :attr:`completed`).
+        base_axis: the up axes of the robot's free-floating bases at each step, (T, B, 3),
+            or None (a robot fixed to the world; ``Twin.base_axis``), for the task's rule.
     """
 
     dt: float
@@ -531,6 +533,7 @@ class Recording:
     model_sha256: str
     source: str = ""
     task: Task | None = None
+    base_axis: np.ndarray | None = None
 
     # signal shortcuts, as read by moments.py
     @property
@@ -586,7 +589,7 @@ class Recording:
         return TaskEvidence(
             contact_gripper=self.signals.contact_gripper,
             contact_support=self.signals.contact_support, object_pos=self.signals.object_pos,
-            object_vel=self.signals.object_vel, dt=self.dt)
+            object_vel=self.signals.object_vel, dt=self.dt, base_axis=self.base_axis)
 
     def shortfalls(self) -> list[str]:
         """What this run lacks of the task's rule, in words (:meth:`Task.shortfalls`);
@@ -686,7 +689,8 @@ class Recording:
                    gripper_names=tuple(meta["gripper_names"]),
                    actuator_names=tuple(meta["actuator_names"]),
                    scenario_name=meta["scenario_name"], model_sha256=meta["model_sha256"],
-                   source=meta["source"], task=twin.task)
+                   source=meta["source"], task=twin.task,
+                   base_axis=twin.base_axis(arrays["sensordata"]))
 
 
 def _friction_of(twin: Twin, values: np.ndarray) -> float:
@@ -756,4 +760,5 @@ def rollout(traj: Trajectory, scenario: Scenario | str | Path | None = None, *,
         signals=twin.signals(sd), nominal=twin.scenario.box.nominal,
         parameter_names=twin.scenario.box.names, gripper_names=twin.scenario.gripper_names,
         actuator_names=twin.actuator_names, scenario_name=twin.scenario.name,
-        model_sha256=twin.model_sha256, source=traj.source, task=twin.task)
+        model_sha256=twin.model_sha256, source=traj.source, task=twin.task,
+        base_axis=twin.base_axis(sd))

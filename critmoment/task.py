@@ -78,6 +78,8 @@ class TaskEvidence:
         object_pos: the object's position in the world [m], (..., T, 3).
         object_vel: the object's linear velocity in the world [m/s], (..., T, 3).
         dt: physics step [s].
+        base_axis: the up axes of the robot's free-floating bases in the world, (..., T, B,
+            3), or None (a robot fixed to the world, or a run that does not record them).
     """
 
     contact_gripper: np.ndarray
@@ -85,6 +87,7 @@ class TaskEvidence:
     object_pos: np.ndarray
     object_vel: np.ndarray
     dt: float
+    base_axis: np.ndarray | None = None
 
     def __post_init__(self):
         cg = np.asarray(self.contact_gripper, dtype=bool)
@@ -103,6 +106,12 @@ class TaskEvidence:
         object.__setattr__(self, "contact_support", cs)
         object.__setattr__(self, "object_pos", pos)
         object.__setattr__(self, "object_vel", vel)
+        if self.base_axis is not None:
+            axis = np.asarray(self.base_axis, dtype=np.float64)
+            if axis.ndim != len(lead) + 2 or axis.shape[:len(lead)] != lead or axis.shape[-1] != 3:
+                raise ScenarioError(f"task evidence: expected base_axis (..., T, B, 3) with the "
+                                    f"contacts' leading shape {lead}, got {axis.shape}")
+            object.__setattr__(self, "base_axis", axis)
 
     @property
     def n_steps(self) -> int:
@@ -123,6 +132,9 @@ class Task:
         settle_time: final window over which contacts are read for the success rule [s].
         up: the world's up direction, against gravity (set from the model when a scenario
             loads: a model with gravity along −y lifts along +y).
+        max_base_tilt: how far a free-floating robot base may tilt from its start [deg]: a
+            run that tips the robot further has failed its task, whatever the object does
+            (a 5 kg cart that tipped 10-15° under a heavy cube and fell back had placed it).
     """
 
     grippers: tuple[str, ...]
@@ -130,11 +142,12 @@ class Task:
     settle_time: float = 0.05
     up: tuple[float, float, float] = dataclasses.field(default=(0.0, 0.0, 1.0),
                                                        metadata={"json": False})
+    max_base_tilt: float = 5.0
 
     kind: ClassVar[str] = ""
     stage_names: ClassVar[tuple[str, ...]] = ()
     #: keys the scenario's [task] table may hold for this kind (besides ``kind``)
-    keys: ClassVar[tuple[str, ...]] = ("lift_height", "settle_time")
+    keys: ClassVar[tuple[str, ...]] = ("lift_height", "settle_time", "max_base_tilt")
 
     def __post_init__(self):
         grippers = self.grippers
@@ -144,7 +157,7 @@ class Task:
             raise ScenarioError(f"[task] grippers: expected the names of the scenario's grippers "
                                 f"(distinct non-empty strings), got {grippers!r}")
         object.__setattr__(self, "grippers", tuple(grippers))
-        for key in ("lift_height", "settle_time"):
+        for key in ("lift_height", "settle_time", "max_base_tilt"):
             _set_real(self, key, lower=0.0, strict=False)
         up = _vector(self.up, "up")
         norm = float(np.linalg.norm(up))
@@ -214,6 +227,27 @@ class Task:
         up = np.asarray(self.up, dtype=np.float64)
         down = -(np.asarray(ev.object_vel)[..., -1, :] @ (up / (np.linalg.norm(up) or 1.0)))
         return recent & ((gap <= END_GAP + 1e-12) | (down < END_FALL_SPEED))
+
+    def _base_tilt(self, ev: TaskEvidence) -> np.ndarray:
+        """The largest tilt of a free-floating robot base from its first step [deg], (...);
+        0 without one."""
+        axis = ev.base_axis
+        if axis is None or axis.shape[-2] == 0 or axis.shape[-3] == 0:
+            return np.zeros(ev.contact_support.shape[:-1])
+        cos = np.sum(axis * axis[..., :1, :, :], axis=-1) / np.maximum(
+            np.linalg.norm(axis, axis=-1) * np.linalg.norm(axis[..., :1, :, :], axis=-1), 1e-12)
+        return np.degrees(np.arccos(np.clip(cos, -1.0, 1.0))).max(axis=(-2, -1))
+
+    def upright(self, ev: TaskEvidence) -> np.ndarray:
+        """No free-floating robot base tilts more than :attr:`max_base_tilt` from its
+        start, (...) bool (true for a robot fixed to the world)."""
+        return self._base_tilt(ev) <= self.max_base_tilt
+
+    def _tip_shortfall(self, ev: TaskEvidence) -> list[str]:
+        if bool(self.upright(ev)):
+            return []
+        return [f"the robot's free-floating base tilts {float(self._base_tilt(ev)):.3g}° (the "
+                f"task allows {self.max_base_tilt:g}°, [task] max_base_tilt)"]
 
     def _end_shortfalls(self, ev: TaskEvidence, gripper: str | None, verb: str) -> list[str]:
         """``gripper`` must hold the object (:meth:`_held_at_end`), and no support touch it,
@@ -350,7 +384,8 @@ class HandoverTask(Task):
     kind: ClassVar[str] = "handover"
     stage_names: ClassVar[tuple[str, ...]] = (
         "untouched", "picker touches", "picker lifts", "receiver touches", "receiver holds")
-    keys: ClassVar[tuple[str, ...]] = ("picker", "receiver", "lift_height", "settle_time")
+    keys: ClassVar[tuple[str, ...]] = ("picker", "receiver", "lift_height", "settle_time",
+                                       "max_base_tilt")
 
     def __post_init__(self):
         super().__post_init__()
@@ -376,10 +411,11 @@ class HandoverTask(Task):
 
     def success(self, ev):
         recv = ev.contact_gripper[..., self.grippers.index(self.receiver)]
-        return self._held_at_end(recv, ev) & self._final(~ev.contact_support, ev, "all")
+        return (self._held_at_end(recv, ev) & self._final(~ev.contact_support, ev, "all")
+                & self.upright(ev))
 
     def shortfalls(self, ev):
-        return self._end_shortfalls(ev, self.receiver, "hold")
+        return self._end_shortfalls(ev, self.receiver, "hold") + self._tip_shortfall(ev)
 
     def describe(self):
         return (f"hand-over: {self.picker} lifts the object off its support, {self.receiver} "
@@ -395,7 +431,8 @@ class HandoverTask(Task):
         return cls(grippers=tuple(grippers), picker=_gripper(table, "picker", grippers, cls.kind),
                    receiver=_gripper(table, "receiver", grippers, cls.kind),
                    lift_height=_number(table, "lift_height", 0.02),
-                   settle_time=_number(table, "settle_time", 0.05))
+                   settle_time=_number(table, "settle_time", 0.05),
+                   max_base_tilt=_number(table, "max_base_tilt", 5.0))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -418,7 +455,8 @@ class PickPlaceTask(Task):
     stage_names: ClassVar[tuple[str, ...]] = ("untouched", "touched", "carried", "placed",
                                               "released")
     keys: ClassVar[tuple[str, ...]] = ("gripper", "goal", "goal_site", "tolerance",
-                                       "rest_speed", "lift_height", "settle_time")
+                                       "rest_speed", "lift_height", "settle_time",
+                                       "max_base_tilt")
 
     def __post_init__(self):
         super().__post_init__()
@@ -448,10 +486,11 @@ class PickPlaceTask(Task):
         released = ~self._final(touch, ev, "any")
         at_goal = self._final(self._at_goal(ev.object_pos), ev, "all")
         speed = np.linalg.norm(ev.object_vel[..., -1, :], axis=-1) if ev.n_steps else 0.0
-        return self.lifted(ev) & at_goal & released & (speed <= self.rest_speed)
+        return (self.lifted(ev) & at_goal & released & (speed <= self.rest_speed)
+                & self.upright(ev))
 
     def shortfalls(self, ev):
-        out = self._lift_shortfall(ev)
+        out = self._lift_shortfall(ev) + self._tip_shortfall(ev)
         if not bool(self._final(self._at_goal(ev.object_pos), ev, "all")):
             distance = np.linalg.norm(ev.object_pos - np.asarray(self.goal), axis=-1)
             at = np.flatnonzero(distance <= self.tolerance)
@@ -496,7 +535,8 @@ class PickPlaceTask(Task):
                    goal=goal, tolerance=_number(table, "tolerance", 0.03),
                    rest_speed=_number(table, "rest_speed", 0.05),
                    lift_height=_number(table, "lift_height", 0.02),
-                   settle_time=_number(table, "settle_time", 0.05))
+                   settle_time=_number(table, "settle_time", 0.05),
+                   max_base_tilt=_number(table, "max_base_tilt", 5.0))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -511,7 +551,7 @@ class PickHoldTask(Task):
 
     kind: ClassVar[str] = "pick_hold"
     stage_names: ClassVar[tuple[str, ...]] = ("untouched", "touched", "held")
-    keys: ClassVar[tuple[str, ...]] = ("gripper", "lift_height", "settle_time")
+    keys: ClassVar[tuple[str, ...]] = ("gripper", "lift_height", "settle_time", "max_base_tilt")
 
     def __post_init__(self):
         super().__post_init__()
@@ -528,10 +568,11 @@ class PickHoldTask(Task):
     def success(self, ev):
         touch = ev.contact_gripper[..., self.grippers.index(self.gripper)]
         return (self.lifted(ev) & self._held_at_end(touch, ev)
-                & self._final(~ev.contact_support, ev, "all"))
+                & self._final(~ev.contact_support, ev, "all") & self.upright(ev))
 
     def shortfalls(self, ev):
-        return self._lift_shortfall(ev) + self._end_shortfalls(ev, self.gripper, "hold")
+        return (self._lift_shortfall(ev) + self._end_shortfalls(ev, self.gripper, "hold")
+                + self._tip_shortfall(ev))
 
     def describe(self):
         return (f"pick and hold: {self.gripper} lifts the object at least "
@@ -541,7 +582,8 @@ class PickHoldTask(Task):
     def from_table(cls, table, grippers, resolve_site=None):
         return cls(grippers=tuple(grippers), gripper=_gripper(table, "gripper", grippers, cls.kind),
                    lift_height=_number(table, "lift_height", 0.02),
-                   settle_time=_number(table, "settle_time", 0.05))
+                   settle_time=_number(table, "settle_time", 0.05),
+                   max_base_tilt=_number(table, "max_base_tilt", 5.0))
 
 
 #: task kinds by name

@@ -549,6 +549,17 @@ class Twin:
             s.type = kind
             s.objtype = frame
             s.objname = sc.object_body
+        # every other free body's up axis: the robot's free-floating base is among them
+        # (a free body that carries actuated joints, known once compiled), whose tilt the
+        # task's rule reads (Task.max_base_tilt)
+        for body in spec.bodies:
+            if (body.name and body.name != sc.object_body
+                    and any(j.type == mujoco.mjtJoint.mjJNT_FREE for j in body.joints)):
+                s = spec.add_sensor()
+                s.name = _sensor_name("base_up", body.name)
+                s.type = mujoco.mjtSensor.mjSENS_FRAMEZAXIS
+                s.objtype = mujoco.mjtObj.mjOBJ_XBODY
+                s.objname = body.name
         for act in spec.actuators:
             s = spec.add_sensor()
             s.name = _sensor_name("force", act.name)
@@ -588,6 +599,12 @@ class Twin:
         self._force_ids = self._force_adr  # per actuator, to pick some
         for name in ("_support_adr", "_acc_adr", "_pos_adr", "_vel_adr", "_force_adr"):
             setattr(self, name, _as_slice(getattr(self, name)))
+        #: the robot's free-floating bases (act_info.robot_bases), and the addresses of their
+        #: up axes' readings (B, 3)
+        self.robot_bases = tuple(b for b in act_info.robot_bases(model) if model.body(b).name)
+        self._base_adr = np.array([np.arange(a, a + 3) for a in (
+            adr(_sensor_name("base_up", model.body(b).name))[0] for b in self.robot_bases)],
+            dtype=np.int64).reshape(-1, 3)
         self.object_body_id = model.body(sc.object_body).id
         #: the object's points whose motion in a grip is measured as slip (:func:`grip_points`)
         self.grip_points = grip_points(model, self.object_body_id)
@@ -901,22 +918,35 @@ class Twin:
     def set_state(model: mujoco.MjModel, data: mujoco.MjData, state: np.ndarray) -> None:
         mujoco.mj_setState(model, data, np.asarray(state, dtype=np.float64), STATE_SPEC)
 
-    def evidence(self, signals: Signals) -> TaskEvidence:
-        """The task's evidence of signals with leading shape (..., T)."""
+    def evidence(self, signals: Signals, sensordata: np.ndarray | None = None) -> TaskEvidence:
+        """The task's evidence of signals with leading shape (..., T) (and of the robot's
+        free base, read from ``sensordata`` (..., T, nsensordata) where given)."""
         return self.task_evidence(signals.contact_gripper, signals.contact_support,
-                                  signals.object_pos, signals.object_vel)
+                                  signals.object_pos, signals.object_vel,
+                                  base_axis=None if sensordata is None
+                                  else self.base_axis(sensordata))
+
+    def base_axis(self, sensordata: np.ndarray) -> np.ndarray | None:
+        """The up axes of the robot's free-floating bases (:attr:`robot_bases`) in the world,
+        (..., B, 3), from readings (..., nsensordata); None for a robot with none."""
+        if not self.robot_bases:
+            return None
+        return np.asarray(sensordata)[..., self._base_adr]
 
     def task_evidence(self, contact_gripper: np.ndarray, contact_support: np.ndarray,
-                      object_pos: np.ndarray, object_vel: np.ndarray) -> TaskEvidence:
+                      object_pos: np.ndarray, object_vel: np.ndarray,
+                      base_axis: np.ndarray | None = None) -> TaskEvidence:
         """The task's evidence of contact flags and the object's motion, leading shape
-        (..., T), in this twin's time step."""
+        (..., T), in this twin's time step (``base_axis`` (..., T, B, 3): the robot's free
+        bases' up axes, :meth:`base_axis`)."""
         return TaskEvidence(contact_gripper=contact_gripper, contact_support=contact_support,
                             object_pos=object_pos, object_vel=object_vel,
-                            dt=float(self.model.opt.timestep))
+                            dt=float(self.model.opt.timestep), base_axis=base_axis)
 
-    def success(self, signals: Signals) -> np.ndarray:
-        """The task's success rule over signals (..., T): (...) bool."""
-        return self.task.success(self.evidence(signals))
+    def success(self, signals: Signals, sensordata: np.ndarray | None = None) -> np.ndarray:
+        """The task's success rule over signals (..., T) (and ``sensordata`` for the robot's
+        free base, :meth:`evidence`): (...) bool."""
+        return self.task.success(self.evidence(signals, sensordata))
 
     def settle_object(self, model: mujoco.MjModel, data: mujoco.MjData, *,
                       seconds: float = 2.0, speed: float = 1e-3) -> int:

@@ -1068,13 +1068,39 @@ def test_a_free_floating_robot_base_is_the_robot_not_clutter(tmp_path):
     model = twin.model
     assert _other_free_bodies(model, twin.object_body_id, _body_owners(model)) == []
     rec = cm.rollout(hold(twin), twin=twin)
-    said = _floating_base(twin, rec)
-    assert len(said) == 1 and "the robot's base 'base' is free-floating" in said[0]
-    assert "tilts at most" in said[0] and "moves free body" not in " ".join(said)
+    assert _floating_base(twin, rec) == []  # settled, upright: nothing to say
+    assert not any("moves free body" in h for h in feasibility.check_fit(hold(twin), rec, twin))
     high = _legged(tmp_path / "high", lift=0.05)
     rec = cm.rollout(hold(high), twin=high)
     said = _floating_base(high, rec)
+    assert len(said) == 1 and "the robot's base 'base' is free-floating" in said[0]
     assert re.search(r"it falls [45](\.\d+)? cm in its first 0\.5 s", said[0]), said
+
+
+def test_a_run_that_tips_the_robots_free_base_fails_its_task():
+    """probe_r34: a 5 kg cart tipped 10-15° off its rear feet under a heavy cube, fell back
+    and placed the cube within the goal's tolerance: a success. The task's rule now fails a
+    run whose free-floating base tilts more than ``max_base_tilt`` (5°) from its start."""
+    from critmoment.task import PickHoldTask, TaskEvidence
+
+    t = 100
+    tilt = np.radians(np.r_[np.zeros(50), np.linspace(0, 12, 25), np.linspace(12, 0, 25)])
+    axis = np.stack([np.sin(tilt), np.zeros(t), np.cos(tilt)], axis=-1)[:, None, :]
+    pos = np.zeros((t, 3))
+    pos[20:, 2] = 0.1
+    touch = np.ones((t, 1), bool)
+    support = np.r_[np.ones(20, bool), np.zeros(t - 20, bool)]
+
+    def evidence(base_axis):
+        return TaskEvidence(contact_gripper=touch, contact_support=support, object_pos=pos,
+                            object_vel=np.zeros((t, 3)), dt=0.002, base_axis=base_axis)
+
+    task = PickHoldTask(grippers=("hand",), gripper="hand")
+    assert task.success(evidence(None))                     # a robot fixed to the world
+    assert not task.success(evidence(axis))                 # 12° tip and back
+    assert "tilts 12°" in " ".join(task.shortfalls(evidence(axis)))
+    assert PickHoldTask(grippers=("hand",), gripper="hand", max_base_tilt=15).success(
+        evidence(axis))
 
 
 def test_a_legged_robots_leg_servos_are_not_bounded_analytically(tmp_path):
