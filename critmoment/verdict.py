@@ -1460,13 +1460,13 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
 
 
 _KIND_WORDS = {"motor": "motor overload", "tracking": "lost tracking (a joint lagged its target)",
-               "dropped": "dropped", "slipped": "slipped in the grip",
+               "dropped": "dropped", "slipped": "slipped (or turned) in the grip",
                "diverged": "simulation diverged", "not_completed": "task not completed",
                "moment": "failed a moment on its own state"}
 
 
 def _kinds_text(counts: Mapping[str, int]) -> str:
-    """``{"motor": 3, "slipped": 1}`` in words: "3 motor overload, 1 slipped in the grip"."""
+    """``{"motor": 3, "slipped": 1}`` in words: "3 motor overload, 1 slipped (or turned) in the grip"."""
     return ", ".join(f"{k} {_KIND_WORDS.get(kind, kind)}" for kind, k in counts.items())
 
 

@@ -275,7 +275,7 @@ def test_the_causes_name_how_the_own_rollouts_failed(boundary_reports, demo_traj
     assert len(line) == 1, checked.failure_causes
     assert line[0].startswith(f"how the {sum(counts.values())} sample(s) failing on their own "
                               f"full rollout failed: ")
-    words = {"dropped": "dropped", "slipped": "slipped in the grip", "motor": "motor overload",
+    words = {"dropped": "dropped", "slipped": "slipped (or turned) in the grip", "motor": "motor overload",
              "tracking": "lost tracking (a joint lagged its target)",
              "not_completed": "task not completed", "diverged": "simulation diverged"}
     for outcome, k in counts.items():
