@@ -608,8 +608,10 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
     nominal_moved = nominal_position[None] - nominal_position[t0, cols]
     if projectors is not None:
         proj = np.asarray(projectors, dtype=np.float64)
-        moved = np.einsum("gij,ntgkj->ntgki", proj, moved)
-        nominal_moved = np.einsum("gij,ntgkj->ntgki", proj, nominal_moved)
+        # each gripper's projector on its points' displacements (matmul: einsum was a tenth
+        # of the demo audit's time here)
+        moved = moved @ np.swapaxes(proj, -1, -2)
+        nominal_moved = nominal_moved @ np.swapaxes(proj, -1, -2)
     disp = np.where(mask, beyond_nominal(moved, nominal_moved).max(axis=-1), 0.0)
     return disp.max(axis=-1) if g else np.zeros((n, t))
 
@@ -701,7 +703,7 @@ class _Probe:
                         2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
                         2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
                        axis=-1).reshape(pose.shape[:-1] + (3, 3))
-        return pose[..., None, :3] + np.einsum("ctgij,kj->ctgki", rot, self.points)
+        return pose[..., None, :3] + self.points @ np.swapaxes(rot, -1, -2)
 
 
 def _gripper_anchor(model: mujoco.MjModel, geoms: Sequence[str]) -> int:

@@ -484,10 +484,9 @@ class _Watch:
                 np.arange(s)[None, :, None] >= first[:, None, :]))
             # the sample's and the nominal's displacements since the hold began; the slip
             # is how far the sample's goes beyond the nominal's (grip_slip's rule)
-            nominal_moved = np.einsum("gij,csgkj->csgki", ev._projectors,
-                                      nominal[None] - grasp[:, None])
-            moved = np.einsum("gij,csgkj->csgki", ev._projectors,
-                              diff - offset[:, None]) + nominal_moved
+            transposed = np.swapaxes(ev._projectors, -1, -2)       # per gripper, (G, 3, 3)
+            nominal_moved = (nominal[None] - grasp[:, None]) @ transposed
+            moved = (diff - offset[:, None]) @ transposed + nominal_moved
             counted = both & started & ev._counted[k:k + s][None]
             farthest = beyond_nominal(moved, nominal_moved).max(axis=-1)  # (c, s, G)
             slip = np.where(counted, farthest, 0.0).max(axis=-1)

@@ -725,7 +725,7 @@ def _object_in_grippers(xpos: np.ndarray, xmat: np.ndarray, body: int,
         return rel
     # the object's orientation in each anchor's frame, R_a^T R_o, moves the points with it
     turn = np.einsum("csgji,csjk->csgik", rot, xmat[:, :, body].reshape(delta.shape[:2] + (3, 3)))
-    return rel[..., None, :] + np.einsum("csgik,pk->csgpi", turn, np.asarray(points))
+    return rel[..., None, :] + np.asarray(points) @ np.swapaxes(turn, -1, -2)
 
 
 class _Decision(NamedTuple):
@@ -1831,8 +1831,9 @@ class SparseEvaluator:
         start, grasp = start[at], grasp[at]                    # (c|1, s, G), (c|1, s, G, K, 3)
         since = (start >= 0) & (at[..., None] >= start)
         nominal_moved = np.where(since[..., None, None], nominal - grasp, 0.0)
-        moved = np.einsum("gij,csgkj->csgki", self._projectors, rel - nominal + nominal_moved)
-        nominal_moved = np.einsum("gij,csgkj->csgki", self._projectors, nominal_moved)
+        transposed = np.swapaxes(self._projectors, -1, -2)          # per gripper, (G, 3, 3)
+        moved = (rel - nominal + nominal_moved) @ transposed
+        nominal_moved = nominal_moved @ transposed
         disp = beyond_nominal(moved, nominal_moved).max(axis=-1)  # the farthest point's
         return np.where(alone & since, disp, 0.0).max(axis=-1)
 
