@@ -602,18 +602,25 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
     start = hold_starts(both, segments, formed)                     # (n, T, G)
     mask = mask & (start >= 0) & (np.arange(t)[None, :, None] >= start)
     t0 = np.maximum(start, 0)
+    out = np.zeros((n, t))
+    # only the steps where some sample's slip counts (a run's holds, not its approach)
+    steps = np.flatnonzero(mask.any(axis=(0, 2)))
+    if not g or not steps.size:
+        return out
     rows = np.arange(n)[:, None, None]
     cols = np.arange(g)[None, None, :]
-    moved = position - position[rows, t0, cols]
-    nominal_moved = nominal_position[None] - nominal_position[t0, cols]
+    t0 = t0[:, steps]
+    moved = position[:, steps] - position[rows, t0, cols]
+    nominal_moved = nominal_position[steps][None] - nominal_position[t0, cols]
     if projectors is not None:
-        proj = np.asarray(projectors, dtype=np.float64)
+        proj = np.swapaxes(np.asarray(projectors, dtype=np.float64), -1, -2)
         # each gripper's projector on its points' displacements (matmul: einsum was a tenth
         # of the demo audit's time here)
-        moved = moved @ np.swapaxes(proj, -1, -2)
-        nominal_moved = nominal_moved @ np.swapaxes(proj, -1, -2)
-    disp = np.where(mask, beyond_nominal(moved, nominal_moved).max(axis=-1), 0.0)
-    return disp.max(axis=-1) if g else np.zeros((n, t))
+        moved = moved @ proj
+        nominal_moved = nominal_moved @ proj
+    disp = np.where(mask[:, steps], beyond_nominal(moved, nominal_moved).max(axis=-1), 0.0)
+    out[:, steps] = disp.max(axis=-1)
+    return out
 
 
 # --------------------------------------------------------------------------
