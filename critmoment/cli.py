@@ -112,7 +112,8 @@ def _load(args):
     from critmoment.trajectory import load_trajectory
     from critmoment.twin import Twin
 
-    traj = load_trajectory(args.trajectory, episode=args.episode, object_pose=args.object_pose)
+    traj = load_trajectory(args.trajectory, episode=args.episode, object_pose=args.object_pose,
+                           fps=getattr(args, "fps", None))
     scenario = load_scenario(_scenario_for(args.scenario, traj))
     twin = Twin(scenario)
     traj = at_scenario_rate(traj, twin)  # the action rate where the file records none
@@ -403,6 +404,13 @@ def _real(text: str) -> float:
     return value
 
 
+def _positive_rate(text: str) -> float:
+    value = _real(text)
+    if not value > 0:
+        raise argparse.ArgumentTypeError(f"expected a rate > 0 Hz, got {value:g}")
+    return value
+
+
 def _fraction(*, open_low: bool):
     def parse(text: str) -> float:
         value = _real(text)
@@ -448,6 +456,10 @@ def build_parser() -> argparse.ArgumentParser:
         p.add_argument("--episode", type=_int_at_least(0), default=None, metavar="N",
                        help="LeRobot data: the episode_index to read (list them with "
                             "`critmoment episodes DATASET`)")
+        p.add_argument("--fps", type=_positive_rate, default=None, metavar="HZ",
+                       help="the trajectory's action rate [Hz], for a file that records none "
+                            "or under another name (one that records a different rate is an "
+                            "error)")
         p.add_argument("--object-pose", type=_real, nargs=7, default=None,
                        metavar=("X", "Y", "Z", "QW", "QX", "QY", "QZ"),
                        help="the object's start pose, position [m] and unit quaternion; "

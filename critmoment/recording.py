@@ -134,12 +134,55 @@ def _check_rate(traj: Trajectory, dt: float) -> None:
 
 
 
+def in_channel_order(traj: Trajectory, twin: Twin) -> Trajectory:
+    """The trajectory's columns in the scenario's channel order, where its file names them
+    (``meta["action_names"]``: a LeRobot dataset's ``features.action.names``) and the names
+    are the scenario's channel labels in another order (compared as
+    :func:`critmoment.trajectory._channel_keys` does: ``left_waist`` is ``left/waist``),
+    with a warning; the same order, or names that are not the labels, leave it as it is.
+
+    Raises:
+        TrajectoryError: some names are channel labels at other positions, but not all of
+            them are labels (the order cannot be mapped).
+    """
+    names = (traj.meta or {}).get("action_names")
+    labels = list(twin.scenario.actions.labels)
+    if not isinstance(names, list) or len(names) != len(labels):
+        return traj
+    have, want = trajectory_mod._channel_keys(names), trajectory_mod._channel_keys(labels)
+    if have == want:
+        return traj
+    if sorted(have) == sorted(want) and len(set(have)) == len(have):
+        order = [have.index(k) for k in want]
+        moved = [f"{labels[i]} <- column {j} ({names[j]})" for i, j in enumerate(order)
+                 if i != j]
+        warn_once(f"the trajectory{_source(traj)} names its action columns in another order "
+                  f"than the scenario's channels; mapped by name: {', '.join(moved[:6])}"
+                  f"{' ...' if len(moved) > 6 else ''}", CritmomentWarning, stacklevel=3)
+        start = None if traj.start is None else np.asarray(traj.start)[order]
+        meta = dict(traj.meta)
+        meta["action_names"] = [names[j] for j in order]  # as the columns now are
+        return dataclasses.replace(traj, actions=np.asarray(traj.actions)[:, order],
+                                   start=start, meta=meta)
+    astray = [f"{names[j]!r} (column {j}, the scenario's channel {want.index(k)})"
+              for j, k in enumerate(have) if k in want and want.index(k) != j]
+    if astray:
+        raise TrajectoryError(
+            f"the trajectory{_source(traj)} names its action columns {names}, the scenario's "
+            f"channels are {labels}: {', '.join(astray[:4])} sit at other positions, and not "
+            f"every column is one of the channels; expected the scenario's order (reorder the "
+            f"data, or the scenario's [[actions.channel]] tables)")
+    return traj
+
+
 def at_scenario_rate(traj: Trajectory, twin: Twin) -> Trajectory:
     """The trajectory at the scenario's ``[actions] fps`` where its file recorded no rate
-    (:meth:`Trajectory.with_rate_from`); a recorded rate, or a scenario that states none,
-    leaves it as it is (a recorded rate other than the scenario's by more than 1 % is
-    warned of). Every entry point (``analyze``, ``rollout``, ``validate``, the CLI)
-    applies it, so a library call reads a file as the command line does."""
+    (:meth:`Trajectory.with_rate_from`), its columns in the scenario's channel order where
+    the file names them (:func:`in_channel_order`); a recorded rate, or a scenario that
+    states none, leaves the rate as it is (a recorded rate other than the scenario's by more
+    than 1 % is warned of). Every entry point (``analyze``, ``rollout``, ``validate``, the
+    CLI) applies it, so a library call reads a file as the command line does."""
+    traj = in_channel_order(traj, twin)
     sc = twin.scenario
     if not sc.fps_given:
         return traj

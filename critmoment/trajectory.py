@@ -29,6 +29,7 @@ import json
 import logging
 import math
 import os
+import re
 import warnings
 import zipfile
 import zlib
@@ -100,7 +101,15 @@ _NPZ_KEYS = frozenset({"actions", "fps", "time", "start", "qpos0", "qvel0", "obj
 _TIME_BASE_KEYS = frozenset({"fps", "timestamp", "timestamps", "times", "t", "dt", "hz",
                              "freq", "frequency", "rate", "frame_rate", "framerate",
                              "control_freq", "control_frequency", "sample_rate", "period",
-                             "time_s", "seconds"})
+                             "time_s", "seconds", "control_dt", "time", "time_step",
+                             "timestep"})
+#: the root attributes an ACT episode's rate [Hz] is read from
+_ACT_RATE_KEYS = ("fps", "frame_rate", "control_freq")
+
+
+def _is_time_base(key: str) -> bool:
+    """A key or attribute name that names a time base (a rate, a period or times)."""
+    return key.lower().replace("-", "_") in _TIME_BASE_KEYS
 
 
 # ---------------------------------------------------------------------------
@@ -913,7 +922,7 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
     # a time base under another name (LeRobot's 'timestamp', a 'dt', an 'FPS'), with none
     # that critmoment reads and no rate given: the run had gone on at the scenario's rate
     # with only the unknown-key warning, at twice the recorded speed for a 25 Hz file
-    timing = [k for k in unknown if k.lower().replace("-", "_") in _TIME_BASE_KEYS]
+    timing = [k for k in unknown if _is_time_base(k)]
     if timing and fps is None and not {"fps", "time"} & set(data):
         raise TrajectoryError(
             f"{str(path)!r}: key(s) {timing} look like the trajectory's time base, but "
@@ -1174,8 +1183,15 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
             object_pose = _h5_object_pose(fh, path=path)
             attrs = {str(k): _json_value(v) for k, v in fh.attrs.items()}
             # the rates as stored (the JSON form of meta spells a NaN as text)
-            stored = {key: fh.attrs[key] for key in ("fps", "frame_rate", "control_freq")
-                      if key in fh.attrs}
+            stored = {key: fh.attrs[key] for key in _ACT_RATE_KEYS if key in fh.attrs}
+            # a time base under another name (a root attribute dt or FPS, an fps attribute on
+            # /action, a /timestamps dataset): read from none of them, it must not be ignored
+            timing = [f"attribute {k!r}" for k in fh.attrs
+                      if _is_time_base(str(k)) and str(k) not in _ACT_RATE_KEYS]
+            timing += [f"attribute {k!r} of /action" for k in action.attrs
+                       if _is_time_base(str(k))]
+            timing += [f"dataset {name}" for name in found
+                       if _is_time_base(name.rsplit("/", 1)[-1])]
     except CritmomentError:
         raise
     except (OSError, KeyError, RuntimeError, ValueError, TypeError, MemoryError) as exc:
@@ -1185,6 +1201,12 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
             f"{type(exc).__name__}: {exc}"
         ) from None
 
+    if timing and not stored and fps is None:
+        raise TrajectoryError(
+            f"{str(path)!r}: {', '.join(timing)} look(s) like the episode's time base, but "
+            f"critmoment reads an ACT episode's rate only from a root attribute "
+            f"{' / '.join(_ACT_RATE_KEYS)} [Hz] (else ACT's {DEFAULT_FPS:g} Hz); expected one "
+            f"of those, or give the rate (CLI --fps, load_trajectory(path, fps=...))")
     start = None
     if qpos is None:
         warnings.warn(
@@ -1204,6 +1226,18 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
     elif qpos.shape[0] == 0:
         warnings.warn(
             f"{str(path)!r}: /observations/qpos is empty; start state left unknown",
+            CritmomentWarning,
+            stacklevel=3,
+        )
+    elif qpos.shape[0] != actions.shape[0]:
+        # ACT records one observation per action: other counts leave unsaid which row is the
+        # state the first action starts from (a recorder that appends the final state, or
+        # prepends a reset)
+        warnings.warn(
+            f"{str(path)!r}: /observations/qpos has {qpos.shape[0]} rows for "
+            f"{actions.shape[0]} actions, expected one per action; which row the first "
+            f"action starts from is unknown, so the start state is left unknown (the first "
+            f"action's targets are used)",
             CritmomentWarning,
             stacklevel=3,
         )
@@ -1242,10 +1276,13 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
 
 
 def _find_lerobot_root(path: Path) -> Path | None:
-    """The nearest ancestor of ``path`` holding ``meta/info.json``."""
-    for parent in path.resolve().parents:
-        if (parent / "meta" / "info.json").is_file():
-            return parent
+    """The nearest ancestor of ``path`` holding ``meta/info.json``: of the path as given
+    first (the Hugging Face hub cache links ``snapshots/<rev>/data/...`` to a blob file
+    elsewhere, whose own folders hold no dataset), then of the file it links to."""
+    for start in (Path(os.path.abspath(path)), path.resolve()):
+        for parent in start.parents:
+            if (parent / "meta" / "info.json").is_file():
+                return parent
     return None
 
 
@@ -1615,14 +1652,30 @@ def _load_lerobot_files(
             stacklevel=3,
         )
 
+    width = actions.shape[1] if actions.ndim == 2 else 0
+    action_names = _feature_names(info, "action", width)
     start = None
     if "observation.state" in table.column_names and table.num_rows:
         state = _list_column_to_array(
             table.column("observation.state").slice(0, 1),
             what=f"{str(chosen_file)!r}{ep_text} column 'observation.state'",
         )[0]
+        state_names = _feature_names(info, "observation.state", state.shape[0])
         if actions.ndim == 2 and state.shape == (actions.shape[1],):
             start = state
+            if action_names and state_names and state_names != action_names:
+                # the state is the start in the action's convention only channel by channel
+                a, b = map(_channel_keys, (action_names, state_names))
+                if sorted(a) == sorted(b) and len(set(a)) == len(a):
+                    start = state[[b.index(k) for k in a]]
+                else:
+                    warnings.warn(
+                        f"{str(chosen_file)!r}{ep_text}: meta/info.json names "
+                        f"'observation.state' {state_names[:6]}... and 'action' "
+                        f"{action_names[:6]}...: not the same channels, so the state is not "
+                        f"the start in the action's convention; start state left unknown",
+                        CritmomentWarning, stacklevel=3)
+                    start = None
         else:
             warnings.warn(
                 f"{str(chosen_file)!r}{ep_text}: 'observation.state' has "
@@ -1635,11 +1688,36 @@ def _load_lerobot_files(
     meta: dict = {"source_format": "lerobot", "file": str(chosen_file)}
     if ep is not None:
         meta["episode_index"] = ep
+    if action_names:
+        # what each column is: the audit maps them onto the scenario's channels by name
+        # (recording.at_scenario_rate)
+        meta["action_names"] = action_names
     for key in ("codebase_version", "robot_type"):
         if key in info:
             meta[key] = _json_value(info[key])
     return Trajectory(actions=actions, fps=DEFAULT_FPS if rate is None else rate, start=start,
                       meta=meta, source=source, fps_assumed=rate is None)
+
+
+def _feature_names(info: Mapping[str, Any], key: str, width: int) -> list[str] | None:
+    """The names a LeRobot ``meta/info.json`` gives the ``width`` components of feature
+    ``key`` (``features.<key>.names``: a list, or v2.x's ``{"motors": [...]}``), else None."""
+    features = info.get("features") if isinstance(info, Mapping) else None
+    feature = features.get(key) if isinstance(features, Mapping) else None
+    names = feature.get("names") if isinstance(feature, Mapping) else None
+    if isinstance(names, Mapping):
+        lists = [v for v in names.values() if isinstance(v, list)]
+        names = lists[0] if len(lists) == 1 else None
+    if (isinstance(names, list) and width and len(names) == width
+            and all(isinstance(n, str) and n for n in names)):
+        return [str(n) for n in names]
+    return None
+
+
+def _channel_keys(names: Sequence[str]) -> list[str]:
+    """Channel names compared across conventions: lower case, every run of other characters
+    one underscore (``left/waist`` and ``Left_Waist`` are one channel)."""
+    return [re.sub(r"[^0-9a-z]+", "_", str(n).lower()).strip("_") for n in names]
 
 
 # ---------------------------------------------------------------------------

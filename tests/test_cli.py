@@ -762,3 +762,26 @@ def test_running_out_of_memory_or_threads_is_not_called_a_bug():
     said = _describe(RuntimeError(".../casadi_nlpsol.cpp:41: Plugin 'ipopt' is not found."))
     assert "solver plugin could not load" in said and "bug" not in said
     assert "a bug in critmoment" in _describe(RuntimeError("something else"))
+
+
+def test_fps_gives_the_rate_of_a_file_that_records_none_under_its_name(traj_file, capsys,
+                                                                       tmp_path):
+    """probe r35: the errors said "give the rate (--fps)", but no command took --fps. An ACT
+    episode whose rate is a root attribute ``dt`` is refused without it and read at the
+    given rate with it; a rate that disagrees with a recorded one is an error."""
+    import h5py
+
+    with np.load(traj_file) as z:
+        actions = z["actions"]
+    path = tmp_path / "episode.hdf5"
+    with h5py.File(path, "w") as f:
+        f.create_dataset("action", data=actions)
+        f.attrs["dt"] = 0.02
+    pose = ["--object-pose", "0.0", "0.5", "0.02", "1", "0", "0", "0"]
+    assert main(["rollout", str(path), *pose, "--json"]) == 2
+    assert "look(s) like the episode's time base" in capsys.readouterr().err
+    assert main(["rollout", str(path), *pose, "--fps", "50", "--json"]) in (0, 1)
+    assert json.loads(capsys.readouterr().out)["steps"] == 4000
+    assert main(["rollout", str(traj_file), "--fps", "25", "--json"]) == 2
+    assert "disagrees with the rate 50 Hz recorded" in capsys.readouterr().err
+    assert main(["rollout", str(path), "--fps", "0"]) == 2

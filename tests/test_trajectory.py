@@ -775,3 +775,120 @@ def test_a_spline_grazing_a_limit_is_clipped_without_a_warning():
     with pytest.warns(CritmomentWarning, match=r"channel 0 \(cubic spline\): \d+ step\(s\), "
                       r"worst by"):
         upsample(steep, fps=10.0, physics_dt=0.01, lower=lo, upper=hi)
+
+
+def test_act_hdf5_rate_under_another_name_is_refused(tmp_path):
+    """probe r35: an ACT episode whose rate is a root attribute ``dt`` (or ``FPS``, ``hz``,
+    an ``fps`` attribute on /action, a /timestamps dataset) was played at ACT's 50 Hz
+    without a word; the npz reader refuses the same keys. Given the rate, it loads."""
+    act = np.zeros((30, NA))
+    cases = {"dt": lambda f: f.attrs.__setitem__("dt", 1 / 30),
+             "FPS": lambda f: f.attrs.__setitem__("FPS", 30),
+             "action_fps": lambda f: f["action"].attrs.__setitem__("fps", 30),
+             "timestamps": lambda f: f.create_dataset("timestamps", data=np.arange(30) / 30)}
+    for name, edit in cases.items():
+        path = tmp_path / f"{name}.hdf5"
+        with h5py.File(path, "w") as f:
+            f.create_dataset("action", data=act)
+            edit(f)
+        with pytest.raises(TrajectoryError, match=r"look\(s\) like the episode's time base.*"
+                                                  r"CLI --fps"):
+            load_trajectory(path)
+        assert load_trajectory(path, fps=30).fps == 30.0
+    path = tmp_path / "fps.hdf5"  # the attribute critmoment reads, beside another name
+    with h5py.File(path, "w") as f:
+        f.create_dataset("action", data=act)
+        f.attrs["fps"] = 30
+        f.attrs["dt"] = 1 / 30
+    assert load_trajectory(path).fps == 30.0
+
+
+def test_act_hdf5_qpos_rows_not_one_per_action_leave_the_start_unknown(tmp_path):
+    """probe r35: /observations/qpos of 401 rows for 400 actions: qpos[0] was taken as the
+    start without a word (the verdict: a motor overload at t = 0)."""
+    path = tmp_path / "rows.hdf5"
+    with h5py.File(path, "w") as f:
+        f.create_dataset("action", data=np.zeros((40, NA)))
+        f.create_dataset("observations/qpos", data=np.ones((41, NA)))
+    with pytest.warns(CritmomentWarning, match=r"41 rows for 40 actions.*start state is left "
+                                               r"unknown"):
+        traj = load_trajectory(path)
+    assert traj.start is None
+
+
+def _named_lerobot(root, action_names, state_names=None, actions=None, state=None):
+    """A one-episode LeRobot dataset whose info.json names the action's (and state's)
+    components."""
+    features = {"action": {"dtype": "float32", "shape": [len(action_names)],
+                           "names": action_names}}
+    if state_names is not None:
+        features["observation.state"] = {"dtype": "float32", "shape": [len(state_names)],
+                                         "names": {"motors": state_names}}
+    (root / "meta").mkdir(parents=True)
+    (root / "meta" / "info.json").write_text(json.dumps({"fps": 50, "features": features}))
+    (root / "data" / "chunk-000").mkdir(parents=True)
+    n = actions.shape[0]
+    cols = {"action": pa.array(actions.tolist(), pa.list_(pa.float32())),
+            "frame_index": pa.array(range(n), pa.int64()),
+            "episode_index": pa.array([0] * n, pa.int64())}
+    if state is not None:
+        cols["observation.state"] = pa.array(state.tolist(), pa.list_(pa.float32()))
+    pq.write_table(pa.table(cols), root / "data" / "chunk-000" / "episode_000000.parquet")
+
+
+def test_lerobot_action_names_map_the_columns_onto_the_scenarios_channels(tmp_path):
+    """probe r35: a LeRobot dataset whose info.json names its action's components in another
+    order than the scenario's channels (a left wrist's angle and rotation swapped) was
+    audited in file order, without a word. The columns are now mapped by name onto the
+    channels (``left_waist`` is ``left/waist``), with a warning; the state named in yet
+    another order becomes the start in the action's order; names that only partly match
+    the channels are refused."""
+    import critmoment as cm
+    from critmoment.recording import at_scenario_rate
+
+    twin = cm.Twin(cm.load_scenario())
+    labels = list(twin.scenario.actions.labels)
+    rng = np.random.default_rng(4)
+    data = rng.uniform(-0.1, 0.1, size=(20, len(labels))).astype(np.float32)
+    names = [lab.replace("/", "_") for lab in labels]
+    order = list(range(len(names)))
+    order[4], order[5] = 5, 4           # the data's columns 4 and 5 are the channels 5 and 4
+    state_order = order[::-1]
+    _named_lerobot(tmp_path / "ds", [names[i] for i in order],
+                   [names[i] for i in state_order], data[:, order], data[:, state_order])
+    traj = load_trajectory(tmp_path / "ds", episode=0)
+    np.testing.assert_array_equal(traj.start, data[0, order])  # in the action's columns
+    with pytest.warns(CritmomentWarning, match=r"another order than the scenario's channels"):
+        mapped = at_scenario_rate(traj, twin)
+    np.testing.assert_array_equal(mapped.actions, data.astype(np.float64))
+    np.testing.assert_array_equal(mapped.start, data[0].astype(np.float64))
+    assert at_scenario_rate(mapped, twin).actions is not None  # mapped once, not again
+    np.testing.assert_array_equal(at_scenario_rate(mapped, twin).actions, mapped.actions)
+    partial = [names[i] for i in order]
+    partial[0] = "base_yaw"
+    _named_lerobot(tmp_path / "partial", partial, actions=data)
+    with pytest.raises(TrajectoryError, match=r"sit at other positions"):
+        at_scenario_rate(load_trajectory(tmp_path / "partial", episode=0), twin)
+    other = [f"motor_{i}" for i in range(len(names))]  # names that are not the channels
+    _named_lerobot(tmp_path / "other", other, actions=data)
+    kept = at_scenario_rate(load_trajectory(tmp_path / "other", episode=0), twin)
+    np.testing.assert_array_equal(kept.actions, data.astype(np.float64))
+
+
+def test_a_lerobot_file_reached_through_a_link_finds_its_dataset(tmp_path):
+    """probe r35: the Hugging Face hub cache links ``snapshots/<rev>/data/...`` to a blob file
+    named by its hash; the dataset's meta/info.json was looked for beside the blob, so its
+    30 Hz was replaced by 50 Hz with a warning that there was none."""
+    rng = np.random.default_rng(5)
+    root = tmp_path / "snapshots" / "rev"
+    data, _ = _write_lerobot(root, rng, lengths=(12,), fps=30)
+    blobs = tmp_path / "blobs"
+    blobs.mkdir()
+    blob = blobs / "6f1e0c9a"
+    data.rename(blob)
+    data.symlink_to(blob)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", CritmomentWarning)  # no "no meta/info.json fps"
+        warnings.filterwarnings("ignore", message=".*object start pose")
+        traj = load_trajectory(data)
+    assert traj.fps == 30.0
