@@ -1662,6 +1662,9 @@ def input_manifest(sc: Scenario, traj: Trajectory, *, seed: int | None,
         "scenario_content_sha256": sc.content_sha256(),
         "model_sha256": model_hash(sc if twin is None else twin),
         "trajectory": input_identity(traj.source)["name"],
+        # which episode of a dataset or multi-episode file (two of one file share its name
+        # and hash)
+        "episode": (traj.meta or {}).get("episode_index"),
         "trajectory_sha256": traj.source_sha256,
         "trajectory_content_sha256": traj.content_sha256(),
         "seed": seed,

@@ -785,3 +785,14 @@ def test_fps_gives_the_rate_of_a_file_that_records_none_under_its_name(traj_file
     assert main(["rollout", str(traj_file), "--fps", "25", "--json"]) == 2
     assert "disagrees with the rate 50 Hz recorded" in capsys.readouterr().err
     assert main(["rollout", str(path), "--fps", "0"]) == 2
+
+
+def test_the_manifest_names_the_episode_audited(lerobot_dataset, capsys):
+    """probe r35: two episodes of one dataset file gave identical manifests (the file's name
+    and hash): the report never said which episode it audited."""
+    docs = []
+    for ep in ("0", "1"):
+        assert main(["analyze", str(lerobot_dataset), "--episode", ep, "--samples", "8",
+                     "--figures", "none", "--json", "--no-verify"]) in (0, 1)
+        docs.append(json.loads(capsys.readouterr().out))
+    assert [d["manifest"]["episode"] for d in docs] == [0, 1]
