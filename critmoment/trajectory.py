@@ -248,6 +248,9 @@ def _fps_from_times(times: Any, n_steps: int, *, what: str) -> float:
             f"got shape {t.shape}"
         )
     _check_finite_vector(t, what=what)
+    if t.size < 2:
+        raise TrajectoryError(f"{what}: expected at least 2 time steps to give a rate, got "
+                              f"{t.size}")
     dt = np.diff(t)
     # the resolution of the times as stored: float32 epoch seconds (1.7e9) are 128 s apart,
     # so every 20 ms frame rounds alike; float32 seconds from 1000 s resolve 61 µs, which
@@ -261,6 +264,12 @@ def _fps_from_times(times: Any, n_steps: int, *, what: str) -> float:
                 f"resolves only {quantum:.3g} s: store them as float64, or relative to the "
                 f"first")
     nonpos = np.flatnonzero(dt <= 0.0)
+    if nonpos.size and np.all(dt < -quantum) and dt.size > 1:
+        # every step back by about a frame: rows stored newest first, not times too coarse
+        raise TrajectoryError(
+            f"{what}: expected increasing times, got times that fall by "
+            f"{float(-np.median(dt)):.3g} s at every row: rows stored newest first? order "
+            f"them by time (or by frame_index)")
     if nonpos.size:
         i = int(nonpos[0])
         raise TrajectoryError(
@@ -1289,7 +1298,7 @@ def _find_lerobot_root(path: Path) -> Path | None:
 def _read_info(root: Path) -> dict:
     info_path = root / "meta" / "info.json"
     try:
-        info = json.loads(info_path.read_text(encoding="utf-8"))
+        info = json.loads(info_path.read_text(encoding="utf-8-sig"))  # a BOM is no error
     except (OSError, ValueError, RecursionError) as exc:  # ValueError: bad JSON or UTF-8
         raise InputFileError(
             f"cannot read LeRobot metadata {str(info_path)!r} (expected a JSON "
@@ -1309,7 +1318,10 @@ def _episode_files(root: Path) -> list[Path]:
     Raises:
         InputFileError: none under ``data/``: a dataset with no episode is not one.
     """
-    files = sorted((root / "data").rglob("*.parquet")) if (root / "data").is_dir() else []
+    # not macOS's AppleDouble sidecars (._file-000.parquet) or other hidden files
+    files = (sorted(f for f in (root / "data").rglob("*.parquet")
+                    if not any(part.startswith(".") for part in f.relative_to(root).parts))
+             if (root / "data").is_dir() else [])
     if not files:
         raise InputFileError(
             f"LeRobot dataset {str(root)!r}: expected episode parquet files under "

@@ -892,3 +892,30 @@ def test_a_lerobot_file_reached_through_a_link_finds_its_dataset(tmp_path):
         warnings.filterwarnings("ignore", message=".*object start pose")
         traj = load_trajectory(data)
     assert traj.fps == 30.0
+
+
+def test_lerobot_sidecars_bom_one_row_and_reversed_rows(tmp_path):
+    """probe r35: a macOS ``._`` sidecar under data/ or a UTF-8 BOM in info.json made a
+    dataset unreadable; a one-row episode "disagreed with the rate nan Hz"; rows stored
+    newest first were blamed on float32 time resolution."""
+    rng = np.random.default_rng(6)
+    root = tmp_path / "ds"
+    data, eps = _write_lerobot(root, rng, lengths=(12,), fps=30)
+    (data.parent / ("._" + data.name)).write_bytes(b"\x00\x05\x16\x07" + b"\x00" * 60)
+    info = root / "meta" / "info.json"
+    info.write_bytes(b"\xef\xbb\xbf" + info.read_bytes())
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        traj = load_trajectory(root, episode=0)
+    assert traj.fps == 30.0 and traj.n_steps == 12
+    one = tmp_path / "one.parquet"
+    pq.write_table(pa.table({"action": pa.array([[0.0] * NA], pa.list_(pa.float64())),
+                             "timestamp": pa.array([0.0])}), one)
+    with pytest.raises(TrajectoryError, match=r"at least 2 time steps"):
+        load_trajectory(one)
+    back = tmp_path / "back.parquet"
+    pq.write_table(pa.table({"action": pa.array([[0.0] * NA] * 5, pa.list_(pa.float64())),
+                             "timestamp": pa.array((np.arange(5)[::-1] * 0.02)
+                                                   .astype(np.float32))}), back)
+    with pytest.raises(TrajectoryError, match=r"rows stored newest first"):
+        load_trajectory(back)
