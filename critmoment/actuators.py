@@ -24,7 +24,7 @@ import mujoco
 import numpy as np
 
 __all__ = ["ActuatorKind", "ActuatorInfo", "describe", "describe_all", "force_limit",
-           "gripper_gap", "into_ranges", "control_span", "closing_ends", "moves_geoms",
+           "gripper_gap", "into_ranges", "control_span", "closing_ends", "closing_end", "moves_geoms",
            "position_target", "joint_force_limit", "body_chain", "common_ancestor",
            "robot_bases", "supporting_joints", "closing_projector", "AXIS_TOLERANCE",
            "collision_geoms", "geom_pairs",
@@ -570,8 +570,9 @@ def into_ranges(model: mujoco.MjModel, qpos: np.ndarray,
 
 def gripper_gap(model: mujoco.MjModel, actuators: Sequence[int], ctrl: Sequence[float],
                 geom_ids: Sequence[int], *, keyframe: int | None = None,
-                seconds: float = 0.6) -> float:
-    """Mean distance between a gripper's geoms after driving it to ``ctrl`` [m].
+                seconds: float = 0.6, positions: bool = False) -> float | np.ndarray:
+    """Mean distance between a gripper's geoms after driving it to ``ctrl`` [m] (with
+    ``positions``, the geoms' centres then, (n, 3)).
 
     The gripper's own joints move under their actuators for ``seconds`` of simulated
     time; every other joint is held where the keyframe (or qpos0) puts it, gravity and
@@ -627,6 +628,8 @@ def gripper_gap(model: mujoco.MjModel, actuators: Sequence[int], ctrl: Sequence[
         d.qvel[hold_v] = 0
     mujoco.mj_kinematics(m, d)
     pts = d.geom_xpos[list(geom_ids)]
+    if positions:
+        return pts.copy()
     diff = pts[:, None, :] - pts[None, :, :]
     # the mean over pairs: a palm far from the fingertips would dominate the largest one
     n = len(geom_ids)
@@ -686,27 +689,43 @@ def closing_ends(model: mujoco.MjModel, actuators: Sequence[int], geom_ids: Sequ
             one from, or one that moves the geoms less than ``tolerance`` [m] over its range.
     """
     closed, open_ = [], []
-    base = [_mid(model, i) for i in actuators]
-    for k, i in enumerate(actuators):
-        span = control_span(model, i)
-        if span is None:
-            raise ValueError(f"actuator {model.actuator(i).name!r} has no ctrlrange (and no "
-                             f"limited joint or tendon of a position servo to take one from)")
-        lo, hi = span
-        gaps = []
-        for end in (lo, hi):
-            ctrl = list(base)
-            ctrl[k] = end
-            gaps.append(gripper_gap(model, actuators, ctrl, geom_ids, keyframe=keyframe))
-        if abs(gaps[1] - gaps[0]) < tolerance:
-            raise ValueError(
-                f"actuator {model.actuator(i).name!r} opens or closes the gap between the "
-                f"gripper's geoms by {abs(gaps[1] - gaps[0]) * 1e3:.2f} mm over its control "
-                f"range {lo:g}..{hi:g} (it may move them all together, as an arm axis does)")
-        c, o = (lo, hi) if gaps[0] < gaps[1] else (hi, lo)
+    for k in range(len(actuators)):
+        c, o = closing_end(model, actuators, k, geom_ids, keyframe=keyframe,
+                           tolerance=tolerance)
         closed.append(c)
         open_.append(o)
     return closed, open_
+
+
+def closing_end(model: mujoco.MjModel, actuators: Sequence[int], k: int,
+                geom_ids: Sequence[int], *, keyframe: int | None = None,
+                tolerance: float = 1e-4) -> tuple[float, float]:
+    """The control that closes and the one that opens actuator ``actuators[k]``, driven to
+    either end of its range with the other ``actuators`` at mid range (a hand's knuckle
+    measured with its finger's other joints half curled, as they are when it grasps: with
+    them left straight, the Allegro's knuckles read closed when extended).
+
+    Raises:
+        ValueError: as :func:`closing_ends`.
+    """
+    i = actuators[k]
+    base = [_mid(model, a) for a in actuators]
+    span = control_span(model, i)
+    if span is None:
+        raise ValueError(f"actuator {model.actuator(i).name!r} has no ctrlrange (and no "
+                         f"limited joint or tendon of a position servo to take one from)")
+    lo, hi = span
+    gaps = []
+    for end in (lo, hi):
+        ctrl = list(base)
+        ctrl[k] = end
+        gaps.append(gripper_gap(model, actuators, ctrl, geom_ids, keyframe=keyframe))
+    if abs(gaps[1] - gaps[0]) < tolerance:
+        raise ValueError(
+            f"actuator {model.actuator(i).name!r} opens or closes the gap between the "
+            f"gripper's geoms by {abs(gaps[1] - gaps[0]) * 1e3:.2f} mm over its control "
+            f"range {lo:g}..{hi:g} (it may move them all together, as an arm axis does)")
+    return (lo, hi) if gaps[0] < gaps[1] else (hi, lo)
 
 
 def moves_geoms(model: mujoco.MjModel, actuators: Sequence[int], geom_ids: Sequence[int], *,

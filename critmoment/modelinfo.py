@@ -426,15 +426,17 @@ def gripper_at(model: mujoco.MjModel, body: str, *, keyframe: int | None = None,
     acts = [a for a in range(model.nu)
             if (moved := act_info.moved_bodies(model, a)) and all(below[m] and m != b for m in moved)]
     moving, closed, opened, still = [], [], [], []
-    for a in acts:
-        try:
-            c, o = act_info.closing_ends(model, [a], geoms, keyframe=keyframe)
+    for k, a in enumerate(acts):
+        try:  # alone: does it open or close the geoms at all (a spread does not)?
+            act_info.closing_ends(model, [a], geoms, keyframe=keyframe)
+            # which way: with the others below the body at mid range, as in a grasp
+            c, o = act_info.closing_end(model, acts, k, geoms, keyframe=keyframe)
         except ValueError:
             still.append(model.actuator(a).name)
             continue
         moving.append(model.actuator(a).name)
-        closed.append(c[0])
-        opened.append(o[0])
+        closed.append(c)
+        opened.append(o)
     if not moving:
         # an actuator on the body's own joint moves it whole (one jaw, or the wrist): the
         # gripper is the body above that holds both jaws

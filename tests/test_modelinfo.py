@@ -1316,3 +1316,38 @@ def test_an_arm_without_a_hand_is_told_to_attach_one(tmp_path):
     with pytest.raises(ScenarioError, match=r"found no gripper: .*no actuator looks like "
                                             r"one; an arm without a hand"):
         init_scenario(xml, object_body="cube", task="pick_hold", out=tmp_path / "s.toml")
+
+
+def test_a_hands_knuckles_close_at_their_flexed_end(tmp_path):
+    """probe r35 (Menagerie's Allegro): ``init --gripper palm`` measured each finger joint
+    with the hand's other joints left straight, and so read the knuckles (MCP flexion) as
+    closed at their extended end: a trajectory in init's convention approached with the
+    fingers curled down and knocked the ball away. Each is now measured with the other joints
+    below the palm at mid range, as in a grasp. A three-finger hand authored here: a knuckle
+    that flexes its straight finger down towards the object closes at its flexed end."""
+    from critmoment.modelinfo import gripper_at
+
+    def finger(i, y):
+        return f'''
+          <body name="f{i}1" pos="0.05 {y} 0"><joint name="f{i}a1" axis="0 1 0" range="-0.196 1.61"/>
+            <geom type="capsule" fromto="0 0 0 0.054 0 0" size="0.01" mass="0.02"/>
+            <body name="f{i}2" pos="0.054 0 0"><joint name="f{i}a2" axis="0 1 0" range="-0.174 1.709"/>
+              <geom type="capsule" fromto="0 0 0 0.038 0 0" size="0.01" mass="0.02"/>
+              <body name="f{i}3" pos="0.038 0 0"><joint name="f{i}a3" axis="0 1 0" range="-0.227 1.618"/>
+                <geom type="capsule" fromto="0 0 0 0.044 0 0" size="0.01" mass="0.02"/>
+              </body></body></body>'''
+    acts = "".join(
+        f'<position name="f{i}a{j}" joint="f{i}a{j}" kp="5" kv="0.1" ctrlrange="{r}"/>'
+        for i in range(3)
+        for j, r in ((1, "-0.196 1.61"), (2, "-0.174 1.709"), (3, "-0.227 1.618")))
+    xml = f'''<mujoco><option timestep="0.002" integrator="implicitfast"/>
+      <default><joint armature="0.001" damping="0.02"/></default>
+      <worldbody><geom name="floor" type="plane" size="1 1 .1"/>
+      <body name="palm" pos="0 0 0.3"><geom type="box" size="0.05 0.05 0.01" mass="0.3"/>
+      {finger(0, -0.03)}{finger(1, 0.0)}{finger(2, 0.03)}</body>
+      <body name="ball" pos="0.08 0 0.03"><freejoint/><geom type="sphere" size="0.03" mass="0.1"/>
+      </body></worldbody><actuator>{acts}</actuator></mujoco>'''
+    model = mujoco.MjModel.from_xml_string(xml)
+    guess = gripper_at(model, "palm")
+    closed = dict(zip(guess.actuators, guess.closed, strict=True))
+    assert {closed[f"f{i}a1"] for i in range(3)} == {1.61}
