@@ -504,8 +504,13 @@ def _gripper_ends(entry, acts, where, model, grippers, keyframe):
         except ValueError as exc:
             raise ScenarioError(f"{where}: cannot tell closed from open ({exc}); give "
                                 "closed = ... and open = ...") from None
-    if any(c == o for c, o in zip(closed, open_, strict=True)):
-        raise ScenarioError(f"{where}: expected closed != open, got {closed} and {open_}")
+    same = [model.actuator(i).name for i, c, o in zip(ids, closed, open_, strict=True)
+            if c == o]
+    if same:
+        raise ScenarioError(f"{where}: expected closed != open for every actuator, got the "
+                            f"same value for {', '.join(repr(n) for n in same)} (closed "
+                            f"{closed}, open {open_}); an actuator that does not open or close "
+                            f"the gripper belongs in a channel of its own")
     return [o - c for c, o in zip(closed, open_, strict=True)], closed
 
 

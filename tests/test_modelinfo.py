@@ -3,6 +3,7 @@ as they ship: named and unnamed elements, three gripper mechanisms, torque motor
 
 from __future__ import annotations
 
+import re
 import warnings
 from pathlib import Path
 
@@ -1351,3 +1352,20 @@ def test_a_hands_knuckles_close_at_their_flexed_end(tmp_path):
     guess = gripper_at(model, "palm")
     closed = dict(zip(guess.actuators, guess.closed, strict=True))
     assert {closed[f"f{i}a1"] for i in range(3)} == {1.61}
+
+
+def test_a_channel_actuator_with_one_control_for_closed_and_open_is_named(tmp_path):
+    """probe r35: a gripper channel with one actuator whose closed and open values are the
+    same was refused with the two lists of values and no actuator named."""
+    model_path = _write(tmp_path, gripper="slides", named=True)
+    out = tmp_path / "scenario.toml"
+    init_scenario(model_path, object_body="cube", task="pick_hold", out=out)
+    text = out.read_text()
+    closed = re.search(r"closed = \[([^\]]*)\]", text)
+    assert closed, text
+    values = [v.strip() for v in closed.group(1).split(",")]
+    opened = re.search(r"open = \[([^\]]*)\]", text).group(1).split(",")
+    values[0] = opened[0].strip()  # the first actuator: closed = open
+    out.write_text(text.replace(closed.group(0), f"closed = [{', '.join(values)}]", 1))
+    with pytest.raises(ScenarioError, match=r"the same value for '[^']+'"):
+        load_scenario(out)
