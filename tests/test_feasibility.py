@@ -1136,3 +1136,46 @@ def test_inspect_does_not_offer_the_robot_base_as_an_object(tmp_path):
     assert any("'base' is free-floating" in n for n in info.notes)
     with pytest.raises(ScenarioError, match="'base' is the robot's free-floating base"):
         init_scenario(tmp_path / "legged.xml", object_body="base", task="pick_hold")
+
+
+def test_an_object_carried_by_its_moving_support_is_at_rest_on_it(tmp_path):
+    """probe r34: a cube on a tray of a mobile base that drives before the grasp was said to
+    move 402 mm "before any gripper touches it: it is not at rest at its start". Its motion
+    before the touch is now measured in the frame of the moving support it rests on. Here
+    the bundled Panda's cube rides a tray on a slide that starts at 0.1 m/s."""
+    import shutil
+
+    import critmoment as cm
+    from critmoment import panda_demo as pd
+    from critmoment.feasibility import _pretouch_motion
+    from critmoment.scenario import bundled_scenario_path
+
+    folder = tmp_path / "tray"
+    shutil.copytree(bundled_scenario_path("panda_pick_place").parent, folder)
+    scene = folder / "scene.xml"
+    text = scene.read_text()
+    tray = ('<body name="tray" pos="0.5 -0.15 0.005"><joint name="tray_slide" type="slide" '
+            'axis="0 1 0" damping="2"/><geom name="tray" type="box" size="0.06 0.06 0.005" '
+            'mass="1" friction="1 0.005 0.0001"/></body>\n  </worldbody>')
+    text = text.replace("</worldbody>", tray, 1).replace('<body name="cube" pos="0.5 -0.15 0.02">',
+                                                        '<body name="cube" pos="0.5 -0.15 0.03">')
+    assert "0.5 -0.15 0.02 1 0 0 0" in text
+    text = text.replace("0.5 -0.15 0.02 1 0 0 0", "0.5 -0.15 0.03 1 0 0 0 0", 1)
+    scene.write_text(text)
+    toml = folder / "scenario.toml"
+    toml.write_text(toml.read_text().replace('geoms = ["table"]', 'geoms = ["table", "tray"]', 1))
+    twin = cm.Twin(cm.load_scenario(folder))
+    traj = pd.make_pick_place(0, model=twin.model)
+    qpos0 = np.array(traj.qpos0)
+    adr = twin.object_qposadr
+    qpos0[adr:adr + 3] = [0.5, -0.15, 0.03]
+    qvel0 = np.zeros(twin.model.nv)
+    qvel0[twin.model.jnt_dofadr[twin.model.joint("tray_slide").id]] = 0.1
+    import dataclasses
+
+    moving = dataclasses.replace(traj, qpos0=qpos0, qvel0=qvel0, object_pose=None,
+                                 actions=traj.actions[:100])
+    rec = cm.rollout(moving, twin=twin)
+    pos = np.asarray(rec.signals.object_pos)
+    assert np.linalg.norm(pos[-1] - pos[0]) > 0.01  # the tray carried it over a centimetre
+    assert _pretouch_motion(twin, rec) is None
