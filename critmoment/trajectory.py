@@ -1393,7 +1393,12 @@ def _index_column(column: Any, *, what: str) -> np.ndarray:
         first = int(np.flatnonzero(np.asarray(arr.is_null()))[0])
         raise TrajectoryError(f"{what}: expected an integer in every row, got null at row {first}")
     if pa.types.is_integer(arr.type):
-        out = np.asarray(arr.to_numpy(zero_copy_only=False), dtype=np.int64)
+        raw = np.asarray(arr.to_numpy(zero_copy_only=False))
+        if raw.dtype.kind == "u" and raw.size and int(raw.max()) > np.iinfo(np.int64).max:
+            i = int(np.argmax(raw > np.iinfo(np.int64).max))
+            raise TrajectoryError(f"{what}: expected indices below 2**63, got {int(raw[i])} at "
+                                  f"row {i}")
+        out = raw.astype(np.int64)
     elif pa.types.is_floating(arr.type):
         values = np.asarray(arr.to_numpy(zero_copy_only=False), dtype=np.float64)
         bad = np.flatnonzero(~np.isfinite(values) | (values != np.round(values)))
@@ -1494,6 +1499,13 @@ def list_episodes(path: str | os.PathLike) -> tuple[Episode, ...]:
     for f in files:
         try:
             schema = pq.read_schema(f)
+            if "action" not in schema.names:
+                # LeRobot's own episode metadata (meta/episodes/...), or another table
+                raise TrajectoryError(
+                    f"{_short(f)!r}: expected episode data with a column 'action', found "
+                    f"columns {schema.names[:12]}{' ...' if len(schema.names) > 12 else ''} "
+                    f"(a dataset's meta/episodes table? give the dataset folder, or a file "
+                    f"under its data/)")
             if "episode_index" not in schema.names:
                 counts.setdefault(None, []).append((pq.ParquetFile(f).metadata.num_rows, f))
                 continue

@@ -919,3 +919,22 @@ def test_lerobot_sidecars_bom_one_row_and_reversed_rows(tmp_path):
                                                    .astype(np.float32))}), back)
     with pytest.raises(TrajectoryError, match=r"rows stored newest first"):
         load_trajectory(back)
+
+
+def test_episodes_of_a_metadata_table_and_huge_indices_are_refused(tmp_path):
+    """probe r35: ``critmoment episodes meta/episodes/chunk-000/file-000.parquet`` (LeRobot's
+    episode metadata, no actions) listed "1 frames" episodes; a uint64 frame_index of 2**63
+    read as -9223372036854775808."""
+    meta = tmp_path / "file-000.parquet"
+    pq.write_table(pa.table({"episode_index": pa.array([0, 1, 2], pa.int64()),
+                             "length": pa.array([400, 400, 400], pa.int64())}), meta)
+    with pytest.raises(TrajectoryError, match=r"expected episode data with a column 'action'.*"
+                                              r"meta/episodes"):
+        list_episodes(meta)
+    huge = tmp_path / "huge.parquet"
+    pq.write_table(pa.table({"action": pa.array([[0.0] * NA] * 2, pa.list_(pa.float64())),
+                             "episode_index": pa.array([0, 0], pa.int64()),
+                             "frame_index": pa.array([0, 2 ** 63], pa.uint64())}), huge)
+    with pytest.raises(TrajectoryError, match=r"expected indices below 2\*\*63, got "
+                                              r"9223372036854775808"):
+        load_trajectory(huge)
