@@ -570,9 +570,8 @@ def into_ranges(model: mujoco.MjModel, qpos: np.ndarray,
 
 def gripper_gap(model: mujoco.MjModel, actuators: Sequence[int], ctrl: Sequence[float],
                 geom_ids: Sequence[int], *, keyframe: int | None = None,
-                seconds: float = 0.6, positions: bool = False) -> float | np.ndarray:
-    """Mean distance between a gripper's geoms after driving it to ``ctrl`` [m] (with
-    ``positions``, the geoms' centres then, (n, 3)).
+                seconds: float = 0.6) -> float:
+    """Mean distance between a gripper's geoms after driving it to ``ctrl`` [m].
 
     The gripper's own joints move under their actuators for ``seconds`` of simulated
     time; every other joint is held where the keyframe (or qpos0) puts it, gravity and
@@ -628,8 +627,6 @@ def gripper_gap(model: mujoco.MjModel, actuators: Sequence[int], ctrl: Sequence[
         d.qvel[hold_v] = 0
     mujoco.mj_kinematics(m, d)
     pts = d.geom_xpos[list(geom_ids)]
-    if positions:
-        return pts.copy()
     diff = pts[:, None, :] - pts[None, :, :]
     # the mean over pairs: a palm far from the fingertips would dominate the largest one
     n = len(geom_ids)

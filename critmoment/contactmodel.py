@@ -570,6 +570,7 @@ def _nominal_creep(model: mujoco.MjModel, states: np.ndarray, first: int, steps:
     evenly) from physics step ``first`` (``states[k + 1]`` is the state after step k); and
     the names of the geoms (bodies for unnamed ones) other than ``known`` that the body
     touches at those steps up to the largest displacement."""
+    from critmoment.sparse import _object_in_grippers
     from critmoment.twin import STATE_SPEC
 
     if steps.size == 0:
@@ -584,9 +585,8 @@ def _nominal_creep(model: mujoco.MjModel, states: np.ndarray, first: int, steps:
     for i, k in enumerate(picks):
         mujoco.mj_setState(model, data, np.asarray(states[k], dtype=float), STATE_SPEC)
         mujoco.mj_fwdPosition(model, data)
-        rot = data.xmat[body].reshape(3, 3)
-        frame = data.xmat[anchor].reshape(3, 3)
-        rel[i] = (data.xpos[body] - data.xpos[anchor] + points @ rot.T) @ frame
+        rel[i] = _object_in_grippers(data.xpos[None, None], data.xmat[None, None], body,
+                                     np.array([anchor]), points)[0, 0, 0]
         touched.append(_other_contacts(model, data, body, known))
     moved = np.linalg.norm((rel - rel[0]) @ np.asarray(projector, dtype=float).T, axis=-1)
     worst = int(np.argmax(moved.max(axis=1)))

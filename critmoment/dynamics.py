@@ -1188,14 +1188,16 @@ def passive_forces(model: mujoco.MjModel, states: np.ndarray) -> np.ndarray:
     return out
 
 
-def standing_actuators(model: mujoco.MjModel, data: mujoco.MjData, twin) -> set[int]:
+def standing_actuators(model: mujoco.MjModel, data: mujoco.MjData, twin,
+                       bases: Sequence[int] | None = None) -> set[int]:
     """The actuators on joints that stand a free-floating robot base on its contacts in
     ``data`` (collision done; :func:`critmoment.actuators.supporting_joints`, the object's
     contacts left out): their load includes the robot's weight, which inverse dynamics of
-    the floating chain does not give them."""
+    the floating chain does not give them. ``bases``: the model's
+    :func:`critmoment.actuators.robot_bases`, where the caller has them."""
     from critmoment import actuators as act_info
 
-    bases = act_info.robot_bases(model)
+    bases = act_info.robot_bases(model) if bases is None else bases
     if not bases:
         return set()
     joints = act_info.supporting_joints(model, data, bases, exclude=[twin.object_body_id])
@@ -1304,11 +1306,12 @@ def trajectory_load_bound(recording, twin, *, masses: Sequence[float] | np.ndarr
     standing: set[int] = set()
     from critmoment import actuators as act_info
 
-    if act_info.robot_bases(model):
+    bases = act_info.robot_bases(model)
+    if bases:
         for k in range(0, n_steps, max(1, int(round(0.05 / dt)))):  # every 50 ms
             mujoco.mj_setState(model, data, states[k], STATE_SPEC)
             mujoco.mj_fwdPosition(model, data)
-            standing |= standing_actuators(model, data, twin)
+            standing |= standing_actuators(model, data, twin, bases)
     return LoadBound(masses=masses, fos=fos, limiting=limiting.astype(np.int64),
                      carried=carried, critical_mass=crit,
                      actuator_names=tuple(twin.actuator_names), dt=dt,

@@ -224,9 +224,12 @@ class Task:
         if ev.n_steps == 0:
             return recent
         gap = np.argmax(touch[..., ::-1], axis=-1) * ev.dt  # since the last touch [s]
-        up = np.asarray(self.up, dtype=np.float64)
-        down = -(np.asarray(ev.object_vel)[..., -1, :] @ (up / (np.linalg.norm(up) or 1.0)))
-        return recent & ((gap <= END_GAP + 1e-12) | (down < END_FALL_SPEED))
+        return recent & ((gap <= END_GAP + 1e-12) | (self._falling(ev) < END_FALL_SPEED))
+
+    def _falling(self, ev: TaskEvidence) -> np.ndarray:
+        """How fast the object moves down at the last step [m/s], (...) (``up`` is a unit
+        vector)."""
+        return -(np.asarray(ev.object_vel)[..., -1, :] @ np.asarray(self.up, dtype=np.float64))
 
     def _base_tilt(self, ev: TaskEvidence) -> np.ndarray:
         """The largest tilt of a free-floating robot base from its first step [deg], (...);
@@ -262,10 +265,9 @@ class Task:
                 when = (f" (it last touched it at t = {(last[-1] + 1) * ev.dt:.2f} s)" if last.size
                         else " (it never touched it)")
                 if last.size and bool(self._final(touch, ev, "any")):
-                    up = np.asarray(self.up, dtype=np.float64)
-                    fall = -float(ev.object_vel[-1] @ (up / (np.linalg.norm(up) or 1.0)))
                     when = (f" (it last touched it at t = {(last[-1] + 1) * ev.dt:.3f} s, and "
-                            f"the object falls at {fall:.2g} m/s at the end)")
+                            f"the object falls at {float(self._falling(ev)):.2g} m/s at the "
+                            f"end)")
                 out.append(f"{gripper} does not {verb} the object at the end{when}")
         if not bool(self._final(~ev.contact_support, ev, "all")):
             out.append("the object rests on its support at the end")
