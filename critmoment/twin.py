@@ -44,7 +44,7 @@ from critmoment.exceptions import (
     TrajectoryError,
 )
 from critmoment.params import ForceLimitParameter, FrictionParameter
-from critmoment.scenario import Scenario, channel_gripper
+from critmoment.scenario import GENERATED, Scenario, channel_gripper
 from critmoment.task import TaskEvidence
 
 __all__ = ["CONTACT_SLOTS", "STATE_SPEC", "Signals", "SlipMasks", "Twin", "carried_flags",
@@ -416,8 +416,6 @@ class Twin:
         """Warn where the friction parameter's nominal replaces the friction the model's own
         grip contacts have: an explicit pair's in the MJCF, or the one MuJoCo's rule gives
         a contact critmoment made a pair of (``critmoment:pair:``)."""
-        from critmoment.scenario import GENERATED
-
         box = self.scenario.box
         for p, pairs, nominal in zip(box.parameters, self._param_pairs, box.nominal,
                                      strict=True):
@@ -552,9 +550,12 @@ class Twin:
         # every other free body's up axis: the robot's free-floating base is among them
         # (a free body that carries actuated joints, known once compiled), whose tilt the
         # task's rule reads (Task.max_base_tilt)
-        for body in spec.bodies:
-            if (body.name and body.name != sc.object_body
+        for index, body in enumerate(spec.bodies):
+            if (index and body.name != sc.object_body
                     and any(j.type == mujoco.mjtJoint.mjJNT_FREE for j in body.joints)):
+                # an unnamed one is named in critmoment's copy, as its geoms are, so that a
+                # sensor can read it (its tilt had gone unjudged)
+                body.name = body.name or f"{GENERATED}body:{index}"
                 s = spec.add_sensor()
                 s.name = _sensor_name("base_up", body.name)
                 s.type = mujoco.mjtSensor.mjSENS_FRAMEZAXIS
@@ -601,7 +602,7 @@ class Twin:
             setattr(self, name, _as_slice(getattr(self, name)))
         #: the robot's free-floating bases (act_info.robot_bases), and the addresses of their
         #: up axes' readings (B, 3)
-        self.robot_bases = tuple(b for b in act_info.robot_bases(model) if model.body(b).name)
+        self.robot_bases = tuple(act_info.robot_bases(model))
         self._base_adr = np.array([np.arange(a, a + 3) for a in (
             adr(_sensor_name("base_up", model.body(b).name))[0] for b in self.robot_bases)],
             dtype=np.int64).reshape(-1, 3)

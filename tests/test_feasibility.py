@@ -1179,3 +1179,24 @@ def test_an_object_carried_by_its_moving_support_is_at_rest_on_it(tmp_path):
     pos = np.asarray(rec.signals.object_pos)
     assert np.linalg.norm(pos[-1] - pos[0]) > 0.01  # the tray carried it over a centimetre
     assert _pretouch_motion(twin, rec) is None
+
+
+def test_an_unnamed_free_robot_base_is_read_as_a_named_one(tmp_path):
+    """A robot base left unnamed in the MJCF (as many shipped models leave bodies) had no
+    up-axis sensor: the twin listed no free-floating base, and the task's tilt rule never
+    judged it. critmoment's copy names it, as it names unnamed geoms."""
+    from inline_models import LEGGED_MJCF
+
+    import critmoment as cm
+    from critmoment.modelinfo import init_scenario
+
+    tmp_path.mkdir(parents=True, exist_ok=True)
+    xml = LEGGED_MJCF.replace('<body name="base" pos="0 0 0.17">', '<body pos="0 0 0.17">', 1)
+    assert xml != LEGGED_MJCF
+    (tmp_path / "legged.xml").write_text(xml)
+    init_scenario(tmp_path / "legged.xml", object_body="cube", task="pick_hold",
+                  out=tmp_path / "scenario.toml")
+    twin = cm.Twin(cm.load_scenario(tmp_path))
+    assert len(twin.robot_bases) == 1
+    axis = twin.base_axis(np.zeros((4, twin.nsensordata)))
+    assert axis is not None and axis.shape == (4, 1, 3)
