@@ -594,6 +594,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
     if opt.verify is not None and steps.size:
         verification = {"fraction": float(opt.verify),
                         "cost_from": float(opt.verify * threshold), **runs.counts(failed)}
+    own_after = _own_failures_after(chosen, res, failed, runs, roll, samples, rec.dt)
     moment_reports = []
     worst_failed_sparse: dict[int, bool] = {}  # per moment: its worst case fails (sparse)
     worst_unlifted: dict[int, bool] = {}  # per failing moment: its worst case is unlifted
@@ -646,7 +647,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
             min_fos_motor=_nanmin(res.fos_motor[row]),
             critical=crit, critical_side=side, dominant=dominant,
             limiting_actuator=twin.actuator_names[motor],
-            fail_fraction=float(standing.mean()), analytic=analytics.get(s),
+            fail_fraction=float(standing.mean()), own_fail_fraction=float(own_after[row]),
+            analytic=analytics.get(s),
             overturned=bool(fails_here.any() and not standing.any()),
             search=searches.get(s), reached=float((~np.isnan(res.cost[row])).mean()),
             squeeze=bool(squeeze), audited_step=None if s == int(m.step) else s,
@@ -954,7 +956,8 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
 
     def chain():
         if not (options.chain and moments):
-            return np.zeros(n, bool), np.zeros(n, bool), np.zeros(n, bool), [None] * n
+            return (np.zeros(n, bool), np.zeros(n, bool), np.zeros(n, bool), [None] * n,
+                    np.full(n, -1, np.int64))
         with timer("chained segments"):
             return chain_samples(evaluator.fork(), steps, samples, sweep, rerun, options,
                                  nominal_completed=nominal_completed,
@@ -981,7 +984,7 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
             finally:
                 evaluator.busy = None
             verifying.run()  # this thread takes the rollouts if that thread has not
-            chained, chained_failed, suspect, kinds = chaining.result()
+            chained, chained_failed, suspect, kinds, chained_steps = chaining.result()
             rerun_failed = verifying.result()
         except BaseException:
             # stopped (an interrupt, a timeout, an error here): the physics thread stops at
@@ -997,7 +1000,8 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
         suspect = np.zeros(n, bool)
     return vd.SampleRuns(reruns=reruns, chained=chained, chained_failed=chained_failed,
                          suspect=suspect, rerun_failed=rerun_failed,
-                         nominal_failed=nominal_failed, chained_kinds=tuple(kinds)), extra
+                         nominal_failed=nominal_failed, chained_kinds=tuple(kinds),
+                         chained_steps=chained_steps), extra
 
 
 def _nominal_run_failure(reference: NominalReference | None, twin: Twin,
@@ -1035,6 +1039,34 @@ def _motor_name(twin: Twin, column: int) -> str | None:
     order, as ``Classification.motor_column`` counts them), or None for −1."""
     motors = np.flatnonzero(twin.motors)
     return twin.actuator_names[motors[column]] if 0 <= column < motors.size else None
+
+
+def _own_failures_after(moments, sweep: sp.SparseResult, failed: np.ndarray,
+                        runs: vd.SampleRuns, roll: _Rollouts, samples: np.ndarray,
+                        dt: float) -> np.ndarray:
+    """Per moment (time order), the fraction of the sweep's samples that pass sparse
+    evaluation at every moment and fail on their own run (its full rollout, else its chain)
+    first after the moment and before the next (:attr:`MomentReport.own_fail_fraction`)."""
+    out = np.zeros(len(moments))
+    n = samples.shape[0]
+    if not len(moments) or n == 0:
+        return out
+    times = np.array([float(m.time) for m in moments])
+    order = np.argsort(times, kind="stable")  # the moments come by importance
+    times = times[order]
+    own = np.asarray(failed, bool) & ~np.asarray(sweep.failed, bool).any(axis=0)
+    rerun = runs.rerun
+    for i in np.flatnonzero(own):
+        when = None
+        if rerun[i]:
+            got = roll.outcomes.get(_point_key(samples[i]))
+            when = None if got is None else got[1]
+        elif runs.chained[i] and runs.chained_steps is not None and runs.chained_steps[i] >= 0:
+            when = float(runs.chained_steps[i]) * dt
+        if when is None or when < times[0]:
+            continue
+        out[order[int(np.searchsorted(times, when, side="right")) - 1]] += 1.0 / n
+    return out
 
 
 def _chain_kinds(runs: vd.SampleRuns, failed: np.ndarray) -> dict[str, int]:
@@ -1184,13 +1216,14 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
                   sweep: sp.SparseResult | None, rerun: np.ndarray,
                   options: vd.DecisionOptions, *, nominal_completed: bool = True,
                   chained_before: dict | None = None
-                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str | None]]:
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str | None], np.ndarray]:
     """The chained evidence of the decision: which samples were carried on their own state
     (:func:`critmoment.verdict.samples_to_chain`), whether they failed there, and which of
     them their own full rollout should decide (with verification on: the failures of
     ``ChainedResult.to_confirm``, and the passes that came within ``options.verify`` of a
     watched rule's limit, ``ChainedResult.near``, as the sweep's passes near the cost
-    threshold are), each (n,) bool. Shared by :func:`analyze`, :func:`check_region` and
+    threshold are), each (n,) bool; how each chained failure failed
+    (``ChainedResult.kinds``) and at which step (−1 for none), (n,) int. Shared by :func:`analyze`, :func:`check_region` and
     :func:`critmoment.validation.predict`.
 
     A chain is the sample's own run only approximately (it starts from the nominal state
@@ -1213,8 +1246,9 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
     chained_failed = np.zeros(n, bool)
     suspect = np.zeros(n, bool)
     kinds: list[str | None] = [None] * n
+    first = np.full(n, -1, np.int64)
     if sweep is None or steps.size == 0:
-        return chained, chained_failed, suspect, kinds
+        return chained, chained_failed, suspect, kinds, first
     chained = vd.samples_to_chain(sweep, rerun, options, nominal_completed=nominal_completed)
     known = {} if chained_before is None else chained_before
     rows = np.flatnonzero(chained)
@@ -1230,12 +1264,13 @@ def chain_samples(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.
         # goes there too, ChainedResult.to_confirm)
         if result.drop_step is not None:
             near = near | ((result.drop_step >= 0) & ~result.failed)
-        for i, failed, confirm, close, kind in zip(todo, result.failed, result.to_confirm,
-                                                   near, result.kinds(), strict=True):
-            known[keys[int(i)]] = (bool(failed), bool(confirm or close), kind)
+        for i, failed, confirm, close, (kind, step) in zip(
+                todo, result.failed, result.to_confirm, near, result.first_failures(),
+                strict=True):
+            known[keys[int(i)]] = (bool(failed), bool(confirm or close), kind, step)
     for i, key in keys.items():
-        chained_failed[i], suspect[i], kinds[i] = known[key]
-    return chained, chained_failed, suspect, kinds
+        chained_failed[i], suspect[i], kinds[i], first[i] = known[key]
+    return chained, chained_failed, suspect, kinds, first
 
 
 def check_region(region: Mapping[str, tuple[float, float]], *, trajectory: Trajectory,

@@ -496,7 +496,8 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
         return report
     settings = sparse_settings(sc, slip_tolerance=slip_tolerance)
     sig = recording.signals
-    masks = twin.slip_masks(recording.controls, sig.contact_gripper, sig.contact_support)
+    masks = twin.slip_masks(recording.controls, sig.contact_gripper, sig.contact_support,
+                            getattr(recording, "sensordata", None))
     alone = masks.counted
     best = None  # (length, start, gripper)
     for g in range(alone.shape[1]):
@@ -524,14 +525,13 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
     # from where the ground truth starts counting (the gripper's first hold, or after a
     # regrasp the hold's own grasp), over the steps it counts: the lift-off's sag included
     # (measured from the longest hold's start it read 12 mm where the ground truth forgave 24)
-    held = np.asarray(sig.contact_gripper, bool) & ~np.asarray(sig.contact_support,
-                                                               bool)[:, None]
-    first = int(hold_starts(held, masks.segments, masks.formed)[start, g])
+    first = int(hold_starts(np.asarray(sig.contact_gripper, bool), masks.segments,
+                            masks.formed)[start, g])
     first = first if first >= 0 else start
     inside = masks.segments[:, g] == masks.segments[start, g]
     counted = np.flatnonzero(alone[:, g] & inside)
     counted = counted[counted >= first]
-    creep, touched = _nominal_creep(model, recording.states, first, counted,
+    creep, touched, origin = _nominal_creep(model, recording.states, first, counted,
                                     model.body(sc.object_body).id, int(anchors[g]),
                                     projectors[g], twin.grip_points,
                                     known=set(pads) | set(sc.support_geoms))
@@ -541,10 +541,14 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
         # soft contact does, and widens every sample's allowance the same way
         hit = (f", where it touches {', '.join(touched)} (neither a gripper "
                f"nor a support: a collision in the nominal run)" if touched else "")
+        # a turn in the grip (the object pivots about the fingers) moves its ends, not its
+        # middle: said so (an OpenMANIPULATOR-X's cube turned about 60° before its set-down)
+        turn = (f" (it turns in the grip: its origin moves {origin * 1e3:.3g} mm)"
+                if origin < 0.5 * creep else "")
         finding = ContactFinding(
             "nominal-creep", Severity.WARNING,
-            f"the nominal run's own object moves {creep * 1e3:.3g} mm in the grip over its "
-            f"{length * float(recording.dt):.2g} s hold{hit}: slip is counted beyond the "
+            f"the nominal run's own object moves {creep * 1e3:.3g} mm{turn} in the grip over its "
+            f"{(counted[-1] + 1 - first) * float(recording.dt):.2g} s hold{hit}: slip is counted beyond the "
             f"nominal run's own motion, so every sample may move this much and pass; if that "
             f"is too much for the task, the nominal grasp itself is not good enough (grip "
             f"harder, or check the object's contact settings{' and its path' if hit else ''})")
@@ -564,17 +568,18 @@ NOMINAL_CREEP = 0.01
 def _nominal_creep(model: mujoco.MjModel, states: np.ndarray, first: int, steps: np.ndarray,
                    body: int, anchor: int, projector: np.ndarray, points: np.ndarray,
                    known: set[str] = frozenset(), probes: int = 200
-                   ) -> tuple[float, tuple[str, ...]]:
-    """The largest displacement [m] of ``body``'s ``points`` (``Twin.grip_points``) in
-    ``anchor``'s frame, projected, at the physics ``steps`` (at most ``probes`` of them,
-    evenly) from physics step ``first`` (``states[k + 1]`` is the state after step k); and
-    the names of the geoms (bodies for unnamed ones) other than ``known`` that the body
-    touches at those steps up to the largest displacement."""
+                   ) -> tuple[float, tuple[str, ...], float]:
+    """The largest displacement [m] of ``body``'s ``points`` (``Twin.grip_points``, its
+    origin first) in ``anchor``'s frame, projected, at the physics ``steps`` (at most
+    ``probes`` of them, evenly) from physics step ``first`` (``states[k + 1]`` is the state
+    after step k); the names of the geoms (bodies for unnamed ones) other than ``known``
+    that the body touches at those steps up to the largest displacement; and its origin's
+    displacement there [m] (far less than its farthest point's: it turns in the grip)."""
     from critmoment.sparse import _object_in_grippers
     from critmoment.twin import STATE_SPEC
 
     if steps.size == 0:
-        return 0.0, ()
+        return 0.0, (), 0.0
     picks = np.concatenate([[first], steps[np.unique(
         np.linspace(0, steps.size - 1, min(steps.size, probes)).astype(int))]]) + 1
     picks = np.minimum(picks, len(states) - 1)
@@ -591,7 +596,7 @@ def _nominal_creep(model: mujoco.MjModel, states: np.ndarray, first: int, steps:
     moved = np.linalg.norm((rel - rel[0]) @ np.asarray(projector, dtype=float).T, axis=-1)
     worst = int(np.argmax(moved.max(axis=1)))
     names = sorted(set().union(*touched[:worst + 1]))
-    return float(moved.max()), tuple(names)
+    return float(moved.max()), tuple(names), float(moved[worst, 0])
 
 
 def _other_contacts(model: mujoco.MjModel, data: mujoco.MjData, body: int,

@@ -533,18 +533,21 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
               nominal_held: np.ndarray, *, counted: np.ndarray | None = None,
               projectors: np.ndarray | None = None,
               segments: np.ndarray | None = None,
-              formed: np.ndarray | None = None) -> np.ndarray:
+              formed: np.ndarray | None = None,
+              touching: np.ndarray | None = None,
+              nominal_touching: np.ndarray | None = None) -> np.ndarray:
     """Displacement of the object in its holding grippers beyond the nominal run's.
 
     For gripper g, from the first step ``t0`` at which both the sample and the nominal run
-    hold the object with g, the sample's displacement ``p(t) − p(t0)`` and the nominal's
+    hold the object with g (with ``touching``: touch it, on its support or off it), the
+    sample's displacement ``p(t) − p(t0)`` and the nominal's
     ``p_nom(t) − p_nom(t0)`` of the object's position in g's base frame, each projected by
     ``projectors[g]`` (to drop the fingers' closing axis), give the slip at t: how far the
     sample's goes beyond the nominal's (:func:`beyond_nominal`: its distance to the segment
     from 0 to the nominal's; a sample that slides less than a creeping nominal grip has not
     slipped). It counts where both runs hold the object with g and ``counted`` allows it; the
     result is the largest over the grippers. Where the nominal run regrasps (``segments``),
-    each of its holds is measured from its own first step held by both; and only once its
+    each of its holds is measured from its own first such step; and only once its
     grasp has formed (``formed``): the object pushed into place by closing fingers has not
     slipped.
 
@@ -566,8 +569,12 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
         segments: which of the nominal gripper's holds each step belongs to
             (:meth:`Twin.hold_segments`), (T, G) int; default one hold.
         formed: where each gripper's grasp has formed (:meth:`Twin.grasp_formed`), (T, G)
-            bool: a hold is measured from its first step held by both there; default
-            everywhere.
+            bool: a hold is measured from its first step held (or touched) by both
+            there; default everywhere.
+        touching: the sample touches the object with gripper g, on its support or off it,
+            (n, T, G) bool; with ``nominal_touching`` (T, G), a hold is measured from its
+            first step touched by both once the grasp has formed (fingers that slide along
+            an object before it leaves its support have slipped); default ``held``.
 
     Returns:
         (n, T) displacement [m], 0 where it does not count.
@@ -599,7 +606,21 @@ def grip_slip(position: np.ndarray, nominal_position: np.ndarray, held: np.ndarr
     formed = np.ones((t, g), bool) if formed is None else np.asarray(formed, dtype=bool)
     if formed.shape != (t, g):
         raise ParameterError(f"formed: expected shape {(t, g)}, got {formed.shape}")
-    start = hold_starts(both, segments, formed)                     # (n, T, G)
+    # the anchor: the first step both touch the object with g once the grasp has formed,
+    # on its support or off it (fingers that slide along a heavy object before it leaves
+    # its support have slipped: measured from the lift-off, a Wonik Allegro's 0.85 kg ball
+    # that slid in the hand while it still sat on its pedestal was "held")
+    anchor = both
+    if touching is not None:
+        touching = np.asarray(touching, dtype=bool)
+        nominal_touching = np.asarray(
+            nominal_held if nominal_touching is None else nominal_touching, dtype=bool)
+        if touching.shape != (n, t, g) or nominal_touching.shape != (t, g):
+            raise ParameterError(
+                f"touching, nominal_touching: expected shapes {(n, t, g)} and {(t, g)}, got "
+                f"{touching.shape} and {nominal_touching.shape}")
+        anchor = touching & nominal_touching[None]
+    start = hold_starts(anchor, segments, formed)                   # (n, T, G)
     mask = mask & (start >= 0) & (np.arange(t)[None, :, None] >= start)
     t0 = np.maximum(start, 0)
     out = np.zeros((n, t))
@@ -751,6 +772,8 @@ class NominalReference:
         motor_column: the motor-checked actuator of a motor failure (``Twin.motors``
             order), −1 otherwise.
         motor_tracking: that motor failure is a tracking loss, not a saturation.
+        masks: where and from where its slip counts (:meth:`Twin.slip_masks`, from its
+            readings: the grasp forms once the fingers stop).
     """
 
     frames: _Frames
@@ -761,6 +784,7 @@ class NominalReference:
     first_failure_step: int = -1
     motor_column: int = -1
     motor_tracking: bool = False
+    masks: SlipMasks | None = None
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -886,16 +910,18 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
     everything = samples if reference is not None else np.vstack([box.nominal[None, :],
                                                                   samples])
     frames_ref = None if reference is None else reference.frames
-    masks = None
+    masks = None if reference is None else reference.masks
     parts, diverged = [], []
     for first, out, _mu in batched_rollouts(twin, state0, controls, everything,
                                             model=probe.model, chunk=chunk, nthread=nthread):
         budget.check_cancelled()
         rows = everything[first:first + out["sensordata"].shape[0]]
         frames = _Frames.read(twin, probe, out["sensordata"], twin.sample_limits(rows))
-        if frames_ref is None:
+        if frames_ref is None:  # the nominal run is this first chunk's row 0
             frames_ref = frames.row(0)
-        if masks is None:
+            masks = twin.slip_masks(controls, frames_ref.contact_gripper,
+                                    frames_ref.contact_support, out["sensordata"][0])
+        if masks is None:  # a reference made without its readings
             masks = twin.slip_masks(controls, frames_ref.contact_gripper,
                                     frames_ref.contact_support)
         parts.append(_classify_frames(frames, frames_ref, controls, probe, dt, criteria,
@@ -914,7 +940,7 @@ def _brute_force(traj: Trajectory, *, twin: Twin, samples: np.ndarray,
                                      motor_column=int(result.motor_column[0]),
                                      motor_tracking=bool(result.motor_tracking[0]),
                                      n_steps=int(controls.shape[0]),
-                                     nominal=box.nominal.copy())
+                                     nominal=box.nominal.copy(), masks=masks)
     return BruteForce(samples=samples, parameter_names=box.names, classification=classification,
                       diverged=np.concatenate(diverged)[keep],
                       nominal_completed=reference.completed, n_steps=controls.shape[0],
@@ -971,10 +997,11 @@ def reference_from_recording(recording, twin: Twin,
     controls = np.asarray(recording.controls, dtype=np.float64)
     dt = float(twin.model.opt.timestep)
     ref = frames.row(0)
+    masks = twin.slip_masks(controls, ref.contact_gripper, ref.contact_support, sd)
     own = _classify_frames(frames, ref, controls, probe, dt, criteria, np.zeros(1, bool),
-                           np.full(1, -1, np.int64),
-                           twin.slip_masks(controls, ref.contact_gripper, ref.contact_support))
+                           np.full(1, -1, np.int64), masks)
     return NominalReference(frames=ref, completed=bool(own.completed[0]), n_steps=n,
+                            masks=masks,
                             nominal=box.nominal.copy(), outcome=own.outcome[0],
                             first_failure_step=int(own.first_failure_step[0]),
                             motor_column=int(own.motor_column[0]),
@@ -1044,7 +1071,9 @@ def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, 
     excess = excess * tracking_tolerances(criteria, probe.slide, criteria.tracking_tolerance)
     slip = grip_slip(frames.position, reference.position, frames.held, reference.held,
                      counted=masks.counted, projectors=probe.projectors,
-                     segments=masks.segments, formed=masks.formed)
+                     segments=masks.segments, formed=masks.formed,
+                     touching=frames.contact_gripper,
+                     nominal_touching=reference.contact_gripper)
     nominal_carried = carried_flags(reference.contact_support, reference.contact_gripper)
     # the task's own physical success rule decides completion (critmoment.task)
     return classify(dt=dt, stage=frames.stage, contact_gripper=frames.contact_gripper,

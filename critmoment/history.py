@@ -298,6 +298,11 @@ class ChainedResult:
         "not_completed") for the watch's rules and the task's ("tracking" for a motor
         failure that is a joint lagging its target, not a saturation), or "moment" for a failure
         of a moment's sparse decision on the sample's own state."""
+        return [kind for kind, _ in self.first_failures()]
+
+    def first_failures(self) -> list[tuple[str | None, int]]:
+        """Per sample, (its :meth:`kinds` entry, the step of that earliest event): −1 for a
+        pass, the chain's ``end`` for a task not completed."""
         n = self.samples.shape[0]
         failed = self.failed
         big = np.iinfo(np.int64).max
@@ -306,22 +311,22 @@ class ChainedResult:
                   ("dropped", self.fall_step)]
         steps = np.where(self.failure > 0, self.steps[:, None], big).min(axis=0) \
             if self.failure.size else np.full(n, big)
-        out: list[str | None] = []
+        out: list[tuple[str | None, int]] = []
         for i in range(n):
             if not failed[i]:
-                out.append(None)
+                out.append((None, -1))
                 continue
             when = [(int(a[i]), name) for name, a in events if a is not None and a[i] >= 0]
             if steps[i] < big:
                 when.append((int(steps[i]), "moment"))
             if when:
-                kind = min(when)[1]
+                step, kind = min(when)
                 if kind == "motor" and self.motor_tracking is not None \
                         and self.motor_tracking[i]:
                     kind = "tracking"
-                out.append(kind)
+                out.append((kind, step))
             else:
-                out.append("not_completed")
+                out.append(("not_completed", int(self.end)))
         return out
 
     @property
@@ -472,8 +477,9 @@ class _Watch:
             nominal = ev._nominal_positions(k, s)                   # (s, G, K, 3)
             diff = rel - nominal[None]                              # (c, s, G, K, 3)
             found = self.found[ids]
-            # the hold's anchor: its first step held by both once the grasp has formed
-            anchor = both & ev._formed[k:k + s][None]
+            # the hold's anchor: its first step touched by both once the grasp has formed
+            # (grip_slip's)
+            anchor = touch & ev._touching[k:k + s][None] & ev._formed[k:k + s][None]
             first = np.argmax(anchor, axis=1)                       # (c, G)
             new = ~found & anchor.any(axis=1)
             rows, cols = np.nonzero(new)

@@ -404,6 +404,27 @@ def _find_grippers(model: mujoco.MjModel, infos, keyframe: int | None
     return guesses, notes
 
 
+#: grippers guessed within this distance [m] of each other, below one body, may be the
+#: fingers of one hand (init then says to name the hand with --gripper)
+HAND_SPAN = 0.1
+
+
+def _one_hand(model: mujoco.MjModel, data: mujoco.MjData, grippers) -> str | None:
+    """The body below which every one of two or more guessed ``grippers`` lies, all within
+    ``HAND_SPAN`` of each other, or None: a Shadow Hand's fingers, each a tendon-driven
+    "gripper" of its own, where one hand grasps (a bimanual robot's two hands lie farther
+    apart)."""
+    if len(grippers) < 2:
+        return None
+    bodies = [model.body(g.body).id for g in grippers]
+    where = data.xpos[bodies]
+    span = float(np.max(np.linalg.norm(where[:, None] - where[None], axis=-1)))
+    base = act_info.common_ancestor(model, bodies)
+    if span > HAND_SPAN or base == 0 or base in bodies:
+        return None
+    return model.body(base).name or None
+
+
 def gripper_at(model: mujoco.MjModel, body: str, *, keyframe: int | None = None,
                taken: set[str] | None = None) -> GripperGuess:
     """The gripper whose fingers lie below ``body`` (``init --gripper``): the actuators
@@ -911,6 +932,13 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     mujoco.mj_forward(model, data)
     dist = {g.name: float(np.linalg.norm(data.xpos[model.body(g.body).id] - data.xpos[bid]))
             for g in grippers}
+    if not named:
+        hand = _one_hand(model, data, grippers)
+        if hand is not None:
+            checks.append(
+                f"the grippers {', '.join(repr(g.name) for g in grippers)} lie within "
+                f"{HAND_SPAN * 100:g} cm of each other, below one body: if they are fingers "
+                f"of one hand that grasp together, run init again with --gripper {hand}")
     suction = {a.name for a in info.actuators if a.kind is act_info.ActuatorKind.ADHESION}
     for g in grippers:
         how = ("suction: closed = full pull, open = none" if set(g.actuators) <= suction

@@ -173,6 +173,7 @@ def report_json(report, *, timings: bool = True) -> dict:
             "dominant": mr.dominant,
             "limiting_actuator": mr.limiting_actuator,
             "fail_fraction": float(mr.fail_fraction),
+            "own_fail_fraction": float(mr.own_fail_fraction),
             "overturned": bool(mr.overturned),
             "worst_fails": mr.worst_fails,
             "worst_note": mr.worst_note,
@@ -430,7 +431,11 @@ def summary_text(report) -> str:
         lines.append(f"  {i}. {m.label.value:12s} step {m.step:5d} (t = {m.time:.2f} s): max cost "
                      f"{mr.max_cost:.3f} at {worst}{passing}; min FOS contact {format_fos(mr.min_fos_contact)}"
                      f"{trust}, motor {format_fos(mr.min_fos_motor)}; fails {mr.fail_fraction:.0%} "
-                     f"of the box here (reached by {mr.reached:.0%}); critical: {crit}")
+                     f"of the box here (reached by {mr.reached:.0%})"
+                     + (f", and {_share(mr.own_fail_fraction, report)} fail on their own "
+                        f"runs after it, before the next moment"
+                        if mr.own_fail_fraction > 0 else "")
+                     + f"; critical: {crit}")
     v = report.verification
     if v is not None:
         lines.append(f"  verification: {_verification_text(v)}")
@@ -925,6 +930,14 @@ def _verification_html(doc) -> str:
     return " · verification: " + _verification_text(v)
 
 
+def _share(fraction: float, report) -> str:
+    """A fraction of the sweep's samples as a percentage and a count: "94 % (241 of 256)";
+    a small one reads as its count, not "0 %"."""
+    n = report.sweep.n_samples if report.sweep is not None else 0
+    count = int(round(fraction * n))
+    return f"{fraction:.0%} ({count} of {n})" if n else f"{fraction:.0%}"
+
+
 def _verification_text(v) -> str:
     text = (f"{v['near']} sample(s) passing with cost ≥ {v['cost_from']:.3g} re-run in full, "
             f"{v['near_failed']} of them fail")
@@ -982,7 +995,9 @@ def _html(report, doc, images) -> str:
             f"<tr><td>{mr['step']}<br><span class=muted>{mr['time']:.2f} s</span></td>"
             f"<td>{e(mr['label'])}</td><td>{e(mr['reason'])}</td><td>{e(worst)}</td>"
             f"<td>{mc}</td><td>{mr['fail_fraction']:.0%}<br><span class=muted>reached by "
-            f"{mr['reached']:.0%}</span></td><td>{fc}</td><td>{fm} "
+            f"{mr['reached']:.0%}"
+            + (f"; {mr['own_fail_fraction']:.0%} fail on their own runs after it"
+               if mr.get("own_fail_fraction") else "") + f"</span></td><td>{fc}</td><td>{fm} "
             f"<span class=muted>({e(mr['limiting_actuator'])})</span></td>"
             f"<td>{e(crit)}</td><td>{e(str(mr['dominant'] or '—'))}</td><td>{an_txt}</td></tr>")
     unc = "".join(

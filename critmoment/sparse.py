@@ -891,6 +891,9 @@ class SparseEvaluator:
         self._anchors, self._projectors = grip_frames(model, twin.scenario)
         held = sig.contact_gripper & ~sig.contact_support[:, None]
         self._held = held
+        #: a gripper touches the object in the nominal run, (T, G): a hold's slip is
+        #: measured from the first such step once its grasp has formed (grip_slip)
+        self._touching = np.asarray(sig.contact_gripper, bool)
         #: a gripper touches the object in the nominal run, (T,)
         self._touched = sig.contact_gripper.any(axis=-1)
         # slip counts where the nominal run holds the object with one gripper alone: an
@@ -903,7 +906,8 @@ class SparseEvaluator:
         # Which of each gripper's holds a step belongs to (slip is measured from the hold's
         # own grasp after a regrasp) and where its grasp has formed (slip counts from
         # there): Twin.slip_masks
-        masks = twin.slip_masks(recording.controls, sig.contact_gripper, sig.contact_support)
+        masks = twin.slip_masks(recording.controls, sig.contact_gripper, sig.contact_support,
+                                getattr(recording, "sensordata", None))
         self._counted, self._segments, self._formed = masks.counted, masks.segments, masks.formed
         #: a gripper lets its object go in the nominal run, (T,)
         self._letting = masks.letting.any(axis=-1)
@@ -1838,14 +1842,15 @@ class SparseEvaluator:
         return np.where(alone & since, disp, 0.0).max(axis=-1)
 
     def _grasp(self) -> tuple[np.ndarray, np.ndarray]:
-        """Per step and gripper, the first step the nominal run holds the object with it in
-        that step's hold (:attr:`_segments`) once its grasp has formed (:attr:`_formed`; −1
+        """Per step and gripper, the first step the nominal run touches the object with it
+        in that step's hold (:attr:`_segments`) once its grasp has formed (:attr:`_formed`; −1
         where it does not), (T, G), and the object's points in that grip then, (T, G, K, 3)
         (cached)."""
         if self._grasp_cache is None:
             g = len(self._anchors)
             held = self._held[:, :g]
-            start = hold_starts(held, self._segments[:, :g], self._formed[:, :g])
+            start = hold_starts(self._touching[:, :g], self._segments[:, :g],
+                                self._formed[:, :g])
             grasp = np.zeros(held.shape + self._points.shape)
             if (start >= 0).any():
                 rows, cols = np.nonzero(start >= 0)

@@ -69,6 +69,11 @@ GRASP_CLOSING = 0.05
 GRASP_RATE = 0.01
 GRASP_SETTLE = 0.05
 GRASP_FORMING = 1.0
+#: ... and once its fingers have stopped: none of the gripper's geoms moves more than
+#: FINGERS_STILL [m] relative to the others within GRASP_SETTLE (slow finger servos go
+#: on pushing the object into place after their command is done: a Wonik Allegro's, for
+#: about 100 ms)
+FINGERS_STILL = 1e-3
 #: contact slots read per object/geom pair; MuJoCo's box-box collider makes at most 8
 CONTACT_SLOTS = 8
 #: the state saved in recordings: enough to restore a step bit-exactly (warmstart included)
@@ -248,23 +253,45 @@ def _sensor_name(*parts: str) -> str:
 
 def _channel_range(model: mujoco.MjModel, a: int, scale: float, offset: float
                    ) -> tuple[float, float]:
-    """The channel values whose joint target lies in the range of the joint actuator ``a``
-    drives, its control ``offset + scale·value``: the joint's range mapped back through
-    the servo's own target (:func:`critmoment.actuators.position_target`: a servo geared
-    2:1 holds its joint at ctrl / 2), or through ctrl itself for an actuator that tracks no
-    position; unbounded for an unlimited joint or another transmission."""
+    """The channel values that actuator ``a``, driven at ``offset + scale·value``, takes
+    as given: within its ``ctrlrange`` where it is limited (MuJoCo clamps the control
+    there, whatever the transmission: a Shadow Hand's tendon finger commanded to 3.5 of
+    its 0..3.1415 was clamped without a word, and its fist let the ball drop), and for a
+    joint actuator, with its joint target in the joint's range, mapped back through the
+    servo's own target (:func:`critmoment.actuators.position_target`: a servo geared 2:1
+    holds its joint at ctrl / 2), or through ctrl itself for an actuator that tracks no
+    position; unbounded where neither limits it."""
+    lo, hi = -np.inf, np.inf
+    if scale != 0 and model.actuator_ctrllimited[a]:
+        ends = sorted((float(c) - offset) / scale for c in model.actuator_ctrlrange[a])
+        lo, hi = ends[0], ends[1]
     if int(model.actuator_trntype[a]) not in (int(mujoco.mjtTrn.mjTRN_JOINT),
                                               int(mujoco.mjtTrn.mjTRN_JOINTINPARENT)):
-        return -np.inf, np.inf
+        return lo, hi
     joint = model.actuator_trnid[a, 0]
     if not model.jnt_limited[joint]:
-        return -np.inf, np.inf
+        return lo, hi
     q0 = act_info.position_target(model, a, offset)
     q1 = act_info.position_target(model, a, offset + scale)
     if q0 is None or q1 is None or q1 == q0:
         q0, q1 = offset, offset + scale
-    lo, hi = ((float(v) - q0) / (q1 - q0) for v in model.jnt_range[joint])
-    return min(lo, hi), max(lo, hi)
+    ends = sorted((float(v) - q0) / (q1 - q0) for v in model.jnt_range[joint])
+    return max(lo, ends[0]), min(hi, ends[1])
+
+
+def _fingers_still(fingers: np.ndarray, start: int, end: int, w: int) -> int:
+    """The first step from ``start`` (before ``end``) at which no finger position of
+    ``fingers`` (T, P, 3) moves more than ``FINGERS_STILL`` within the next ``w`` steps;
+    ``start`` itself where there is none (fingers that never stop, say a grip that follows
+    an object sliding out: the command's moment stands)."""
+    t = fingers.shape[0]
+    if fingers.shape[1] == 0 or start >= end:
+        return start
+    for k in range(start, end):
+        ahead = fingers[k:min(t, k + w + 1)] - fingers[k]
+        if float(np.max(np.einsum("tpi,tpi->tp", ahead, ahead))) <= FINGERS_STILL ** 2:
+            return k
+    return start
 
 
 def _release_start(u: np.ndarray) -> int | None:
@@ -531,6 +558,17 @@ class Twin:
         for g in sc.grippers:
             for geom in g.geoms:
                 contact(_sensor_name("grip", g.name, geom), geom, CONTACT_SLOTS, found_force)
+        # each gripper's geoms in the frame of its first: its fingers' motion, whatever
+        # carries the gripper (grasp_formed)
+        for g in sc.grippers:
+            for geom in g.geoms[1:]:
+                s = spec.add_sensor()
+                s.name = _sensor_name("finger", g.name, geom)
+                s.type = mujoco.mjtSensor.mjSENS_FRAMEPOS
+                s.objtype = mujoco.mjtObj.mjOBJ_GEOM
+                s.objname = geom
+                s.reftype = mujoco.mjtObj.mjOBJ_GEOM
+                s.refname = g.geoms[0]
         for geom in sc.support_geoms:
             contact(_sensor_name("support", geom), geom, 1, found)
         # the acceleration of the object's centre of mass (its load is m (a + g)); its
@@ -582,6 +620,11 @@ class Twin:
                 a, dim = adr(_sensor_name("grip", g.name, geom))
                 blocks.append(np.arange(a, a + dim))
             self._grip_adr.append(np.concatenate(blocks))
+        #: per gripper, the addresses of its other geoms' positions in its first geom's
+        #: frame (P − 1, 3)
+        self._finger_adr = [np.array([np.arange(a, a + 3) for a in (
+            adr(_sensor_name("finger", g.name, geom))[0] for geom in g.geoms[1:])],
+            dtype=np.int64).reshape(-1, 3) for g in sc.grippers]
         # each slot's first value says whether it holds a contact: read only those
         self._grip_found = [block[0::4] for block in self._grip_adr]
         self._support_adr = np.array([adr(_sensor_name("support", geom))[0]
@@ -1053,10 +1096,13 @@ class Twin:
         return self.slip_masks(controls, contact_gripper, contact_support).counted
 
     def slip_masks(self, controls: np.ndarray, contact_gripper: np.ndarray,
-                   contact_support: np.ndarray) -> SlipMasks:
+                   contact_support: np.ndarray,
+                   sensordata: np.ndarray | None = None) -> SlipMasks:
         """The nominal run's :meth:`slip_counted`, :meth:`hold_segments`,
-        :meth:`grasp_formed` and :meth:`letting_go` at once (the commands read and the holds found once): what the
-        ground truth, the chains and sparse evaluation measure slip with."""
+        :meth:`grasp_formed` and :meth:`letting_go` at once (the commands read and the
+        holds found once): what the ground truth, the chains and sparse evaluation measure
+        slip with. ``sensordata``: the nominal run's readings, (T, nsensordata) or more
+        columns (the grasp forms once its fingers stop, :meth:`grasp_formed`)."""
         touching = np.asarray(contact_gripper, bool)
         opening = self.gripper_opening(controls)
         releases = list(self._releases(opening, touching))
@@ -1064,7 +1110,20 @@ class Twin:
         segments = self._segments(releases, touching.shape)
         return SlipMasks(counted=self.held_alone(touching, contact_support) & ~letting,
                          segments=segments,
-                         formed=self._formed(opening, touching, segments), letting=letting)
+                         formed=self._formed(opening, touching, segments,
+                                             self._fingers(sensordata, touching.shape[0])),
+                         letting=letting)
+
+    def _fingers(self, sensordata: np.ndarray | None, steps: int) -> list | None:
+        """Each gripper's other geoms in its first geom's frame, (T, P − 1, 3) [m], from
+        the readings ``sensordata`` (T, ≥ nsensordata); None without readings."""
+        if sensordata is None:
+            return None
+        sd = np.asarray(sensordata, dtype=np.float64)
+        if sd.ndim != 2 or sd.shape[0] != steps or sd.shape[1] < self.nsensordata:
+            raise ParameterError(f"sensordata: expected ({steps}, >= {self.nsensordata}) "
+                                 f"readings of the nominal run, got {sd.shape}")
+        return [sd[:, adr] for adr in self._finger_adr]
 
     def letting_go(self, controls: np.ndarray, touching: np.ndarray) -> np.ndarray:
         """Where each gripper lets its object go, (T, G) bool: the release that ends a hold
@@ -1114,7 +1173,8 @@ class Twin:
             out[b:, g] += 1
         return out
 
-    def grasp_formed(self, controls: np.ndarray, touching: np.ndarray) -> np.ndarray:
+    def grasp_formed(self, controls: np.ndarray, touching: np.ndarray,
+                     sensordata: np.ndarray | None = None) -> np.ndarray:
         """Where each gripper's grasp has formed, (T, G) bool: in each of its holds
         (:meth:`hold_segments`), from the first step after its first touch at which the
         command has done all but ``GRASP_CLOSING`` of its closing, from its widest opening
@@ -1130,15 +1190,24 @@ class Twin:
         wraps its fingers around an object pushes it 1-2 cm into place while it closes, and
         differently for each mass and friction (a Kinova Gen3 with a multi-finger hand:
         17 of 32 samples were "slipped" during the closing, and held the object to the end).
+
+        With the run's readings ``sensordata`` (T, nsensordata), the grasp also waits, up to
+        ``GRASP_FORMING`` after the touch, for the fingers to stop: no geom of the gripper
+        moving more than ``FINGERS_STILL`` relative to its first within ``GRASP_SETTLE``.
+        A command is done before slow servos are: a Wonik Allegro's fingers (kp 10) go on
+        pushing a ball into place for about 100 ms after their command has closed, and 18
+        of 32 samples that held the ball to the end were "slipped" by that push.
         """
         touching = np.asarray(touching, bool)
         opening = self.gripper_opening(controls)
         return self._formed(opening, touching, self._segments(
-            self._releases(opening, touching), touching.shape))
+            self._releases(opening, touching), touching.shape),
+            self._fingers(sensordata, touching.shape[0]))
 
     def _formed(self, opening: np.ndarray, touching: np.ndarray,
-                segments: np.ndarray) -> np.ndarray:
-        """:meth:`grasp_formed` from the commanded opening and the holds' segments."""
+                segments: np.ndarray, fingers: list | None = None) -> np.ndarray:
+        """:meth:`grasp_formed` from the commanded opening, the holds' segments and the
+        fingers' positions (:meth:`_fingers`, or None)."""
         out = np.ones(touching.shape, bool)
         if touching.shape[0] == 0:
             return out
@@ -1157,13 +1226,21 @@ class Twin:
                 if not touched.size:
                     continue
                 t1 = a + int(touched[0])
-                low = np.minimum.accumulate(u[t1:min(b, t1 + cap)])
+                # the window runs GRASP_FORMING from where the command starts closing, at
+                # the touch or after it: a Shadow Hand's palm touched the ball 0.3 s before
+                # its fingers began to close, and the grasp had "formed" with its command
+                # still 22 % open
+                tighter = np.flatnonzero(u[t1:b] < u[t1] - GRASP_RATE)
+                c0 = t1 + (int(tighter[0]) - 1 if tighter.size else 0)
+                low = np.minimum.accumulate(u[t1:min(b, c0 + cap)])
                 span = max(float(u[a:t1 + 1].max()) - float(low[-1]), 0.0)
                 closed = low <= low[-1] + GRASP_CLOSING * span
                 later = np.concatenate([low[w:], np.full(min(w, low.size), low[-1])])
                 settled = later >= low - GRASP_RATE
                 start = t1 + max(int(np.argmax(closed)),
                                  int(np.argmax(settled)) if settled.any() else low.size)
+                if fingers is not None:
+                    start = _fingers_still(fingers[g], start, min(b, c0 + cap), w)
                 out[a:b, g] = steps[a:b] >= start
         return out
 

@@ -217,6 +217,11 @@ class MomentReport:
             stays at or under the threshold. A cost over the threshold that does not fail
             (a contact excursion shorter than the persistence) is no failure.
         worst_note: why a worst case whose cost crosses the threshold does not fail, or "".
+        own_fail_fraction: fraction of the sweep's samples that pass sparse evaluation at
+            every moment and fail on their own run (full rollout or chained segments) first
+            after this moment and before the next: where the moments' own line reads "fails
+            0 %" a cube dropped on its own run between them (an OpenMANIPULATOR-X's, 28 of
+            32 samples, just after the audited lift-off).
         critical_refuted: per parameter, (side, value) of a critical value of sparse
             evaluation that the full run just past it (the others at nominal) refutes: that
             run completes the task. It is left out of ``critical`` and ``critical_side``
@@ -233,6 +238,7 @@ class MomentReport:
     dominant: str | None
     limiting_actuator: str
     fail_fraction: float
+    own_fail_fraction: float = 0.0
     analytic: Mapping | None = None
     search: Mapping | None = None
     reached: float = 1.0
@@ -419,6 +425,9 @@ class SampleRuns:
     #: how each chained failure failed on its chain (``history.ChainedResult.kinds``), None
     #: for the others; empty when not known
     chained_kinds: tuple[str | None, ...] = ()
+    #: the step of each chained failure's earliest event (−1 for the others), (n,) int;
+    #: None when not known
+    chained_steps: np.ndarray | None = None
 
     @property
     def rerun(self) -> np.ndarray:

@@ -748,3 +748,26 @@ def test_critical_values_are_checked_by_the_full_run_just_past_them():
     tried = np.vstack(runs)
     assert any(np.allclose(row, [0.05, 1.2 - 0.014]) for row in tried)
     assert any(np.allclose(row, [0.6 - 0.01, 1.0]) for row in tried)
+
+
+def test_a_moment_says_how_many_samples_fail_on_their_own_runs_after_it():
+    """probe r35 (OpenMANIPULATOR-X): 28 of 32 samples dropped the cube on their own runs
+    just after the audited lift-off, while every moment's line read "fails 0 % of the box
+    here". Each moment now counts the samples that pass sparse evaluation everywhere and fail
+    on their own run (rollout, else chain) after it and before the next moment in time (the
+    moments come by importance, not time)."""
+    from types import SimpleNamespace
+
+    moments = [SimpleNamespace(time=t) for t in (2.0, 1.0, 3.0)]   # by importance
+    samples = np.arange(6, dtype=float)[:, None]
+    failed = np.array([True, True, True, True, False, True])
+    sweep = SimpleNamespace(failed=np.zeros((3, 6), bool))
+    sweep.failed[0, 5] = True                      # fails at a moment: counted there
+    rerun = np.array([True, False, False, False, False, False])
+    runs = SimpleNamespace(rerun=rerun, chained=~rerun,
+                           chained_steps=np.array([-1, 750, 1600, 100, -1, -1]))
+    roll = SimpleNamespace(outcomes={analysis._point_key(samples[0]): ("dropped", 1.2, None)})
+    out = analysis._own_failures_after(moments, sweep, failed, runs, roll, samples, 0.002)
+    # sample 0 at 1.2 s and 1 at 1.5 s: after the moment at 1 s; 2 at 3.2 s: after 3 s;
+    # 3 at 0.2 s: before every moment (the causes say it)
+    np.testing.assert_allclose(out, [0.0, 2 / 6, 1 / 6])

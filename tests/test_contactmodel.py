@@ -268,3 +268,41 @@ def test_a_nominal_collision_that_moves_the_object_in_the_grip_is_named(tmp_path
                                                     r"\S+ s hold, where it touches 'bottle'"):
         report = cm.check_contact_model(twin, rec)
     assert report.nominal_creep > 0.01
+
+
+def test_nominal_creep_tells_a_turn_in_the_grip_from_a_slide():
+    """probe r35 (OpenMANIPULATOR-X): the nominal cube pivoted about 60° in the fingers
+    before its set-down, and the warning read "moves 61.4 mm in the grip" as if it had slid.
+    ``_nominal_creep`` also gives the origin's displacement at the worst step: a turn about
+    the fingers moves the object's corners far more than its middle."""
+    from critmoment.twin import STATE_SPEC, grip_points
+
+    model = mujoco.MjModel.from_xml_string("""<mujoco><worldbody>
+      <body name="hand" pos="0 0 0.5"><geom type="box" size="0.01 0.01 0.01"/></body>
+      <body name="cube" pos="0 0 0.4"><freejoint/><geom type="box" size="0.04 0.04 0.04"/>
+      </body></worldbody></mujoco>""")
+    data = mujoco.MjData(model)
+    body, hand = model.body("cube").id, model.body("hand").id
+    points = grip_points(model, body)
+    states = []
+    for angle in np.linspace(0.0, np.pi / 3, 5):   # a turn about the cube's own x axis
+        data.qpos[3:7] = [np.cos(angle / 2), np.sin(angle / 2), 0.0, 0.0]
+        mujoco.mj_forward(model, data)
+        state = np.empty(mujoco.mj_stateSize(model, STATE_SPEC))
+        mujoco.mj_getState(model, data, state, STATE_SPEC)
+        states.append(state)
+    states = np.array(states)
+    moved, touched, origin = cm._nominal_creep(model, states, 0, np.arange(4), body, hand,
+                                               np.eye(3), points)
+    # states[k + 1] follows step k: from the state after step 0 (15°) to the last (60°)
+    assert moved == pytest.approx(2 * 0.04 * np.sqrt(2) * np.sin(np.pi / 8), rel=1e-6)
+    assert origin == pytest.approx(0.0, abs=1e-12) and touched == ()
+    data.qpos[:] = model.qpos0
+    slid = states.copy()
+    for i in range(5):
+        data.qpos[2] = 0.4 - 0.005 * i             # a slide down the fingers
+        mujoco.mj_forward(model, data)
+        mujoco.mj_getState(model, data, slid[i], STATE_SPEC)
+    moved, _, origin = cm._nominal_creep(model, slid, 0, np.arange(4), body, hand,
+                                         np.eye(3), points)
+    assert moved == pytest.approx(0.015) and origin == pytest.approx(0.015)

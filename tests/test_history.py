@@ -482,10 +482,10 @@ def test_a_chained_pass_close_to_a_rule_goes_to_its_own_rollout(scenario, demo_t
     sweep = ev.evaluate([start], samples)
     dopt = vd.DecisionOptions(threshold=scenario.cost.threshold, verify=expected - 0.01)
     none = np.zeros(2, bool)
-    chained, failed, rolled, kinds = analysis.chain_samples(ev, np.array([start]), samples,
-                                                            sweep, none, dopt)
+    chained, failed, rolled, kinds, first = analysis.chain_samples(
+        ev, np.array([start]), samples, sweep, none, dopt)
     assert chained[0] and not failed[0] and rolled[0]
-    assert len(kinds) == 2 and kinds[0] is None  # a pass has no failure kind
+    assert len(kinds) == 2 and kinds[0] is None and first[0] == -1  # a pass: no failure
     for verify in (None, expected + 0.01):
         off = dataclasses.replace(dopt, verify=verify)
         assert not analysis.chain_samples(ev, np.array([start]), samples, sweep, none,
@@ -577,7 +577,13 @@ def test_a_regrasp_starts_slip_afresh_alike_in_chains_sparse_and_ground_truth():
 
     ev = sparse.SparseEvaluator(rec, twin)
     start, _ = ev._grasp()
-    for j, first in enumerate([*firsts, -1]):
+    # each hold's anchor: its first step touched once its grasp has formed (the object
+    # still on the table: the slide of the fingers during the lift-off counts)
+    formed = twin.grasp_formed(rec.controls, sig.contact_gripper, rec.sensordata)[:, 0]
+    touched = sig.contact_gripper[:, 0] & formed
+    anchors = [int(np.argmax(touched & (segments[:, 0] == j))) for j in range(2)]
+    assert anchors[0] <= firsts[0] and anchors[1] <= firsts[1]
+    for j, first in enumerate([*anchors, -1]):
         assert (start[segments[:, 0] == j, 0] == first).all()
     samples = np.array([[0.05, 1.0], [0.9, 0.76], [1.7, 0.94], [0.8, 0.3]])
     chain = history.chained_failures(ev, [rec.n_steps - 2 * ev.horizon], samples)

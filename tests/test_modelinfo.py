@@ -17,7 +17,7 @@ from critmoment.cli import main
 from critmoment.exceptions import ScenarioError
 from critmoment.modelinfo import init_scenario, inspect_model
 from critmoment.recording import rollout
-from critmoment.scenario import load_scenario
+from critmoment.scenario import bundled_scenario_path, load_scenario
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin
 
@@ -1369,3 +1369,42 @@ def test_a_channel_actuator_with_one_control_for_closed_and_open_is_named(tmp_pa
     out.write_text(text.replace(closed.group(0), f"closed = [{', '.join(values)}]", 1))
     with pytest.raises(ScenarioError, match=r"the same value for '[^']+'"):
         load_scenario(out)
+
+
+def test_init_says_when_its_grippers_are_the_fingers_of_one_hand(tmp_path):
+    """probe r36 (Menagerie's Shadow Hand): without --gripper, init made each tendon-driven
+    finger a gripper of its own and picked the nearest by 1 mm, with no word that the hand
+    grasps as one. Guessed grippers within HAND_SPAN of each other below one body get a
+    check that names that body for --gripper; two hands far apart (ALOHA's) do not."""
+    def finger(i, y):
+        return f'''
+          <body name="f{i}" pos="0.05 {y} 0"><joint name="f{i}j1" axis="0 1 0" range="0 1.5"/>
+            <geom type="capsule" fromto="0 0 0 0.04 0 0" size="0.008" mass="0.02"/>
+            <body name="f{i}tip" pos="0.04 0 0"><joint name="f{i}j2" axis="0 1 0" range="0 1.5"/>
+              <geom type="capsule" fromto="0 0 0 0.03 0 0" size="0.008" mass="0.02"/>
+            </body></body>'''
+    tendons = "".join(f'<fixed name="f{i}t"><joint joint="f{i}j1" coef="1"/>'
+                      f'<joint joint="f{i}j2" coef="1"/></fixed>' for i in range(3))
+    acts = "".join(f'<position name="f{i}a" tendon="f{i}t" kp="5" ctrlrange="0 3"/>'
+                   for i in range(3))
+    xml = f'''<mujoco><option timestep="0.002" integrator="implicitfast"/>
+      <default><joint armature="0.001" damping="0.05"/></default>
+      <worldbody><geom name="floor" type="plane" size="1 1 .1"/>
+      <body name="hand_base" pos="0 0 0.15">
+        <joint name="lift" type="slide" axis="0 0 1" range="-0.1 0.1"/>
+        <geom type="box" size="0.05 0.05 0.01" mass="0.3"/>
+        {finger(0, -0.03)}{finger(1, 0.0)}{finger(2, 0.03)}</body>
+      <body name="ball" pos="0.08 0 0.03"><freejoint/><geom type="sphere" size="0.03" mass="0.1"/>
+      </body></worldbody>
+      <tendon>{tendons}</tendon>
+      <actuator><position name="lift" joint="lift" kp="500" ctrlrange="-0.1 0.1"/>{acts}</actuator>
+      </mujoco>'''
+    path = tmp_path / "hand.xml"
+    path.write_text(xml)
+    result = init_scenario(path, object_body="ball", task="pick_hold",
+                           out=tmp_path / "scenario.toml")
+    hint = [c for c in result.checks if "--gripper" in c]
+    assert len(hint) == 1 and "--gripper hand_base" in hint[0], result.checks
+    aloha = init_scenario(bundled_scenario_path("aloha_transfer_cube").parent / "scene.xml",
+                          object_body="box", task="handover", out=tmp_path / "aloha.toml")
+    assert not any("fingers of one hand" in c for c in aloha.checks)

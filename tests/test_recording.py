@@ -382,6 +382,52 @@ def test_rollout_clip_policy_override(twin):
     assert rec.controls[:, elbow].max() > 1.16  # the clipped target was still followed
 
 
+def test_a_channel_is_checked_against_its_actuators_ctrlrange(tmp_path):
+    """MuJoCo clamps a limited actuator's control to its ctrlrange, whatever drives it: a
+    Shadow Hand's tendon finger commanded to 3.5 of its 0..3.1415 was clamped without a
+    word, and the weaker fist dropped the ball (a joint channel was refused). A channel on
+    a tendon actuator is checked against the ctrlrange, as a joint channel is against its
+    joint's range."""
+    from inline_models import arm_xml
+
+    from critmoment import Twin, load_scenario
+
+    (tmp_path / "arm.xml").write_text(arm_xml(gripper="tendon"))
+    (tmp_path / "scenario.toml").write_text("""
+[model]
+mjcf = "arm.xml"
+[object]
+body = "cube"
+[grippers.hand]
+body = "hand"
+[support]
+geoms = ["table"]
+[actions]
+convention = "explicit"
+range_policy = "error"
+[[actions.channel]]
+actuators = ["shoulder_act"]
+[[actions.channel]]
+actuators = ["elbow_act"]
+[[actions.channel]]
+actuators = ["fingers"]
+[task]
+kind = "pick_hold"
+[uncertainty.mass]
+body = "cube"
+range = [0.05, 1.0]
+nominal = 0.1
+""")
+    twin = Twin(load_scenario(tmp_path))
+    assert (twin.channel_lower[2], twin.channel_upper[2]) == (0.0, 255.0)
+    actions = np.zeros((10, 3))
+    actions[4:, 2] = 300.0
+    with pytest.raises(TrajectoryError, match=r"out of range at step 4.*outside \[0\.0, 255\.0\]"):
+        prepare_controls(twin, Trajectory(actions, fps=50))
+    actions[4:, 2] = 255.0
+    assert prepare_controls(twin, Trajectory(actions, fps=50))[-1, -1] == 255.0
+
+
 def test_a_target_the_warn_policy_keeps_is_replayed_as_recorded(tmp_path):
     """ADROIT's vertical arm slide, commanded past its joint range so that its servo holds
     the 4.9 kg hand up (the MJCF's ctrlrange allows it): the ``warn`` policy said the value

@@ -920,6 +920,45 @@ def test_a_grasp_has_formed_once_the_gripper_command_has_closed(twin, demo_recor
     assert int(np.argmax(twin.grasp_formed(dip, touching)[:, receiver])) == plain
 
 
+def test_a_grasp_has_formed_once_the_fingers_have_stopped(twin, demo_recording):
+    """With the run's readings, ``Twin.grasp_formed`` also waits for the fingers: no geom of
+    the gripper moving more than FINGERS_STILL relative to its first within GRASP_SETTLE,
+    up to GRASP_FORMING after the touch. Slow finger servos go on pushing the object after
+    their command is done (a Wonik Allegro's for about 100 ms: 18 of 32 samples that held
+    the ball were "slipped" by that push). The bundled ALOHA's fingers are still when its
+    command has closed: the same steps as the command's rule."""
+    from critmoment.twin import FINGERS_STILL, GRASP_FORMING, GRASP_SETTLE
+
+    rec = demo_recording
+    touching = rec.signals.contact_gripper
+    plain = twin.grasp_formed(rec.controls, touching)
+    sd = np.array(rec.sensordata, dtype=np.float64)
+    np.testing.assert_array_equal(twin.grasp_formed(rec.controls, touching, sd), plain)
+    receiver = twin.scenario.gripper_names.index(twin.task.receiver)
+    start = int(np.argmax(plain[:, receiver]))
+    adr = twin._finger_adr[receiver]
+    assert adr.shape[0] == len(twin.scenario.grippers[receiver].geoms) - 1 >= 1
+    # a finger that goes on closing 12 mm over the 0.2 s after the command's moment
+    steps = int(round(0.2 / rec.dt))
+    moving = sd.copy()
+    ramp = np.clip((np.arange(sd.shape[0]) - start) / steps, 0.0, 1.0)
+    moving[:, adr[0, 1]] += 0.012 * ramp
+    late = int(np.argmax(twin.grasp_formed(rec.controls, touching, moving)[:, receiver]))
+    w = int(round(GRASP_SETTLE / rec.dt))
+    # the first step from which it moves at most FINGERS_STILL within the window
+    speed = 0.012 / steps
+    assert start + steps - FINGERS_STILL / speed - w - 1 <= late <= start + steps
+    assert late > start + steps // 2
+    # fingers that never stop within GRASP_FORMING of the touch: the command's moment stands
+    creeping = sd.copy()
+    creeping[:, adr[0, 1]] += 0.05 * np.arange(sd.shape[0]) * rec.dt
+    never = twin.grasp_formed(rec.controls, touching, creeping)
+    assert int(np.argmax(never[:, receiver])) == start
+    assert GRASP_FORMING > 0.5
+    with pytest.raises(ParameterError, match="sensordata"):
+        twin.grasp_formed(rec.controls, touching, sd[1:])
+
+
 def test_grip_points_fix_the_object_up_to_its_own_symmetry():
     """The points whose motion in a grip is slip: a box's corners (a turn moves them), a
     capsule's axis ends, a spheroid's own axis ends, a sphere's centre only (its spin is not

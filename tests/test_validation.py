@@ -256,6 +256,37 @@ def test_grip_slip_counts_from_where_the_grasp_has_formed():
         hold_starts(held, np.zeros((t, G), np.int64), formed[1:])
 
 
+def test_grip_slip_counts_the_fingers_sliding_before_the_lift_off():
+    """A heavy object stays on its support while the closed fingers rise 9 mm along it,
+    then leaves it with them: it has slipped 9 mm in the grip, the light nominal none. With
+    the touches (``touching``) a hold is measured from its first step touched by both once
+    the grasp has formed, on the support or off it; measured from the lift-off (the first
+    step held off the support), the slide was not seen (a Wonik Allegro's 0.85 kg ball that
+    slid 16 mm before leaving its pedestal was "held")."""
+    t = 60
+    nominal = np.zeros((t, G, 3))
+    pos = np.zeros((2, t, G, 3))
+    pos[1, 20:29, 0, 2] = -np.linspace(0.001, 0.009, 9)   # the fingers slide up (z) ...
+    pos[1, 29:, 0, 2] = -0.009                           # ... until the lift-off
+    touching = np.zeros((2, t, G), bool)
+    touching[:, 10:, 0] = True                           # grasped on the support at 10
+    held = touching.copy()
+    held[0, :20, 0] = False                              # the nominal leaves it at 20
+    held[1, :29, 0] = False                              # the heavy one at 29
+    formed = np.zeros((t, G), bool)
+    formed[12:] = True
+    late = val.grip_slip(pos, nominal, held, held[0], formed=formed)
+    np.testing.assert_allclose(late[1], 0.0, atol=1e-15)
+    s = val.grip_slip(pos, nominal, held, held[0], formed=formed, touching=touching,
+                      nominal_touching=touching[0])
+    np.testing.assert_allclose(s[0], 0.0, atol=1e-15)
+    np.testing.assert_allclose(s[1, :29], 0.0, atol=1e-15)  # not counted on the support
+    np.testing.assert_allclose(s[1, 29:], 0.009)
+    with pytest.raises(ParameterError, match="touching"):
+        val.grip_slip(pos, nominal, held, held[0], touching=touching[:, 1:],
+                      nominal_touching=touching[0])
+
+
 def test_grip_slip_counts_only_motion_beyond_a_creeping_nominal_grip():
     """The nominal grip slides 18 mm down the pads. A sample sliding 10 mm the same way (it
     holds better) had a slip of 8 mm by the norm of the difference, and one sliding 3 mm a
