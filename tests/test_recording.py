@@ -388,36 +388,18 @@ def test_a_channel_is_checked_against_its_actuators_ctrlrange(tmp_path):
     word, and the weaker fist dropped the ball (a joint channel was refused). A channel on
     a tendon actuator is checked against the ctrlrange, as a joint channel is against its
     joint's range."""
-    from inline_models import arm_xml
+    from inline_models import arm_scenario_toml, arm_xml
 
     from critmoment import Twin, load_scenario
 
     (tmp_path / "arm.xml").write_text(arm_xml(gripper="tendon"))
-    (tmp_path / "scenario.toml").write_text("""
-[model]
-mjcf = "arm.xml"
-[object]
-body = "cube"
-[grippers.hand]
-body = "hand"
-[support]
-geoms = ["table"]
-[actions]
-convention = "explicit"
-range_policy = "error"
-[[actions.channel]]
-actuators = ["shoulder_act"]
-[[actions.channel]]
-actuators = ["elbow_act"]
-[[actions.channel]]
-actuators = ["fingers"]
-[task]
-kind = "pick_hold"
-[uncertainty.mass]
-body = "cube"
-range = [0.05, 1.0]
-nominal = 0.1
-""")
+    fingers = ('actuators = ["finger_a_act", "finger_b_act"]\nnormalised = true\n'
+               'scales = [0.03, 0.03]\noffsets = [0.0, 0.0]')
+    text = arm_scenario_toml()
+    assert fingers in text
+    (tmp_path / "scenario.toml").write_text(
+        text.replace(fingers, 'actuators = ["fingers"]').replace(
+            'convention = "explicit"', 'convention = "explicit"\nrange_policy = "error"'))
     twin = Twin(load_scenario(tmp_path))
     assert (twin.channel_lower[2], twin.channel_upper[2]) == (0.0, 255.0)
     actions = np.zeros((10, 3))
