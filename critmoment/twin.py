@@ -1191,8 +1191,10 @@ class Twin:
         differently for each mass and friction (a Kinova Gen3 with a multi-finger hand:
         17 of 32 samples were "slipped" during the closing, and held the object to the end).
 
-        With the run's readings ``sensordata`` (T, nsensordata), the grasp also waits, up to
-        ``GRASP_FORMING`` after the touch, for the fingers to stop: no geom of the gripper
+        The window runs ``GRASP_FORMING`` from where the command starts closing, at the
+        touch or after it (a palm that touches the object before the fingers close). With
+        the run's readings ``sensordata`` (T, nsensordata), the grasp also waits, within that
+        window, for the fingers to stop: no geom of the gripper
         moving more than ``FINGERS_STILL`` relative to its first within ``GRASP_SETTLE``.
         A command is done before slow servos are: a Wonik Allegro's fingers (kp 10) go on
         pushing a ball into place for about 100 ms after their command has closed, and 18

@@ -959,6 +959,28 @@ def test_a_grasp_has_formed_once_the_fingers_have_stopped(twin, demo_recording):
         twin.grasp_formed(rec.controls, touching, sd[1:])
 
 
+def test_the_closing_window_starts_where_the_command_starts_closing(twin, demo_recording):
+    """probe r36 (Shadow Hand): the palm touched the ball 0.3 s before the fingers began to
+    close; a window of GRASP_FORMING counted from the touch ended inside the closing, and
+    the grasp "formed" with the command still 22 % open. The window runs from where the
+    command starts closing: a touch 0.9 s early leaves the receiver's grasp where it was, within
+    GRASP_SETTLE."""
+    rec = demo_recording
+    touching = rec.signals.contact_gripper.copy()
+    plain = twin.grasp_formed(rec.controls, touching)
+    receiver = twin.scenario.gripper_names.index(twin.task.receiver)
+    touch = int(np.argmax(touching[:, receiver]))
+    start = int(np.argmax(plain[:, receiver]))
+    opening = twin.gripper_opening(rec.controls)[:, receiver]
+    early = touch - int(round(0.9 / rec.dt))
+    assert opening[early] >= opening[:touch + 1].max() - 1e-9  # still wide open then
+    touching[early:touch, receiver] = True
+    moved = twin.grasp_formed(rec.controls, touching)
+    # within the closing's last few steps (its window now ends 1 s after the closing's
+    # start, a little before the real touch's); from the early touch it was 0.32 s early
+    assert abs(int(np.argmax(moved[:, receiver])) - start) <= int(round(0.05 / rec.dt))
+
+
 def test_grip_points_fix_the_object_up_to_its_own_symmetry():
     """The points whose motion in a grip is slip: a box's corners (a turn moves them), a
     capsule's axis ends, a spheroid's own axis ends, a sphere's centre only (its spin is not
