@@ -1,0 +1,3 @@
+#!/bin/bash
+/tmp/r36f/followup/queue_r32.sh
+/tmp/r36f/followup/queue_r31.sh trossen_wx250s:pyr1_n:scenario_pyr1_n.toml:traj.npz:0 trossen_wx250s:shipped_n:scenario_shipped_n.toml:traj.npz:0 trossen_wx250s:s_init:scenario_shipped.toml:traj.npz:0 trossen_wx250s:pyr1:scenario_pyr1.toml:traj.npz:0 low_cost_robot_arm:shipped:scenario_shipped.toml:traj.npz:0 low_cost_robot_arm:pyr1:scenario_pyr1.toml:traj.npz:0 low_cost_robot_arm:shipped_m:scenario_shipped_m.toml:traj.npz:0 low_cost_robot_arm:shipped_n:scenario_shipped_n.toml:traj.npz:0 low_cost_robot_arm:pyr1_n:scenario_pyr1_n.toml:traj.npz:0 low_cost_robot_arm:pyr1_n2:scenario_pyr1_n2.toml:traj.npz:0
