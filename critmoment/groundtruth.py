@@ -512,7 +512,8 @@ def hold_starts(held: np.ndarray, segments: np.ndarray, formed: np.ndarray) -> n
     ``formed`` (:meth:`Twin.grasp_formed`), −1 where there is none; ``held`` (..., T, G)
     bool, ``segments`` and ``formed`` (T, G); returns (..., T, G) int. The anchor of
     :func:`grip_slip` (per sample), of the chains and of sparse evaluation (the nominal
-    run's)."""
+    run's), which pass the touches as ``held`` (on the support or off it: fingers that
+    slide along an object before it leaves its support have slipped)."""
     held, formed = np.asarray(held, dtype=bool), np.asarray(formed, dtype=bool)
     segments = np.asarray(segments)
     if held.ndim < 2 or segments.shape != held.shape[-2:] or formed.shape != segments.shape:
