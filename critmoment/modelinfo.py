@@ -57,6 +57,9 @@ class GripperGuess:
         closed: control of each actuator that closes it.
         open: control of each actuator that opens it.
         geoms: collision geoms of the body's subtree.
+        left_out: actuators below the body that were measured and left out: alone, they
+            neither open nor close its geoms (a finger's spread, or a knuckle whose motion
+            barely changes the geoms' spread); :func:`gripper_at` only.
     """
 
     name: str
@@ -65,6 +68,7 @@ class GripperGuess:
     closed: tuple[float, ...]
     open: tuple[float, ...]
     geoms: tuple[str, ...]
+    left_out: tuple[str, ...] = ()
 
 
 @dataclasses.dataclass(frozen=True)
@@ -473,7 +477,8 @@ def gripper_at(model: mujoco.MjModel, body: str, *, keyframe: int | None = None,
     name = model.body(b).name
     return GripperGuess(name=_gripper_name(name, set() if taken is None else taken),
                         body=name, actuators=tuple(moving), closed=tuple(closed),
-                        open=tuple(opened), geoms=tuple(model.geom(g).name for g in geoms))
+                        open=tuple(opened), geoms=tuple(model.geom(g).name for g in geoms),
+                        left_out=tuple(still))
 
 
 def _suction_grippers(model: mujoco.MjModel, infos, taken: set[str], notes: list[str]
@@ -914,6 +919,15 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         taken: set[str] = set()
         grippers = [gripper_at(model, body, keyframe=key, taken=taken) for body in named]
         guesses.append(f"grippers at the bodies given ({', '.join(named)})")
+        for g in grippers:
+            if g.left_out:
+                # a hand's knuckle that barely changes its geoms' spread is measured as
+                # moving nothing (a Shadow Hand's RFJ3: 0.05 mm over its range)
+                checks.append(
+                    f"actuators below {g.body!r} left as joint channels (alone, each neither "
+                    f"opens nor closes its geoms by 0.1 mm): {', '.join(g.left_out)}; if a "
+                    f"grasp closes them, add them to the gripper's channel with their closed "
+                    f"and open values")
     if not grippers:
         why = [n for n in info.notes if "look like a gripper" in n]
         why += [n for n in info.notes if n.startswith("adhesion actuator")]

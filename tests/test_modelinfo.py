@@ -1408,3 +1408,37 @@ def test_init_says_when_its_grippers_are_the_fingers_of_one_hand(tmp_path):
     aloha = init_scenario(bundled_scenario_path("aloha_transfer_cube").parent / "scene.xml",
                           object_body="box", task="handover", out=tmp_path / "aloha.toml")
     assert not any("fingers of one hand" in c for c in aloha.checks)
+
+
+def test_init_names_the_actuators_it_leaves_out_of_a_named_hand(tmp_path):
+    """probe r36 (Shadow Hand): ``init --gripper rh_palm`` left the ring finger's knuckle
+    out of the gripper (alone it changed the geoms' spread by 0.05 mm) without a word; its
+    poses then dropped the ball. The actuators below the named body that init leaves as
+    joint channels are named in a check."""
+    xml = '''<mujoco><option timestep="0.002" integrator="implicitfast"/>
+      <default><joint armature="0.001" damping="0.5"/></default>
+      <worldbody><geom name="floor" type="plane" size="1 1 .1"/>
+      <body name="hand" pos="0 0 0.15">
+        <joint name="lift" type="slide" axis="0 0 1" range="-0.1 0.1"/>
+        <geom type="box" size="0.04 0.04 0.01" mass="0.3"/>
+        <body name="fa" pos="0 0.03 -0.03"><joint name="fa" type="slide" axis="0 -1 0" range="0 0.025"/>
+          <geom type="box" size="0.01 0.005 0.02" mass="0.02"/></body>
+        <body name="fb" pos="0 -0.03 -0.03"><joint name="fb" type="slide" axis="0 1 0" range="0 0.025"/>
+          <geom type="box" size="0.01 0.005 0.02" mass="0.02"/></body>
+        <body name="knob" pos="0.03 0 0"><joint name="roll" axis="0 0 1" range="-1 1"/>
+          <geom type="sphere" size="0.008" mass="0.01"/></body>
+      </body>
+      <body name="cube" pos="0 0 0.02"><freejoint/><geom type="box" size="0.02 0.02 0.02" mass="0.1"/>
+      </body></worldbody>
+      <actuator><position name="lift" joint="lift" kp="500" ctrlrange="-0.1 0.1"/>
+        <position name="fa" joint="fa" kp="50" ctrlrange="0 0.025"/>
+        <position name="fb" joint="fb" kp="50" ctrlrange="0 0.025"/>
+        <position name="roll" joint="roll" kp="5" ctrlrange="-1 1"/></actuator></mujoco>'''
+    path = tmp_path / "hand.xml"
+    path.write_text(xml)
+    result = init_scenario(path, object_body="cube", task="pick_hold", grippers=["hand"],
+                           out=tmp_path / "scenario.toml")
+    left = [c for c in result.checks if "left as joint channels" in c]
+    assert len(left) == 1 and left[0].endswith(
+        "roll; if a grasp closes them, add them to the gripper's channel with their closed "
+        "and open values"), result.checks
