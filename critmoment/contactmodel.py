@@ -532,9 +532,9 @@ def check_contact_model(twin, recording=None, *, steps: int = 250, warn: bool = 
     counted = np.flatnonzero(alone[:, g] & inside)
     counted = counted[counted >= first]
     creep, touched, origin = _nominal_creep(model, recording.states, first, counted,
-                                    model.body(sc.object_body).id, int(anchors[g]),
-                                    projectors[g], twin.grip_points,
-                                    known=set(pads) | set(sc.support_geoms))
+                                            model.body(sc.object_body).id, int(anchors[g]),
+                                            projectors[g], twin.grip_points,
+                                            known=set(pads) | set(sc.support_geoms))
     out = dataclasses.replace(probed, nominal_creep=creep)
     if creep > NOMINAL_CREEP:
         # what else the object touched on the way: a collision moves it in the grip as a

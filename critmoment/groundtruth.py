@@ -67,7 +67,7 @@ import numpy as np
 
 from critmoment import actuators as act_info
 from critmoment import budget
-from critmoment.actuators import common_ancestor
+from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError
 from critmoment.recording import (
     batched_rollouts,
@@ -675,7 +675,8 @@ class _Probe:
     def __init__(self, twin: Twin):
         sc = twin.scenario
         base = twin.model
-        self.anchors = [_gripper_anchor(base, g.geoms) for g in sc.grippers]
+        anchors, projectors = grip_frames(base, sc)
+        self.anchors = [int(a) for a in anchors]
         spec = sc.load_spec()  # critmoment's own copy: generated names, object friction priority
         twin.add_sensors(spec)  # the twin's sensors first, at the same addresses
         # per gripper, the object's position and orientation in its frame: where the
@@ -719,8 +720,7 @@ class _Probe:
         self.pose = slice(nsd, nsd + 7 * ngrip)
         self.points = twin.grip_points
         self.q = slice(self.pose.stop, self.pose.stop + self.motors.size)
-        self.projectors = np.stack([_closing_projector(base, g.geoms, a)
-                                    for g, a in zip(sc.grippers, self.anchors, strict=False)])
+        self.projectors = projectors
 
     def grip_positions(self, sensordata: np.ndarray) -> np.ndarray:
         """The object's points in each gripper's frame, (c, T, G, K, 3) [m], from readings
@@ -735,26 +735,38 @@ class _Probe:
         return pose[..., None, :3] + self.points @ np.swapaxes(rot, -1, -2)
 
 
-def _gripper_anchor(model: mujoco.MjModel, geoms: Sequence[str]) -> int:
-    """The deepest body that is an ancestor of every geom of a gripper (its base)."""
-    return common_ancestor(model, [int(model.geom_bodyid[model.geom(n).id]) for n in geoms])
+def grip_frames(model: mujoco.MjModel, scenario) -> tuple[np.ndarray, np.ndarray]:
+    """Each gripper's base body and the projector that drops its fingers' closing axes.
 
+    The base is the deepest body above every geom of the gripper; the projector (in the
+    base's frame) removes the span of the slide joints between those geoms and the base,
+    so that squeezing the object is not counted as slip. The ground truth and sparse
+    evaluation measure slip in these frames alike.
 
-def _closing_projector(model: mujoco.MjModel, geoms: Sequence[str], anchor: int) -> np.ndarray:
-    """Projector (3, 3) onto the plane normal to the gripper's slide (finger) axes in its frame."""
+    Args:
+        model: the compiled model.
+        scenario: the scenario (its grippers' geoms).
+
+    Returns:
+        (anchors (G,) int body ids, projectors (G, 3, 3)).
+    """
     data = mujoco.MjData(model)
     mujoco.mj_kinematics(model, data)
-    frame = data.xmat[anchor].reshape(3, 3)
-    axes = []
-    for name in geoms:
-        body = int(model.geom_bodyid[model.geom(name).id])
-        while body not in (anchor, 0):
-            first = model.body_jntadr[body]
-            for j in range(first, first + model.body_jntnum[body]):
-                if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE:
-                    axes.append(frame.T @ data.xaxis[j])
-            body = int(model.body_parentid[body])
-    return act_info.closing_projector(axes)
+    anchors, projectors = [], []
+    for gripper in scenario.grippers:
+        bodies = [int(model.geom_bodyid[model.geom(name).id]) for name in gripper.geoms]
+        anchor = common_ancestor(model, bodies)
+        frame = data.xmat[anchor].reshape(3, 3)
+        axes = []
+        for chain in (body_chain(model, b) for b in bodies):
+            for body in chain[:chain.index(anchor)]:
+                first = int(model.body_jntadr[body])
+                for j in range(first, first + int(model.body_jntnum[body])):
+                    if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE:
+                        axes.append(frame.T @ data.xaxis[j])
+        anchors.append(anchor)
+        projectors.append(act_info.closing_projector(axes))
+    return np.array(anchors, dtype=np.int64), np.array(projectors).reshape(-1, 3, 3)
 
 
 @dataclasses.dataclass(frozen=True, eq=False)

@@ -107,11 +107,15 @@ import mujoco
 import mujoco.batch
 import numpy as np
 
-from critmoment import actuators as act_info
 from critmoment import budget, safety
-from critmoment.actuators import body_chain, common_ancestor
 from critmoment.exceptions import ParameterError, SimulationDivergedError
-from critmoment.groundtruth import OutcomeCriteria, _first_run, beyond_nominal, hold_starts
+from critmoment.groundtruth import (
+    OutcomeCriteria,
+    _first_run,
+    beyond_nominal,
+    grip_frames,
+    hold_starts,
+)
 from critmoment.params import UncertaintyBox
 from critmoment.scenario import CostParams
 from critmoment.twin import STATE_SPEC, Signals, Twin, carried_flags, state_slice
@@ -679,40 +683,6 @@ def _as_steps(steps: Any) -> np.ndarray:
 # --------------------------------------------------------------------------
 
 
-def grip_frames(model: mujoco.MjModel, scenario) -> tuple[np.ndarray, np.ndarray]:
-    """Each gripper's base body and the projector that drops its fingers' closing axes.
-
-    The base is the deepest body above every geom of the gripper; the projector (in the
-    base's frame) removes the span of the slide joints between those geoms and the base,
-    so that squeezing the object is not counted as slip.
-
-    Args:
-        model: the compiled model.
-        scenario: the scenario (its grippers' geoms).
-
-    Returns:
-        (anchors (G,) int body ids, projectors (G, 3, 3)).
-    """
-    data = mujoco.MjData(model)
-    mujoco.mj_kinematics(model, data)
-    anchors, projectors = [], []
-    for gripper in scenario.grippers:
-        bodies = [int(model.geom_bodyid[model.geom(name).id]) for name in gripper.geoms]
-        chains = [body_chain(model, b) for b in bodies]
-        anchor = common_ancestor(model, bodies)
-        frame = data.xmat[anchor].reshape(3, 3)
-        axes = []
-        for chain in chains:
-            for body in chain[:chain.index(anchor)]:
-                first = int(model.body_jntadr[body])
-                for j in range(first, first + int(model.body_jntnum[body])):
-                    if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE:
-                        axes.append(frame.T @ data.xaxis[j])
-        anchors.append(anchor)
-        projectors.append(act_info.closing_projector(axes))
-    return np.array(anchors, dtype=np.int64), np.array(projectors).reshape(-1, 3, 3)
-
-
 def _object_in_grippers(xpos: np.ndarray, xmat: np.ndarray, body: int,
                         anchors: np.ndarray, points: np.ndarray | None = None) -> np.ndarray:
     """The object's position in each anchor's frame (c, s, G, 3) [m] from body poses
@@ -895,7 +865,7 @@ class SparseEvaluator:
         #: measured from the first such step once its grasp has formed (grip_slip)
         self._touching = np.asarray(sig.contact_gripper, bool)
         #: a gripper touches the object in the nominal run, (T,)
-        self._touched = sig.contact_gripper.any(axis=-1)
+        self._touched = self._touching.any(axis=-1)
         # slip counts where the nominal run holds the object with one gripper alone: an
         # object moves in a gripper that lets go (the release), which is not slip
         self._alone = twin.held_alone(sig.contact_gripper, sig.contact_support)
@@ -1848,10 +1818,9 @@ class SparseEvaluator:
         (cached)."""
         if self._grasp_cache is None:
             g = len(self._anchors)
-            held = self._held[:, :g]
-            start = hold_starts(self._touching[:, :g], self._segments[:, :g],
-                                self._formed[:, :g])
-            grasp = np.zeros(held.shape + self._points.shape)
+            touching = self._touching[:, :g]
+            start = hold_starts(touching, self._segments[:, :g], self._formed[:, :g])
+            grasp = np.zeros(touching.shape + self._points.shape)
             if (start >= 0).any():
                 rows, cols = np.nonzero(start >= 0)
                 grasp[rows, cols] = self._nominal_at(start[rows, cols])[np.arange(rows.size),

@@ -347,11 +347,12 @@ def test_fingers_rounded_off_parallel_close_along_one_axis(tmp_path):
     slide axes 4e-6 rad apart: the projector took them for two closing axes and projected
     out the slip along the fingers too (its cube slid 37 mm down the pads, measured 8 mm).
     Here the bundled Panda's right finger is turned 4e-6 rad the same way: both projectors
-    (the ground truth's and sparse evaluation's) stay those of one closing axis."""
+    (the ground truth's and sparse evaluation's, one function since the thirty-fourth
+    round) stay those of one closing axis."""
     import shutil
 
     from critmoment import actuators as act_info
-    from critmoment.groundtruth import _closing_projector, _gripper_anchor
+    from critmoment.groundtruth import _probe_of
     from critmoment.scenario import bundled_scenario_path, load_scenario
     from critmoment.sparse import grip_frames
     from critmoment.twin import Twin
@@ -371,8 +372,7 @@ def test_fingers_rounded_off_parallel_close_along_one_axis(tmp_path):
         old, '<body name="right_finger" pos="0 0 0.0584" quat="2e-06 0 0 1">'))
     twin = Twin(load_scenario(folder))
     model = twin.model
-    geoms = twin.scenario.grippers[0].geoms
-    truth = _closing_projector(model, geoms, _gripper_anchor(model, geoms))
+    truth = _probe_of(twin).projectors[0]  # what the ground truth measures slip with
     _, sparse = grip_frames(model, twin.scenario)
     for p in (truth, sparse[0]):
         assert np.linalg.matrix_rank(p, tol=1e-3) == 2
