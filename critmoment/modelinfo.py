@@ -91,6 +91,9 @@ class ModelInfo:
     #: per actuator: a torque motor's limit from its control range
     #: (:func:`critmoment.actuators.motor_limit`), None for the others
     motor_limits: tuple[float | None, ...] = ()
+    #: the names of the robot's free-floating bases (:func:`critmoment.actuators.robot_bases`):
+    #: free bodies, but not object candidates
+    robot_bases: tuple[str, ...] = ()
 
     def to_json(self) -> dict:
         return {
@@ -633,6 +636,7 @@ def inspect_model(path: str | Path) -> ModelInfo:
         impratio=float(model.opt.impratio), noslip_iterations=int(model.opt.noslip_iterations),
         integrator=mujoco.mjtIntegrator(model.opt.integrator).name.removeprefix("mjINT_").lower(),
         free_bodies=tuple(free), actuators=infos,
+        robot_bases=tuple(model.body(b).name for b in bases),
         default_limits=tuple(act_info.force_limit(model, i) for i in range(model.nu)),
         grippers=tuple(grippers),
         sites=tuple(model.site(i).name for i in range(model.nsite) if model.site(i).name),
@@ -885,8 +889,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         raise ScenarioError(f"--task: expected one of {', '.join(TASK_KINDS)}, got {task!r}")
     info = inspect_model(model_path)
     free = {b["name"]: b for b in info.free_bodies}
-    probe = _compile(model_path)
-    if object_body in [probe.body(b).name for b in act_info.robot_bases(probe)]:
+    if object_body in info.robot_bases:
         raise ScenarioError(f"--object: {object_body!r} is the robot's free-floating base (a "
                             f"free joint that carries actuated joints), not an object; free "
                             f"bodies: {', '.join(free) or '(none)'}")

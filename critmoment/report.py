@@ -996,8 +996,8 @@ def _html(report, doc, images) -> str:
             f"<td>{e(mr['label'])}</td><td>{e(mr['reason'])}</td><td>{e(worst)}</td>"
             f"<td>{mc}</td><td>{mr['fail_fraction']:.0%}<br><span class=muted>reached by "
             f"{mr['reached']:.0%}"
-            + (f"; {mr['own_fail_fraction']:.0%} fail on their own runs after it"
-               if mr.get("own_fail_fraction") else "") + f"</span></td><td>{fc}</td><td>{fm} "
+            + (f"; {_share(mr['own_fail_fraction'], report)} fail on their own runs "
+               f"after it" if mr.get("own_fail_fraction") else "") + f"</span></td><td>{fc}</td><td>{fm} "
             f"<span class=muted>({e(mr['limiting_actuator'])})</span></td>"
             f"<td>{e(crit)}</td><td>{e(str(mr['dominant'] or '—'))}</td><td>{an_txt}</td></tr>")
     unc = "".join(
