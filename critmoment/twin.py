@@ -279,6 +279,30 @@ def _channel_range(model: mujoco.MjModel, a: int, scale: float, offset: float
     return max(lo, ends[0]), min(hi, ends[1])
 
 
+def _empty_channel(model: mujoco.MjModel, label: str, c: int, acts) -> str:
+    """Why channel ``c`` can take no value: each of its actuators' ``ctrlrange`` and its
+    joint's compiled range (a ``ctrlrange`` written in degrees under ``angle="degree"``,
+    which MuJoCo never converts, left no target the joint could reach)."""
+    parts = []
+    for a in acts:
+        a = int(a)
+        limits = []
+        if model.actuator_ctrllimited[a]:
+            limits.append("ctrlrange " + " ".join(f"{v:.6g}" for v in model.actuator_ctrlrange[a]))
+        if int(model.actuator_trntype[a]) in (int(mujoco.mjtTrn.mjTRN_JOINT),
+                                              int(mujoco.mjtTrn.mjTRN_JOINTINPARENT)):
+            j = int(model.actuator_trnid[a, 0])
+            if model.jnt_limited[j]:
+                limits.append(f"joint {model.joint(j).name!r} range "
+                              + " ".join(f"{v:.6g}" for v in model.jnt_range[j]) + " compiled")
+        parts.append(f"actuator {model.actuator(a).name!r}"
+                     + (f" ({'; '.join(limits)})" if limits else " (unlimited)"))
+    return (f"[actions] channel {label!r} (index {c}): expected its actuators' ctrlrange and "
+            f"joint range to share some values, got none in common: {'; '.join(parts)}. A "
+            f"ctrlrange is never converted from degrees (MuJoCo compiles joint ranges to "
+            f"radians, not controls): write it in radians, or fix the channel's scales/offsets")
+
+
 def _fingers_still(fingers: np.ndarray, start: int, end: int, w: int) -> int:
     """The first step from ``start`` (before ``end``) at which no finger position of
     ``fingers`` (T, P, 3) moves more than ``FINGERS_STILL`` within the next ``w`` steps;
@@ -717,6 +741,8 @@ class Twin:
             for a, s, o in zip(acts, conv.scales[c], conv.offsets[c], strict=True):
                 lo, hi = _channel_range(model, int(a), s, o)
                 lower[c], upper[c] = max(lower[c], lo), min(upper[c], hi)
+            if lower[c] > upper[c]:
+                raise ScenarioError(_empty_channel(model, conv.labels[c], c, acts))
         self.channel_lower, self.channel_upper = lower, upper
         self.channel_normalised = np.array(conv.normalised)
 

@@ -20,7 +20,7 @@ import pytest
 from inline_models import arm_scenario_toml, arm_xml
 from scenarios import one_actuator_toml
 
-from critmoment.exceptions import ParameterError, TrajectoryError
+from critmoment.exceptions import ParameterError, ScenarioError, TrajectoryError
 from critmoment.scenario import load_scenario
 from critmoment.twin import CONTACT_SLOTS, Twin, lifted_flags
 
@@ -1012,3 +1012,19 @@ def test_grip_points_fix_the_object_up_to_its_own_symmetry():
     assert MAX_GRIP_POINTS < 6 * 8
     np.testing.assert_allclose(many[1:].min(axis=0), [-0.01, -0.01, -0.01])
     np.testing.assert_allclose(many[1:].max(axis=0), [0.16, 0.01, 0.01])
+
+
+def test_a_ctrlrange_that_misses_its_joints_range_is_named(tmp_path):
+    # a ctrlrange written in degrees under angle="degree" (MuJoCo converts joint ranges to
+    # radians, never controls) leaves no value the channel may take: the error named only
+    # "bounds: expected lower <= upper" when the trajectory was checked
+    xml = arm_xml().replace('joint="shoulder" kp="400"',
+                            'joint="shoulder" kp="400" ctrlrange="20 40"')
+    (tmp_path / "arm.xml").write_text(xml)
+    (tmp_path / "scenario.toml").write_text(arm_scenario_toml())
+    with pytest.raises(ScenarioError, match=r"channel '.*shoulder.*' \(index 0\): expected its "
+                                            r"actuators' ctrlrange and joint range to share "
+                                            r".*actuator 'shoulder_act' "
+                                            r"\(ctrlrange 20 40; joint 'shoulder' range "
+                                            r"-0.0523599 0.0523599 compiled\)"):
+        Twin(load_scenario(tmp_path))
