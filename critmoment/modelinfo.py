@@ -30,6 +30,7 @@ import re
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -589,9 +590,25 @@ def _start_key(model: mujoco.MjModel, notes: list[str]) -> int | None:
     return None
 
 
+def _model_file(path: Any) -> Path:
+    """``path`` as a Path, or a :class:`ScenarioError` saying what a model path is."""
+    if isinstance(path, (mujoco.MjSpec, mujoco.MjModel)):
+        raise ScenarioError(f"model: expected the path of an MJCF file (str or os.PathLike), got "
+                            f"an {type(path).__name__}; critmoment reads the model's MJCF "
+                            f"source (save a spec with spec.to_xml() to a file first)")
+    if isinstance(path, str) and "<" in path and ("\n" in path or len(path) > 255):
+        raise ScenarioError(f"model: expected the path of an MJCF file, got XML text "
+                            f"({len(path)} characters, starting {path.strip()[:40]!r}); write "
+                            f"it to a file and give that file's path")
+    if not isinstance(path, (str, bytes, os.PathLike)) or not os.fsdecode(path).strip():
+        raise ScenarioError(f"model: expected the path of an MJCF file (str or os.PathLike), got "
+                            f"{type(path).__name__} {path!r}"[:300])
+    return Path(os.fsdecode(path))
+
+
 def inspect_model(path: str | Path) -> ModelInfo:
     """What a scenario needs from the MJCF at ``path`` (see the module docstring)."""
-    path = Path(path)
+    path = _model_file(path)
     model = _compile(path)
     data = mujoco.MjData(model)
     notes: list[str] = []
@@ -884,7 +901,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     Raises:
         ScenarioError: unknown object or task kind, no gripper found, missing goal.
     """
-    model_path = Path(model_path)
+    model_path = _model_file(model_path)
     if task not in TASK_KINDS:
         raise ScenarioError(f"--task: expected one of {', '.join(TASK_KINDS)}, got {task!r}")
     info = inspect_model(model_path)
@@ -1081,6 +1098,11 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     rel = os.path.relpath(os.path.abspath(model_path), os.path.abspath(base))
     if (base / rel).resolve() != model_path.resolve():
         rel = os.path.relpath(model_path.resolve(), base.resolve())
+    if out_path is None:
+        # a scenario written to stdout may be saved anywhere, and its mjcf is read relative
+        # to where it is saved: relative to this folder it pointed at nothing (or another
+        # file) once redirected into another folder
+        rel = os.path.abspath(model_path)
     lines.append(f"mjcf = {_toml_str(rel)}")
     if info.keyframes:
         k0 = info.keyframes[0]

@@ -1213,16 +1213,44 @@ def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,
         raise ScenarioError(f"{what}: expected an MJCF model file (.xml), got {mjcf} (a "
                             f"{mjcf.suffix} file); a scenario goes to --scenario, a "
                             f"trajectory to rollout/analyze/validate")
+    _check_mjcf_text(mjcf, what)
     try:
         # an absolute path: from a relative one, MuJoCo (4.0) resolves the meshes of a file
-        # <include>d beside it against the relative folder twice, and fails to open them
-        spec = mujoco.MjSpec.from_file(str(mjcf.resolve()))
+        # <include>d beside it against the relative folder twice, and fails to open them.
+        # Through the user's links, as MuJoCo reads the path: a scene linked into a robot's
+        # folder includes that folder's files (resolved, it had included the files beside
+        # the link's target, another robot's), and a Hugging Face cache's extensionless blob
+        # behind a scene.xml link is read as XML
+        spec = mujoco.MjSpec.from_file(os.path.abspath(mjcf))
     except Exception as exc:  # MuJoCo raises ValueError, OSError or its own errors
         raise ScenarioError(f"could not read MJCF {mjcf}: {exc}") from exc
     try:
         return _prepared(spec, object_body, friction_geoms, com_bodies, servos)
     except UnicodeDecodeError as exc:  # a name MuJoCo keeps but Python cannot read
         raise ScenarioError(_not_utf8(mjcf, exc.object)) from exc
+
+
+#: the first bytes of a compiled MuJoCo model (``mj_saveModel``'s format id, 54321, as a
+#: little-endian int)
+_MJB_MAGIC = (54321).to_bytes(4, "little")
+
+
+def _check_mjcf_text(mjcf: Path, what: str) -> None:
+    """Refuse a file that cannot be an MJCF (or URDF) text: a compiled ``.mjb`` model, or
+    one that does not start with ``<`` (after a byte-order mark and white space)."""
+    try:
+        with open(mjcf, "rb") as f:
+            head = f.read(4096)
+    except OSError as exc:
+        raise InputFileError(f"{what}: could not read {mjcf}: {exc}") from exc
+    if head.startswith(_MJB_MAGIC) or mjcf.suffix.lower() == ".mjb":
+        raise ScenarioError(f"{what}: {mjcf} is a compiled MuJoCo model (MJB); critmoment "
+                            f"needs the MJCF (XML) source it was compiled from (it edits the "
+                            f"model through MjSpec, which an MJB cannot give)")
+    text = head.removeprefix(b"\xef\xbb\xbf").lstrip()
+    if text and not text.startswith(b"<"):
+        raise ScenarioError(f"{what}: expected an MJCF model file (XML text starting with "
+                            f"'<'), got {mjcf}, which starts with {head[:16]!r}")
 
 
 def _not_utf8(mjcf: Path, text: bytes) -> str:

@@ -17,7 +17,7 @@ from critmoment.cli import main
 from critmoment.exceptions import ScenarioError
 from critmoment.modelinfo import init_scenario, inspect_model
 from critmoment.recording import rollout
-from critmoment.scenario import bundled_scenario_path, load_scenario
+from critmoment.scenario import bundled_scenario_path, load_scenario, prepare_spec
 from critmoment.trajectory import Trajectory
 from critmoment.twin import Twin
 
@@ -1442,3 +1442,85 @@ def test_init_names_the_actuators_it_leaves_out_of_a_named_hand(tmp_path):
     assert len(left) == 1 and left[0].endswith(
         "roll; if a grasp closes them, add them to the gripper's channel with their closed "
         "and open values"), result.checks
+
+
+def test_a_linked_scene_includes_the_files_beside_the_link(tmp_path, monkeypatch):
+    """MuJoCo reads a scene through the user's link: its <include>s lie beside the link, not
+    beside the link's target. critmoment compiled the resolved path and audited another
+    robot's file (a 35 N hand where MuJoCo loads a 5 N one), without a word; a Hugging Face
+    cache's extensionless blob behind scene.xml was refused as undecodable."""
+    shared, robot = tmp_path / "shared", tmp_path / "robot_b"
+    shared.mkdir()
+    robot.mkdir()
+    xml = arm_xml()
+    body = xml[xml.index("<mujoco"):]
+    (shared / "arm.xml").write_text(body.replace("forcerange=\"-60 60\"", "forcerange=\"-61 61\""))
+    (robot / "arm.xml").write_text(body)
+    (shared / "scene.xml").write_text('<mujoco><include file="arm.xml"/></mujoco>')
+    (robot / "scene.xml").symlink_to(shared / "scene.xml")
+    direct = mujoco.MjModel.from_xml_path(str(robot / "scene.xml"))
+    ours = prepare_spec(robot / "scene.xml").compile()
+    assert ours.actuator_forcerange.tolist() == direct.actuator_forcerange.tolist()
+    assert ours.actuator_forcerange.max() == 60.0
+    inspect_model(robot / "scene.xml")
+    # the hub cache: snapshots/<rev>/scene.xml -> ../../blobs/<hash> (no suffix)
+    blobs, snap = tmp_path / "hub" / "blobs", tmp_path / "hub" / "snapshots" / "rev1"
+    blobs.mkdir(parents=True)
+    snap.mkdir(parents=True)
+    (blobs / "aaa111").write_text(body)
+    (snap / "scene.xml").symlink_to(Path("../../blobs/aaa111"))
+    monkeypatch.chdir(tmp_path)
+    assert prepare_spec(Path("hub/snapshots/rev1/scene.xml")).compile().nu == direct.nu
+    inspect_model(Path("hub/snapshots/rev1/scene.xml"))
+
+
+def test_a_compiled_or_non_xml_model_is_refused_by_name(tmp_path):
+    model = mujoco.MjModel.from_xml_string(arm_xml())
+    mujoco.mj_saveModel(model, str(tmp_path / "arm.mjb"))
+    with pytest.raises(ScenarioError, match=r"arm\.mjb is a compiled MuJoCo model \(MJB\); "
+                                            r"critmoment needs the MJCF \(XML\) source"):
+        inspect_model(tmp_path / "arm.mjb")
+    (tmp_path / "arm_mjb.xml").write_bytes((tmp_path / "arm.mjb").read_bytes())
+    with pytest.raises(ScenarioError, match=r"compiled MuJoCo model \(MJB\)"):
+        inspect_model(tmp_path / "arm_mjb.xml")
+    (tmp_path / "notes.xml").write_text("robot: arm\n")
+    with pytest.raises(ScenarioError, match=r"expected an MJCF model file \(XML text starting "
+                                            r"with '<'\), got .*notes\.xml, which starts with "
+                                            r"b'robot: arm"):
+        inspect_model(tmp_path / "notes.xml")
+    # a byte-order mark and white space before the first tag are XML still
+    (tmp_path / "bom.xml").write_bytes(b"\xef\xbb\xbf\n  " + arm_xml().encode())
+    assert prepare_spec(tmp_path / "bom.xml").compile().nu == model.nu
+
+
+def test_init_to_stdout_writes_a_model_path_that_holds_wherever_it_is_saved(
+        tmp_path, monkeypatch, capsys):
+    """A scenario printed to stdout is saved where the user redirects it, and its mjcf is
+    read relative to that file: relative to the current folder it named nothing once saved
+    into another folder."""
+    (tmp_path / "robots").mkdir()
+    _write(tmp_path / "robots")
+    (tmp_path / "configs").mkdir()
+    monkeypatch.chdir(tmp_path)
+    assert main(["init", "robots/arm.xml", "--object", "cube", "--task", "pick_hold"]) == 0
+    printed = capsys.readouterr().out
+    (tmp_path / "configs" / "scenario.toml").write_text(printed)
+    sc = load_scenario(tmp_path / "configs" / "scenario.toml")
+    assert sc.mjcf.resolve() == (tmp_path / "robots" / "arm.xml").resolve()
+
+
+def test_model_arguments_that_are_not_paths_are_scenario_errors(tmp_path):
+    """The API's inspect_model/init_scenario raised a bare TypeError for an MjSpec, an
+    MjModel or a bytes path, and quoted XML text twice in full."""
+    path = _write(tmp_path)
+    spec = mujoco.MjSpec.from_file(str(path))
+    for bad, words in ((spec, r"got an MjSpec; critmoment reads the model's MJCF source"),
+                       (spec.compile(), r"got an MjModel"),
+                       (3.0, r"got float 3\.0"),
+                       (arm_xml(), r"got XML text \(\d+ characters, starting '<mujoco")):
+        with pytest.raises(ScenarioError, match=r"^model: expected the path of an MJCF file.*"
+                                                + words):
+            inspect_model(bad)
+        with pytest.raises(ScenarioError, match=words):
+            init_scenario(bad, object_body="cube", task="pick_hold", out=tmp_path / "s.toml")
+    assert inspect_model(bytes(path)).path == path
