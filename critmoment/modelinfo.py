@@ -37,7 +37,14 @@ import numpy as np
 
 from critmoment import actuators as act_info
 from critmoment.exceptions import CritmomentWarning, OutputError, ScenarioError
-from critmoment.scenario import GENERATED, compile_spec, load_scenario, prepare_spec
+from critmoment.scenario import (
+    GENERATED,
+    compile_spec,
+    held_object_message,
+    load_scenario,
+    object_equalities,
+    prepare_spec,
+)
 from critmoment.task import TASK_KINDS
 from critmoment.trajectory import name_head
 from critmoment.twin import Twin
@@ -634,6 +641,12 @@ def inspect_model(path: str | Path) -> ModelInfo:
             free.append({"name": model.body(b).name, "mass": float(model.body_subtreemass[b]),
                          "pos": [float(v) for v in data.xpos[b]],
                          "geoms": [model.geom(g).name for g in geoms]})
+            held = object_equalities(model, b)
+            if held:
+                notes.append(f"free body {model.body(b).name!r} is held by {'; '.join(held)}, "
+                             f"active from the start: as the object it is refused (its grip "
+                             f"could not slip); set active=\"false\" on the equality to audit "
+                             f"it")
     infos = act_info.describe_all(model)
     grippers, found = _find_grippers(model, infos, key)
     notes += found
@@ -922,6 +935,9 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     parts = act_info.parts_below(model, bid)
     if parts:
         raise ScenarioError(act_info.object_parts_message(model, bid, parts))
+    held = object_equalities(model, bid)
+    if held:
+        raise ScenarioError(held_object_message("--object", object_body, held))
     unfit: list[str] = []
     key = _start_key(model, unfit)
     guesses, checks = [], list(unfit)

@@ -828,6 +828,9 @@ class Scenario:
         parts = act_info.parts_below(model, body.id)
         if parts:
             raise ScenarioError(act_info.object_parts_message(model, body.id, parts))
+        held = object_equalities(model, body.id)
+        if held:
+            raise ScenarioError(held_object_message("[object] body", self.object_body, held))
         owner = model.geom_bodyid[model.geom(self.object_geom).id]
         if owner != body.id:
             raise ScenarioError(
@@ -1183,6 +1186,40 @@ def _make_servos(spec: mujoco.MjSpec, servos: Servos) -> None:
             a.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
         else:
             a.forcelimited = mujoco.mjtLimited.mjLIMITED_FALSE
+
+
+def object_equalities(model: mujoco.MjModel, body: int) -> list[str]:
+    """The equality constraints active at the start (``eq_active0``) that tie ``body`` to
+    another body or to the world (``weld`` and ``connect``, between bodies or their sites),
+    each in words ("equality 'grasp' (a weld to body 'hand')"): a grasp made by a weld, as
+    teleoperation and learning environments make it."""
+    out = []
+    kinds = {int(mujoco.mjtEq.mjEQ_WELD): "a weld", int(mujoco.mjtEq.mjEQ_CONNECT): "a connect"}
+    for e in range(model.neq):
+        kind = kinds.get(int(model.eq_type[e]))
+        if kind is None or not model.eq_active0[e]:
+            continue
+        ends = []
+        for obj in (int(model.eq_obj1id[e]), int(model.eq_obj2id[e])):
+            if int(model.eq_objtype[e]) == int(mujoco.mjtObj.mjOBJ_SITE):
+                obj = int(model.site_bodyid[obj])
+            ends.append(obj)
+        if body not in ends:
+            continue
+        other = ends[1] if ends[0] == body else ends[0]
+        to = "the world" if other == 0 else f"body {model.body(other).name!r}"
+        name = model.equality(e).name
+        out.append(f"equality {name!r} ({kind} to {to})" if name
+                   else f"equality #{e} ({kind} to {to})")
+    return out
+
+
+def held_object_message(where: str, name: str, held: Sequence[str]) -> str:
+    """Why an object that :func:`object_equalities` ties to something is refused."""
+    return (f"{where}: {name!r} is held by {'; '.join(held)}, active from the start: an "
+            f"object constrained so cannot slip or drop, and the audit of its grip would pass "
+            f"whatever the mass or friction; set active=\"false\" on the equality "
+            f"(critmoment never switches it on) or remove it")
 
 
 def prepare_spec(mjcf: str | Path, *, object_body: str | None = None,

@@ -1524,3 +1524,45 @@ def test_model_arguments_that_are_not_paths_are_scenario_errors(tmp_path):
         with pytest.raises(ScenarioError, match=words):
             init_scenario(bad, object_body="cube", task="pick_hold", out=tmp_path / "s.toml")
     assert inspect_model(bytes(path)).path == path
+
+
+def test_an_object_held_by_an_active_weld_is_refused_by_name(tmp_path):
+    """A grasp made by a weld (as teleoperation and learning scenes make it) cannot slip:
+    the audit said SAFE, P(success) 1 over a whole box, whatever the grip did. inspect
+    names the constraint; a scenario with that object is refused; an inactive weld is not
+    the audit's business (critmoment never switches it on)."""
+    plain = arm_xml()
+    for active, site in ((True, False), (True, True), (False, False)):
+        text = arm_xml()
+        text = text.replace('<body name="cube" pos="0.3 0 0.02">',
+                            '<body name="cube" pos="0.3 0 0.02"><site name="cube_site"/>')
+        eq = ('<weld name="magic" site1="cube_site" site2="cube_site_hand"/>' if site else
+              '<weld name="magic" body1="hand" body2="cube"/>')
+        if site:
+            text = text.replace('<body name="hand" pos="0.1 0 0">',
+                                '<body name="hand" pos="0.1 0 0"><site name="cube_site_hand"/>')
+        eq = eq.replace("/>", f' active="{str(active).lower()}"/>')
+        text = text.replace("</worldbody>", f"</worldbody>\n  <equality>{eq}</equality>")
+        path = tmp_path / "arm.xml"
+        path.write_text(text)
+        notes = " ".join(inspect_model(path).notes)
+        out = tmp_path / "scenario.toml"
+        out.unlink(missing_ok=True)
+        if not active:
+            assert "held by" not in notes
+            init_scenario(path, object_body="cube", task="pick_hold", out=out)
+            load_scenario(out)
+            continue
+        assert ("free body 'cube' is held by equality 'magic' (a weld to body 'hand'), active "
+                "from the start") in notes
+        with pytest.raises(ScenarioError, match=r"--object: 'cube' is held by equality "
+                                                r"'magic' \(a weld to body 'hand'\), active from "
+                                                r"the start: .*cannot slip or drop"):
+            init_scenario(path, object_body="cube", task="pick_hold", out=out)
+        # a scenario written by hand, or before the weld was added
+        path.write_text(plain)
+        init_scenario(path, object_body="cube", task="pick_hold", out=out)
+        path.write_text(text)
+        with pytest.raises(ScenarioError, match=r"\[object\] body: 'cube' is held by equality "
+                                                r"'magic' \(a weld to body 'hand'\)"):
+            load_scenario(out)
