@@ -224,6 +224,7 @@ class ActuatorKind(enum.Enum):
     INTVELOCITY = "intvelocity"  # a servo on the integral of ctrl: ctrl is a velocity
     MOTOR = "motor"            # force = gear·ctrl: a torque (or force) command
     ADHESION = "adhesion"      # <adhesion>: a suction/magnet pull on a body's contacts, gain·ctrl
+    PLUGIN = "plugin"          # an engine plugin computes its force (mujoco.pid, ...)
     OTHER = "other"            # muscles, dampers, user dynamics
 
     @property
@@ -294,6 +295,11 @@ def _kind(model: mujoco.MjModel, i: int) -> ActuatorKind:
     g, b = model.actuator_gainprm[i], model.actuator_biasprm[i]
     fixed, affine = mujoco.mjtGain.mjGAIN_FIXED, mujoco.mjtBias.mjBIAS_AFFINE
     dyn = int(model.actuator_dyntype[i])
+    if int(model.actuator_plugin[i]) >= 0:
+        # its force is the plugin's (mujoco.pid's: a servo on ctrl), not gain·ctrl + bias:
+        # read as a torque motor, init had written a PD servo whose force limit was the set
+        # point's range
+        return ActuatorKind.PLUGIN
     if dyn == int(mujoco.mjtDyn.mjDYN_INTEGRATOR):
         # the activation integrates ctrl: <intvelocity> (a servo on ∫ctrl, ctrl a velocity)
         return (ActuatorKind.INTVELOCITY if gain_t == fixed and bias_t == affine

@@ -1118,8 +1118,11 @@ def _com_span(model: mujoco.MjModel, body: int) -> tuple[float, float] | None:
 
 
 def _motor_on_joint(spec: mujoco.MjSpec, a) -> bool:
-    """A plain torque motor (fixed gain, no bias, no dynamics) on a hinge or slide joint."""
+    """A plain torque motor (fixed gain, no bias, no dynamics, no plugin) on a hinge or
+    slide joint."""
     if a.trntype != mujoco.mjtTrn.mjTRN_JOINT or a.gaintype != mujoco.mjtGain.mjGAIN_FIXED:
+        return False
+    if a.plugin.active:  # the plugin's force comes on top of any gain and bias
         return False
     if a.biastype != mujoco.mjtBias.mjBIAS_NONE or a.dyntype != mujoco.mjtDyn.mjDYN_NONE:
         return False
@@ -1562,8 +1565,8 @@ def _check_channel_kinds(actions: ActionConvention, resolver: _ActuatorResolver)
             info = resolver.infos[resolver.names.index(a)]
             if not info.kind.tracks_position and not actions.normalised[c]:
                 kind = info.kind.value
-                command = {"motor": "torque", "intvelocity": "velocity"}.get(kind,
-                                                                             "velocity or other")
+                command = {"motor": "torque", "intvelocity": "velocity",
+                           "plugin": "plugin's"}.get(kind, "velocity or other")
                 raise ScenarioError(
                     f"[actions] channel {actions.labels[c]!r}: actuator {a!r} is "
                     f"{'an' if kind[0] in 'aeiou' else 'a'} {kind} actuator (ctrl is a "
@@ -1571,6 +1574,10 @@ def _check_channel_kinds(actions: ActionConvention, resolver: _ActuatorResolver)
                     + ("drive the torque motor as a joint servo with [servos] kp, kv (the "
                        "robot's joint controller; `critmoment init` writes them)"
                        if kind == "motor" else
+                       "critmoment cannot tell what a plugin's control means (its tracking "
+                       "and force rules are the plugin's own); drive the joint with a "
+                       "<position> servo of the same gains to audit it"
+                       if kind == "plugin" else
                        "audit a position-controlled model, or convert the actions to this "
                        "actuator's controls"))
 

@@ -1566,3 +1566,33 @@ def test_an_object_held_by_an_active_weld_is_refused_by_name(tmp_path):
         with pytest.raises(ScenarioError, match=r"\[object\] body: 'cube' is held by equality "
                                                 r"'magic' \(a weld to body 'hand'\)"):
             load_scenario(out)
+
+
+def test_a_plugin_actuator_is_named_as_one_not_taken_for_a_torque_motor(tmp_path):
+    """mujoco.pid's control is a position set point: read as a torque motor (fixed gain, no
+    bias), init wrote a PD servo for it whose force limit was the set point's range, and
+    the audit blamed a numerical oscillation."""
+    text = arm_xml().replace(
+        '<position name="elbow_act" joint="elbow" kp="300" kv="15" forcerange="-40 40"/>',
+        '<plugin name="elbow_act" joint="elbow" plugin="mujoco.pid" instance="pid" '
+        'forcerange="-40 40" ctrlrange="-1 1"/>')
+    text = text.replace("<worldbody>", '<extension><plugin plugin="mujoco.pid"><instance '
+                        'name="pid"><config key="kp" value="300"/><config key="kd" '
+                        'value="15"/></instance></plugin></extension>\n  <worldbody>', 1)
+    assert "mujoco.pid" in text and 'plugin name="elbow_act"' in text
+    path = tmp_path / "arm.xml"
+    path.write_text(text)
+    assert [a.kind.value for a in inspect_model(path).actuators if a.name == "elbow_act"] == [
+        "plugin"]
+    with pytest.raises(ScenarioError, match=r"actuators elbow_act \(plugin\) are not position "
+                                            r"servos.*drive the joint with a <position> servo"):
+        init_scenario(path, object_body="cube", task="pick_hold", out=tmp_path / "s.toml")
+    # a scenario that asks for it as a [servos] motor is refused by name too
+    path.write_text(arm_xml())
+    init_scenario(path, object_body="cube", task="pick_hold", out=tmp_path / "s.toml")
+    toml = (tmp_path / "s.toml").read_text() + "\n[servos.elbow_act]\nkp = 300.0\nkv = 15.0\n"
+    (tmp_path / "s.toml").write_text(toml)
+    path.write_text(text)
+    with pytest.raises(ScenarioError, match=r"\[servos\.elbow_act\]: expected a torque motor "
+                                            r"on a joint"):
+        load_scenario(tmp_path / "s.toml")
