@@ -614,6 +614,11 @@ def _describe(exc: BaseException) -> str:
     if isinstance(exc, (zipfile.BadZipFile, zlib.error)):
         return f"corrupt compressed data: {exc}"
     text = str(exc).lower()
+    if "size memory" in text or "mj_stackalloc" in text or "mjwarn_cnstrfull" in text:
+        # MuJoCo's own arena, sized by the MJCF: more threads or memory would not help
+        return (f"the model's arena is too small for this run ({type(exc).__name__}: "
+                f"{_one_line(str(exc))}): raise <size memory=\"...\"/> in the MJCF (the arena "
+                f"is per simulation; a heavier sample's contacts need more of it)")
     if any(sign in text for sign in _EXHAUSTED):
         # a memory or thread limit (ulimit -v, a container's): not a bug in critmoment
         return (f"out of resources ({type(exc).__name__}: {_one_line(str(exc))}): too little "

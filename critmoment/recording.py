@@ -293,7 +293,12 @@ def _divergence_words(warning: str) -> str:
     """How a simulation diverged, from :func:`simulate`'s ``warnings`` entry."""
     if warning.startswith("the object reached"):
         return f" ({warning})"
-    return f" with MuJoCo warnings [{warning or 'non-finite values'}]"
+    words = f" with MuJoCo warnings [{warning or 'non-finite values'}]"
+    if "mjWARN_CNSTRFULL" in warning or "mjWARN_CONTACTFULL" in warning:
+        words += (" (the model's arena is full: it had no room for the contacts and "
+                  "constraints, which MuJoCo then dropped; raise <size memory=\"...\"/> in "
+                  "the MJCF)")
+    return words
 
 
 #: the fastest an object may move [m/s], beyond the speed a fall from the highest point it

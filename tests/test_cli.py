@@ -762,6 +762,17 @@ def test_running_out_of_memory_or_threads_is_not_called_a_bug():
     said = _describe(RuntimeError(".../casadi_nlpsol.cpp:41: Plugin 'ipopt' is not found."))
     assert "solver plugin could not load" in said and "bug" not in said
     assert "a bug in critmoment" in _describe(RuntimeError("something else"))
+    # the model's own arena (<size memory>) is not the machine's memory: lowering --samples
+    # or a ulimit does not help (probe r37)
+    said = _describe(RuntimeError(
+        "MuJoCo raised in 1 of 14 simulations (4); simulation 4: mj_stackAlloc: out of memory, "
+        "stack overflow at PrimalAllocate ... narena = 43008 (increase <size memory=\"...\"/>)"))
+    assert said.startswith("the model's arena is too small for this run") and "ulimit" not in said
+    assert 'raise <size memory="..."/> in the MJCF' in said
+    from critmoment.recording import _divergence_words
+
+    assert "raise <size memory" in _divergence_words("mjWARN_CNSTRFULL")
+    assert "size memory" not in _divergence_words("mjWARN_BADQACC")
 
 
 def test_fps_gives_the_rate_of_a_file_that_records_none_under_its_name(traj_file, capsys,
