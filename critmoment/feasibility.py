@@ -1100,8 +1100,12 @@ def check_fit(trajectory: Trajectory, recording: Recording | None, twin: Twin, *
     check_task_window(twin, trajectory)
     out: list[str] = []
     sig = recording.signals
-    default = ("; the trajectory gives none, so the model's default pose was used"
-               if trajectory.object_pose is None and trajectory.qpos0 is None else "")
+    default = ""
+    if trajectory.object_pose is None and trajectory.qpos0 is None:
+        key = twin.scenario.keyframe
+        default = ("; the trajectory gives none, so the model's default pose was used"
+                   if key is None else
+                   f"; the trajectory gives none, so keyframe {key!r}'s pose was used")
     touched = (np.asarray(sig.contact_support, bool).any()
                or np.asarray(sig.contact_gripper, bool).any())
     pos = np.asarray(sig.object_pos, dtype=np.float64)

@@ -619,8 +619,9 @@ def load_trajectory(
     if traj.object_pose is None and traj.qpos0 is None:
         warnings.warn(
             f"{traj.source!r} gives no object start pose (npz 'object_pose'/'qpos0', "
-            f"ACT /observations/env_state); the model's default object pose will be "
-            f"used; pass object_pose= (CLI: --object-pose X Y Z QW QX QY QZ) to set it",
+            f"ACT /observations/env_state); the object starts where the scenario puts it "
+            f"(its [model] keyframe's pose, else the model's default); pass object_pose= "
+            f"(CLI: --object-pose X Y Z QW QX QY QZ) to set it",
             CritmomentWarning,
             stacklevel=2,
         )

@@ -326,6 +326,20 @@ def test_untouched_object_gives_the_fit_hint(twin):
     assert len(caught) == len(report.warnings) + 1
 
 
+def test_the_start_pose_a_keyframe_gives_is_named_as_the_keyframes(twin):
+    """With no object pose in the trajectory the object starts where the scenario's
+    keyframe puts it; the hints said "the model's default pose was used" (probe r37)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        traj = suite.make("no_grasp", seed=0, twin=twin)
+    traj = dataclasses.replace(traj, object_pose=None, qpos0=None)
+    assert twin.scenario.keyframe == "home"
+    rec = _record(twin, traj)
+    hints = check_fit(traj, rec, twin)
+    assert any("so keyframe 'home''s pose was used" in h for h in hints), hints
+    assert not any("default pose" in h for h in hints)
+
+
 def test_an_object_too_heavy_to_lift_gives_the_lift_hint(scenario, demo_traj):
     # 3 kg nominal: the grip closes on the cube, which never leaves the table
     box = scenario.box.with_range("mass", 0.05, 10.0, nominal=3.0)
