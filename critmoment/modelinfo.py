@@ -875,6 +875,9 @@ def _joints_instead(model_path: Path, body: str) -> str:
     model = _compile(model_path)  # as inspect_model did, just before
     b = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, body)
     if b < 0:
+        if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_FLEX, body) >= 0:
+            return (" (a flex: a deformable object; critmoment audits a rigid object on one "
+                    "free joint)")
         return " (no body of that name)"
     num = int(model.body_jntnum[b])
     if num == 0:

@@ -842,6 +842,13 @@ class Scenario:
         for geom in self.support_geoms:
             need(geom, geoms, "geom", "[support] geoms")
         self._check_roles(model)
+        for g in self.grippers:
+            why = _cannot_touch(model, [model.geom(geom).id for geom in g.geoms], body.id)
+            if why:
+                raise ScenarioError(
+                    f"[grippers.{g.name}]: none of its geoms can touch the object "
+                    f"{self.object_body!r}: {why}; expected a gripper whose pads collide with "
+                    f"the object (the grip's audit would be vacuous)")
         seen: dict[str, str] = {}
         for c, (label, channel) in enumerate(zip(self.actions.labels, self.actions.channels,
                                                  strict=True)):
@@ -1189,6 +1196,40 @@ def _make_servos(spec: mujoco.MjSpec, servos: Servos) -> None:
             a.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
         else:
             a.forcelimited = mujoco.mjtLimited.mjLIMITED_FALSE
+
+
+def _cannot_touch(model: mujoco.MjModel, geoms: Sequence[int], body: int) -> str:
+    """Why no geom of ``geoms`` can ever collide with a geom of ``body`` (MuJoCo's
+    collision filter: an explicit ``<pair>``, else contype/conaffinity bits and
+    ``<contact><exclude>``), in words; "" when one pair can."""
+    own = [g for g in range(model.ngeom) if int(model.geom_bodyid[g]) == body]
+    if not own or not len(geoms):
+        return ""
+    pairs = {(int(a), int(b)) for a, b in zip(model.pair_geom1, model.pair_geom2, strict=True)}
+    excluded = {(int(sig) >> 16, int(sig) & 0xFFFF) for sig in model.exclude_signature}
+    bits = excl = 0
+    for g in geoms:
+        for o in own:
+            if (g, o) in pairs or (o, g) in pairs:
+                return ""
+            if not ((model.geom_contype[g] & model.geom_conaffinity[o])
+                    or (model.geom_contype[o] & model.geom_conaffinity[g])):
+                bits += 1
+                continue
+            b1, b2 = sorted((int(model.geom_bodyid[g]), body))
+            if (b1, b2) in excluded:
+                excl += 1
+                continue
+            return ""
+    out = []
+    if excl:
+        bodies = sorted({model.body(int(model.geom_bodyid[g])).name for g in geoms
+                         if (min(int(model.geom_bodyid[g]), body),
+                             max(int(model.geom_bodyid[g]), body)) in excluded})
+        out.append(f"<contact><exclude> between the object and {', '.join(map(repr, bodies))}")
+    if bits:
+        out.append("their contype/conaffinity bits and the object's share no bit")
+    return " and ".join(out)
 
 
 def object_equalities(model: mujoco.MjModel, body: int) -> list[str]:

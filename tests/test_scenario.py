@@ -1078,3 +1078,42 @@ def test_a_local_copy_named_like_a_bundled_scenario_is_the_one_loaded(tmp_path, 
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert load_scenario("aloha_transfer_cube").name != "my_copy"
+
+
+def test_a_gripper_that_can_never_touch_the_object_is_refused(tmp_path):
+    """<contact><exclude> between the object and the gripper's bodies, or contype/
+    conaffinity bits the object shares with none of its geoms: the grip could never form,
+    and the audit said only "never touches the object: is the object pose right?"."""
+    from inline_models import arm_scenario_toml, arm_xml
+
+    (tmp_path / "scenario.toml").write_text(arm_scenario_toml())
+    plain = arm_xml()
+    bodies = ["hand", "finger_a", "finger_b"]
+    assert all(f'body name="{b}"' in plain for b in bodies)
+    excluded = plain.replace("</worldbody>", "</worldbody>\n  <contact>" + "".join(
+        f'<exclude body1="cube" body2="{b}"/>' for b in bodies) + "</contact>")
+    (tmp_path / "arm.xml").write_text(excluded)
+    with pytest.raises(ScenarioError, match=r"\[grippers\.\w+\]: none of its geoms can touch "
+                                            r"the object 'cube': <contact><exclude> between the "
+                                            r"object and 'finger_a', 'finger_b', 'hand'"):
+        load_scenario(tmp_path)
+    bits = plain.replace('mass="0.1" friction="0.8"/>',
+                         'mass="0.1" friction="0.8" contype="4" conaffinity="4"/>')
+    bits = bits.replace('size="0.5 0.5 0.02"/>', 'size="0.5 0.5 0.02" contype="5" '
+                                                 'conaffinity="5"/>')
+    assert bits.count('contype="4"') == 1 and bits.count('contype="5"') == 1
+    (tmp_path / "arm.xml").write_text(bits)
+    with pytest.raises(ScenarioError, match=r"none of its geoms can touch the object 'cube': "
+                                            r"their contype/conaffinity bits and the object's "
+                                            r"share no bit"):
+        load_scenario(tmp_path)
+    # an explicit <pair> makes them collide whatever the bits
+    pair = bits.replace("</worldbody>", '</worldbody>\n  <contact><pair geom1="cube" '
+                                        'geom2="pad_a"/></contact>')
+    (tmp_path / "arm.xml").write_text(pair)
+    load_scenario(tmp_path)
+    # one finger that can touch it is enough
+    one = plain.replace("</worldbody>", '</worldbody>\n  <contact><exclude body1="cube" '
+                                        'body2="finger_a"/></contact>')
+    (tmp_path / "arm.xml").write_text(one)
+    load_scenario(tmp_path)

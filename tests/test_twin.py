@@ -47,16 +47,18 @@ ARM_XML = f"""<mujoco model="hinge_arm">
       <geom name="link" type="box" size="{ARM_L / 2} 0.02 0.02" pos="{ARM_L / 2} 0 0"
             mass="{ARM_LINK_MASS}" contype="0" conaffinity="0"/>
       <geom name="pad" type="box" size="0.01 0.03 0.03" pos="0 0 0.1" mass="0"
-            contype="0" conaffinity="0"/>
+            contype="2" conaffinity="2"/>
     </body>
     <body name="box" pos="{ARM_L} 0 0.5">
       <joint name="box_joint" type="free" damping="2"/>
       <geom name="box" type="box" size="0.02 0.02 0.02" mass="{ARM_BOX_MASS}"
-            contype="0" conaffinity="0"/>
+            contype="2" conaffinity="2"/>
     </body>
   </worldbody>
+  <!-- switched on by the static-hold tests (_held): a scenario refuses an object that a
+       weld holds from the start, and a pad that can never touch it -->
   <equality>
-    <weld name="hold" body1="box" body2="arm" solref="0.002 1"/>
+    <weld name="hold" body1="box" body2="arm" solref="0.002 1" active="false"/>
   </equality>
   <actuator>
     <position name="servo" joint="hinge" kp="{ARM_KP}" kv="50"/>
@@ -150,6 +152,14 @@ def _run(model, data, steps: int) -> None:
         mujoco.mj_step(model, data)
 
 
+def _held(model) -> mujoco.MjData:
+    """Data of the hinge arm with its box welded to the arm (the weld's relative pose is
+    the reference configuration's)."""
+    data = mujoco.MjData(model)
+    data.eq_active[model.equality("hold").id] = 1
+    return data
+
+
 def _downslope(theta_deg: float) -> np.ndarray:
     th = math.radians(theta_deg)
     return np.array([math.cos(th), 0.0, -math.sin(th)])
@@ -164,7 +174,7 @@ def _downslope(theta_deg: float) -> np.ndarray:
 def test_static_hold_torque_is_gravity_moment(arm_twin, box_mass):
     model = arm_twin.copy_model()
     arm_twin.write_parameters(model, [[box_mass]])
-    data = mujoco.MjData(model)
+    data = _held(model)
     _run(model, data, 1500)
     sig = arm_twin.signals(data.sensordata)
 
@@ -192,7 +202,7 @@ def test_static_hold_torque_is_gravity_moment(arm_twin, box_mass):
 def test_static_hold_overload_has_fos_below_one(arm_twin):
     model = arm_twin.copy_model()
     arm_twin.write_parameters(model, [[4.0]])
-    data = mujoco.MjData(model)
+    data = _held(model)
     _run(model, data, 1500)
     sig = arm_twin.signals(data.sensordata)
     moment = G * (ARM_LINK_MASS * ARM_L / 2 + 4.0 * ARM_L)  # 22.07 N·m > 10 N·m limit
