@@ -187,7 +187,7 @@ def test_episode_option_selects_the_episode(lerobot_dataset, capsys):
     assert json.loads(cap.out)["steps"] == 100  # 10 frames at 50 Hz, 500 Hz physics
     # the pose was given: no default-pose warning (a 0.2 s episode never reaches the cube,
     # which the fit check says)
-    assert "default object pose" not in cap.err
+    assert "gives no object start pose" not in cap.err
     assert main(["rollout", str(lerobot_dataset), "--json"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "--episode" in err[0] and "[0, 1]" in err[0]
@@ -195,7 +195,7 @@ def test_episode_option_selects_the_episode(lerobot_dataset, capsys):
 
 def test_default_pose_warning_is_one_line(lerobot_dataset, capsys):
     assert main(["rollout", str(lerobot_dataset), "--episode", "0", "--json"]) == 0
-    warns = [line for line in capsys.readouterr().err.splitlines() if "default object pose" in line]
+    warns = [line for line in capsys.readouterr().err.splitlines() if "gives no object start pose" in line]
     assert len(warns) == 1 and warns[0].startswith("critmoment rollout: warning: ")
 
 

@@ -53,11 +53,11 @@ def _arm_xml(*, axis: str, forcerange: float, frictionloss: float,
       <geom name="link" type="box" size="{LINK_L / 2} 0.02 0.02" pos="{LINK_L / 2} 0 0"
             mass="{LINK_MASS}" {link_contact}/>
       <geom name="pad" type="box" size="0.01 0.02 0.02" pos="{LINK_L} 0 0" mass="0"
-            contype="0" conaffinity="0"/>
+            contype="2" conaffinity="2"/>
     </body>
     <body name="box" pos="1 1 0.02">
       <freejoint/>
-      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.1"/>
+      <geom name="box" type="box" size="0.02 0.02 0.02" mass="0.1" contype="3" conaffinity="3"/>
     </body>
   </worldbody>
   <actuator>

@@ -527,7 +527,7 @@ def test_upsample_requires_fps_for_arrays():
 def test_missing_object_pose_warns_and_option_overrides(tmp_path):
     path = tmp_path / "t.npz"
     np.savez(path, actions=np.zeros((5, 3)), fps=50.0)
-    with pytest.warns(CritmomentWarning, match="default object pose"):
+    with pytest.warns(CritmomentWarning, match="gives no object start pose"):
         assert load_trajectory(path).object_pose is None
     pose = [0.1, 0.2, 0.05, 2.0 ** -0.5, 0.0, 0.0, 0.70711]  # norm 1.000002: normalised
     with warnings.catch_warnings():
