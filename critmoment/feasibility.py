@@ -1293,7 +1293,7 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
     scene's part in the failure. Contacts with the robot itself are the feasibility
     check's (``blocked_by``)."""
     model = twin.model
-    touched, lifted = _scan_clutter(twin, recording)
+    touched, lifted, carried = _scan_clutter(twin, recording)
     out = []
     if touched:
         listed = ", ".join(f"{name} from t = {t:.2f} s" for name, t in
@@ -1302,6 +1302,9 @@ def _clutter(twin: Twin, recording: Recording) -> list[str]:
                    f"the task: something in the object's way or under it (clutter, an "
                    f"obstacle, a geom missing from [support])? The failure causes speak of "
                    f"the object's mass and friction; the scene may be the cause")
+    if carried:
+        out.append(_carried_beside(model, twin.object_body_id, carried, lifted))
+    lifted = {b: rise for b, rise in lifted.items() if b not in carried}
     if lifted:
         out.append(f"the grippers lift {_risen(model, lifted)}, another free body than the "
                    f"object {model.body(twin.object_body_id).name!r}, in the nominal run, "
@@ -1328,7 +1331,7 @@ def _disturbed(twin: Twin, recording: Recording) -> list[str]:
     others = _other_free_bodies(model, obj, _body_owners(model))
     if not others:
         return []
-    _, lifted = _scan_clutter(twin, recording)
+    _, lifted, carried = _scan_clutter(twin, recording)
     qpos = twin.qpos(recording.states[[0, -1]])
     moved = []
     for b in others:
@@ -1348,6 +1351,9 @@ def _disturbed(twin: Twin, recording: Recording) -> list[str]:
                    f"completes its task but knocks over or pushes something in the scene, "
                    f"which the task's rule does not see, and the samples are judged against "
                    f"this run; is that the motion meant?")
+    if carried:
+        out.append(_carried_beside(model, obj, carried, lifted))
+    lifted = {b: rise for b, rise in lifted.items() if b not in carried}
     if lifted:
         out.append(f"the grippers lift {_risen(model, lifted)}, another free body than the "
                    f"object {model.body(obj).name!r}, in the nominal run: the grasp closes on "
@@ -1424,11 +1430,12 @@ def _risen(model: mujoco.MjModel, lifted: Mapping[int, float]) -> str:
 
 
 def _scan_clutter(twin: Twin, recording: Recording
-                  ) -> tuple[dict[str, float], dict[int, float]]:
+                  ) -> tuple[dict[str, float], dict[int, float], dict[int, list[str]]]:
     """Over the nominal states every ``CLUTTER_STRIDE`` steps: what the object touches
-    besides its grippers, supports and the robot (name -> first time [s]), and the other
-    free bodies a gripper touches while they rise over ``CLUTTER_LIFT`` (body id -> highest
-    rise [m])."""
+    besides its grippers, supports and the robot (name -> first time [s]), the other free
+    bodies a gripper touches while they rise over ``CLUTTER_LIFT`` (body id -> highest rise
+    [m]), and of those, the ones only grippers that never touch the object lift (body id ->
+    those grippers' names: another arm carrying an object of its own)."""
     model = twin.model
     sc = twin.scenario
     grip, support = _role_geoms(twin)
@@ -1444,29 +1451,51 @@ def _scan_clutter(twin: Twin, recording: Recording
     lifted: dict[int, float] = {}   # other free body -> its highest rise while gripped
     start = {b: float(twin.qpos(states[:1])[0, adr[b]:adr[b] + 3] @ up) for b in others}
     dt = float(model.opt.timestep)
+    gripper_of = {model.geom(g).id: gr.name for gr in sc.grippers for g in gr.geoms}
+    holders: set[str] = set()            # grippers that touch the object
+    lifters: dict[int, set[str]] = {}     # other free body -> grippers touching it risen
     for k in steps:
         twin.set_state(model, data, states[k])
         mujoco.mj_forward(model, data)
         if not data.ncon:
             continue
         for h in _object_partners(model, data, obj):
+            if h in gripper_of:
+                holders.add(gripper_of[h])
             kind, root = owner[int(model.geom_bodyid[h])]
             if h in grip or h in support or kind == "robot":
                 continue
             name = (f"free body {model.body(root).name or root!r}" if kind == "free"
                     else f"fixed geom {_geom_name(model, h)!r}")
             touched.setdefault(name, k * dt)
-        gripped = set()
+        gripped: dict[int, set[str]] = {}
         for g1, g2 in np.asarray(data.contact.geom).reshape(-1, 2)[:data.ncon]:
             for g, h in ((int(g1), int(g2)), (int(g2), int(g1))):
                 kind, root = owner[int(model.geom_bodyid[h])]
                 if g in grip and kind == "free" and root != obj:
-                    gripped.add(root)
-        for b in gripped & set(others):
+                    gripped.setdefault(root, set()).add(gripper_of[g])
+        for b in set(gripped) & set(others):
             rise = float(data.qpos[adr[b]:adr[b] + 3] @ up) - start[b]
             if rise > CLUTTER_LIFT:
                 lifted[b] = max(lifted.get(b, 0.0), rise)
-    return touched, lifted
+                lifters.setdefault(b, set()).update(gripped[b])
+    own = {b: sorted(names) for b, names in lifters.items() if not names & holders}
+    return touched, lifted, own
+
+
+def _carried_beside(model: mujoco.MjModel, obj: int, carried: Mapping[int, list[str]],
+                    lifted: Mapping[int, float]) -> str:
+    """The other free bodies grippers that never touch the object carry, in words: the
+    task's rule judges the object alone, so their drops go unseen."""
+    each = "; ".join(
+        f"{'grippers' if len(carried[b]) > 1 else 'gripper'} {', '.join(map(repr, carried[b]))} "
+        f"{'carry' if len(carried[b]) > 1 else 'carries'} free body "
+        f"{_risen(model, {b: lifted[b]})}" for b in carried)
+    names = [model.body(b).name for b in carried]
+    return (f"{each} in the nominal run, beside the object {model.body(obj).name!r}: the "
+            f"task's rule judges {model.body(obj).name!r} alone, so a run that drops "
+            f"{', '.join(map(repr, names))} is not failed for it; give it a scenario of its own "
+            f"([object] body = {names[0]!r}) to audit its grip")
 
 
 def _unlisted_supports(twin: Twin, data: mujoco.MjData) -> list[str]:

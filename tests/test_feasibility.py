@@ -1214,3 +1214,51 @@ def test_an_unnamed_free_robot_base_is_read_as_a_named_one(tmp_path):
     assert len(twin.robot_bases) == 1
     axis = twin.base_axis(np.zeros((4, twin.nsensordata)))
     assert axis is not None and axis.shape == (4, 1, 3)
+
+
+def test_another_object_carried_by_a_gripper_the_object_never_touches_is_named(
+        tmp_path, twin, demo_traj):
+    """A bimanual task audited one object at a time (ACT's insertion: socket in one hand,
+    peg in the other): the hint said "does the grasp close on the wrong object", and a run
+    that tore the other object out of its gripper was a success without a word. The hint
+    now names the gripper that carries it and that the task's rule judges the object alone."""
+    import shutil
+
+    from critmoment.scenario import bundled_scenario_path
+
+    src = bundled_scenario_path("aloha_transfer_cube").parent
+    for f in src.iterdir():
+        if f.suffix in (".xml", ".toml"):
+            shutil.copy(f, tmp_path / f.name)
+    scene = (tmp_path / "scene.xml").read_text()
+    # after the cube: the keyframe's free-joint values stay the cube's
+    decoy = ('<body name="other" pos="-0.25 0.9 0.02"><freejoint/><geom name="other" '
+             'type="box" size="0.02 0.02 0.02" mass="0.05"/></body>\n  </worldbody>')
+    assert scene.count("</worldbody>") == 1 and scene.count('<body name="box" pos=') == 1
+    scene = scene.replace("</worldbody>", decoy)
+    (tmp_path / "scene.xml").write_text(scene)
+    toml = (tmp_path / "scenario.toml").read_text()
+    toml = toml.replace('body = "box"', 'body = "other"').replace('geom = "box"',
+                                                                  'geom = "other"')
+    toml = re.sub(r'kind = "handover".*\npicker = "right"\nreceiver = "left"',
+                  'kind = "pick_hold"\ngripper = "right"', toml)
+    assert 'gripper = "right"' in toml and toml.count('"other"') == 4
+    (tmp_path / "scenario.toml").write_text(toml)
+    other = Twin(load_scenario(tmp_path))
+    # the demo's start, the cube where the demo spawned it, the decoy at its own pose
+    start = twin.initial_data(settle=False)
+    box = twin.model.body("box")
+    adr = int(twin.model.jnt_qposadr[box.jntadr[0]])
+    start.qpos[adr:adr + 7] = demo_traj.object_pose
+    qpos0 = np.concatenate([start.qpos, [-0.25, 0.9, 0.02, 1.0, 0.0, 0.0, 0.0]])
+    traj = dataclasses.replace(demo_traj, object_pose=None, qpos0=qpos0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the keyframe leaves the decoy at its own pose
+        rec = _record(other, traj)
+    hints = check_fit(traj, rec, other)
+    said = [h for h in hints if "carry free body 'box'" in h]
+    assert len(said) == 1, hints
+    assert re.search(r"grippers 'left', 'right' carry free body 'box' \(\d+(\.\d+)? cm\) in "
+                     r"the nominal run, beside the object 'other': the task's rule judges "
+                     r"'other' alone", said[0])
+    assert not any("wrong object" in h for h in hints)
