@@ -1150,9 +1150,12 @@ def _make_servos(spec: mujoco.MjSpec, servos: Servos) -> None:
     motors = {a.name: a for a in spec.actuators if _motor_on_joint(spec, a)}
     for name in servos.gains:
         if name not in motors:
-            kinds = {a.name for a in spec.actuators}
+            kinds = {a.name: a for a in spec.actuators}
             what = ("is not a torque motor on a hinge or slide joint (a servo already, or "
                     "another transmission)" if name in kinds else "is no actuator of the model")
+            if name in kinds and kinds[name].plugin.active:
+                what = ("is a plugin actuator (its force is the plugin's; drive the joint with "
+                        "a <position> servo of the same gains to audit it)")
             raise ScenarioError(
                 f"[servos.{name}]: expected a torque motor on a joint, but {name!r} {what}; "
                 f"the model's torque motors on joints: {_listing(sorted(motors)) or '(none)'}")

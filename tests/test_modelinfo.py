@@ -1594,5 +1594,5 @@ def test_a_plugin_actuator_is_named_as_one_not_taken_for_a_torque_motor(tmp_path
     (tmp_path / "s.toml").write_text(toml)
     path.write_text(text)
     with pytest.raises(ScenarioError, match=r"\[servos\.elbow_act\]: expected a torque motor "
-                                            r"on a joint"):
+                                            r"on a joint, but 'elbow_act' is a plugin actuator"):
         load_scenario(tmp_path / "s.toml")
