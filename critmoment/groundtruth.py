@@ -23,7 +23,9 @@ Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
   unless this happens only after the object was dropped (then it is a consequence).
 * ``DROPPED``: the task is not completed and, for longer than ``drop_time``, the object is not
   carried (touches the support, or no gripper) at steps where the nominal run carries it; the
-  drop is the last such loss (an earlier one, a late lift, was recovered from). Also, task
+  drop is the last such loss (an earlier one, a late lift, was recovered from). Not a run
+  that ends with the object still carried where the nominal run has let it go: that one was
+  never released (``NOT_COMPLETED``), whatever it touched on the way. Also, task
   completed or not, a fall: at a step where the nominal run carries it, the object lies on a
   support, or at rest on anything (:func:`resting`), touched by no gripper, having fallen
   more than ``fall_height`` since a gripper last touched it (:func:`fall_steps`; a catch at a hand-over touches no support, an object set
@@ -457,6 +459,12 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
     fell = (fall_step >= 0) & completed
     drop_step = np.where(fell, fall_step, drop_step)
     drop_ok = (drop_step >= 0) & (~completed | fell)
+    # a run that ends with the object still carried where the nominal run has let it go was
+    # not dropped, whatever it touched on the way: it was never released (a Lite6's
+    # high-friction cube, set on the table 70 ms before the nominal's and carried off
+    # stuck to the fingers, was "dropped" at the set-down)
+    if t and not nominal_carried[-1]:
+        drop_ok &= ~(carried[:, -1] & ~fell)
     # a motor event after the object is lost is a consequence (the arms move unloaded, may
     # touch each other), not the cause
     motor_ok = (motor_step >= 0) & ~(drop_ok & (motor_step > drop_step))

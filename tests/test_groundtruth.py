@@ -377,3 +377,25 @@ def test_fingers_rounded_off_parallel_close_along_one_axis(tmp_path):
     for p in (truth, sparse[0]):
         assert np.linalg.matrix_rank(p, tol=1e-3) == 2
         np.testing.assert_allclose(p, sparse[0], atol=1e-9)
+
+
+def test_an_object_never_released_is_not_completed_not_dropped():
+    """The nominal run carries the object over steps 100-169 and sets it down; a sample
+    sets it down 40 steps earlier (not carried where the nominal carries it: a drop by
+    that rule) and then carries it off, stuck in the fingers, to the end. It was never
+    released: NOT_COMPLETED. One that sets it down early and lets go stays DROPPED."""
+    n, t = 2, 200
+    stage = np.zeros((n, t), np.int8)
+    grip = np.zeros((n, t, 1), bool)
+    support = np.ones((n, t), bool)
+    support[:, 100:130] = False            # both lifted at 100, set down at 130 (early)
+    grip[:, 50:, 0] = True
+    support[0, 150:] = False               # 0: carried off again from 150, held at the end
+    grip[1, 135:, 0] = False               # 1: let go at 135, resting on the table
+    nominal = np.zeros(t, bool)
+    nominal[100:170] = True
+    c = gt.classify(dt=0.002, stage=stage, contact_gripper=grip, contact_support=support,
+                    nominal_carried=nominal, actuator_norm=np.full((n, t, 1), 0.3),
+                    completed=np.array([False, False]))
+    assert c.outcome == (gt.Outcome.NOT_COMPLETED, gt.Outcome.DROPPED)
+    assert c.failed.tolist() == [True, True]
