@@ -145,7 +145,7 @@ def dynamic_partners(model: mujoco.MjModel, geom: int) -> list[int]:
     return out
 
 
-def _grip_contacts(model: mujoco.MjModel, object_body: int, pad_geoms: Sequence[int]
+def grip_contacts(model: mujoco.MjModel, object_body: int, pad_geoms: Sequence[int]
                    ) -> list[tuple[int, int, int | None]]:
     """The contacts the object's collision geoms can make with ``pad_geoms``: (object geom,
     pad geom, its explicit pair or None). Bodies joined by an explicit pair have no other
@@ -173,7 +173,7 @@ def grip_friction_sources(model: mujoco.MjModel, object_body: int, pad_geoms: Se
     priority (``("geom", (g,))``) or, at equal priority, the larger of the two (``("max",
     (g1, g2))``). None found: the object geom's own."""
     sources = []
-    for o, g, pair in _grip_contacts(model, object_body, pad_geoms):
+    for o, g, pair in grip_contacts(model, object_body, pad_geoms):
         if pair is not None:
             sources.append(("pair", (pair,)))
         elif model.geom_priority[o] != model.geom_priority[g]:
@@ -193,7 +193,7 @@ def grip_condims(model: mujoco.MjModel, object_body: int, pad_geoms: Sequence[in
     explicit pair's own, else MuJoCo's rule for a dynamic contact); empty where none can."""
     return [int(model.pair_dim[pair]) if pair is not None
             else contact_parameters(model, o, g).condim
-            for o, g, pair in _grip_contacts(model, object_body, pad_geoms)]
+            for o, g, pair in grip_contacts(model, object_body, pad_geoms)]
 
 
 def source_friction(sources: Sequence[tuple[str, tuple[int, ...]]], geom_friction: np.ndarray,
@@ -213,6 +213,12 @@ def source_friction(sources: Sequence[tuple[str, tuple[int, ...]]], geom_frictio
             values.append(np.broadcast_to(np.maximum(geom[:, ids[0], 0], geom[:, ids[1], 0]),
                                           (n,)))
     return np.min(values, axis=0)
+
+
+#: what to do with a plugin actuator (:attr:`ActuatorKind.PLUGIN`) on a joint the trajectory
+#: drives: critmoment cannot tell what its control means
+PLUGIN_ADVICE = ("its force is the plugin's own law, whose control critmoment cannot read; "
+                 "drive the joint with a <position> servo of the same gains to audit it")
 
 
 class ActuatorKind(enum.Enum):

@@ -1097,8 +1097,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
             + " are not position servos: a joint-position trajectory cannot drive them; "
             "critmoment audits position-controlled robots (torque motors on joints it drives "
             "through [servos])"
-            + ("; a plugin actuator's control means what its plugin makes of it: drive "
-               "the joint with a <position> servo of the same gains to audit it"
+            + (f"; a plugin actuator: {act_info.PLUGIN_ADVICE}"
                if any(a.kind is act_info.ActuatorKind.PLUGIN for a in unusable) else ""))
     lines = [f"# critmoment scenario for {model_path.name}, written by `critmoment init`.",
              "# Every name is checked against the compiled model when this file is loaded.",

@@ -1154,8 +1154,7 @@ def _make_servos(spec: mujoco.MjSpec, servos: Servos) -> None:
             what = ("is not a torque motor on a hinge or slide joint (a servo already, or "
                     "another transmission)" if name in kinds else "is no actuator of the model")
             if name in kinds and kinds[name].plugin.active:
-                what = ("is a plugin actuator (its force is the plugin's; drive the joint with "
-                        "a <position> servo of the same gains to audit it)")
+                what = f"is a plugin actuator ({act_info.PLUGIN_ADVICE})"
             raise ScenarioError(
                 f"[servos.{name}]: expected a torque motor on a joint, but {name!r} {what}; "
                 f"the model's torque motors on joints: {_listing(sorted(motors)) or '(none)'}")
@@ -1202,35 +1201,21 @@ def _make_servos(spec: mujoco.MjSpec, servos: Servos) -> None:
 
 
 def _cannot_touch(model: mujoco.MjModel, geoms: Sequence[int], body: int) -> str:
-    """Why no geom of ``geoms`` can ever collide with a geom of ``body`` (MuJoCo's
-    collision filter: an explicit ``<pair>``, else contype/conaffinity bits and
-    ``<contact><exclude>``), in words; "" when one pair can."""
-    own = [g for g in range(model.ngeom) if int(model.geom_bodyid[g]) == body]
-    if not own or not len(geoms):
+    """Why no geom of ``geoms`` can ever collide with a geom of ``body`` (MuJoCo's collision
+    filter, as :func:`critmoment.actuators.grip_contacts` reads it), in words; "" when one
+    can, or ``body`` has no geom that collides with anything (refused elsewhere)."""
+    if not len(geoms) or not act_info.collision_geoms(model)[model.geom_bodyid == body].any():
         return ""
-    pairs = {(int(a), int(b)) for a, b in zip(model.pair_geom1, model.pair_geom2, strict=True)}
-    excluded = {(int(sig) >> 16, int(sig) & 0xFFFF) for sig in model.exclude_signature}
-    bits = excl = 0
-    for g in geoms:
-        for o in own:
-            if (g, o) in pairs or (o, g) in pairs:
-                return ""
-            if not ((model.geom_contype[g] & model.geom_conaffinity[o])
-                    or (model.geom_contype[o] & model.geom_conaffinity[g])):
-                bits += 1
-                continue
-            b1, b2 = sorted((int(model.geom_bodyid[g]), body))
-            if (b1, b2) in excluded:
-                excl += 1
-                continue
-            return ""
+    if act_info.grip_contacts(model, body, geoms):
+        return ""
+    excluded = set(model.exclude_signature.tolist())
+    pads = {int(model.geom_bodyid[g]) for g in geoms}
+    shut = {b for b in pads if (min(b, body) << 16) + max(b, body) in excluded}
     out = []
-    if excl:
-        bodies = sorted({model.body(int(model.geom_bodyid[g])).name for g in geoms
-                         if (min(int(model.geom_bodyid[g]), body),
-                             max(int(model.geom_bodyid[g]), body)) in excluded})
-        out.append(f"<contact><exclude> between the object and {', '.join(map(repr, bodies))}")
-    if bits:
+    if shut:
+        out.append(f"<contact><exclude> between the object and "
+                   f"{', '.join(sorted(repr(model.body(b).name) for b in shut))}")
+    if shut != pads:
         out.append("their contype/conaffinity bits and the object's share no bit")
     return " and ".join(out)
 
@@ -1618,10 +1603,7 @@ def _check_channel_kinds(actions: ActionConvention, resolver: _ActuatorResolver)
                     + ("drive the torque motor as a joint servo with [servos] kp, kv (the "
                        "robot's joint controller; `critmoment init` writes them)"
                        if kind == "motor" else
-                       "critmoment cannot tell what a plugin's control means (its tracking "
-                       "and force rules are the plugin's own); drive the joint with a "
-                       "<position> servo of the same gains to audit it"
-                       if kind == "plugin" else
+                       act_info.PLUGIN_ADVICE if kind == "plugin" else
                        "audit a position-controlled model, or convert the actions to this "
                        "actuator's controls"))
 
