@@ -682,6 +682,8 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         worst_rollouts_failed=worst_failed, trend=_trend(curves, box),
         own_failures=roll.failures(samples[runs.rerun]),
         chain_failures=_chain_kinds(runs, failed),
+        own_failure_points=_failure_points(runs, failed, roll, samples, chained=False),
+        chain_failure_points=_failure_points(runs, failed, roll, samples, chained=True),
         nominal_run_failure=_nominal_run_failure(roll.nominal(), twin, rec.dt))
     decision = vd.decide(evidence, dopt)
     region_check = None
@@ -1079,6 +1081,22 @@ def _chain_kinds(runs: vd.SampleRuns, failed: np.ndarray) -> dict[str, int]:
         kind = runs.chained_kinds[i] or "not_completed"
         counts[kind] = counts.get(kind, 0) + 1
     return dict(sorted(counts.items(), key=lambda kv: -kv[1]))
+
+
+def _failure_points(runs: vd.SampleRuns, failed: np.ndarray, roll: _Rollouts,
+                    samples: np.ndarray, *, chained: bool) -> dict[str, np.ndarray]:
+    """Per way of failing, the parameter values of the samples that failed that way: the
+    rolled-out ones by their outcome, or the chained ones by their kind (what
+    :meth:`_Rollouts.failures` and :func:`_chain_kinds` count)."""
+    out: dict[str, list[np.ndarray]] = {}
+    if chained and runs.chained_kinds:
+        for i in np.flatnonzero(runs.chained & ~runs.suspect & failed):
+            out.setdefault(runs.chained_kinds[i] or "not_completed", []).append(samples[i])
+    for i in np.flatnonzero(runs.rerun) if not chained else ():
+        got = roll.outcomes.get(_point_key(samples[i]))
+        if got is not None and got[0] != Outcome.SUCCESS.value:
+            out.setdefault(got[0], []).append(samples[i])
+    return {kind: np.array(rows) for kind, rows in out.items()}
 
 
 def _nominal_failed(evaluator: sp.SparseEvaluator, steps: np.ndarray) -> np.ndarray:

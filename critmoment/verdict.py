@@ -1253,6 +1253,9 @@ class Evidence:
             None, the actuators of the motor failures); for the causes.
         chain_failures: how the failures the chained segments decided failed, per kind
             (``history.ChainedResult.kinds``): how many; for the causes.
+        own_failure_points, chain_failure_points: per key of ``own_failures`` and of
+            ``chain_failures``, the (k, d) parameter values of the samples that failed that
+            way; the causes say where in the box they lie.
         nominal_run_failure: how the nominal run itself fails by the ground truth's rules
             other than the task's (a motor held at its limit, a divergence), in words, or
             None: it fails the nominal parameters.
@@ -1274,6 +1277,8 @@ class Evidence:
     own_failures: Mapping[str, tuple[int, float | None, tuple[str, ...]]] = (
         dataclasses.field(default_factory=dict))
     chain_failures: Mapping[str, int] = dataclasses.field(default_factory=dict)
+    own_failure_points: Mapping[str, np.ndarray] = dataclasses.field(default_factory=dict)
+    chain_failure_points: Mapping[str, np.ndarray] = dataclasses.field(default_factory=dict)
     nominal_run_failure: str | None = None
     #: the task's stage names, for the causes (stage 0 is "untouched", ...)
     stage_names: tuple[str, ...] = ()
@@ -1437,7 +1442,7 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
                        f"own full rollout (between the moments or by not completing the "
                        f"task); suggestion: reduce the uncertainty near the safe region's "
                        f"edge",)
-    own = _own_failures_text(evidence.own_failures)
+    own = _own_failures_text(evidence.own_failures, evidence.own_failure_points, box)
     if own:
         causes += (own,)
     if se.chained is not None and has_moments:
@@ -1445,7 +1450,8 @@ def decide(evidence: Evidence, options: DecisionOptions) -> Decision:
         chain_failed = int((chained & failed).sum())
         if chain_failed:
             # the moments' lines count only the failures at the moments
-            kinds = _kinds_text(evidence.chain_failures)
+            kinds = _kinds_text(evidence.chain_failures, evidence.chain_failure_points,
+                                box)
             causes += (f"{chain_failed} of {int(chained.sum())} samples that pass at every "
                        f"audited moment fail on their own path (chained segments, each "
                        f"sample's own run through the moments: "
@@ -1474,15 +1480,51 @@ _KIND_WORDS = {"motor": "motor overload", "tracking": "lost tracking (a joint la
                "moment": "failed a moment on its own state"}
 
 
-def _kinds_text(counts: Mapping[str, int]) -> str:
-    """``{"motor": 3, "slipped": 1}`` in words: "3 motor overload, 1 slipped (or turned) in the grip"."""
-    return ", ".join(f"{k} {_KIND_WORDS.get(kind, kind)}" for kind, k in counts.items())
+def _kinds_text(counts: Mapping[str, int], points: Mapping[str, np.ndarray] | None = None,
+                box: UncertaintyBox | None = None) -> str:
+    """``{"motor": 3, "slipped": 1}`` in words: "3 motor overload, 1 slipped (or turned) in the
+    grip", each with where in the box its samples lie (:func:`_where_text`)."""
+    return ", ".join(f"{k} {_KIND_WORDS.get(kind, kind)}"
+                     + _parenthesis(_where_text((points or {}).get(kind), box))
+                     for kind, k in counts.items())
 
 
-def _own_failures_text(own: Mapping[str, tuple[int, float | None, tuple[str, ...]]]) -> str:
+def _parenthesis(text: str) -> str:
+    return f" ({text})" if text else ""
+
+
+def _where_text(points: np.ndarray | None, box: UncertaintyBox | None) -> str:
+    """Where in the box the samples that failed one way lie, per parameter on one side of
+    the nominal: "all at friction ≥ 4.57". A failure of high friction (a cube the fingers
+    never let go) and one of low friction (a cube that slips out) read the same otherwise.
+    One sample is given whole; parameters whose failures lie on both sides are left out."""
+    if points is None or box is None:
+        return ""
+    pts = np.asarray(points, dtype=float).reshape(-1, box.ndim)
+    if not len(pts):
+        return ""
+    units = [f" {p.unit}" if p.unit else "" for p in box.parameters]
+    if len(pts) == 1:
+        return "at " + _and([f"{p.name} = {v:.3g}{u}" for p, v, u
+                             in zip(box.parameters, pts[0], units, strict=True)])
+    parts = []
+    for j, (p, u) in enumerate(zip(box.parameters, units, strict=True)):
+        lo, hi = float(pts[:, j].min()), float(pts[:, j].max())
+        if np.isclose(lo, hi) or p.low == p.high:
+            continue
+        if lo > p.nominal:
+            parts.append(f"{p.name} ≥ {lo:.3g}{u}")
+        elif hi < p.nominal:
+            parts.append(f"{p.name} ≤ {hi:.3g}{u}")
+    return "all at " + _and(parts) if parts else ""
+
+
+def _own_failures_text(own: Mapping[str, tuple[int, float | None, tuple[str, ...]]],
+                       points: Mapping[str, np.ndarray] | None = None,
+                       box: UncertaintyBox | None = None) -> str:
     """How the samples decided by their own full rollout failed, in one cause line: the
     failures that no moment shows (a motor overloaded away from the object, a drop between
-    the moments) are named by what really happened."""
+    the moments) are named by what really happened, and where in the box they lie."""
     if not own:
         return ""
     parts = []
@@ -1493,6 +1535,9 @@ def _own_failures_text(own: Mapping[str, tuple[int, float | None, tuple[str, ...
             detail.append(", ".join(actuators))
         if first is not None:
             detail.append(f"first at t = {first:.3g} s")
+        where = _where_text((points or {}).get(outcome), box)
+        if where:
+            detail.append(where)
         parts.append(f"{count} {what}" + (f" ({'; '.join(detail)})" if detail else ""))
     total = sum(count for count, _, _ in own.values())
     text = (f"how the {total} sample(s) failing on their own full rollout failed: "

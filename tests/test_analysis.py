@@ -282,6 +282,28 @@ def test_the_causes_name_how_the_own_rollouts_failed(boundary_reports, demo_traj
         assert f"{k} {words[outcome]}" in line[0]
 
 
+def test_the_failure_lines_say_where_in_the_box_each_way_of_failing_lies():
+    # A cube the fingers never let go (high friction) and one that slips out (low friction)
+    # are both failures of the friction parameter; the lines say which side each lies on.
+    from critmoment.params import FrictionParameter, MassParameter
+    from critmoment.verdict import _kinds_text, _own_failures_text
+
+    box = UncertaintyBox((MassParameter("mass", "box", 0.025, 0.3, 0.05),
+                          FrictionParameter("friction", "box", 0.3, 6.0, 1.0)))
+    own = {"not_completed": (2, None, ()), "dropped": (3, 4.0, ())}
+    points = {"not_completed": np.array([[0.054, 5.9], [0.034, 4.57]]),
+              "dropped": np.array([[0.2, 0.4], [0.28, 0.35], [0.03, 0.5]])}
+    text = _own_failures_text(own, points, box)
+    assert ("3 dropped (first at t = 4 s; all at friction ≤ 0.5), 2 task not completed (all "
+            "at friction ≥ 4.57)") in text, text
+    one = _kinds_text({"motor": 1}, {"motor": np.array([[0.29, 1.2]])}, box)
+    assert one == "1 motor overload (at mass = 0.29 kg and friction = 1.2)"
+    both_sides = _kinds_text({"dropped": 2}, {"dropped": np.array([[0.2, 0.4], [0.03, 2.0]])},
+                             box)
+    assert both_sides == "2 dropped"
+    assert _kinds_text({"dropped": 2}) == "2 dropped"
+
+
 def test_the_own_failures_line_names_the_motor():
     from critmoment.verdict import _own_failures_text
 
