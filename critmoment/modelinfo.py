@@ -888,6 +888,29 @@ def _joints_instead(model_path: Path, body: str) -> str:
             f"audited object needs one <freejoint/>, which places it and gives its pose)")
 
 
+def _off_the_arms(model: mujoco.MjModel, a: act_info.ActuatorInfo,
+                  grippers: Sequence[GripperGuess]) -> bool:
+    """Actuator ``a`` is a velocity servo on a joint that moves no gripper (its body is on
+    no gripper body's chain to the world, nor below one): a wheel, held still at control 0."""
+    if a.kind is not act_info.ActuatorKind.VELOCITY or a.transmission != "joint":
+        return False
+    body = int(model.jnt_bodyid[model.actuator_trnid[a.index, 0]])
+    for g in grippers:
+        b = model.body(g.body).id
+        while True:
+            if b == body:
+                return False
+            if b == 0:
+                break
+            b = int(model.body_parentid[b])
+        b = body
+        while b:
+            if b == model.body(g.body).id:
+                return False
+            b = int(model.body_parentid[b])
+    return bool(grippers)
+
+
 def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                   supports: Sequence[str] = (), out: str | Path | None = None,
                   goal: Sequence[float] | None = None, goal_site: str | None = None,
@@ -1073,7 +1096,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
     # channels: each gripper's actuators in one normalised channel, every other actuator one
     gripper_of = {a: g for g in grippers for a in g.actuators}
     channels, done = [], set()
-    unusable, servo_motors = [], []
+    unusable, servo_motors, idle = [], [], []
     for a in info.actuators:
         if a.name in done:
             continue
@@ -1089,8 +1112,17 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
             # controller the real robot runs ([servos], gains guessed below)
             channels.append(("joint", a))
             servo_motors.append(a)
+        elif _off_the_arms(model, a, grippers):
+            # a mobile base's wheels: a control of 0 holds them still, and no joint target
+            # of the trajectory is theirs
+            idle.append(a)
         else:
             unusable.append(a)
+    if idle:
+        checks.append(
+            "actuators " + ", ".join(f"{a.name or a.label} ({a.kind.value})" for a in idle)
+            + " drive joints on no gripper's arm (a mobile base's wheels): no channel, their "
+            "control stays 0 (held still)")
     if unusable:
         raise ScenarioError(
             "actuators " + ", ".join(f"{a.name} ({a.kind.value})" for a in unusable)

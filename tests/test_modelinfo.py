@@ -539,6 +539,37 @@ def test_an_intvelocity_actuator_is_not_a_position_servo(tmp_path):
         init_scenario(path, object_body="cube", task="pick_hold")
 
 
+def test_velocity_servos_on_no_gripper_arm_are_left_undriven_by_init(tmp_path):
+    """A mobile base's wheels (``<velocity>``, a TIAGo's) are held still by a control of 0:
+    init leaves them without a channel and says so (it had refused every TIAGo as shipped,
+    arms and all); a velocity servo on the arm is still refused."""
+    text = arm_xml()
+    wheel = ('<body name="cart" pos="-0.5 0 0.1"><joint name="wheel" type="hinge" '
+             'axis="0 1 0"/><geom type="cylinder" size="0.05 0.02" mass="1" contype="0" '
+             'conaffinity="0"/></body>\n  </worldbody>')
+    text = text.replace("</worldbody>", wheel).replace(
+        "</actuator>", '<velocity name="wheel_act" joint="wheel" kv="5"/>\n  </actuator>')
+    key = re.search(r'<key qpos="([^"]*)"/>', text)
+    text = text.replace(key.group(0), f'<key qpos="{key.group(1)} 0"/>')
+    path = tmp_path / "cart.xml"
+    path.write_text(text)
+    out = tmp_path / "scenario.toml"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        result = init_scenario(path, object_body="cube", task="pick_hold", out=out)
+    assert any("wheel_act (velocity) drive joints on no gripper's arm" in c
+               for c in result.checks), result.checks
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        channels = load_scenario(out).actions.channels
+    assert all("wheel_act" not in c for c in channels), channels
+    arm = tmp_path / "arm_velocity.xml"
+    arm.write_text(text.replace(SHOULDER, '<velocity name="shoulder_act" joint="shoulder" '
+                                          'kv="20"/>'))
+    with pytest.raises(ScenarioError, match=r"shoulder_act \(velocity\).*not position servos"):
+        init_scenario(arm, object_body="cube", task="pick_hold")
+
+
 def test_a_filtered_servo_starts_with_its_activation_at_the_control(tmp_path):
     """``<position timeconst>``: at rest at its target the filter's state is the control
     (from 0 the arm first sagged, the servo saturated for 20 ms and every sample was
