@@ -779,7 +779,10 @@ def _check_critical(reports: Sequence[vd.MomentReport], box, roll: Callable[...,
                 stood[(name, side)] = (i, value)
             else:
                 refuted[(i, name)] = (side, value)
-    moved = _critical_from_inside(stood, box, roll) if nominal_completed else {}
+    reference = roll.nominal() if hasattr(roll, "nominal") else None
+    nominal_passes = nominal_completed and (reference is None
+                                            or reference.outcome is Outcome.SUCCESS)
+    moved = _critical_from_inside(stood, box, roll, reports) if nominal_passes else {}
     for (i, name), value in moved.items():
         reports[i] = dataclasses.replace(reports[i], critical={
             **reports[i].critical, name: value})
@@ -802,7 +805,9 @@ CRITICAL_BISECTIONS = 5
 
 
 def _critical_from_inside(stood: Mapping[tuple[str, str], tuple[int, float]], box,
-                          roll: Callable[..., np.ndarray]) -> dict[tuple[int, str], float]:
+                          roll: Callable[..., np.ndarray],
+                          reports: Sequence[vd.MomentReport] = ()
+                          ) -> dict[tuple[int, str], float]:
     """The standing critical values (per parameter and side, the most binding one whose run
     just past it fails) whose run ``CRITICAL_STEP`` inside them fails too, each moved to
     where the own runs begin to fail: ``CRITICAL_BISECTIONS`` full runs bisect between the
@@ -812,7 +817,12 @@ def _critical_from_inside(stood: Mapping[tuple[str, str], tuple[int, float]], bo
     Sparse evaluation restores the nominal state, and a sample's own run can fail earlier:
     where a held object creeps down the pads (a WidowX 250 s on a pyramidal cone), "fails
     for mass above 0.185 kg" was stated while full runs fail from 0.12 kg; a lying cylinder
-    on a Panda, "above 1.38 kg" where full runs drop it at 1.0 kg."""
+    on a Panda, "above 1.38 kg" where full runs drop it at 1.0 kg.
+
+    Only a run that fails the moment's way counts (:func:`_fails_there`): a grip-slip
+    moment's value had moved to the nominal 0.1 kg where every run failed later on a joint
+    held at its limit, and to a slope's friction where cubes slid off before the grasp. The
+    caller runs this only where the nominal run passes its ground truth."""
     out: dict[tuple[int, str], float] = {}
     if not stood:
         return out
@@ -820,7 +830,8 @@ def _critical_from_inside(stood: Mapping[tuple[str, str], tuple[int, float]], bo
     inside = np.array([_past_critical(box, name, "below" if side == "above" else "above",
                                       stood[(name, side)][1]) for name, side in keys])
     for (name, side), point, failed in zip(keys, inside, roll(inside), strict=True):
-        if not failed:
+        mr = reports[stood[(name, side)][0]] if reports else None
+        if not _fails_there(roll, point, mr, failed=bool(failed)):
             continue
         j = box.index(name)
         lo = _unit_of(box, j, box.nominal[j])  # passes: the nominal run completes the task
@@ -829,12 +840,39 @@ def _critical_from_inside(stood: Mapping[tuple[str, str], tuple[int, float]], bo
             continue  # the value lies within a step of the nominal
         for _ in range(CRITICAL_BISECTIONS):
             mid = 0.5 * (lo + hi)
-            if roll(_nominal_with(box, j, mid)[None])[0]:
+            if _fails_there(roll, _nominal_with(box, j, mid), mr):
                 hi = mid
             else:
                 lo = mid
         out[(stood[(name, side)][0], name)] = float(_nominal_with(box, j, lo)[j])
     return out
+
+
+#: the ground truth's outcomes that a moment's dominant cause can lead to
+_CAUSE_OUTCOMES = {"contact": {Outcome.DROPPED.value, Outcome.SLIPPED.value,
+                               Outcome.NOT_COMPLETED.value},
+                   "motor": {Outcome.MOTOR.value, "tracking"}}
+#: how long before a moment its run's first failure may lie and still be the moment's [s]
+_CAUSE_LEAD = 0.05
+
+
+def _fails_there(roll: Callable[..., np.ndarray], point: np.ndarray,
+                 mr: vd.MomentReport | None, *, failed: bool | None = None) -> bool:
+    """``point``'s own run fails (``failed``, when it has run), and as moment ``mr`` says
+    it would: an outcome its dominant cause leads to (a slip or a drop for the grip, an
+    overload or a lag for a motor), first failing no earlier than just before the moment."""
+    if failed is None:
+        failed = bool(roll(np.asarray(point, dtype=np.float64)[None])[0])
+    if not failed:
+        return False
+    got = getattr(roll, "outcomes", {}).get(_point_key(point))
+    if mr is None or got is None:
+        return True
+    kind, first, _ = got
+    family = _CAUSE_OUTCOMES.get(mr.dominant or "")
+    if family is not None and kind not in family:
+        return False
+    return first is None or first >= mr.moment.time - _CAUSE_LEAD
 
 
 def _unit_of(box, j: int, value: float) -> float:

@@ -772,6 +772,54 @@ def test_critical_values_are_checked_by_the_full_run_just_past_them():
     assert any(np.allclose(row, [0.6 - 0.01, 1.0]) for row in tried)
 
 
+def test_a_critical_value_moves_only_with_runs_that_fail_the_moments_way():
+    """probe r38: a grip-slip moment at 3.94 s read "fails for mass above 0.1 kg" (the
+    nominal) where every run failed from 6.5 s on a joint held at its limit, and a slope's
+    friction was put on the grasp where the cubes slid off before it. A standing value
+    moves only with own runs that fail as its moment says (a drop or slip for the grip, an
+    overload for a motor), no earlier than just before it; and not at all where the nominal
+    run fails its ground truth."""
+    import types
+
+    from critmoment.moments import Moment, MomentLabel
+    from critmoment.params import FrictionParameter, MassParameter
+
+    box = UncertaintyBox((MassParameter("mass", "box", 0.05, 1.05, 0.1),
+                          FrictionParameter("friction", "box", 0.2, 1.6, 1.0)))
+    m = Moment(step=1970, time=3.94, label=MomentLabel.LIFT_OFF, reason="test")
+    grip = vd.MomentReport(moment=m, worst_case={}, max_cost=2.0, min_fos_contact=1.0,
+                           min_fos_motor=3.0, critical={"mass": 0.8, "friction": None},
+                           critical_side={"mass": "above", "friction": None},
+                           dominant="contact", limiting_actuator="a", fail_fraction=0.5)
+
+    class Roll:
+        def __init__(self, kind, time):
+            self.kind, self.time, self.outcomes = kind, time, {}
+
+        def __call__(self, points):
+            fails = points[:, 0] > 0.45
+            for p, f in zip(points, fails, strict=True):
+                self.outcomes[analysis._point_key(p)] = (
+                    self.kind if f else "success", self.time if f else None, None)
+            return fails
+
+        def nominal(self):
+            return types.SimpleNamespace(outcome=analysis.Outcome.SUCCESS)
+
+    stood = {("mass", "above"): (0, 0.8)}
+    moved = analysis._critical_from_inside(stood, box, Roll("dropped", 4.2), [grip])
+    assert 0.44 <= moved[(0, "mass")] <= 0.45
+    assert analysis._critical_from_inside(stood, box, Roll("motor", 6.5), [grip]) == {}
+    assert analysis._critical_from_inside(stood, box, Roll("dropped", 1.5), [grip]) == {}
+    # a nominal run that fails its ground truth (a joint held at its limit): nothing moves
+    failing = Roll("dropped", 4.2)
+    failing.nominal = lambda: types.SimpleNamespace(outcome=analysis.Outcome.MOTOR)
+    out = analysis._check_critical([grip], box, failing, True)
+    assert out[0].critical["mass"] == 0.8
+    out = analysis._check_critical([grip], box, Roll("dropped", 4.2), True)
+    assert 0.44 <= out[0].critical["mass"] <= 0.45
+
+
 def test_a_moment_says_how_many_samples_fail_on_their_own_runs_after_it():
     """probe r35 (OpenMANIPULATOR-X): 28 of 32 samples dropped the cube on their own runs
     just after the audited lift-off, while every moment's line read "fails 0 % of the box
