@@ -172,8 +172,17 @@ def cmd_rollout(args) -> int:
         fit = check_fit(traj, rec, twin)
         # what analyze would refuse the run for (a joint that cannot follow, a force that
         # oscillates), said here as warnings: the run itself is what was asked for
-        infeasible = check_feasibility(rec, twin, raise_on_failure=False).problems
-        for msg in (*fit, *infeasible):
+        feasibility = check_feasibility(rec, twin, raise_on_failure=False)
+        infeasible = feasibility.problems
+        # a run that completes its task can still fail the ground truth's other rules (a
+        # joint held at its force limit for seconds by a bin's wall had read "(completed)"
+        # without a word, while analyze said the nominal fails)
+        from critmoment.analysis import _nominal_run_failure
+        from critmoment.groundtruth import reference_from_recording
+
+        own = _nominal_run_failure(reference_from_recording(rec, twin), twin, rec.dt)
+        failing = (f"the run fails by the ground truth's rules: {own}",) if own else ()
+        for msg in (*fit, *infeasible, *feasibility.warnings, *failing):
             warnings.warn(msg, FitWarning, stacklevel=1)
         # the contact model's check, as analyze and validate run it (it warns of a soft
         # model, and of a nominal grip whose own object shifts over 1 cm: a Jaco hand moved
@@ -182,7 +191,9 @@ def cmd_rollout(args) -> int:
 
         contact = check_contact_model(twin, rec)
         summary = {**rec.summary(), **rec.sustained(twin.scenario), "fit_warnings": list(fit),
-                   "feasibility_problems": list(infeasible), "contact_model": contact.summary()}
+                   "feasibility_problems": list(infeasible),
+                   "feasibility_warnings": list(feasibility.warnings),
+                   "ground_truth_failure": own, "contact_model": contact.summary()}
         if out is not None:
             rec.save(out / "recording.npz")
             fig = report.plot_recording(rec)

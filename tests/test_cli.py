@@ -497,6 +497,11 @@ def test_rollout_warns_of_what_analyze_would_refuse(traj_file, tmp_path, capsys)
     assert "right/shoulder') is at (or above) its force limit 2 N·m ([limits]) for 3.44 s" in err
     assert "too fast" not in err and "likely cause: too weak for the load" in err
     assert any("right/shoulder" in p for p in json.loads(out)["feasibility_problems"])
+    # and the ground truth's verdict on the run itself, as analyze states it for the nominal
+    # (a joint held at its limit by a bin's wall for 1.2 s had read "(completed)" alone)
+    assert ("the run fails by the ground truth's rules: motor overload: actuator "
+            "'right/shoulder' held at 99.9% of its force limit") in err
+    assert json.loads(out)["ground_truth_failure"].startswith("motor overload")
 
 
 def test_the_scenarios_fps_sets_the_rate_of_a_file_that_records_none(traj_file, capsys,
