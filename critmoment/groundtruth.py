@@ -25,7 +25,8 @@ Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
   carried (touches the support, or no gripper) at steps where the nominal run carries it; the
   drop is the last such loss (an earlier one, a late lift, was recovered from). Not a run
   that ends with the object still carried where the nominal run has let it go: that one was
-  never released (``NOT_COMPLETED``), whatever it touched on the way. Also, task
+  never released (``NOT_COMPLETED``), whatever it touched on the way; nor a run whose object
+  never reaches stage 2 (the task's lift): it was never picked up. Also, task
   completed or not, a fall: at a step where the nominal run carries it, the object lies on a
   support, or at rest on anything (:func:`resting`), touched by no gripper, having fallen
   more than ``fall_height`` since a gripper last touched it (:func:`fall_steps`; a catch at a hand-over touches no support, an object set
@@ -465,6 +466,12 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
     # stuck to the fingers, was "dropped" at the set-down)
     if t and not nominal_carried[-1]:
         drop_ok &= ~(carried[:, -1] & ~fell)
+    # nor one never lifted (never at stage 2, which every task reaches by its lift): a cube
+    # too heavy for a soft arm, dragged along the table in its grip, had been "dropped" (its
+    # suggestions: grip differently) where it was never picked up (NOT_COMPLETED, or the
+    # motor that could not lift it)
+    if t:
+        drop_ok &= (stage.max(axis=1) >= 2) | fell
     # a motor event after the object is lost is a consequence (the arms move unloaded, may
     # touch each other), not the cause
     motor_ok = (motor_step >= 0) & ~(drop_ok & (motor_step > drop_step))

@@ -390,8 +390,31 @@ def test_an_object_never_released_is_not_completed_not_dropped():
     support = np.ones((n, t), bool)
     support[:, 100:130] = False            # both lifted at 100, set down at 130 (early)
     grip[:, 50:, 0] = True
+    stage[:, 50:], stage[:, 105:] = 1, 2   # touched, then lifted (the task's stage 2)
     support[0, 150:] = False               # 0: carried off again from 150, held at the end
     grip[1, 135:, 0] = False               # 1: let go at 135, resting on the table
+    nominal = np.zeros(t, bool)
+    nominal[100:170] = True
+    c = gt.classify(dt=0.002, stage=stage, contact_gripper=grip, contact_support=support,
+                    nominal_carried=nominal, actuator_norm=np.full((n, t, 1), 0.3),
+                    completed=np.array([False, False]))
+    assert c.outcome == (gt.Outcome.NOT_COMPLETED, gt.Outcome.DROPPED)
+    assert c.failed.tolist() == [True, True]
+
+
+def test_an_object_never_lifted_is_not_dropped():
+    """probe r38 (Google Robot, soft servos): a cube too heavy to lift, gripped and dragged
+    along the table (off it for a few steps, 3 mm up at most: never the task's lift), was
+    "dropped" where the nominal run carries it; it was never picked up: NOT_COMPLETED. The
+    same run that reached the lift (stage 2) before losing the cube stays DROPPED."""
+    n, t = 2, 200
+    stage = np.zeros((n, t), np.int8)
+    grip = np.zeros((n, t, 1), bool)
+    grip[:, 50:, 0] = True
+    stage[:, 50:] = 1
+    support = np.ones((n, t), bool)
+    support[:, 100:104] = False            # a squeeze tips it off the table for 4 steps
+    stage[1, 100:110] = 2                  # 1: lifted, then lost
     nominal = np.zeros(t, bool)
     nominal[100:170] = True
     c = gt.classify(dt=0.002, stage=stage, contact_gripper=grip, contact_support=support,
