@@ -888,6 +888,32 @@ def _joints_instead(model_path: Path, body: str) -> str:
             f"audited object needs one <freejoint/>, which places it and gives its pose)")
 
 
+def _below_untouchable(model: mujoco.MjModel, body: int, key: int | None) -> str:
+    """Where the geom right below the object (along gravity) can never touch it (MuJoCo's
+    collision filter), why, as the start of a sentence; else "". A cube given contype 0
+    by an included file's default class falls through the table: "rests on nothing" alone
+    had sent the user to its pose."""
+    from critmoment.scenario import _cannot_touch
+
+    data = mujoco.MjData(model)
+    if key is not None:
+        mujoco.mj_resetDataKeyframe(model, data, key)
+    mujoco.mj_forward(model, data)
+    g = np.asarray(model.opt.gravity, dtype=np.float64)
+    down = g / np.linalg.norm(g) if np.linalg.norm(g) > 0 else np.array([0.0, 0.0, -1.0])
+    hit = np.full(1, -1, dtype=np.int32)
+    dist = mujoco.mj_ray(model, data, data.xpos[body], down, None, 1, body, hit)
+    if dist < 0 or hit[0] < 0:
+        return ""
+    why = _cannot_touch(model, [int(hit[0])], body)
+    if not why:
+        return ""
+    name = model.geom(int(hit[0])).name or f"geom #{int(hit[0])}"
+    return (f"the geom below it, {name!r}, can never touch it ({why}; a default class of an "
+            f"included file may set them), so it falls through: give the object's geoms "
+            f"contype/conaffinity bits that collide with its support, or ")
+
+
 def _off_the_arms(model: mujoco.MjModel, a: act_info.ActuatorInfo,
                   grippers: Sequence[GripperGuess]) -> bool:
     """Actuator ``a`` is a velocity servo on a joint that moves no gripper (its body is on
@@ -1029,7 +1055,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         supports = [s for s in supports if not any(s in g.geoms for g in grippers)]
         if not supports:
             raise ScenarioError(f"the object {object_body!r} rests on nothing at the start; "
-                                "give --support GEOM")
+                                + _below_untouchable(model, bid, key) + "give --support GEOM")
         guesses.append(f"supports {supports} (what the object rests on once settled)")
     else:
         names = {model.geom(i).name for i in range(model.ngeom)}

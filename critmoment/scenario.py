@@ -849,6 +849,15 @@ class Scenario:
                     f"[grippers.{g.name}]: none of its geoms can touch the object "
                     f"{self.object_body!r}: {why}; expected a gripper whose pads collide with "
                     f"the object (the grip's audit would be vacuous)")
+        if self.support_geoms:
+            why = _cannot_touch(model, [model.geom(geom).id for geom in self.support_geoms],
+                                body.id)
+            if why:
+                raise ScenarioError(
+                    f"[support] geoms: none of {list(self.support_geoms)} can touch the object "
+                    f"{self.object_body!r}: {why} (a default class of an included file may "
+                    f"set them); expected supports the object rests on (it falls through "
+                    f"them)")
         seen: dict[str, str] = {}
         for c, (label, channel) in enumerate(zip(self.actions.labels, self.actions.channels,
                                                  strict=True)):

@@ -570,6 +570,24 @@ def test_velocity_servos_on_no_gripper_arm_are_left_undriven_by_init(tmp_path):
         init_scenario(arm, object_body="cube", task="pick_hold")
 
 
+def test_an_object_that_cannot_touch_its_support_is_named_so(tmp_path):
+    """probe r38 (TIAGo): an included file's default class gave the scene's table
+    contype 0, and the cube fell through it: init said "rests on nothing" and, given
+    --support, wrote a scenario whose rollout blamed the cube's start pose."""
+    path = _variant(tmp_path, '<geom name="table" type="box" pos="0.3 0 -0.02" '
+                              'size="0.5 0.5 0.02"/>',
+                    '<geom name="table" type="box" pos="0.3 0 -0.02" size="0.5 0.5 0.02" '
+                    'contype="0" conaffinity="0"/>')
+    with pytest.raises(ScenarioError, match=r"rests on nothing at the start; the geom below "
+                                            r"it, 'table', can never touch it \(their "
+                                            r"contype/conaffinity bits"):
+        init_scenario(path, object_body="cube", task="pick_hold")
+    with pytest.raises(ScenarioError, match=r"\[support\] geoms: none of \['table'\] can "
+                                            r"touch the object 'cube'"):
+        init_scenario(path, object_body="cube", task="pick_hold", supports=["table"],
+                      out=tmp_path / "s.toml")
+
+
 def test_a_filtered_servo_starts_with_its_activation_at_the_control(tmp_path):
     """``<position timeconst>``: at rest at its target the filter's state is the control
     (from 0 the arm first sagged, the servo saturated for 20 ms and every sample was
