@@ -745,11 +745,26 @@ def _resting_supports(model: mujoco.MjModel, object_body: int, key: int | None) 
     return found
 
 
+def _goal_height_gap(model: mujoco.MjModel, data: mujoco.MjData, goal, goal_site: str | None,
+                     object_body: int, grippers) -> tuple[float, float] | None:
+    """(how high the object's body frame rests above the collision geom below it at the
+    start, how high the goal lies above the one below it) [m], or None where either has
+    none: a goal site drawn on a table's top lies half a cube below where any cube placed
+    there comes to rest."""
+    below_goal = _under_goal(model, data, goal, goal_site, object_body, grippers, depth=True)
+    below_object = _under_goal(model, data, data.xpos[object_body], None, object_body,
+                               grippers, depth=True)
+    if below_goal is None or below_object is None:
+        return None
+    return below_object[1], below_goal[1]
+
+
 def _under_goal(model: mujoco.MjModel, data: mujoco.MjData, goal, goal_site: str | None,
-                object_body: int, grippers) -> str | None:
+                object_body: int, grippers, *, depth: bool = False):
     """The named collision geom straight below a pick_place goal (a shelf, a tray, a bin's
     floor), within 0.5 m: where the object is placed, a support; None if there is none, or
-    the goal site is unknown (the scenario's load names that)."""
+    the goal site is unknown (the scenario's load names that). With ``depth``: (its name,
+    its distance below the goal [m])."""
     if goal is None:
         sid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_SITE, goal_site or "")
         if sid < 0:
@@ -772,7 +787,7 @@ def _under_goal(model: mujoco.MjModel, data: mujoco.MjData, goal, goal_site: str
         name = model.geom(geom).name
         if ((model.geom_contype[geom] or model.geom_conaffinity[geom]) and name
                 and name not in fingers):
-            return name
+            return (name, travelled + dist) if depth else name
         travelled += dist + 1e-6
         origin = origin + (dist + 1e-6) * down
     return None
@@ -1118,6 +1133,16 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                                f"placed on it)")
             task_lines += ["tolerance = 0.03        # [m] distance of the object's body frame from "
                            "the goal", "rest_speed = 0.05       # [m/s] at the end"]
+            gap = _goal_height_gap(model, data, goal, goal_site, bid, grippers)
+            if gap is not None and abs(gap[0] - gap[1]) > 0.03:
+                warnings.warn(
+                    f"{'--goal' if goal is not None else '--goal-site'}: the goal lies "
+                    f"{gap[1] * 1e3:.0f} mm above the surface below it, and the object's "
+                    f"body frame rests {gap[0] * 1e3:.0f} mm above its support at the start: "
+                    f"set down there as it starts, the object is {abs(gap[0] - gap[1]) * 1e3:.0f}"
+                    f" mm from the goal, over the tolerance written (30 mm), and no placement "
+                    f"completes; put the goal where the object's body frame comes to rest (or "
+                    f"raise [task] tolerance)", CritmomentWarning, stacklevel=2)
         task_lines.append("lift_height = 0.02      # [m] least rise that counts as a lift")
     # channels: each gripper's actuators in one normalised channel, every other actuator one
     gripper_of = {a: g for g in grippers for a in g.actuators}

@@ -588,6 +588,29 @@ def test_an_object_that_cannot_touch_its_support_is_named_so(tmp_path):
                       out=tmp_path / "s.toml")
 
 
+def test_init_warns_of_a_goal_no_placement_can_reach(tmp_path):
+    """probe r38: a bottle whose body frame rests 109 mm above the table, with its goal
+    site drawn on the table's top, ended "NOT completed ... 109 mm from the goal" however
+    well it was placed. A goal at the object's resting height (the cube's 20 mm) is fine."""
+    ok = tmp_path / "ok"
+    ok.mkdir()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        init_scenario(_variant(ok, '<site name="goal" pos="0.3 0.2 0.02"',
+                               '<site name="goal" pos="0.3 0.2 0.0"'),
+                      object_body="cube", task="pick_place", goal_site="goal",
+                      out=ok / "s.toml")
+    assert not [w for w in caught if "no placement completes" in str(w.message)]
+    with pytest.warns(UserWarning, match=r"--goal-site: the goal lies 90 mm above the surface "
+                                         r"below it, and the object's body frame rests 20 mm "
+                                         r"above its support at the start: set down there as "
+                                         r"it starts, the object is 70 mm from the goal"):
+        init_scenario(_variant(tmp_path, '<site name="goal" pos="0.3 0.2 0.02"',
+                               '<site name="goal" pos="0.3 0.2 0.09"'),
+                      object_body="cube", task="pick_place", goal_site="goal",
+                      out=tmp_path / "s.toml")
+
+
 def test_a_filtered_servo_starts_with_its_activation_at_the_control(tmp_path):
     """``<position timeconst>``: at rest at its target the filter's state is the control
     (from 0 the arm first sagged, the servo saturated for 20 ms and every sample was
