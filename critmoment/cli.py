@@ -172,7 +172,10 @@ def cmd_rollout(args) -> int:
         fit = check_fit(traj, rec, twin)
         # what analyze would refuse the run for (a joint that cannot follow, a force that
         # oscillates), said here as warnings: the run itself is what was asked for
-        feasibility = check_feasibility(rec, twin, raise_on_failure=False)
+        from critmoment.recording import observed_controls
+
+        feasibility = check_feasibility(rec, twin, raise_on_failure=False,
+                                        observed=observed_controls(twin, traj))
         infeasible = feasibility.problems
         # a run that completes its task can still fail the ground truth's other rules (a
         # joint held at its force limit for seconds by a bin's wall had read "(completed)"

@@ -509,7 +509,8 @@ class _JointSignals:
 
 def check_feasibility(recording: Recording, twin: Twin, *,
                       options: FeasibilityOptions | None = None,
-                      raise_on_failure: bool = True) -> FeasibilityReport:
+                      raise_on_failure: bool = True,
+                      observed: np.ndarray | None = None) -> FeasibilityReport:
     """Can the twin reproduce the nominal motion of ``recording``?
 
     Args:
@@ -518,6 +519,10 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         options: tolerances; default the scenario's (``[feasibility]``).
         raise_on_failure: raise :class:`InfeasibleTwinError` on the first problem (else
             return the report with ``problems`` filled).
+        observed: the controls whose servo targets are the joints' recorded or planned
+            path (:func:`critmoment.recording.observed_controls` of a trajectory with
+            ``observed``), (n_steps, nu), or None. A joint that follows that path is no
+            lag, however far its target leads it (a feed-forward target on a soft servo).
 
     Returns:
         The report, one :class:`JointFeasibility` per actuator on a joint.
@@ -545,6 +550,11 @@ def check_feasibility(recording: Recording, twin: Twin, *,
     if controls.shape != (n, m.nu):
         raise ParameterError(f"recording: expected controls of shape ({n}, {m.nu}) for this "
                              f"twin, got {controls.shape}: recorded with another scenario?")
+    if observed is not None:
+        observed = np.asarray(observed, dtype=np.float64)
+        if observed.shape != (n, m.nu):
+            raise ParameterError(f"observed: expected controls of shape ({n}, {m.nu}) (one "
+                                 f"row per step of the recording), got {observed.shape}")
     states = np.asarray(recording.states)
     qpos = twin.qpos(states)
     force = np.asarray(recording.signals.actuator_force)
@@ -584,6 +594,11 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             toward = np.sign(target[:q.size] - q)
             lag = _tracking_error(q, target, int(round(options.delay / dt)))
             lag = np.where(past[:lag.size], 0.0, lag)
+            if observed is not None:
+                # the joint on its recorded or planned path is the motion, wherever its
+                # target leads it
+                path, _ = _servo_target(m, a, observed)
+                lag = np.minimum(lag, _tracking_error(q, path, int(round(options.delay / dt))))
             k = int(np.argmax(lag))
             max_lag, max_lag_time = float(lag[k]), k * dt
             span = float(np.ptp(target)) if n else 0.0
@@ -859,9 +874,11 @@ def _problems(e: JointFeasibility, tol: float, gear: float, opt: FeasibilityOpti
             f"{e.actuator!r}) lags its target by up to {e.lag_in_run:.3g} {e.unit} "
             f"(tolerance {tol:g} {e.unit}) for {e.lag_duration:.3g} s from t = "
             f"{e.lag_start:.3f} s; likely cause: {cause} (where the targets lead the joints "
-            f"by design, a feed-forward offset or a soft servo's known lag, the scenario's "
-            f"[feasibility] lag_tolerance{'_slide' if e.unit == 'm' else ''} and delay "
-            f"set how far)")
+            f"by design, a feed-forward offset or a soft servo's known lag: give the joints' "
+            f"planned or recorded path as the trajectory's 'observed' (an npz key; ACT's "
+            f"/observations/qpos and LeRobot's observation.state are read as it), and a "
+            f"joint on that path is no lag; or the scenario's [feasibility] "
+            f"lag_tolerance{'_slide' if e.unit == 'm' else ''} and delay set how far)")
     elif e.saturation_duration > opt.saturation_duration:
         explicit = _explicit_hint(model)
         cause = (_jam_cause(e) if e.jammed else
@@ -1649,7 +1666,10 @@ def preflight(trajectory: Trajectory, recording: Recording, twin: Twin, *,
         InfeasibleTwinError: see :func:`check_feasibility`.
         TrajectoryError: see :func:`check_fit`.
     """
-    report = check_feasibility(recording, twin, options=options)
+    from critmoment.recording import observed_controls
+
+    report = check_feasibility(recording, twin, options=options,
+                               observed=observed_controls(twin, trajectory))
     fit = check_fit(trajectory, recording, twin)
     for msg in report.warnings + tuple(fit):
         warnings.warn(msg, FitWarning, stacklevel=2)

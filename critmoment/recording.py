@@ -122,6 +122,22 @@ def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None =
     return twin.controls(targets)
 
 
+def observed_controls(twin: Twin, traj: Trajectory) -> np.ndarray | None:
+    """The controls that would make each servo's target the joints' observed path
+    (``traj.observed``, upsampled as the actions are), (n_steps, nu), or None without one:
+    what :func:`critmoment.feasibility.check_feasibility` compares the joints with where
+    their targets lead them by design."""
+    if traj.observed is None or traj.n_channels != twin.scenario.actions.width:
+        return None
+    observed = np.asarray(traj.observed, dtype=np.float64)
+    lower = np.minimum(twin.channel_lower, observed.min(axis=0))
+    upper = np.maximum(twin.channel_upper, observed.max(axis=0))
+    path = trajectory_mod.upsample(observed, fps=traj.fps,
+                                   physics_dt=float(twin.model.opt.timestep),
+                                   bounded=twin.channel_normalised, lower=lower, upper=upper)
+    return twin.controls(path)
+
+
 def _check_rate(traj: Trajectory, dt: float) -> None:
     if traj.fps * dt > 1.0 + 1e-9:
         # the targets are held over the physics steps between two rows (upsampled); a
@@ -160,10 +176,11 @@ def in_channel_order(traj: Trajectory, twin: Twin) -> Trajectory:
                   f"than the scenario's channels; mapped by name: {', '.join(moved[:6])}"
                   f"{' ...' if len(moved) > 6 else ''}", CritmomentWarning, stacklevel=3)
         start = None if traj.start is None else np.asarray(traj.start)[order]
+        observed = None if traj.observed is None else np.asarray(traj.observed)[:, order]
         meta = dict(traj.meta)
         meta["action_names"] = [names[j] for j in order]  # as the columns now are
         return dataclasses.replace(traj, actions=np.asarray(traj.actions)[:, order],
-                                   start=start, meta=meta)
+                                   start=start, meta=meta, observed=observed)
     astray = [f"{names[j]!r} (column {j}, the scenario's channel {want.index(k)})"
               for j, k in enumerate(have) if k in want and want.index(k) != j]
     if astray:

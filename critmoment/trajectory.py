@@ -95,7 +95,7 @@ _QUAT_NORM_TOL = 1e-12
 _SNAP_TOL = 1e-9
 
 _NPZ_KEYS = frozenset({"actions", "fps", "time", "start", "qpos0", "qvel0", "object_pose",
-                       "meta"})
+                       "meta", "observed"})
 #: unknown npz keys (lower case) that can only be a time base: refused when no 'fps' or
 #: 'time' says the rate
 _TIME_BASE_KEYS = frozenset({"fps", "timestamp", "timestamps", "times", "t", "dt", "hz",
@@ -338,6 +338,11 @@ class Trajectory:
         source: where the trajectory came from (a path or a description).
         qvel0: (nv,) full MuJoCo initial ``qvel`` with ``qpos0`` (an action chunk cut from a
             running episode starts moving), else ``None`` (the run starts at rest).
+        observed: (T, na) where the joints were (recorded) or were planned to be at each
+            action's time, in the action convention (ACT's ``/observations/qpos``, LeRobot's
+            ``observation.state``), or ``None``. The twin must reproduce the motion: its
+            joints may trail their targets (a feed-forward target leads a soft servo's joint
+            by design) as long as they follow this path (:mod:`critmoment.feasibility`).
     """
 
     actions: np.ndarray
@@ -354,6 +359,7 @@ class Trajectory:
     #: the SHA-256 of the file's bytes as read (:func:`load_trajectory`), for the report's
     #: manifest; None for a trajectory built in code or read from a dataset folder
     source_sha256: str | None = field(default=None, compare=False)
+    observed: np.ndarray | None = None
 
     def content_sha256(self) -> str:
         """SHA-256 of what an audit plays: the actions, the rate and the initial state
@@ -363,8 +369,10 @@ class Trajectory:
         loaded trajectory changed in code, is another trajectory)."""
         h = hashlib.sha256()
         h.update(repr(float(self.fps)).encode())
-        for name in ("actions", "start", "qpos0", "qvel0", "object_pose"):
+        for name in ("actions", "start", "qpos0", "qvel0", "object_pose", "observed"):
             value = getattr(self, name)
+            if name == "observed" and value is None:
+                continue  # the hashes of trajectories without it stay what they were
             h.update(name.encode())
             if value is None:
                 h.update(b"none")
@@ -440,6 +448,20 @@ class Trajectory:
                 )
             _check_finite_vector(start, what="start")
             object.__setattr__(self, "start", _read_only(start))
+
+        if self.observed is not None:
+            observed = _as_float_array(self.observed, what="observed", error=TrajectoryError)
+            if observed.shape != actions.shape:
+                raise TrajectoryError(
+                    f"observed: expected shape {actions.shape} (the joints' recorded or "
+                    f"planned positions, one row per action, in the action convention), got "
+                    f"shape {observed.shape}")
+            bad = _first_nonfinite(observed)
+            if bad is not None:
+                raise TrajectoryError(f"observed: expected finite values, got "
+                                      f"{observed[bad]} at row (step) {bad[0]}, column "
+                                      f"(channel) {bad[1]}")
+            object.__setattr__(self, "observed", _read_only(observed))
 
         if self.qvel0 is not None and self.qpos0 is None:
             raise TrajectoryError("qvel0: expected it with qpos0 (the velocities of that "
@@ -542,7 +564,7 @@ class Trajectory:
 
     def __repr__(self) -> str:
         extras = [
-            name for name in ("start", "qpos0", "qvel0", "object_pose")
+            name for name in ("start", "qpos0", "qvel0", "object_pose", "observed")
             if getattr(self, name) is not None
         ]
         return (
@@ -1007,6 +1029,7 @@ def _load_npz(path: Path, *, fps: float | None) -> Trajectory:
         meta=meta,
         source=str(path),
         fps_assumed=rate is None,
+        observed=data.get("observed"),
     )
 
 
@@ -1015,8 +1038,8 @@ def save_trajectory(traj: Trajectory, path: str | os.PathLike) -> None:
 
     Keys written: ``actions`` (T, na) float64; ``fps`` 0-d float64 [Hz] (not where the rate
     was assumed, ``fps_assumed``);
-    ``start`` (na,), ``qpos0`` (nq,), ``qvel0`` (nv,), ``object_pose`` (7,) when present; and
-    ``meta`` as a 0-d unicode array holding JSON. ``source`` is not stored (a
+    ``start`` (na,), ``qpos0`` (nq,), ``qvel0`` (nv,), ``object_pose`` (7,), ``observed``
+    (T, na) when present; and ``meta`` as a 0-d unicode array holding JSON. ``source`` is not stored (a
     loaded trajectory's source is the path it was read from). Reading the file
     back with :func:`load_trajectory` reproduces every array bit-exactly.
 
@@ -1044,7 +1067,7 @@ def save_trajectory(traj: Trajectory, path: str | os.PathLike) -> None:
     }
     if not traj.fps_assumed:  # an assumed rate stays one: read back, the scenario's applies
         arrays["fps"] = np.asarray(traj.fps, dtype=np.float64)
-    for name in ("start", "qpos0", "qvel0", "object_pose"):
+    for name in ("start", "qpos0", "qvel0", "object_pose", "observed"):
         value = getattr(traj, name)
         if value is not None:
             arrays[name] = np.asarray(value)
@@ -1217,7 +1240,7 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
             f"critmoment reads an ACT episode's rate only from a root attribute "
             f"{' / '.join(_ACT_RATE_KEYS)} [Hz] (else ACT's {DEFAULT_FPS:g} Hz); expected one "
             f"of those, or give the rate (CLI --fps, load_trajectory(path, fps=...))")
-    start = None
+    start = observed = None
     if qpos is None:
         warnings.warn(
             f"{str(path)!r}: no dataset /observations/qpos, so the start state is "
@@ -1253,6 +1276,9 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
         )
     else:
         start = qpos[0]
+        # the recorded joint path, which the twin's run may follow where its targets lead
+        # (a gap in the recording leaves it out: only the start was ever needed)
+        observed = np.asarray(qpos, dtype=np.float64) if np.isfinite(qpos).all() else None
 
     # a rate the file records (a root attribute ``fps``, as some exporters write it) is the
     # episode's; without one, ACT's own 50 Hz
@@ -1275,6 +1301,7 @@ def _load_act_hdf5(path: Path, *, fps: float | None) -> Trajectory:
         actions=actions,
         fps=DEFAULT_FPS if fps is None else fps,
         start=start,
+        observed=observed,
         object_pose=object_pose,
         meta=meta,
         source=str(path),
@@ -1679,7 +1706,7 @@ def _load_lerobot_files(
 
     width = actions.shape[1] if actions.ndim == 2 else 0
     action_names = _feature_names(info, "action", width)
-    start = None
+    start = observed = None
     if "observation.state" in table.column_names and table.num_rows:
         state = _list_column_to_array(
             table.column("observation.state").slice(0, 1),
@@ -1688,11 +1715,13 @@ def _load_lerobot_files(
         state_names = _feature_names(info, "observation.state", state.shape[0])
         if actions.ndim == 2 and state.shape == (actions.shape[1],):
             start = state
+            columns = list(range(state.shape[0]))
             if action_names and state_names and state_names != action_names:
                 # the state is the start in the action's convention only channel by channel
                 a, b = map(_channel_keys, (action_names, state_names))
                 if sorted(a) == sorted(b) and len(set(a)) == len(a):
-                    start = state[[b.index(k) for k in a]]
+                    columns = [b.index(k) for k in a]
+                    start = state[columns]
                 else:
                     warnings.warn(
                         f"{str(chosen_file)!r}{ep_text}: meta/info.json names "
@@ -1701,6 +1730,18 @@ def _load_lerobot_files(
                         f"the start in the action's convention; start state left unknown",
                         CritmomentWarning, stacklevel=3)
                     start = None
+            if start is not None:
+                # the recorded joint path, which the twin's run may follow where its
+                # targets lead (unreadable or with gaps: only the start was needed)
+                try:
+                    states = _list_column_to_array(
+                        table.column("observation.state"),
+                        what=f"{str(chosen_file)!r}{ep_text} column 'observation.state'")
+                except TrajectoryError:
+                    states = None
+                if (states is not None and states.shape == actions.shape[:1] + state.shape
+                        and np.isfinite(states).all()):
+                    observed = states[:, columns]
         else:
             warnings.warn(
                 f"{str(chosen_file)!r}{ep_text}: 'observation.state' has "
@@ -1721,7 +1762,7 @@ def _load_lerobot_files(
         if key in info:
             meta[key] = _json_value(info[key])
     return Trajectory(actions=actions, fps=DEFAULT_FPS if rate is None else rate, start=start,
-                      meta=meta, source=source, fps_assumed=rate is None)
+                      meta=meta, source=source, fps_assumed=rate is None, observed=observed)
 
 
 def _feature_names(info: Mapping[str, Any], key: str, width: int) -> list[str] | None:

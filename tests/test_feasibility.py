@@ -223,6 +223,35 @@ def test_a_contact_inside_the_geoms_margin_holds_a_joint_back(tmp_path):
     assert any("held back by a contact" in w for w in report.warnings)
 
 
+def test_a_joint_on_its_observed_path_is_no_lag(tmp_path):
+    """probe r38 (a Google Robot's soft servos, Menagerie's ALOHA 2 at ACT's timing): a
+    feed-forward target (the planned path plus the torque it needs over kp) leads a soft
+    servo's joint by design, and the joint follows its plan; the lag to the target had
+    refused the run. Given the planned (or recorded) path as the trajectory's ``observed``,
+    the check measures the joint against it; a joint off both still lags."""
+    soft = '<position name="servo" joint="hinge" kp="5" kv="1" forcerange="-10 10"/>'
+    twin = Twin(load_scenario(_scene(tmp_path, axis="0 1 0", limit=10.0, actuator=soft)))
+    held = _record(twin, Trajectory(actions=np.zeros((100, 1)), fps=50.0, start=np.zeros(1)))
+    sag = float(twin.qpos(held.states)[-1, 0])      # the static error m·g·L/2 / kp
+    assert abs(sag) == pytest.approx(HOLD_TORQUE / 5.0, rel=0.05)
+    fed = Trajectory(actions=np.full((100, 1), -sag), fps=50.0, start=np.zeros(1),
+                     observed=np.zeros((100, 1)))
+    rec = _record(twin, fed)
+    assert np.abs(twin.qpos(rec.states)[:, 0]).max() < 0.03   # on its plan, q = 0
+    with pytest.raises(InfeasibleTwinError, match=r"lags its target .*give the joints' "
+                                                  r"planned or recorded path"):
+        check_feasibility(rec, twin)
+    from critmoment.recording import observed_controls
+
+    report = check_feasibility(rec, twin, observed=observed_controls(twin, fed))
+    assert report.feasible and report.joint("hinge").max_lag < 0.03
+    elsewhere = dataclasses.replace(fed, observed=np.full((100, 1), 0.5))
+    with pytest.raises(InfeasibleTwinError, match="lags its target"):
+        check_feasibility(rec, twin, observed=observed_controls(twin, elsewhere))
+    with pytest.raises(TrajectoryError, match=r"observed: expected shape \(100, 1\)"):
+        dataclasses.replace(fed, observed=np.zeros((99, 1)))
+
+
 def test_strong_servo_holds_with_the_static_error(strong):
     rec = _record(strong, _ramp(0.0))
     report = check_feasibility(rec, strong)

@@ -248,6 +248,8 @@ def test_act_hdf5_reads_start_and_attrs(tmp_path):
     traj = load_trajectory(path)
     np.testing.assert_array_equal(traj.actions, act)
     np.testing.assert_array_equal(traj.start, qpos[0])
+    # the recorded joint path, against which the feasibility check may measure the joints
+    np.testing.assert_array_equal(traj.observed, qpos)
     assert traj.fps == 50.0
     assert traj.meta["sim"] is True and traj.meta["source_format"] == "act_hdf5"
     json.dumps(traj.meta)
@@ -341,6 +343,7 @@ def test_lerobot_directory_selects_episode(tmp_path):
     a, s = eps[1]
     np.testing.assert_array_equal(traj.actions, a.astype(np.float64))
     np.testing.assert_array_equal(traj.start, s[0].astype(np.float64))
+    np.testing.assert_array_equal(traj.observed, s.astype(np.float64))
     assert traj.fps == 30.0
     assert traj.meta["episode_index"] == 1 and traj.meta["robot_type"] == "aloha"
 
@@ -938,3 +941,20 @@ def test_episodes_of_a_metadata_table_and_huge_indices_are_refused(tmp_path):
     with pytest.raises(TrajectoryError, match=r"expected indices below 2\*\*63, got "
                                               r"9223372036854775808"):
         load_trajectory(huge)
+
+
+def test_an_observed_path_round_trips_through_npz(tmp_path):
+    """``observed`` (T, na): the joints' planned or recorded path, saved and read back bit
+    for bit; it counts in the content hash only where present (other hashes unchanged)."""
+    rng = np.random.default_rng(7)
+    act = _actions(rng, 20)
+    plain = Trajectory(actions=act, fps=50.0)
+    traj = Trajectory(actions=act, fps=50.0, observed=act - 0.1)
+    path = tmp_path / "t.npz"
+    save_trajectory(traj, path)
+    back = load_trajectory(path)
+    np.testing.assert_array_equal(back.observed, act - 0.1)
+    assert traj != plain
+    assert traj.content_sha256() != plain.content_sha256()
+    with pytest.raises(TrajectoryError, match="observed: expected finite values"):
+        Trajectory(actions=act, fps=50.0, observed=np.where(act > 0, np.nan, act))
