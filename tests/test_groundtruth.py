@@ -379,6 +379,18 @@ def test_fingers_rounded_off_parallel_close_along_one_axis(tmp_path):
         np.testing.assert_allclose(p, sparse[0], atol=1e-9)
 
 
+def _not_completed_then_dropped(stage, grip, support):
+    """Two incomplete runs against a nominal that carries the object over steps 100-169:
+    the first NOT_COMPLETED, the second DROPPED."""
+    nominal = np.zeros(stage.shape[1], bool)
+    nominal[100:170] = True
+    c = gt.classify(dt=0.002, stage=stage, contact_gripper=grip, contact_support=support,
+                    nominal_carried=nominal, actuator_norm=np.full(stage.shape + (1,), 0.3),
+                    completed=np.array([False, False]))
+    assert c.outcome == (gt.Outcome.NOT_COMPLETED, gt.Outcome.DROPPED)
+    assert c.failed.tolist() == [True, True]
+
+
 def test_an_object_never_released_is_not_completed_not_dropped():
     """The nominal run carries the object over steps 100-169 and sets it down; a sample
     sets it down 40 steps earlier (not carried where the nominal carries it: a drop by
@@ -393,13 +405,7 @@ def test_an_object_never_released_is_not_completed_not_dropped():
     stage[:, 50:], stage[:, 105:] = 1, 2   # touched, then lifted (the task's stage 2)
     support[0, 150:] = False               # 0: carried off again from 150, held at the end
     grip[1, 135:, 0] = False               # 1: let go at 135, resting on the table
-    nominal = np.zeros(t, bool)
-    nominal[100:170] = True
-    c = gt.classify(dt=0.002, stage=stage, contact_gripper=grip, contact_support=support,
-                    nominal_carried=nominal, actuator_norm=np.full((n, t, 1), 0.3),
-                    completed=np.array([False, False]))
-    assert c.outcome == (gt.Outcome.NOT_COMPLETED, gt.Outcome.DROPPED)
-    assert c.failed.tolist() == [True, True]
+    _not_completed_then_dropped(stage, grip, support)
 
 
 def test_an_object_never_lifted_is_not_dropped():
@@ -415,10 +421,4 @@ def test_an_object_never_lifted_is_not_dropped():
     support = np.ones((n, t), bool)
     support[:, 100:104] = False            # a squeeze tips it off the table for 4 steps
     stage[1, 100:110] = 2                  # 1: lifted, then lost
-    nominal = np.zeros(t, bool)
-    nominal[100:170] = True
-    c = gt.classify(dt=0.002, stage=stage, contact_gripper=grip, contact_support=support,
-                    nominal_carried=nominal, actuator_norm=np.full((n, t, 1), 0.3),
-                    completed=np.array([False, False]))
-    assert c.outcome == (gt.Outcome.NOT_COMPLETED, gt.Outcome.DROPPED)
-    assert c.failed.tolist() == [True, True]
+    _not_completed_then_dropped(stage, grip, support)
