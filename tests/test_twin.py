@@ -40,7 +40,9 @@ ARM_XML = f"""<mujoco model="hinge_arm">
   <compiler angle="radian" inertiafromgeom="true"/>
   <option timestep="0.001" integrator="implicitfast" cone="elliptic"/>
   <worldbody>
-    <geom name="floor" type="plane" size="2 2 0.1" pos="0 0 -1"/>
+    <!-- the box's support: its bits meet the box's (a support that can never touch the
+         object is refused) -->
+    <geom name="floor" type="plane" size="2 2 0.1" pos="0 0 -1" conaffinity="3"/>
     <body name="arm" pos="0 0 0.5">
       <!-- joint damping speeds up settling and exerts no force at rest -->
       <joint name="hinge" type="hinge" axis="0 1 0" damping="20"/>
@@ -84,8 +86,11 @@ def _slope_xml(theta_deg: float, condim: int, pair_mu: float | None = None) -> s
     slope (the box's own contype and conaffinity 0) of that sliding friction."""
     th = math.radians(theta_deg)
     bits = ' contype="0" conaffinity="0"' if pair_mu is not None else ""
+    # (the floor, the scenario's support far below, by a pair too: a support that can never
+    # touch the object is refused)
     pair = (f'<contact><pair geom1="box" geom2="slope" condim="{condim}" '
-            f'friction="{pair_mu} {pair_mu} 0.005 0.0001 0.0001"/></contact>'
+            f'friction="{pair_mu} {pair_mu} 0.005 0.0001 0.0001"/>'
+            f'<pair geom1="box" geom2="floor"/></contact>'
             if pair_mu is not None else "")
     # box centre one half-size above the slope plane (which passes through the origin)
     cx, cz = BOX_HALF * math.sin(th), BOX_HALF * math.cos(th)
