@@ -26,7 +26,7 @@ Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
   drop is the last such loss (an earlier one, a late lift, was recovered from). Not a run
   that ends with the object still carried where the nominal run has let it go: that one was
   never released (``NOT_COMPLETED``), whatever it touched on the way; nor a run whose object
-  never reaches stage 2 (the task's lift): it was never picked up. Also, task
+  is never lifted by the task's rule (``Task.lifted``): it was never picked up. Also, task
   completed or not, a fall: at a step where the nominal run carries it, the object lies on a
   support, or at rest on anything (:func:`resting`), touched by no gripper, having fallen
   more than ``fall_height`` since a gripper last touched it (:func:`fall_steps`; a catch at a hand-over touches no support, an object set
@@ -341,7 +341,8 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
              completed: np.ndarray | None = None,
              criteria: OutcomeCriteria = OutcomeCriteria(),
              object_height: np.ndarray | None = None,
-             object_speed: np.ndarray | None = None) -> Classification:
+             object_speed: np.ndarray | None = None,
+             lifted: np.ndarray | None = None) -> Classification:
     """Classify n full rollouts from their signals.
 
     Args:
@@ -366,6 +367,9 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
             rule (:func:`fall_steps`); None: no fall is counted in a completed run.
         object_speed: the object's speed [m/s], (n, T), for the fall rule (an object at
             rest on something the scenario does not list as a support), or None.
+        lifted: the task's lift rule per run (``Task.lifted``: a rise of ``lift_height``),
+            (n,) bool, or None for the run reaching stage 2: a run never lifted is not
+            ``DROPPED``.
 
     Returns:
         The :class:`Classification`.
@@ -466,12 +470,13 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
     # stuck to the fingers, was "dropped" at the set-down)
     if t and not nominal_carried[-1]:
         drop_ok &= ~(carried[:, -1] & ~fell)
-    # nor one never lifted (never at stage 2, which every task reaches by its lift): a cube
-    # too heavy for a soft arm, dragged along the table in its grip, had been "dropped" (its
+    # nor one never lifted (by the task's own rule: a rise of lift_height): a cube too heavy
+    # for a soft arm, gripped and dragged along the table 3 mm up, had been "dropped" (its
     # suggestions: grip differently) where it was never picked up (NOT_COMPLETED, or the
     # motor that could not lift it)
     if t:
-        drop_ok &= (stage.max(axis=1) >= 2) | fell
+        ever = (stage.max(axis=1) >= 2) if lifted is None else np.asarray(lifted, bool)
+        drop_ok &= ever | fell
     # a motor event after the object is lost is a consequence (the arms move unloaded, may
     # touch each other), not the cause
     motor_ok = (motor_step >= 0) & ~(drop_ok & (motor_step > drop_step))
@@ -1049,6 +1054,8 @@ class _Frames:
     position: np.ndarray
     q: np.ndarray
     success: np.ndarray
+    #: the task's own lift rule per run (a rise of ``lift_height``, or carried from the start)
+    lifted: np.ndarray
 
     @classmethod
     def read(cls, twin: Twin, probe: _Probe, sensordata: np.ndarray,
@@ -1068,7 +1075,8 @@ class _Frames:
                    actuator_norm=sd[..., twin._force_ids[probe.motors]]
                    / limits[..., probe.motors],
                    position=probe.grip_positions(sensordata),
-                   q=sensordata[..., probe.q] / probe.gear, success=twin.task.success(evidence))
+                   q=sensordata[..., probe.q] / probe.gear, success=twin.task.success(evidence),
+                   lifted=twin.task.lifted(evidence))
 
     def row(self, i: int) -> _Frames:
         return _Frames(**{f.name: getattr(self, f.name)[i] for f in dataclasses.fields(self)})
@@ -1109,7 +1117,7 @@ def _classify_frames(frames: _Frames, reference: _Frames, controls: np.ndarray, 
                     actuator_norm=frames.actuator_norm, tracking_excess=excess, slip=slip,
                     diverged=diverged, diverged_step=diverged_step, criteria=criteria,
                     completed=frames.success, object_height=frames.height,
-                    object_speed=frames.speed)
+                    object_speed=frames.speed, lifted=frames.lifted)
 
 
 def rerun_in_full(traj: Trajectory, *, twin: Twin, samples: np.ndarray, failed: np.ndarray,

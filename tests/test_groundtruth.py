@@ -422,3 +422,11 @@ def test_an_object_never_lifted_is_not_dropped():
     support[:, 100:104] = False            # a squeeze tips it off the table for 4 steps
     stage[1, 100:110] = 2                  # 1: lifted, then lost
     _not_completed_then_dropped(stage, grip, support)
+    # the task's own lift rule (a rise of lift_height), where given, decides: off the table
+    # (stage 2) but 3 mm up is no lift
+    nominal = np.zeros(t, bool)
+    nominal[100:170] = True
+    c = gt.classify(dt=0.002, stage=stage, contact_gripper=grip, contact_support=support,
+                    nominal_carried=nominal, actuator_norm=np.full((n, t, 1), 0.3),
+                    completed=np.array([False, False]), lifted=np.array([False, False]))
+    assert c.outcome == (gt.Outcome.NOT_COMPLETED, gt.Outcome.NOT_COMPLETED)
