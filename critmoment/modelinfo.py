@@ -145,8 +145,10 @@ class ModelInfo:
                          f"{ctrl}, {force}")
         lines.append(f"gripper candidates ({len(self.grippers)}):")
         for g in self.grippers:
+            # 12 significant digits, as init writes them (2.2500000000001685e-05 read as noise)
+            closed, opened = (", ".join(map(_num, v)) for v in (g.closed, g.open))
             lines.append(f"  {g.name}: body {g.body}, actuators {', '.join(g.actuators)} "
-                         f"(closed {list(g.closed)}, open {list(g.open)}), {len(g.geoms)} "
+                         f"(closed [{closed}], open [{opened}]), {len(g.geoms)} "
                          "collision geoms")
         lines.append(f"keyframes: {', '.join(self.keyframes) or '(none)'}")
         lines.append(f"sites: {', '.join(self.sites) or '(none)'}")

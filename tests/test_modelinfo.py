@@ -3,6 +3,7 @@ as they ship: named and unnamed elements, three gripper mechanisms, torque motor
 
 from __future__ import annotations
 
+import dataclasses
 import re
 import warnings
 from pathlib import Path
@@ -1668,3 +1669,15 @@ def test_a_plugin_actuator_is_named_as_one_not_taken_for_a_torque_motor(tmp_path
     with pytest.raises(ScenarioError, match=r"\[servos\.elbow_act\]: expected a torque motor "
                                             r"on a joint, but 'elbow_act' is a plugin actuator"):
         load_scenario(tmp_path / "s.toml")
+
+
+def test_inspect_prints_gripper_controls_without_float_noise(tmp_path):
+    """probe r38 (TIAGo): a gripper's closed control printed as 2.2500000000001685e-05;
+    inspect writes the 12 significant digits init writes."""
+    path = tmp_path / "arm.xml"
+    path.write_text(arm_xml())
+    info = inspect_model(path)
+    g = info.grippers[0]
+    noisy = dataclasses.replace(g, closed=(2.2500000000001685e-05,) * len(g.closed))
+    text = dataclasses.replace(info, grippers=(noisy,)).text()
+    assert "closed [2.25e-05" in text and "2.2500000000001685e-05" not in text
