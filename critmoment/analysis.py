@@ -684,7 +684,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         chain_failures=_chain_kinds(runs, failed),
         own_failure_points=_failure_points(runs, failed, roll, samples, chained=False),
         chain_failure_points=_failure_points(runs, failed, roll, samples, chained=True),
-        nominal_run_failure=_nominal_run_failure(roll.nominal(), twin, rec.dt))
+        nominal_run_failure=nominal_run_failure(roll.nominal(), twin, rec.dt))
     decision = vd.decide(evidence, dopt)
     region_check = None
     if decision.region_to_check is not None and steps.size:
@@ -1044,7 +1044,7 @@ def sample_runs(evaluator: sp.SparseEvaluator, steps: np.ndarray, samples: np.nd
                          chained_steps=chained_steps), extra
 
 
-def _nominal_run_failure(reference: NominalReference | None, twin: Twin,
+def nominal_run_failure(reference: NominalReference | None, twin: Twin,
                          dt: float) -> str | None:
     """How the nominal run itself fails by the ground truth's rules other than the task's,
     in words, or None (a success, or a run that only does not complete its task: the task's

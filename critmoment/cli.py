@@ -180,10 +180,10 @@ def cmd_rollout(args) -> int:
         # a run that completes its task can still fail the ground truth's other rules (a
         # joint held at its force limit for seconds by a bin's wall had read "(completed)"
         # without a word, while analyze said the nominal fails)
-        from critmoment.analysis import _nominal_run_failure
+        from critmoment.analysis import nominal_run_failure
         from critmoment.groundtruth import reference_from_recording
 
-        own = _nominal_run_failure(reference_from_recording(rec, twin), twin, rec.dt)
+        own = nominal_run_failure(reference_from_recording(rec, twin), twin, rec.dt)
         failing = (f"the run fails by the ground truth's rules: {own}",) if own else ()
         for msg in (*fit, *infeasible, *feasibility.warnings, *failing):
             warnings.warn(msg, FitWarning, stacklevel=1)

@@ -551,7 +551,8 @@ def check_feasibility(recording: Recording, twin: Twin, *,
         raise ParameterError(f"recording: expected controls of shape ({n}, {m.nu}) for this "
                              f"twin, got {controls.shape}: recorded with another scenario?")
     if observed is not None:
-        observed = np.asarray(observed, dtype=np.float64)
+        # (a run cut short, by a divergence, is checked over the steps it has)
+        observed = np.asarray(observed, dtype=np.float64)[:n]
         if observed.shape != (n, m.nu):
             raise ParameterError(f"observed: expected controls of shape ({n}, {m.nu}) (one "
                                  f"row per step of the recording), got {observed.shape}")

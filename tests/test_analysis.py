@@ -603,23 +603,23 @@ def test_untrusted_force_ratios_are_listed_only_at_moments_with_a_grip():
 def test_the_nominal_runs_own_motor_failure_is_named(twin, demo_recording):
     import dataclasses as dc
 
-    from critmoment.analysis import _nominal_run_failure
+    from critmoment.analysis import nominal_run_failure
     from critmoment.groundtruth import Outcome, reference_from_recording
 
     ref = reference_from_recording(demo_recording, twin)
-    assert _nominal_run_failure(ref, twin, demo_recording.dt) is None
+    assert nominal_run_failure(ref, twin, demo_recording.dt) is None
     motor = dc.replace(ref, outcome=Outcome.MOTOR, first_failure_step=670, motor_column=1)
     name = twin.actuator_names[np.flatnonzero(twin.motors)[1]]
-    text = _nominal_run_failure(motor, twin, demo_recording.dt)
+    text = nominal_run_failure(motor, twin, demo_recording.dt)
     assert text.startswith(f"motor overload: actuator {name!r} held at 99.9% of its force "
                            f"limit or more for over 50 ms from t = 1.34 s")
     assert text.endswith("the task is completed all the same)")
     incomplete = dc.replace(ref, outcome=Outcome.NOT_COMPLETED)
-    assert _nominal_run_failure(incomplete, twin, demo_recording.dt) is None
+    assert nominal_run_failure(incomplete, twin, demo_recording.dt) is None
     # a run that also does not complete its task is not said to complete it; a joint that
     # lags its target, well under its force limit, is a tracking loss, not an overload
     lagging = dc.replace(motor, completed=False, motor_tracking=True)
-    text = _nominal_run_failure(lagging, twin, demo_recording.dt)
+    text = nominal_run_failure(lagging, twin, demo_recording.dt)
     assert text.startswith(f"tracking loss: actuator {name!r}'s joint lagged its target by "
                            f"more than the nominal run's lag + 0.1 rad for over 50 ms from "
                            f"t = 1.34 s")
