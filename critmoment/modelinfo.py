@@ -905,24 +905,20 @@ def _joints_instead(model_path: Path, body: str) -> str:
             f"audited object needs one <freejoint/>, which places it and gives its pose)")
 
 
-def _below_untouchable(model: mujoco.MjModel, body: int, key: int | None) -> str:
+def _below_untouchable(model: mujoco.MjModel, data: mujoco.MjData, body: int) -> str:
     """Where the geom right below the object (along gravity) can never touch it (MuJoCo's
     collision filter), why, as the start of a sentence; else "". A cube given contype 0
     by an included file's default class falls through the table: "rests on nothing" alone
     had sent the user to its pose."""
-    from critmoment.scenario import _cannot_touch
+    from critmoment.scenario import cannot_touch
 
-    data = mujoco.MjData(model)
-    if key is not None:
-        mujoco.mj_resetDataKeyframe(model, data, key)
-    mujoco.mj_forward(model, data)
     g = np.asarray(model.opt.gravity, dtype=np.float64)
     down = g / np.linalg.norm(g) if np.linalg.norm(g) > 0 else np.array([0.0, 0.0, -1.0])
     hit = np.full(1, -1, dtype=np.int32)
     dist = mujoco.mj_ray(model, data, data.xpos[body], down, None, 1, body, hit)
     if dist < 0 or hit[0] < 0:
         return ""
-    why = _cannot_touch(model, [int(hit[0])], body)
+    why = cannot_touch(model, [int(hit[0])], body)
     if not why:
         return ""
     name = model.geom(int(hit[0])).name or f"geom #{int(hit[0])}"
@@ -935,23 +931,21 @@ def _off_the_arms(model: mujoco.MjModel, a: act_info.ActuatorInfo,
                   grippers: Sequence[GripperGuess]) -> bool:
     """Actuator ``a`` is a velocity servo on a joint that moves no gripper (its body is on
     no gripper body's chain to the world, nor below one): a wheel, held still at control 0."""
-    if a.kind is not act_info.ActuatorKind.VELOCITY or a.transmission != "joint":
+    if a.kind is not act_info.ActuatorKind.VELOCITY or a.transmission != "joint" or not grippers:
         return False
     body = int(model.jnt_bodyid[model.actuator_trnid[a.index, 0]])
-    for g in grippers:
-        b = model.body(g.body).id
-        while True:
-            if b == body:
-                return False
-            if b == 0:
-                break
-            b = int(model.body_parentid[b])
-        b = body
-        while b:
-            if b == model.body(g.body).id:
-                return False
-            b = int(model.body_parentid[b])
-    return bool(grippers)
+    below = _chain(model, body)
+    return not any(body in _chain(model, model.body(g.body).id)
+                   or model.body(g.body).id in below for g in grippers)
+
+
+def _chain(model: mujoco.MjModel, body: int) -> set[int]:
+    """``body`` and every body above it, up to the world."""
+    out = {body}
+    while body:
+        body = int(model.body_parentid[body])
+        out.add(body)
+    return out
 
 
 def init_scenario(model_path: str | Path, *, object_body: str, task: str,
@@ -1072,7 +1066,7 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
         supports = [s for s in supports if not any(s in g.geoms for g in grippers)]
         if not supports:
             raise ScenarioError(f"the object {object_body!r} rests on nothing at the start; "
-                                + _below_untouchable(model, bid, key) + "give --support GEOM")
+                                + _below_untouchable(model, data, bid) + "give --support GEOM")
         guesses.append(f"supports {supports} (what the object rests on once settled)")
     else:
         names = {model.geom(i).name for i in range(model.ngeom)}

@@ -843,14 +843,14 @@ class Scenario:
             need(geom, geoms, "geom", "[support] geoms")
         self._check_roles(model)
         for g in self.grippers:
-            why = _cannot_touch(model, [model.geom(geom).id for geom in g.geoms], body.id)
+            why = cannot_touch(model, [model.geom(geom).id for geom in g.geoms], body.id)
             if why:
                 raise ScenarioError(
                     f"[grippers.{g.name}]: none of its geoms can touch the object "
                     f"{self.object_body!r}: {why}; expected a gripper whose pads collide with "
                     f"the object (the grip's audit would be vacuous)")
         if self.support_geoms:
-            why = _cannot_touch(model, [model.geom(geom).id for geom in self.support_geoms],
+            why = cannot_touch(model, [model.geom(geom).id for geom in self.support_geoms],
                                 body.id)
             if why:
                 raise ScenarioError(
@@ -1209,7 +1209,7 @@ def _make_servos(spec: mujoco.MjSpec, servos: Servos) -> None:
             a.forcelimited = mujoco.mjtLimited.mjLIMITED_FALSE
 
 
-def _cannot_touch(model: mujoco.MjModel, geoms: Sequence[int], body: int) -> str:
+def cannot_touch(model: mujoco.MjModel, geoms: Sequence[int], body: int) -> str:
     """Why no geom of ``geoms`` can ever collide with a geom of ``body`` (MuJoCo's collision
     filter, as :func:`critmoment.actuators.grip_contacts` reads it), in words; "" when one
     can, or ``body`` has no geom that collides with anything (refused elsewhere)."""
