@@ -420,7 +420,8 @@ def test_an_object_never_lifted_is_not_dropped():
     stage[:, 50:] = 1
     support = np.ones((n, t), bool)
     support[:, 100:104] = False            # a squeeze tips it off the table for 4 steps
-    stage[1, 100:110] = 2                  # 1: lifted, then lost
+    stage[1, 100:110] = 2                  # 1: lifted, then lost: out of the fingers
+    grip[1, 112:, 0] = False
     _not_completed_then_dropped(stage, grip, support)
     # the task's own lift rule (a rise of lift_height), where given, decides: off the table
     # (stage 2) but 3 mm up is no lift
@@ -430,3 +431,19 @@ def test_an_object_never_lifted_is_not_dropped():
                     nominal_carried=nominal, actuator_norm=np.full((n, t, 1), 0.3),
                     completed=np.array([False, False]), lifted=np.array([False, False]))
     assert c.outcome == (gt.Outcome.NOT_COMPLETED, gt.Outcome.NOT_COMPLETED)
+
+
+def test_an_object_set_down_in_the_grip_is_not_dropped():
+    """probe r38 (a held cube sagging 1 mm onto a listed block): the object touches its
+    support where the nominal run carries it, but a gripper touches it at every step from
+    then to the end: set down in the grip (here NOT_COMPLETED), not dropped. One that
+    leaves the fingers is DROPPED."""
+    n, t = 2, 200
+    stage = np.zeros((n, t), np.int8)
+    grip = np.zeros((n, t, 1), bool)
+    grip[:, 50:, 0] = True
+    stage[:, 50:], stage[:, 105:] = 1, 2
+    support = np.ones((n, t), bool)
+    support[:, 100:130] = False            # both lifted at 100, on the block again at 130
+    grip[1, 140:, 0] = False               # 1: out of the fingers at 140
+    _not_completed_then_dropped(stage, grip, support)
