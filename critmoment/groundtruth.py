@@ -27,8 +27,8 @@ Outcomes (the definitions, with the tolerances of :class:`OutcomeCriteria`):
   that ends with the object still carried where the nominal run has let it go: that one was
   never released (``NOT_COMPLETED``), whatever it touched on the way; nor a run whose object
   is never lifted by the task's rule (``Task.lifted``): it was never picked up; nor one whose
-  object a gripper touches at every step from the loss to the end: set down in the grip,
-  not dropped. Also, task
+  object a gripper touches at every step from the loss until the nominal run's last carried
+  step: set down in the grip, not dropped. Also, task
   completed or not, a fall: at a step where the nominal run carries it, the object lies on a
   support, or at rest on anything (:func:`resting`), touched by no gripper, having fallen
   more than ``fall_height`` since a gripper last touched it (:func:`fall_steps`; a catch at a hand-over touches no support, an object set
@@ -479,11 +479,16 @@ def classify(*, dt: float, stage: np.ndarray, contact_gripper: np.ndarray,
     if t:
         ever = (stage.max(axis=1) >= 2) if lifted is None else np.asarray(lifted, bool)
         drop_ok &= ever | fell
-        # nor one whose object never leaves the grippers from the loss to the end: it was
-        # set down in the grip, not dropped (a held cube sagging 1 mm onto a listed block,
-        # a cube pressed onto the table); its slip, or the task's rule, names what failed
-        after = np.arange(t)[None, :] >= np.maximum(drop_step, 0)[:, None]
-        kept = (contact_gripper.any(axis=-1) | ~after).all(axis=1)
+        # nor one whose object never leaves the grippers from the loss until the nominal run
+        # lets it go (or the end): it was set down in the grip, not dropped (a held cube
+        # sagging 1 mm onto a listed block; a cube set down a little early, still in the
+        # fingers until the nominal's release); its slip, or the task's rule, names what
+        # failed
+        carrying = np.flatnonzero(np.asarray(nominal_carried, dtype=bool))
+        end = int(carrying[-1]) if carrying.size else t - 1
+        steps = np.arange(t)[None, :]
+        window = (steps >= np.maximum(drop_step, 0)[:, None]) & (steps <= end)
+        kept = (contact_gripper.any(axis=-1) | ~window).all(axis=1)
         drop_ok &= ~(kept & (drop_step >= 0)) | fell
     # a motor event after the object is lost is a consequence (the arms move unloaded, may
     # touch each other), not the cause

@@ -434,10 +434,11 @@ def test_an_object_never_lifted_is_not_dropped():
 
 
 def test_an_object_set_down_in_the_grip_is_not_dropped():
-    """probe r38 (a held cube sagging 1 mm onto a listed block): the object touches its
-    support where the nominal run carries it, but a gripper touches it at every step from
-    then to the end: set down in the grip (here NOT_COMPLETED), not dropped. One that
-    leaves the fingers is DROPPED."""
+    """probe r38 (a held cube sagging 1 mm onto a listed block; a cube set down early and
+    released with the nominal's release, outside the goal's tolerance): the object touches
+    its support where the nominal run carries it, but a gripper touches it at every step
+    from then until the nominal run lets go: set down in the grip (here NOT_COMPLETED), not
+    dropped. One that leaves the fingers before is DROPPED."""
     n, t = 2, 200
     stage = np.zeros((n, t), np.int8)
     grip = np.zeros((n, t, 1), bool)
@@ -446,4 +447,8 @@ def test_an_object_set_down_in_the_grip_is_not_dropped():
     support = np.ones((n, t), bool)
     support[:, 100:130] = False            # both lifted at 100, on the block again at 130
     grip[1, 140:, 0] = False               # 1: out of the fingers at 140
+    _not_completed_then_dropped(stage, grip, support)
+    # 0 let go no earlier than the nominal run does (its last carried step, 169): a cube set
+    # down a little early, still in the fingers until the release, is not dropped either
+    grip[0, 170:, 0] = False
     _not_completed_then_dropped(stage, grip, support)
