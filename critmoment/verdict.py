@@ -1612,7 +1612,20 @@ def region_text(region: Mapping[str, tuple[float, float]] | None, box: Uncertain
     words = _bounds_text(region, box)
     if words == "the whole box":
         return "safe over the whole box" + evidence
-    return "safe for " + words + evidence
+    return "safe for " + words + evidence + _nominal_outside(region, box)
+
+
+def _nominal_outside(region: Mapping[str, tuple[float, float]], box: UncertaintyBox) -> str:
+    """Where the stated region leaves out the nominal values, a clause that says so: a
+    checked box of passing points need not hold them all (a Google Robot's "0.149 ≤ mass
+    ≤ 0.206 kg at friction ≥ 1.48" beside its passing nominal 0.05 kg, friction 1)."""
+    out = [f"{p.name} = {p.nominal:.3g}{' ' + p.unit if p.unit else ''}"
+           for p in box.parameters
+           if not region[p.name][0] - 1e-12 <= p.nominal <= region[p.name][1] + 1e-12]
+    if not out:
+        return ""
+    return (f"; it leaves out the nominal {_and(out)}: the region is one box checked to hold, "
+            f"not every passing point")
 
 
 _SUGGEST = {

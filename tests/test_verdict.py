@@ -891,3 +891,19 @@ def test_critical_values_of_a_failing_nominal_run_are_stated_as_unchecked():
                                        moments=(crit,)), chain).causes
         assert any(text in c for c in causes), causes
         assert completed or not any("(fails for" in c for c in causes)
+
+
+def test_a_region_that_leaves_out_the_nominal_says_so():
+    """probe r38 (Google Robot): "safe for 0.149 ≤ mass ≤ 0.206 kg at friction ≥ 1.48"
+    beside a passing nominal 0.05 kg, friction 1, read as if the nominal were unsafe; the
+    text now says the region leaves it out (a box checked to hold, not every passing
+    point). A region holding the nominal reads as before."""
+    box = _box()
+    sliver = {"mass": (0.149, 0.206), "friction": (1.48, 1.5)}
+    text = vd.region_text(sliver, box, vd.Verdict.CONDITIONAL)
+    assert text.startswith("safe for 0.149 ≤ mass ≤ 0.206 kg at friction ≥ 1.48")
+    assert text.endswith("; it leaves out the nominal mass = 0.05 kg and friction = 1: the "
+                         "region is one box checked to hold, not every passing point")
+    holding = {"mass": (0.05, 0.5), "friction": (0.6, 1.5)}
+    assert vd.region_text(holding, box, vd.Verdict.CONDITIONAL) == (
+        "safe for mass ≤ 0.5 kg at friction ≥ 0.6")
