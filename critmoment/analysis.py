@@ -671,6 +671,7 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         if verification is not None:
             verification["worst_cases"] = len(rerun_steps)
             verification["worst_cases_failed"] = int(real.sum())
+    chain_points = _chain_failure_points(runs, failed, samples)
     evidence = vd.Evidence(
         box=box, samples=sample_evidence, nominal_cost=nominal_cost,
         nominal_failed=bool(res_all.failed_any[0]) if steps.size else False,
@@ -681,9 +682,9 @@ def analyze(trajectory: Trajectory, scenario: Scenario | str | None = None, *,
         worst_unlifted=worst_unlifted,
         worst_rollouts_failed=worst_failed, trend=_trend(curves, box),
         own_failures=roll.failures(samples[runs.rerun]),
-        chain_failures=_chain_kinds(runs, failed),
-        own_failure_points=_failure_points(runs, failed, roll, samples, chained=False),
-        chain_failure_points=_failure_points(runs, failed, roll, samples, chained=True),
+        chain_failures={kind: len(rows) for kind, rows in chain_points.items()},
+        own_failure_points=roll.failure_points(samples[runs.rerun]),
+        chain_failure_points=chain_points,
         nominal_run_failure=nominal_run_failure(roll.nominal(), twin, rec.dt))
     decision = vd.decide(evidence, dopt)
     region_check = None
@@ -1109,32 +1110,16 @@ def _own_failures_after(moments, sweep: sp.SparseResult, failed: np.ndarray,
     return out
 
 
-def _chain_kinds(runs: vd.SampleRuns, failed: np.ndarray) -> dict[str, int]:
-    """How many of the failures the chain decided (not sent on to a rollout) failed each
-    way (``history.ChainedResult.kinds``), most first."""
-    counts: dict[str, int] = {}
-    if not runs.chained_kinds:
-        return counts
-    for i in np.flatnonzero(runs.chained & ~runs.suspect & failed):
-        kind = runs.chained_kinds[i] or "not_completed"
-        counts[kind] = counts.get(kind, 0) + 1
-    return dict(sorted(counts.items(), key=lambda kv: -kv[1]))
-
-
-def _failure_points(runs: vd.SampleRuns, failed: np.ndarray, roll: _Rollouts,
-                    samples: np.ndarray, *, chained: bool) -> dict[str, np.ndarray]:
-    """Per way of failing, the parameter values of the samples that failed that way: the
-    rolled-out ones by their outcome, or the chained ones by their kind (what
-    :meth:`_Rollouts.failures` and :func:`_chain_kinds` count)."""
+def _chain_failure_points(runs: vd.SampleRuns, failed: np.ndarray, samples: np.ndarray
+                          ) -> dict[str, np.ndarray]:
+    """The failures the chain decided (not sent on to a rollout), by how they failed
+    (``history.ChainedResult.kinds``): each kind's samples (k, d), most first."""
     out: dict[str, list[np.ndarray]] = {}
-    if chained and runs.chained_kinds:
+    if runs.chained_kinds:
         for i in np.flatnonzero(runs.chained & ~runs.suspect & failed):
             out.setdefault(runs.chained_kinds[i] or "not_completed", []).append(samples[i])
-    for i in np.flatnonzero(runs.rerun) if not chained else ():
-        got = roll.outcomes.get(_point_key(samples[i]))
-        if got is not None and got[0] != Outcome.SUCCESS.value:
-            out.setdefault(got[0], []).append(samples[i])
-    return {kind: np.array(rows) for kind, rows in out.items()}
+    return {kind: np.array(rows)
+            for kind, rows in sorted(out.items(), key=lambda kv: -len(kv[1]))}
 
 
 def _nominal_failed(evaluator: sp.SparseEvaluator, steps: np.ndarray) -> np.ndarray:
@@ -1597,15 +1582,27 @@ class _Rollouts:
         return np.array([self.closeness.get(_point_key(p), 0.0) >= fraction
                          for p in np.asarray(points, float)], dtype=bool)
 
+    def _failing(self, points: np.ndarray):
+        """The rolled-out ``points`` that fail, each with its (outcome, first failure time,
+        actuator)."""
+        for point in np.asarray(points, float):
+            got = self.outcomes.get(_point_key(point))
+            if got is not None and got[0] != Outcome.SUCCESS.value:
+                yield point, got
+
+    def failure_points(self, points: np.ndarray) -> dict[str, np.ndarray]:
+        """The rolled-out ``points`` that fail, per outcome (k, d)."""
+        out: dict[str, list[np.ndarray]] = {}
+        for point, got in self._failing(points):
+            out.setdefault(got[0], []).append(point)
+        return {kind: np.array(rows) for kind, rows in out.items()}
+
     def failures(self, points: np.ndarray) -> dict[str, tuple[int, float | None,
                                                               tuple[str, ...]]]:
         """How the rolled-out ``points`` that fail failed: per outcome, (how many, the
         earliest failure time [s], the actuators of the motor failures)."""
         out: dict[str, list] = {}
-        for point in np.asarray(points, float):
-            got = self.outcomes.get(_point_key(point))
-            if got is None or got[0] == Outcome.SUCCESS.value:
-                continue
+        for _, got in self._failing(points):
             entry = out.setdefault(got[0], [0, None, []])
             entry[0] += 1
             if got[1] is not None and (entry[1] is None or got[1] < entry[1]):

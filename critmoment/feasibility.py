@@ -593,13 +593,14 @@ def check_feasibility(recording: Recording, twin: Twin, *,
             target, past = servo_targets[a]
             q = qpos[1:n + 1, int(m.jnt_qposadr[j])]
             toward = np.sign(target[:q.size] - q)
-            lag = _tracking_error(q, target, int(round(options.delay / dt)))
+            shift = int(round(options.delay / dt))
+            lag = _tracking_error(q, target, shift)
             lag = np.where(past[:lag.size], 0.0, lag)
             if observed is not None:
                 # the joint on its recorded or planned path is the motion, wherever its
                 # target leads it
                 path, _ = _servo_target(m, a, observed)
-                lag = np.minimum(lag, _tracking_error(q, path, int(round(options.delay / dt))))
+                lag = np.minimum(lag, _tracking_error(q, path, shift))
             k = int(np.argmax(lag))
             max_lag, max_lag_time = float(lag[k]), k * dt
             span = float(np.ptp(target)) if n else 0.0

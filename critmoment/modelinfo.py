@@ -747,26 +747,22 @@ def _resting_supports(model: mujoco.MjModel, object_body: int, key: int | None) 
     return found
 
 
-def _goal_height_gap(model: mujoco.MjModel, data: mujoco.MjData, goal, goal_site: str | None,
-                     object_body: int, grippers) -> tuple[float, float] | None:
-    """(how high the object's body frame rests above the collision geom below it at the
-    start, how high the goal lies above the one below it) [m], or None where either has
-    none: a goal site drawn on a table's top lies half a cube below where any cube placed
-    there comes to rest."""
-    below_goal = _under_goal(model, data, goal, goal_site, object_body, grippers, depth=True)
-    below_object = _under_goal(model, data, data.xpos[object_body], None, object_body,
-                               grippers, depth=True)
-    if below_goal is None or below_object is None:
-        return None
-    return below_object[1], below_goal[1]
+def _resting_height(model: mujoco.MjModel, data: mujoco.MjData, object_body: int,
+                    grippers) -> float | None:
+    """How high the object's body frame rests above the collision geom below it at the
+    start [m], or None without one: beside a goal's height above its support, whether a
+    placement can reach the goal (a goal site drawn on a table's top lies half a cube
+    below where any cube placed there comes to rest)."""
+    below = _under_goal(model, data, data.xpos[object_body], None, object_body, grippers)
+    return None if below is None else below[1]
 
 
 def _under_goal(model: mujoco.MjModel, data: mujoco.MjData, goal, goal_site: str | None,
-                object_body: int, grippers, *, depth: bool = False):
+                object_body: int, grippers) -> tuple[str, float] | None:
     """The named collision geom straight below a pick_place goal (a shelf, a tray, a bin's
-    floor), within 0.5 m: where the object is placed, a support; None if there is none, or
-    the goal site is unknown (the scenario's load names that). With ``depth``: (its name,
-    its distance below the goal [m])."""
+    floor), within 0.5 m, and its distance below the goal [m]: where the object is placed,
+    a support; None if there is none, or the goal site is unknown (the scenario's load
+    names that)."""
     if goal is None:
         sid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_SITE, goal_site or "")
         if sid < 0:
@@ -789,7 +785,7 @@ def _under_goal(model: mujoco.MjModel, data: mujoco.MjData, goal, goal_site: str
         name = model.geom(geom).name
         if ((model.geom_contype[geom] or model.geom_conaffinity[geom]) and name
                 and name not in fingers):
-            return (name, travelled + dist) if depth else name
+            return name, travelled + dist
         travelled += dist + 1e-6
         origin = origin + (dist + 1e-6) * down
     return None
@@ -1116,7 +1112,8 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                 task_lines.append("goal = [" + ", ".join(_num(v) for v in goal) + "]   # [m]")
             else:
                 task_lines.append(f"goal_site = {_toml_str(goal_site)}")
-            below = _under_goal(model, data, goal, goal_site, bid, grippers)
+            under = _under_goal(model, data, goal, goal_site, bid, grippers)
+            below = None if under is None else under[0]
             if below is None and (goal is not None or mujoco.mj_name2id(
                     model, mujoco.mjtObj.mjOBJ_SITE, goal_site or "") >= 0):
                 warnings.warn(f"{'--goal' if goal is not None else '--goal-site'}: no collision "
@@ -1129,7 +1126,8 @@ def init_scenario(model_path: str | Path, *, object_body: str, task: str,
                                f"placed on it)")
             task_lines += ["tolerance = 0.03        # [m] distance of the object's body frame from "
                            "the goal", "rest_speed = 0.05       # [m/s] at the end"]
-            gap = _goal_height_gap(model, data, goal, goal_site, bid, grippers)
+            rests = _resting_height(model, data, bid, grippers)
+            gap = None if under is None or rests is None else (rests, under[1])
             if gap is not None and abs(gap[0] - gap[1]) > 0.03:
                 warnings.warn(
                     f"{'--goal' if goal is not None else '--goal-site'}: the goal lies "

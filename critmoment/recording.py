@@ -108,15 +108,19 @@ def prepare_controls(twin: Twin, traj: Trajectory, *, range_policy: str | None =
     policy = _range_policy(range_policy, twin)
     actions = trajectory_mod.check_ranges(traj.actions, twin.channel_lower, twin.channel_upper,
                                           policy=policy, names=conv.labels)
-    dt = float(twin.model.opt.timestep)
-    _check_rate(traj, dt)
+    _check_rate(traj, float(twin.model.opt.timestep))
+    return _upsampled_controls(twin, actions, traj.fps)
+
+
+def _upsampled_controls(twin: Twin, rows: np.ndarray, fps: float) -> np.ndarray:
+    """Control-rate rows in the action convention, one control per physics step."""
     # the interpolation stays within the channel's range or the values the policy kept
     # beyond it: a target past a joint's limit that the policy kept (a heavy hand's lift
     # slide, ADROIT's ARTy, commanded past its range to hold its weight) is replayed as
     # recorded, as MuJoCo would get it, not clipped after being reported kept
-    lower = np.minimum(twin.channel_lower, actions.min(axis=0))
-    upper = np.maximum(twin.channel_upper, actions.max(axis=0))
-    targets = trajectory_mod.upsample(actions, fps=traj.fps, physics_dt=dt,
+    lower = np.minimum(twin.channel_lower, rows.min(axis=0))
+    upper = np.maximum(twin.channel_upper, rows.max(axis=0))
+    targets = trajectory_mod.upsample(rows, fps=fps, physics_dt=float(twin.model.opt.timestep),
                                       bounded=twin.channel_normalised,
                                       lower=lower, upper=upper)
     return twin.controls(targets)
@@ -129,13 +133,7 @@ def observed_controls(twin: Twin, traj: Trajectory) -> np.ndarray | None:
     their targets lead them by design."""
     if traj.observed is None or traj.n_channels != twin.scenario.actions.width:
         return None
-    observed = np.asarray(traj.observed, dtype=np.float64)
-    lower = np.minimum(twin.channel_lower, observed.min(axis=0))
-    upper = np.maximum(twin.channel_upper, observed.max(axis=0))
-    path = trajectory_mod.upsample(observed, fps=traj.fps,
-                                   physics_dt=float(twin.model.opt.timestep),
-                                   bounded=twin.channel_normalised, lower=lower, upper=upper)
-    return twin.controls(path)
+    return _upsampled_controls(twin, np.asarray(traj.observed, dtype=np.float64), traj.fps)
 
 
 def _check_rate(traj: Trajectory, dt: float) -> None:

@@ -149,6 +149,17 @@ def _as_float_array(value: Any, *, what: str, error: type[Exception]) -> np.ndar
     )
 
 
+def _check_finite_rows(values: np.ndarray, *, what: str) -> None:
+    """A (T, na) array of finite values, or a TrajectoryError naming the first bad one's row
+    and column and how many there are."""
+    bad = _first_nonfinite(values)
+    if bad is not None:
+        n_bad = int(np.count_nonzero(~np.isfinite(values)))
+        raise TrajectoryError(
+            f"{what}: expected finite values, got {values[bad]} at row (step) {bad[0]}, "
+            f"column (channel) {bad[1]} ({n_bad} non-finite value(s) in total)")
+
+
 def _first_nonfinite(arr: np.ndarray) -> tuple[int, ...] | None:
     bad = np.argwhere(~np.isfinite(arr))
     if bad.size == 0:
@@ -416,14 +427,7 @@ class Trajectory:
             raise TrajectoryError(
                 f"actions: expected at least 1 action channel, got shape {actions.shape}"
             )
-        bad = _first_nonfinite(actions)
-        if bad is not None:
-            n_bad = int(np.count_nonzero(~np.isfinite(actions)))
-            raise TrajectoryError(
-                f"actions: expected finite values, got {actions[bad]} at row "
-                f"(step) {bad[0]}, column (channel) {bad[1]} ({n_bad} non-finite "
-                f"value(s) in total)"
-            )
+        _check_finite_rows(actions, what="actions")
         object.__setattr__(self, "actions", _read_only(actions))
 
         if self.fps is None:
@@ -456,11 +460,7 @@ class Trajectory:
                     f"observed: expected shape {actions.shape} (the joints' recorded or "
                     f"planned positions, one row per action, in the action convention), got "
                     f"shape {observed.shape}")
-            bad = _first_nonfinite(observed)
-            if bad is not None:
-                raise TrajectoryError(f"observed: expected finite values, got "
-                                      f"{observed[bad]} at row (step) {bad[0]}, column "
-                                      f"(channel) {bad[1]}")
+            _check_finite_rows(observed, what="observed")
             object.__setattr__(self, "observed", _read_only(observed))
 
         if self.qvel0 is not None and self.qpos0 is None:
